@@ -1,0 +1,236 @@
+//! Neutrosophic points, derivative values, ranges and bounding boxes.
+
+use crate::degrees::{DegreeKind, Degrees};
+
+/// A position in `D`-dimensional space (`D` = 2 or 3) with its neutrosophic degrees.
+///
+/// Used both for control points ([`ControlPoint`]) and for points on a curve ([`CurvePoint`]).
+///
+/// ```
+/// use neutrospline::{Degrees, NeutrosophicPoint};
+/// let p = NeutrosophicPoint::new([1.0, 3.0], Degrees::new(0.3, 0.6, 0.1)?);
+/// assert_eq!(p.degrees.truth(), 0.3);
+/// # Ok::<(), neutrospline::DegreeError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NeutrosophicPoint<const D: usize> {
+    /// Coordinates `x, y` (and `z` when `D = 3`).
+    pub position: [f64; D],
+    /// Truth, indeterminacy and falsity.
+    pub degrees: Degrees,
+}
+
+/// A control point of a curve: a [`NeutrosophicPoint`].
+pub type ControlPoint<const D: usize> = NeutrosophicPoint<D>;
+
+/// A point on a curve: a [`NeutrosophicPoint`].
+pub type CurvePoint<const D: usize> = NeutrosophicPoint<D>;
+
+impl<const D: usize> NeutrosophicPoint<D> {
+    /// A point from its position and degrees.
+    pub const fn new(position: [f64; D], degrees: Degrees) -> Self {
+        NeutrosophicPoint { position, degrees }
+    }
+
+    /// The degree of the given kind.
+    pub const fn degree(&self, kind: DegreeKind) -> f64 {
+        self.degrees.get(kind)
+    }
+}
+
+#[cfg(feature = "serde")]
+mod serde_impl {
+    use super::NeutrosophicPoint;
+    use crate::degrees::Degrees;
+    use serde::{de::Error, Deserialize, Deserializer, Serialize, Serializer};
+
+    #[derive(Serialize, Deserialize)]
+    #[serde(deny_unknown_fields)]
+    struct RawPoint {
+        position: Vec<f64>,
+        truth: f64,
+        indeterminacy: f64,
+        falsity: f64,
+    }
+
+    impl<const D: usize> Serialize for NeutrosophicPoint<D> {
+        fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+            RawPoint {
+                position: self.position.to_vec(),
+                truth: self.degrees.truth(),
+                indeterminacy: self.degrees.indeterminacy(),
+                falsity: self.degrees.falsity(),
+            }
+            .serialize(serializer)
+        }
+    }
+
+    impl<'de, const D: usize> Deserialize<'de> for NeutrosophicPoint<D> {
+        /// Checks the position length and the degrees exactly as [`Degrees::new`] does.
+        fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
+            let raw = RawPoint::deserialize(deserializer)?;
+            let position: [f64; D] = raw.position.as_slice().try_into().map_err(|_| {
+                De::Error::custom(format!(
+                    "position has {} coordinates, expected {D}",
+                    raw.position.len()
+                ))
+            })?;
+            let degrees = Degrees::new(raw.truth, raw.indeterminacy, raw.falsity)
+                .map_err(De::Error::custom)?;
+            Ok(NeutrosophicPoint { position, degrees })
+        }
+    }
+}
+
+/// The derivative of a curve at a parameter: rates of change of the position and of each degree.
+///
+/// Unlike degrees, rates may be any real number.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DerivativeValue<const D: usize> {
+    /// d position / dt.
+    pub position: [f64; D],
+    /// d truth / dt.
+    pub truth: f64,
+    /// d indeterminacy / dt.
+    pub indeterminacy: f64,
+    /// d falsity / dt.
+    pub falsity: f64,
+}
+
+impl<const D: usize> DerivativeValue<D> {
+    /// The rate of the given degree.
+    pub const fn degree(&self, kind: DegreeKind) -> f64 {
+        match kind {
+            DegreeKind::Truth => self.truth,
+            DegreeKind::Indeterminacy => self.indeterminacy,
+            DegreeKind::Falsity => self.falsity,
+        }
+    }
+}
+
+/// A closed interval `[min, max]`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Range {
+    /// Lower end.
+    pub min: f64,
+    /// Upper end.
+    pub max: f64,
+}
+
+impl Range {
+    /// `[min, max]`.
+    pub const fn new(min: f64, max: f64) -> Self {
+        Range { min, max }
+    }
+
+    /// `max - min`.
+    pub fn length(&self) -> f64 {
+        self.max - self.min
+    }
+
+    /// Whether `min <= value <= max`.
+    pub fn contains(&self, value: f64) -> bool {
+        self.min <= value && value <= self.max
+    }
+}
+
+/// Axis-aligned bounds of the positions and of each degree of a curve.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BoundingBox<const D: usize> {
+    /// Range of each coordinate.
+    pub position: [Range; D],
+    /// Range of the truth degree.
+    pub truth: Range,
+    /// Range of the indeterminacy degree.
+    pub indeterminacy: Range,
+    /// Range of the falsity degree.
+    pub falsity: Range,
+}
+
+impl<const D: usize> BoundingBox<D> {
+    /// The range of the given degree.
+    pub const fn degree(&self, kind: DegreeKind) -> Range {
+        match kind {
+            DegreeKind::Truth => self.truth,
+            DegreeKind::Indeterminacy => self.indeterminacy,
+            DegreeKind::Falsity => self.falsity,
+        }
+    }
+
+    /// Whether the point's position and degrees are all inside the box.
+    pub fn contains(&self, point: &NeutrosophicPoint<D>) -> bool {
+        self.position
+            .iter()
+            .zip(point.position)
+            .all(|(r, v)| r.contains(v))
+            && DegreeKind::ALL
+                .iter()
+                .all(|&k| self.degree(k).contains(point.degree(k)))
+    }
+}
+
+/// An affine map of positions, `p -> linear * p + translation`. Degrees are not affected.
+///
+/// ```
+/// use neutrospline::Affine;
+/// let rotate = Affine::new([[0.0, -1.0], [1.0, 0.0]], [1.0, 0.0]);
+/// assert_eq!(rotate.apply([2.0, 3.0]), [-2.0, 2.0]);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Affine<const D: usize> {
+    /// Row-major matrix: `linear[r][c]` multiplies coordinate `c` into coordinate `r`.
+    pub linear: [[f64; D]; D],
+    /// Added after the linear part.
+    pub translation: [f64; D],
+}
+
+impl<const D: usize> Affine<D> {
+    /// `p -> linear * p + translation`.
+    pub const fn new(linear: [[f64; D]; D], translation: [f64; D]) -> Self {
+        Affine {
+            linear,
+            translation,
+        }
+    }
+
+    /// The map applied to a position.
+    pub fn apply(&self, p: [f64; D]) -> [f64; D] {
+        let mut out = self.translation;
+        for (r, row) in self.linear.iter().enumerate() {
+            for (c, &m) in row.iter().enumerate() {
+                out[r] += m * p[c];
+            }
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bounding_box_contains() {
+        let d = Degrees::new(0.5, 0.5, 0.5).unwrap();
+        let r = Range::new(0.0, 1.0);
+        let b = BoundingBox {
+            position: [Range::new(0.0, 2.0), Range::new(-1.0, 1.0)],
+            truth: r,
+            indeterminacy: r,
+            falsity: Range::new(0.0, 0.4),
+        };
+        assert!(!b.contains(&NeutrosophicPoint::new([1.0, 0.0], d)));
+        let d = Degrees::new(0.5, 0.5, 0.25).unwrap();
+        assert!(b.contains(&NeutrosophicPoint::new([1.0, 0.0], d)));
+        assert!(!b.contains(&NeutrosophicPoint::new([3.0, 0.0], d)));
+    }
+
+    #[test]
+    fn affine_apply_3d() {
+        let a = Affine::new(
+            [[2.0, 0.0, 0.0], [0.0, 1.0, 1.0], [0.0, 0.0, -1.0]],
+            [1.0, 1.0, 1.0],
+        );
+        assert_eq!(a.apply([1.0, 2.0, 3.0]), [3.0, 6.0, -2.0]);
+    }
+}
