@@ -42,6 +42,8 @@
 //! ## Feature flags
 //! - `serde`: `Serialize`/`Deserialize` for [`Degrees`], [`DegreeKind`], [`Membership`] and
 //!   [`NeutrosophicPoint`]. Deserialization checks exactly like the constructors.
+//! - `proptest`: the module `strategies`, proptest generators of valid degrees, control points
+//!   and curves, for property tests of code built on this crate.
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
@@ -52,6 +54,8 @@ mod degrees;
 mod example;
 mod point;
 mod relation;
+#[cfg(feature = "proptest")]
+pub mod strategies;
 
 pub use bezier::{Bezier, BezierDerivative};
 pub use curve::{
