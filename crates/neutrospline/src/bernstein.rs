@@ -196,11 +196,16 @@ impl Packed {
 
     /// Bounds of channel `c` over \[0, 1\]: contain every value, and each is within `tolerance`
     /// of the true extremum (see [`lower_bound`]).
-    pub(crate) fn channel_range(&self, c: usize, tolerance: f64) -> (f64, f64) {
+    pub(crate) fn channel_range(
+        &self,
+        c: usize,
+        weights: Option<&[f64]>,
+        tolerance: f64,
+    ) -> (f64, f64) {
         let coeffs = self.channel(c);
-        let low = lower_bound(&coeffs, tolerance);
+        let low = lower_bound(&coeffs, weights, tolerance);
         let negated: Vec<f64> = coeffs.iter().map(|v| -v).collect();
-        let high = -lower_bound(&negated, tolerance);
+        let high = -lower_bound(&negated, weights, tolerance);
         (low, high)
     }
 
@@ -218,32 +223,65 @@ impl Packed {
 
 /// A lower bound `L` of a one-channel Bernstein polynomial over \[0, 1\] with
 /// `min - tolerance * scale <= L <= min`, where `scale` is the largest absolute coefficient.
+/// With `weights` (all positive) the function is the rational `sum B_i w_i c_i / sum B_i w_i`.
 ///
 /// Branch and bound on the convex hull property: a piece's minimum is at least its smallest
 /// coefficient, and its end coefficients are attained values. Pieces whose smallest
 /// coefficient cannot improve on the best attained value by more than the tolerance are
-/// dropped; the others are halved by de Casteljau. The control polygon converges
+/// dropped; the others are halved by (rational) de Casteljau. The control polygon converges
 /// quadratically, so about `log2(1 / sqrt(tolerance))` halvings suffice near each minimum.
-pub(crate) fn lower_bound(coeffs: &[f64], tolerance: f64) -> f64 {
+pub(crate) fn lower_bound(coeffs: &[f64], weights: Option<&[f64]>, tolerance: f64) -> f64 {
     const MAX_DEPTH: u32 = 60;
     let scale = coeffs.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
     let slack = tolerance * scale;
     let n = coeffs.len() - 1;
     let mut best = coeffs[0].min(coeffs[n]);
     let mut bound = best;
-    let mut stack: Vec<(Vec<f64>, u32)> = vec![(coeffs.to_vec(), 0)];
-    while let Some((piece, depth)) = stack.pop() {
+    let unit = vec![1.0; coeffs.len()];
+    let start_weights = weights.map_or(unit, <[f64]>::to_vec);
+    let mut stack: Vec<(Vec<f64>, Vec<f64>, u32)> = vec![(coeffs.to_vec(), start_weights, 0)];
+    while let Some((piece, w, depth)) = stack.pop() {
         best = best.min(piece[0]).min(piece[n]);
         let lowest = piece.iter().copied().fold(f64::INFINITY, f64::min);
         if lowest >= best - slack || depth >= MAX_DEPTH {
             bound = bound.min(lowest);
             continue;
         }
-        let (left, right) = Packed::new(1, piece).split(0.5);
-        stack.push((right.data, depth + 1));
-        stack.push((left.data, depth + 1));
+        let (left, right) = split_half(piece, w, weights.is_some());
+        stack.push((right.0, right.1, depth + 1));
+        stack.push((left.0, left.1, depth + 1));
     }
     bound.min(best)
+}
+
+type Piece = (Vec<f64>, Vec<f64>);
+
+/// Halves a one-channel (rational when `rational`) Bézier piece by de Casteljau at 1/2.
+fn split_half(mut c: Vec<f64>, mut w: Vec<f64>, rational: bool) -> (Piece, Piece) {
+    let n = c.len() - 1;
+    let mut left = (Vec::with_capacity(n + 1), Vec::with_capacity(n + 1));
+    let mut right = (vec![0.0; n + 1], vec![0.0; n + 1]);
+    left.0.push(c[0]);
+    left.1.push(w[0]);
+    right.0[n] = c[n];
+    right.1[n] = w[n];
+    for level in 1..=n {
+        for i in 0..=n - level {
+            let (s, t) = if rational {
+                let total = w[i] + w[i + 1];
+                (w[i] / total, w[i + 1] / total)
+            } else {
+                (0.5, 0.5)
+            };
+            c[i] = lerp(c[i], c[i + 1], s, t);
+            w[i] = 0.5 * (w[i] + w[i + 1]);
+        }
+        left.0.push(c[0]);
+        left.1.push(w[0]);
+        right.0[n - level] = c[n - level];
+        right.1[n - level] = w[n - level];
+    }
+    (left, right)
 }
 
 #[cfg(test)]
@@ -329,7 +367,7 @@ mod tests {
         let min_exact = cubic_closed((16.0 - 70f64.sqrt()) / 31.0);
         let max_exact = cubic_closed((16.0 + 70f64.sqrt()) / 31.0);
         assert!(min_exact < 0.5 && max_exact > 1.0);
-        let (lo, hi) = p.channel_range(0, 1e-12);
+        let (lo, hi) = p.channel_range(0, None, 1e-12);
         assert!(
             lo <= min_exact && lo >= min_exact - 3e-12,
             "{lo} vs {min_exact}"

@@ -5,13 +5,9 @@ use crate::curve::{
     check_parameter, Bounded, CurveError, Derivative, Elevate, EvalError, Evaluate, Split,
     BOUNDS_TOLERANCE,
 };
-use crate::degrees::{DegreeKind, Degrees};
-use crate::point::{Affine, BoundingBox, ControlPoint, CurvePoint, DerivativeValue, Range};
-
-/// Number of channels per control value: `D` coordinates, then truth, indeterminacy, falsity.
-const fn stride(d: usize) -> usize {
-    d + 3
-}
+use crate::degrees::DegreeKind;
+use crate::layout::{derivative_from_row, lift_degree, pack_points, point_from_row, stride};
+use crate::point::{Affine, BoundingBox, ControlPoint, CurvePoint, DerivativeValue};
 
 /// A neutrosophic Bézier curve of degree `n` in `D` dimensions (`D` = 2 or 3).
 ///
@@ -54,28 +50,6 @@ pub struct Bezier<const D: usize> {
     packed: Packed,
 }
 
-/// Reads the channels of one packed row as a point. The degrees are valid by construction
-/// (convex combinations of valid degrees), so they are not checked again.
-fn point_from_row<const D: usize>(row: &[f64]) -> CurvePoint<D> {
-    let mut position = [0.0; D];
-    position.copy_from_slice(&row[..D]);
-    CurvePoint::new(
-        position,
-        Degrees::new_unchecked(row[D], row[D + 1], row[D + 2]),
-    )
-}
-
-fn derivative_from_row<const D: usize>(row: &[f64]) -> DerivativeValue<D> {
-    let mut position = [0.0; D];
-    position.copy_from_slice(&row[..D]);
-    DerivativeValue {
-        position,
-        truth: row[D],
-        indeterminacy: row[D + 1],
-        falsity: row[D + 2],
-    }
-}
-
 impl<const D: usize> Bezier<D> {
     /// The curve with the given control points, in order; its degree is `len - 1`.
     ///
@@ -83,22 +57,13 @@ impl<const D: usize> Bezier<D> {
     /// [`CurveError::NoControlPoints`] for an empty list; [`CurveError::PositionNotFinite`]
     /// naming the first control point with a NaN or infinite coordinate.
     pub fn new(control_points: Vec<ControlPoint<D>>) -> Result<Self, CurveError> {
-        if control_points.is_empty() {
-            return Err(CurveError::NoControlPoints);
-        }
-        let mut data = Vec::with_capacity(control_points.len() * stride(D));
-        for (index, p) in control_points.iter().enumerate() {
-            if let Some((axis, &value)) =
-                p.position.iter().enumerate().find(|(_, v)| !v.is_finite())
-            {
-                return Err(CurveError::PositionNotFinite { index, axis, value });
-            }
-            data.extend_from_slice(&p.position);
-            data.extend_from_slice(&p.degrees.to_array());
-        }
         Ok(Bezier {
-            packed: Packed::new(stride(D), data),
+            packed: Packed::new(stride(D), pack_points(&control_points)?),
         })
+    }
+
+    pub(crate) fn from_packed(packed: Packed) -> Self {
+        Bezier { packed }
     }
 
     /// The polynomial degree `n` (one less than the number of control points).
@@ -261,25 +226,12 @@ impl<const D: usize> Bezier<D> {
     /// each side is within [`BOUNDS_TOLERANCE`] times the channel's largest absolute control
     /// value of the true extremum (branch and bound on the convex hull property).
     pub fn bounding_box(&self) -> BoundingBox<D> {
-        self.bounds_by(|c| self.packed.channel_range(c, BOUNDS_TOLERANCE))
+        BoundingBox::from_channel_ranges(|c| self.packed.channel_range(c, None, BOUNDS_TOLERANCE))
     }
 
     /// Bounds of the control values: contain the curve (convex hull property); loose.
     pub fn control_bounding_box(&self) -> BoundingBox<D> {
-        self.bounds_by(|c| self.packed.control_range(c))
-    }
-
-    fn bounds_by(&self, range: impl Fn(usize) -> (f64, f64)) -> BoundingBox<D> {
-        let r = |c| {
-            let (lo, hi) = range(c);
-            Range::new(lo, hi)
-        };
-        BoundingBox {
-            position: core::array::from_fn(r),
-            truth: r(D),
-            indeterminacy: r(D + 1),
-            falsity: r(D + 2),
-        }
+        BoundingBox::from_channel_ranges(|c| self.packed.control_range(c))
     }
 
     /// The curve with an affine map applied to its control positions; degrees unchanged.
@@ -311,14 +263,8 @@ impl Bezier<2> {
     /// # Ok::<(), neutrospline::EvalError>(())
     /// ```
     pub fn degree_curve(&self, kind: DegreeKind) -> Bezier<3> {
-        let mut data = Vec::with_capacity(self.len() * stride(3));
-        for row in self.packed.data().chunks_exact(stride(2)) {
-            data.extend_from_slice(&row[..2]);
-            data.push(row[2 + kind.index()]);
-            data.extend_from_slice(&row[2..]);
-        }
         Bezier {
-            packed: Packed::new(stride(3), data),
+            packed: Packed::new(stride(3), lift_degree(self.packed.data(), kind)),
         }
     }
 }
@@ -422,6 +368,7 @@ impl<const D: usize> Bounded<D> for Bezier<D> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::degrees::Degrees;
     use crate::example::example1;
 
     fn close(a: f64, b: f64, tol: f64) -> bool {

@@ -19,6 +19,35 @@ pub enum CurveError {
         /// The offending value.
         value: f64,
     },
+    /// A NURBS weight is zero, negative or not finite.
+    #[error("control point {index}: weight = {value} is not a positive finite number (NURBS weights must be > 0)")]
+    WeightNotPositive {
+        /// Index of the control point (0-based).
+        index: usize,
+        /// The offending weight.
+        value: f64,
+    },
+    /// The number of weights differs from the number of control points.
+    #[error("{weights} weights for {points} control points (one weight per control point)")]
+    WeightCount {
+        /// Number of weights.
+        weights: usize,
+        /// Number of control points.
+        points: usize,
+    },
+    /// A surface's control grid does not have `rows x cols` points.
+    #[error("{points} control points do not fill a grid of {rows} rows x {cols} columns ({expected} points)", expected = rows * cols)]
+    GridSize {
+        /// Number of control points given.
+        points: usize,
+        /// Rows declared.
+        rows: usize,
+        /// Columns declared.
+        cols: usize,
+    },
+    /// The knot vector is invalid for the degree and the number of control points.
+    #[error(transparent)]
+    Knots(#[from] crate::knots::KnotError),
 }
 
 /// Why a curve cannot be evaluated at a parameter.

@@ -47,17 +47,26 @@
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
+mod any_curve;
 mod bernstein;
 mod bezier;
+mod bspline;
 mod curve;
 mod degrees;
 mod example;
+mod knots;
+mod layout;
+mod nurbs;
 mod point;
 mod relation;
+mod spline;
 #[cfg(feature = "proptest")]
 pub mod strategies;
+mod surface;
 
+pub use any_curve::{AnyCurve, CurveKind};
 pub use bezier::{Bezier, BezierDerivative};
+pub use bspline::{BSpline, BSplineDerivative, BezierSegment};
 pub use curve::{
     axis_name, Bounded, CurveError, Derivative, Elevate, EvalError, Evaluate, Split,
     BOUNDS_TOLERANCE,
@@ -66,7 +75,10 @@ pub use degrees::{
     DegreeError, DegreeKind, Degrees, Membership, ParseNameError, HESITATION_TOLERANCE,
 };
 pub use example::{example1, EXAMPLE1_NAMES, EXAMPLE1_TABLE};
+pub use knots::{KnotError, KnotVector};
+pub use nurbs::{Nurbs, NurbsDerivative};
 pub use point::{
     Affine, BoundingBox, ControlPoint, CurvePoint, DerivativeValue, NeutrosophicPoint, Range,
 };
 pub use relation::{AxisSet, AxisSetName, PointRelation, RelationError};
+pub use surface::{Direction, Surface, SurfaceDerivatives, SurfaceError, SurfaceKind};

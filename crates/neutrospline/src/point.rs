@@ -157,6 +157,32 @@ impl<const D: usize> BoundingBox<D> {
         }
     }
 
+    /// The box whose channel `c` (coordinates, then truth, indeterminacy, falsity) spans
+    /// `range(c)`.
+    pub(crate) fn from_channel_ranges(range: impl Fn(usize) -> (f64, f64)) -> Self {
+        let r = |c| {
+            let (lo, hi) = range(c);
+            Range::new(lo, hi)
+        };
+        BoundingBox {
+            position: core::array::from_fn(r),
+            truth: r(D),
+            indeterminacy: r(D + 1),
+            falsity: r(D + 2),
+        }
+    }
+
+    /// The smallest box containing both boxes.
+    pub fn union(&self, other: &BoundingBox<D>) -> BoundingBox<D> {
+        let u = |a: Range, b: Range| Range::new(a.min.min(b.min), a.max.max(b.max));
+        BoundingBox {
+            position: core::array::from_fn(|i| u(self.position[i], other.position[i])),
+            truth: u(self.truth, other.truth),
+            indeterminacy: u(self.indeterminacy, other.indeterminacy),
+            falsity: u(self.falsity, other.falsity),
+        }
+    }
+
     /// Whether the point's position and degrees are all inside the box.
     pub fn contains(&self, point: &NeutrosophicPoint<D>) -> bool {
         self.position

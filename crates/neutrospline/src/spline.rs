@@ -1,0 +1,478 @@
+//! The private engine of B-spline and NURBS curves: packed channels over a knot vector, with
+//! optional weights.
+//!
+//! As for Bézier curves, positions and the three degrees are channels of one packed array, so
+//! de Boor's algorithm, knot insertion, Bézier extraction, elevation and differentiation are
+//! each written once for every channel. Rational curves are handled in Euclidean form: each
+//! step combines two weighted points into a new weight and a *convex* combination of the
+//! points, so the degrees of every computed point stay between their inputs.
+
+use crate::bernstein::{lerp, Packed};
+use crate::knots::{KnotError, KnotVector};
+
+/// Combines rows `left` and `right` of `buf` (stride `stride`) with coefficients `ca`, `cb`
+/// (`ca + cb = 1`, both >= 0) into row `dst` (which may be `left` or `right`).
+///
+/// Non-rational: `dst = ca left + cb right`. Rational, with weights `(wl, wr)`: the
+/// homogeneous combination, written as a convex combination with coefficients
+/// `ca wl / w`, `cb wr / w`; returns the new weight `w = ca wl + cb wr`.
+#[inline]
+fn combine(
+    buf: &mut [f64],
+    stride: usize,
+    (dst, left, right): (usize, usize, usize),
+    (ca, cb): (f64, f64),
+    weights: Option<(f64, f64)>,
+) -> f64 {
+    let (s, t, w) = match weights {
+        None => (ca, cb, 1.0),
+        Some((wl, wr)) => {
+            let (l, r) = (ca * wl, cb * wr);
+            let w = l + r;
+            (l / w, r / w, w)
+        }
+    };
+    for c in 0..stride {
+        let v = lerp(buf[left * stride + c], buf[right * stride + c], s, t);
+        buf[dst * stride + c] = v;
+    }
+    w
+}
+
+/// The blossom `f(t_1, ..., t_p)` of the polynomial piece on span `k` of the spline with
+/// control rows `data` (stride `stride`) and optional `weights` over `knots`, where level `r`
+/// of de Boor's triangle uses `param(r)`. With every `t_r = t` this is the value at `t`.
+/// Writes the row into `out` and returns its weight. Only rows `k - p ..= k` are read.
+///
+/// Level r replaces `d_j` (j = p down to r) by the combination of `d_{j-1}` and `d_j`
+/// with `alpha = (t_r - u_{j+k-p}) / (u_{j+1+k-r} - u_{j+k-p})`, which lies in \[0, 1\]
+/// when `t_r` is in the span.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn blossom(
+    knots: &KnotVector,
+    stride: usize,
+    data: &[f64],
+    weights: Option<&[f64]>,
+    k: usize,
+    param: impl Fn(usize) -> f64,
+    scratch: &mut Vec<f64>,
+    out: &mut [f64],
+) -> f64 {
+    let p = knots.degree();
+    let u = knots.knots();
+    let first = k - p;
+    scratch.clear();
+    scratch.extend_from_slice(&data[first * stride..(k + 1) * stride]);
+    let mut w = [1.0; 32];
+    let mut w_heap;
+    let w: &mut [f64] = if p < 32 {
+        &mut w[..=p]
+    } else {
+        w_heap = vec![1.0; p + 1];
+        &mut w_heap
+    };
+    if let Some(ws) = weights {
+        w.copy_from_slice(&ws[first..=k]);
+    }
+    for r in 1..=p {
+        let t = param(r);
+        for j in (r..=p).rev() {
+            let lo = u[j + k - p];
+            let hi = u[j + 1 + k - r];
+            let alpha = ((t - lo) / (hi - lo)).clamp(0.0, 1.0);
+            let pair = weights.map(|_| (w[j - 1], w[j]));
+            w[j] = combine(scratch, stride, (j, j - 1, j), (1.0 - alpha, alpha), pair);
+        }
+    }
+    out[..stride].copy_from_slice(&scratch[p * stride..(p + 1) * stride]);
+    w[p]
+}
+
+/// A spline: control rows over a knot vector, with optional positive weights.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Spline {
+    pub(crate) knots: KnotVector,
+    pub(crate) stride: usize,
+    pub(crate) data: Vec<f64>,
+    pub(crate) weights: Option<Vec<f64>>,
+}
+
+/// A Bézier piece of a spline on `[start, end]`.
+pub(crate) struct Segment {
+    pub(crate) start: f64,
+    pub(crate) end: f64,
+    pub(crate) packed: Packed,
+    pub(crate) weights: Option<Vec<f64>>,
+}
+
+impl Spline {
+    pub(crate) fn degree(&self) -> usize {
+        self.knots.degree()
+    }
+
+    pub(crate) fn count(&self) -> usize {
+        self.data.len() / self.stride
+    }
+
+    pub(crate) fn row(&self, i: usize) -> &[f64] {
+        &self.data[i * self.stride..(i + 1) * self.stride]
+    }
+
+    pub(crate) fn weight(&self, i: usize) -> f64 {
+        self.weights.as_ref().map_or(1.0, |w| w[i])
+    }
+
+    /// The blossom `f(t_1, ..., t_p)` of the polynomial piece on span `k`, where level `r` of
+    /// de Boor's triangle uses `param(r)`. With every `t_r = t` this is the value at `t`.
+    /// Writes the row into `out` and returns its weight.
+    ///
+    /// Level r replaces `d_j` (j = p down to r) by the combination of `d_{j-1}` and `d_j`
+    /// with `alpha = (t_r - u_{j+k-p}) / (u_{j+1+k-r} - u_{j+k-p})`, which lies in \[0, 1\]
+    /// when `t_r` is in the span.
+    pub(crate) fn blossom(
+        &self,
+        k: usize,
+        param: impl Fn(usize) -> f64,
+        scratch: &mut Vec<f64>,
+        out: &mut [f64],
+    ) -> f64 {
+        blossom(
+            &self.knots,
+            self.stride,
+            &self.data,
+            self.weights.as_deref(),
+            k,
+            param,
+            scratch,
+            out,
+        )
+    }
+
+    /// The value at `t` (in the domain) into `out`; returns the weight.
+    pub(crate) fn evaluate(&self, t: f64, scratch: &mut Vec<f64>, out: &mut [f64]) -> f64 {
+        let k = self.knots.span(t);
+        self.blossom(k, |_| t, scratch, out)
+    }
+
+    /// Boehm's knot insertion of `u` once: for `k - p + 1 <= i <= k`,
+    /// `Q_i = (1 - a_i) P_{i-1} + a_i P_i` with `a_i = (u - u_i) / (u_{i+p} - u_i)`.
+    ///
+    /// # Errors
+    /// `u` outside the domain, or already of multiplicity `p + 1`.
+    pub(crate) fn insert_knot(&self, u: f64) -> Result<Spline, KnotError> {
+        let (start, end) = self.knots.domain();
+        if !(start..=end).contains(&u) {
+            return Err(KnotError::OutsideDomain {
+                value: u,
+                start,
+                end,
+            });
+        }
+        let p = self.degree();
+        let multiplicity = self.knots.multiplicity(u);
+        if multiplicity + 1 > p + 1 {
+            return Err(KnotError::MultiplicityTooHigh {
+                value: u,
+                multiplicity: multiplicity + 1,
+                max: p + 1,
+            });
+        }
+        let knots = self.knots.knots();
+        // Span with u_k <= u < u_{k+1}, or the last non-empty span at the domain end.
+        let k = if u >= end {
+            self.knots.span(u)
+        } else {
+            knots.partition_point(|&x| x <= u) - 1
+        };
+        let stride = self.stride;
+        let n = self.count();
+        let mut data = Vec::with_capacity((n + 1) * stride);
+        let mut weights = self.weights.as_ref().map(|_| Vec::with_capacity(n + 1));
+        for i in 0..=k - p {
+            data.extend_from_slice(self.row(i));
+            if let Some(w) = weights.as_mut() {
+                w.push(self.weight(i));
+            }
+        }
+        let mut pair = vec![0.0; 2 * stride];
+        for i in k - p + 1..=k {
+            let a = ((u - knots[i]) / (knots[i + p] - knots[i])).clamp(0.0, 1.0);
+            pair[..stride].copy_from_slice(self.row(i - 1));
+            pair[stride..].copy_from_slice(self.row(i));
+            let ws = self
+                .weights
+                .as_ref()
+                .map(|_| (self.weight(i - 1), self.weight(i)));
+            let w = combine(&mut pair, stride, (0, 0, 1), (1.0 - a, a), ws);
+            data.extend_from_slice(&pair[..stride]);
+            if let Some(wv) = weights.as_mut() {
+                wv.push(w);
+            }
+        }
+        for i in k..n {
+            data.extend_from_slice(self.row(i));
+            if let Some(w) = weights.as_mut() {
+                w.push(self.weight(i));
+            }
+        }
+        let mut new_knots = knots.to_vec();
+        new_knots.insert(k + 1, u);
+        Ok(Spline {
+            knots: KnotVector::from_parts_unchecked(p, new_knots),
+            stride,
+            data,
+            weights,
+        })
+    }
+
+    /// The Bézier pieces on the non-empty knot spans of the domain, by blossoming: the
+    /// control point `i` of the piece on `[a, b]` is `f(a^(p-i), b^i)`.
+    pub(crate) fn bezier_segments(&self) -> Vec<Segment> {
+        let p = self.degree();
+        let u = self.knots.knots();
+        let last = u.len() - 2 - p;
+        let mut scratch = Vec::new();
+        let mut out = vec![0.0; self.stride];
+        let mut segments = Vec::new();
+        for k in p..=last {
+            let (a, b) = (u[k], u[k + 1]);
+            if a == b {
+                continue;
+            }
+            let mut data = Vec::with_capacity((p + 1) * self.stride);
+            let mut weights = Vec::with_capacity(p + 1);
+            for i in 0..=p {
+                // Levels 1..=p-i use a, the remaining i levels use b.
+                let w = self.blossom(
+                    k,
+                    |r| if r <= p - i { a } else { b },
+                    &mut scratch,
+                    &mut out,
+                );
+                data.extend_from_slice(&out);
+                weights.push(w);
+            }
+            segments.push(Segment {
+                start: a,
+                end: b,
+                packed: Packed::new(self.stride, data),
+                weights: self.weights.as_ref().map(|_| weights),
+            });
+        }
+        segments
+    }
+
+    /// The derivative of a non-rational spline: degree `p - 1`, knots `u_1 .. u_{m-1}`,
+    /// control values `p (P_{i+1} - P_i) / (u_{i+p+1} - u_{i+1})` (0 where the knot span is
+    /// empty). A degree-0 spline has the zero derivative.
+    pub(crate) fn derivative(&self) -> Spline {
+        debug_assert!(self.weights.is_none());
+        let p = self.degree();
+        let stride = self.stride;
+        if p == 0 {
+            return Spline {
+                knots: self.knots.clone(),
+                stride,
+                data: vec![0.0; self.data.len()],
+                weights: None,
+            };
+        }
+        let u = self.knots.knots();
+        let n = self.count();
+        let mut data = Vec::with_capacity((n - 1) * stride);
+        for i in 0..n - 1 {
+            let span = u[i + p + 1] - u[i + 1];
+            let scale = if span > 0.0 { p as f64 / span } else { 0.0 };
+            let (a, b) = (self.row(i), self.row(i + 1));
+            data.extend(a.iter().zip(b).map(|(x, y)| scale * (y - x)));
+        }
+        Spline {
+            knots: KnotVector::from_parts_unchecked(p - 1, u[1..u.len() - 1].to_vec()),
+            stride,
+            data,
+            weights: None,
+        }
+    }
+
+    /// Homogeneous form of a rational spline: rows `(w P, w)`, no weights.
+    pub(crate) fn homogeneous(&self) -> Spline {
+        let stride = self.stride + 1;
+        let mut data = Vec::with_capacity(self.count() * stride);
+        for i in 0..self.count() {
+            let w = self.weight(i);
+            data.extend(self.row(i).iter().map(|v| v * w));
+            data.push(w);
+        }
+        Spline {
+            knots: self.knots.clone(),
+            stride,
+            data,
+            weights: None,
+        }
+    }
+
+    /// Degree elevation by one: split into Bézier pieces, elevate each, join them with
+    /// breakpoints of multiplicity `p + 1`, then remove knots (exactly, in homogeneous form)
+    /// down to the original multiplicity plus one. The result is clamped on the domain.
+    ///
+    /// Degree channels (`degree_channels`) of the new control points are projected onto the
+    /// range of the old control values, which contains them exactly (elevated control points
+    /// are convex combinations of the old ones); this only removes rounding.
+    pub(crate) fn elevate(&self, degree_channels: core::ops::Range<usize>) -> Spline {
+        let p = self.degree();
+        let q = p + 1;
+        let stride = self.stride;
+        let rational = self.weights.is_some();
+        let segments = self.bezier_segments();
+        let mut knots = Vec::new();
+        let mut rows: Vec<f64> = Vec::new();
+        let mut weights: Vec<f64> = Vec::new();
+        for (index, seg) in segments.iter().enumerate() {
+            let (data, w) = elevate_bezier(&seg.packed, seg.weights.as_deref());
+            // Pieces meeting continuously share their joint (breakpoint of multiplicity q);
+            // at a discontinuity (multiplicity p + 1) both ends are kept (multiplicity q + 1).
+            let discontinuous = index > 0 && self.knots.multiplicity(seg.start) > p;
+            let skip = usize::from(index > 0 && !discontinuous);
+            rows.extend_from_slice(&data[skip * stride..]);
+            weights.extend_from_slice(&w[skip..]);
+            let copies = if index == 0 || discontinuous {
+                q + 1
+            } else {
+                q
+            };
+            knots.extend(core::iter::repeat_n(seg.start, copies));
+        }
+        if let Some(last) = segments.last() {
+            knots.extend(core::iter::repeat_n(last.end, q + 1));
+        }
+        // Homogeneous form for the removals.
+        let hstride = stride + 1;
+        let mut hom = Vec::with_capacity(weights.len() * hstride);
+        for (row, &w) in rows.chunks_exact(stride).zip(&weights) {
+            hom.extend(row.iter().map(|v| v * w));
+            hom.push(w);
+        }
+        for b in self.knots.interior_breakpoints() {
+            let target = (self.knots.multiplicity(b) + 1).min(q);
+            for _ in target..q {
+                remove_knot_once(&mut knots, q, &mut hom, hstride, b);
+            }
+        }
+        // Back to Euclidean form.
+        let ranges: Vec<(f64, f64)> = degree_channels
+            .clone()
+            .map(|c| {
+                (0..self.count()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), i| {
+                    let v = self.row(i)[c];
+                    (lo.min(v), hi.max(v))
+                })
+            })
+            .collect();
+        let count = hom.len() / hstride;
+        let mut data = Vec::with_capacity(count * stride);
+        let mut new_weights = Vec::with_capacity(count);
+        for row in hom.chunks_exact(hstride) {
+            let w = row[stride];
+            for (c, v) in row[..stride].iter().enumerate() {
+                let mut value = if rational { v / w } else { *v };
+                if degree_channels.contains(&c) {
+                    let (lo, hi) = ranges[c - degree_channels.start];
+                    value = value.clamp(lo, hi);
+                }
+                data.push(value);
+            }
+            new_weights.push(w);
+        }
+        Spline {
+            knots: KnotVector::from_parts_unchecked(q, knots),
+            stride,
+            data,
+            weights: rational.then_some(new_weights),
+        }
+    }
+}
+
+/// Elevates one (possibly rational) Bézier piece: `Q_i = (i/(n+1)) P_{i-1} + (1 - i/(n+1)) P_i`
+/// in homogeneous space. Returns rows and weights.
+fn elevate_bezier(packed: &Packed, weights: Option<&[f64]>) -> (Vec<f64>, Vec<f64>) {
+    let n = packed.degree();
+    let stride = packed.data().len() / (n + 1);
+    let m = (n + 1) as f64;
+    let mut out = Vec::with_capacity((n + 2) * stride);
+    let mut out_w = Vec::with_capacity(n + 2);
+    let weight = |i: usize| weights.map_or(1.0, |w| w[i]);
+    out.extend_from_slice(packed.row(0));
+    out_w.push(weight(0));
+    let mut pair = vec![0.0; 2 * stride];
+    for i in 1..=n {
+        pair[..stride].copy_from_slice(packed.row(i - 1));
+        pair[stride..].copy_from_slice(packed.row(i));
+        let ws = weights.map(|_| (weight(i - 1), weight(i)));
+        let coefficients = (i as f64 / m, (n + 1 - i) as f64 / m);
+        let w = combine(&mut pair, stride, (0, 0, 1), coefficients, ws);
+        out.extend_from_slice(&pair[..stride]);
+        out_w.push(w);
+    }
+    out.extend_from_slice(packed.row(n));
+    out_w.push(weight(n));
+    (out, out_w)
+}
+
+/// Removes one occurrence of the interior knot `u` from a non-rational spline of degree `p`
+/// whose curve allows it exactly (the inverse of Boehm's insertion).
+///
+/// With `U'` the knots without one `u`, `k` its span there and `s` the multiplicity of `u`
+/// before removal, insertion gives `P_i = a_i Q_i + (1 - a_i) Q_{i-1}` for
+/// `k - p + 1 <= i <= k - s + 1`, `a_i = (u - U'_i) / (U'_{i+p} - U'_i)`; the unknowns
+/// `Q_{k-p+1} ..= Q_{k-s}` are solved from the left for the first half and from the right for
+/// the second half (one equation is redundant when the removal is exact).
+fn remove_knot_once(knots: &mut Vec<f64>, p: usize, data: &mut Vec<f64>, stride: usize, u: f64) {
+    let r = knots.iter().rposition(|&x| x == u).expect("knot present");
+    let s = knots.iter().filter(|&&x| x == u).count();
+    let mut bar = knots.clone();
+    bar.remove(r);
+    let k = r - 1;
+    let n = data.len() / stride;
+    let p_row = |i: usize| &data[i * stride..(i + 1) * stride];
+    let a = |i: usize| (u - bar[i]) / (bar[i + p] - bar[i]);
+    let lo = k + 1 - p;
+    let hi = k - s; // may be lo - 1: nothing to solve
+    let mut q: Vec<f64> = Vec::with_capacity((n - 1) * stride);
+    for j in 0..lo {
+        q.extend_from_slice(p_row(j));
+    }
+    let unknowns = (hi + 1).saturating_sub(lo);
+    let mut solved = vec![0.0; unknowns * stride];
+    let forward = unknowns.div_ceil(2);
+    for idx in 0..forward {
+        let i = lo + idx;
+        let ai = a(i);
+        for c in 0..stride {
+            let prev = if idx == 0 {
+                p_row(i - 1)[c]
+            } else {
+                solved[(idx - 1) * stride + c]
+            };
+            solved[idx * stride + c] = (p_row(i)[c] - (1.0 - ai) * prev) / ai;
+        }
+    }
+    for idx in (forward..unknowns).rev() {
+        let j = lo + idx; // solve Q_j from the equation i = j + 1
+        let i = j + 1;
+        let ai = a(i);
+        for c in 0..stride {
+            let next = if idx + 1 == unknowns {
+                p_row(j + 2)[c] // Q_{hi+1} = P_{hi+2}
+            } else {
+                solved[(idx + 1) * stride + c]
+            };
+            solved[idx * stride + c] = (p_row(i)[c] - ai * next) / (1.0 - ai);
+        }
+    }
+    q.extend_from_slice(&solved);
+    for j in hi + 1..n - 1 {
+        q.extend_from_slice(p_row(j + 1));
+    }
+    *knots = bar;
+    *data = q;
+}

@@ -1,0 +1,689 @@
+//! Tensor-product neutrosophic surfaces: Bézier, B-spline and NURBS (Topal and Tas 2018).
+
+use core::fmt;
+
+use crate::any_curve::AnyCurve;
+use crate::bernstein::Packed;
+use crate::bezier::Bezier;
+use crate::bspline::BSpline;
+use crate::curve::{CurveError, EvalError};
+use crate::knots::{KnotError, KnotVector};
+use crate::layout::{derivative_from_row, pack_points, point_from_row, stride};
+use crate::nurbs::Nurbs;
+use crate::point::{BoundingBox, ControlPoint, CurvePoint, DerivativeValue};
+use crate::spline::{blossom, Spline};
+
+/// The kinds of tensor-product surface.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SurfaceKind {
+    /// Bézier in both directions: degrees `rows - 1` and `cols - 1`.
+    Bezier,
+    /// B-spline in both directions.
+    BSpline,
+    /// NURBS: B-spline with a positive weight per control point.
+    Nurbs,
+}
+
+impl SurfaceKind {
+    /// The name used in files: `bezier-surface`, `bspline-surface`, `nurbs-surface`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            SurfaceKind::Bezier => "bezier-surface",
+            SurfaceKind::BSpline => "bspline-surface",
+            SurfaceKind::Nurbs => "nurbs-surface",
+        }
+    }
+}
+
+impl fmt::Display for SurfaceKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// Which parameter direction of a surface.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Direction {
+    /// The `u` direction, along which the row index varies.
+    U,
+    /// The `v` direction, along which the column index varies.
+    V,
+}
+
+impl fmt::Display for Direction {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Direction::U => "u",
+            Direction::V => "v",
+        })
+    }
+}
+
+/// Why a surface cannot be built.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum SurfaceError {
+    /// A problem with the control points or weights.
+    #[error(transparent)]
+    Curve(#[from] CurveError),
+    /// The knots of one direction are invalid.
+    #[error("knots_{direction}: {source}")]
+    Knots {
+        /// The direction.
+        direction: Direction,
+        /// What is wrong.
+        source: KnotError,
+    },
+}
+
+/// The partial derivatives of a surface at a parameter pair.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfaceDerivatives {
+    /// d/du of position and degrees.
+    pub du: DerivativeValue<3>,
+    /// d/dv of position and degrees.
+    pub dv: DerivativeValue<3>,
+}
+
+/// A tensor-product neutrosophic surface in 3-D over a `rows x cols` grid of control points.
+///
+/// ```text
+/// S(u, v) = sum_i sum_j R_{ij}(u, v) P_ij,   R_ij = w_ij N_i(u) N_j(v) / sum_kl w_kl N_k(u) N_l(v)
+/// ```
+///
+/// and likewise for the three degrees (with `w_ij = 1` for Bézier and B-spline surfaces;
+/// Bézier surfaces use the Bernstein basis, i.e. single-span clamped knots on \[0, 1\]). The
+/// row index `i` runs along `u`, the column index `j` along `v`; control points are stored
+/// row by row. Evaluation runs the curve algorithm along `v` in each row, then along `u`:
+/// every step is a convex combination, so the degrees stay in the control range.
+///
+/// ```
+/// use neutrospline::{ControlPoint, Degrees, Surface};
+/// let d = |t| Degrees::new(t, 0.0, 1.0 - t).unwrap();
+/// let grid = vec![
+///     ControlPoint::new([0.0, 0.0, 0.0], d(0.0)),
+///     ControlPoint::new([0.0, 1.0, 0.0], d(0.5)),
+///     ControlPoint::new([1.0, 0.0, 0.0], d(0.5)),
+///     ControlPoint::new([1.0, 1.0, 1.0], d(1.0)),
+/// ];
+/// let s = Surface::bezier(2, 2, grid)?;
+/// let p = s.evaluate(0.5, 0.5)?;
+/// assert_eq!(p.position, [0.5, 0.5, 0.25]);
+/// assert_eq!(p.degrees.truth(), 0.5);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Surface {
+    kind: SurfaceKind,
+    rows: usize,
+    cols: usize,
+    knots_u: KnotVector,
+    knots_v: KnotVector,
+    data: Vec<f64>,
+    weights: Option<Vec<f64>>,
+}
+
+const S: usize = stride(3);
+
+impl Surface {
+    /// A Bézier surface of degrees `rows - 1` (in u) and `cols - 1` (in v).
+    ///
+    /// # Errors
+    /// [`CurveError::GridSize`] when `control_points.len() != rows * cols` (or a dimension
+    /// is 0), a non-finite position.
+    pub fn bezier(
+        rows: usize,
+        cols: usize,
+        control_points: Vec<ControlPoint<3>>,
+    ) -> Result<Self, SurfaceError> {
+        check_grid(rows, cols, control_points.len())?;
+        let knots_u = bezier_knots(rows - 1);
+        let knots_v = bezier_knots(cols - 1);
+        Surface::build(
+            SurfaceKind::Bezier,
+            rows,
+            cols,
+            control_points,
+            None,
+            knots_u,
+            knots_v,
+        )
+    }
+
+    /// A B-spline surface over the given knots (degrees are the knots').
+    ///
+    /// # Errors
+    /// Grid size, non-finite positions, knots invalid for `rows` (u) or `cols` (v).
+    pub fn bspline(
+        rows: usize,
+        cols: usize,
+        control_points: Vec<ControlPoint<3>>,
+        knots_u: KnotVector,
+        knots_v: KnotVector,
+    ) -> Result<Self, SurfaceError> {
+        Surface::build(
+            SurfaceKind::BSpline,
+            rows,
+            cols,
+            control_points,
+            None,
+            knots_u,
+            knots_v,
+        )
+    }
+
+    /// A NURBS surface: one positive weight per control point, row by row.
+    ///
+    /// # Errors
+    /// As [`Surface::bspline`]; weight count or a weight that is not positive and finite.
+    pub fn nurbs(
+        rows: usize,
+        cols: usize,
+        control_points: Vec<ControlPoint<3>>,
+        weights: Vec<f64>,
+        knots_u: KnotVector,
+        knots_v: KnotVector,
+    ) -> Result<Self, SurfaceError> {
+        Surface::build(
+            SurfaceKind::Nurbs,
+            rows,
+            cols,
+            control_points,
+            Some(weights),
+            knots_u,
+            knots_v,
+        )
+    }
+
+    fn build(
+        kind: SurfaceKind,
+        rows: usize,
+        cols: usize,
+        control_points: Vec<ControlPoint<3>>,
+        weights: Option<Vec<f64>>,
+        knots_u: KnotVector,
+        knots_v: KnotVector,
+    ) -> Result<Self, SurfaceError> {
+        check_grid(rows, cols, control_points.len())?;
+        let data = pack_points(&control_points)?;
+        if let Some(w) = &weights {
+            if w.len() != control_points.len() {
+                return Err(CurveError::WeightCount {
+                    weights: w.len(),
+                    points: control_points.len(),
+                }
+                .into());
+            }
+            if let Some((index, &value)) = w
+                .iter()
+                .enumerate()
+                .find(|(_, w)| !(w.is_finite() && **w > 0.0))
+            {
+                return Err(CurveError::WeightNotPositive { index, value }.into());
+            }
+        }
+        for (direction, knots, count) in [
+            (Direction::U, &knots_u, rows),
+            (Direction::V, &knots_v, cols),
+        ] {
+            if knots.control_count() != count {
+                return Err(SurfaceError::Knots {
+                    direction,
+                    source: KnotError::WrongLength {
+                        got: knots.knots().len(),
+                        expected: count + knots.degree() + 1,
+                    },
+                });
+            }
+        }
+        Ok(Surface {
+            kind,
+            rows,
+            cols,
+            knots_u,
+            knots_v,
+            data,
+            weights,
+        })
+    }
+
+    /// The kind of surface.
+    pub fn kind(&self) -> SurfaceKind {
+        self.kind
+    }
+
+    /// Number of control points along u.
+    pub fn rows(&self) -> usize {
+        self.rows
+    }
+
+    /// Number of control points along v.
+    pub fn cols(&self) -> usize {
+        self.cols
+    }
+
+    /// Polynomial degree in u.
+    pub fn degree_u(&self) -> usize {
+        self.knots_u.degree()
+    }
+
+    /// Polynomial degree in v.
+    pub fn degree_v(&self) -> usize {
+        self.knots_v.degree()
+    }
+
+    /// Knots in u.
+    pub fn knots_u(&self) -> &KnotVector {
+        &self.knots_u
+    }
+
+    /// Knots in v.
+    pub fn knots_v(&self) -> &KnotVector {
+        &self.knots_v
+    }
+
+    /// Domain in u.
+    pub fn domain_u(&self) -> (f64, f64) {
+        self.knots_u.domain()
+    }
+
+    /// Domain in v.
+    pub fn domain_v(&self) -> (f64, f64) {
+        self.knots_v.domain()
+    }
+
+    /// Control point in row `i` (u index) and column `j` (v index).
+    ///
+    /// # Panics
+    /// If `i >= rows()` or `j >= cols()`.
+    pub fn control_point(&self, i: usize, j: usize) -> ControlPoint<3> {
+        assert!(
+            i < self.rows && j < self.cols,
+            "control point index out of the grid"
+        );
+        let k = i * self.cols + j;
+        point_from_row(&self.data[k * S..(k + 1) * S])
+    }
+
+    /// All control points, row by row.
+    pub fn control_points(&self) -> Vec<ControlPoint<3>> {
+        self.data.chunks_exact(S).map(point_from_row).collect()
+    }
+
+    /// The weights, row by row (NURBS surfaces).
+    pub fn weights(&self) -> Option<&[f64]> {
+        self.weights.as_deref()
+    }
+
+    fn check(&self, u: f64, v: f64) -> Result<(), EvalError> {
+        crate::curve::check_parameter(u, self.domain_u())?;
+        crate::curve::check_parameter(v, self.domain_v())
+    }
+
+    /// Evaluates the row curves (along v at `v`) for the rows that matter at `u`, then the
+    /// column (along u at `u`), in Euclidean-rational form; writes the row into `out`.
+    fn evaluate_into(&self, u: f64, v: f64, out: &mut [f64]) {
+        let (cols, stride) = (self.cols, S);
+        let weights = self.weights.as_deref();
+        let ku = self.knots_u.span(u);
+        let kv = self.knots_v.span(v);
+        let pu = self.knots_u.degree();
+        let mut column = vec![0.0; self.rows * stride];
+        let mut column_w = vec![1.0; self.rows];
+        let mut scratch = Vec::new();
+        for i in ku - pu..=ku {
+            let row = &self.data[i * cols * stride..(i + 1) * cols * stride];
+            let row_w = weights.map(|w| &w[i * cols..(i + 1) * cols]);
+            column_w[i] = blossom(
+                &self.knots_v,
+                stride,
+                row,
+                row_w,
+                kv,
+                |_| v,
+                &mut scratch,
+                &mut column[i * stride..(i + 1) * stride],
+            );
+        }
+        let column_weights = weights.map(|_| column_w.as_slice());
+        blossom(
+            &self.knots_u,
+            stride,
+            &column,
+            column_weights,
+            ku,
+            |_| u,
+            &mut scratch,
+            out,
+        );
+    }
+
+    /// The point at `(u, v)`.
+    ///
+    /// # Errors
+    /// A parameter not finite or outside its domain.
+    pub fn evaluate(&self, u: f64, v: f64) -> Result<CurvePoint<3>, EvalError> {
+        self.check(u, v)?;
+        let mut out = [0.0; S];
+        self.evaluate_into(u, v, &mut out);
+        Ok(point_from_row(&out))
+    }
+
+    /// Rows `(w P, w)` of the homogeneous form (weight 1 for non-rational surfaces).
+    fn homogeneous(&self) -> Vec<f64> {
+        let mut h = Vec::with_capacity(self.rows * self.cols * (S + 1));
+        for (k, row) in self.data.chunks_exact(S).enumerate() {
+            let w = self.weights.as_ref().map_or(1.0, |w| w[k]);
+            h.extend(row.iter().map(|x| x * w));
+            h.push(w);
+        }
+        h
+    }
+
+    /// The partial derivatives `dS/du` and `dS/dv` of position and degrees, by the quotient
+    /// rule on the homogeneous form `H = sum N_i N_j w_ij (P_ij, 1)`: `S_u = (H_u - H_u^w S) / H^w`.
+    ///
+    /// # Errors
+    /// A parameter not finite or outside its domain; [`EvalError::Overflow`].
+    pub fn partial_derivatives(&self, u: f64, v: f64) -> Result<SurfaceDerivatives, EvalError> {
+        self.check(u, v)?;
+        let hs = S + 1;
+        let h = self.homogeneous();
+        // Along u: evaluate every column in v first... by symmetry, build the curve of the
+        // other direction at the fixed parameter and differentiate it.
+        let du = self.directional(&h, hs, Direction::U, u, v);
+        let dv = self.directional(&h, hs, Direction::V, u, v);
+        let (du, dv) = (
+            du.ok_or(EvalError::Overflow { t: u })?,
+            dv.ok_or(EvalError::Overflow { t: v })?,
+        );
+        Ok(SurfaceDerivatives { du, dv })
+    }
+
+    /// Derivative in `direction` at `(u, v)` from the homogeneous rows `h` (stride `hs`).
+    fn directional(
+        &self,
+        h: &[f64],
+        hs: usize,
+        direction: Direction,
+        u: f64,
+        v: f64,
+    ) -> Option<DerivativeValue<3>> {
+        // The homogeneous iso-curve in `direction` through the fixed other parameter.
+        let (along, fixed, fixed_knots, count_along, count_fixed) = match direction {
+            Direction::U => (&self.knots_u, v, &self.knots_v, self.rows, self.cols),
+            Direction::V => (&self.knots_v, u, &self.knots_u, self.cols, self.rows),
+        };
+        let index = |a: usize, f: usize| match direction {
+            Direction::U => a * self.cols + f,
+            Direction::V => f * self.cols + a,
+        };
+        let k = fixed_knots.span(fixed);
+        let mut scratch = Vec::new();
+        let mut iso = vec![0.0; count_along * hs];
+        let mut line = vec![0.0; count_fixed * hs];
+        for a in 0..count_along {
+            for f in 0..count_fixed {
+                let src = index(a, f);
+                line[f * hs..(f + 1) * hs].copy_from_slice(&h[src * hs..(src + 1) * hs]);
+            }
+            blossom(
+                fixed_knots,
+                hs,
+                &line,
+                None,
+                k,
+                |_| fixed,
+                &mut scratch,
+                &mut iso[a * hs..(a + 1) * hs],
+            );
+        }
+        let curve = Spline {
+            knots: along.clone(),
+            stride: hs,
+            data: iso,
+            weights: None,
+        };
+        let t = match direction {
+            Direction::U => u,
+            Direction::V => v,
+        };
+        let mut value = [0.0; S + 1];
+        let mut rate = [0.0; S + 1];
+        curve.evaluate(t, &mut scratch, &mut value);
+        curve.derivative().evaluate(t, &mut scratch, &mut rate);
+        let (w, dw) = (value[S], rate[S]);
+        let mut row = [0.0; S];
+        for c in 0..S {
+            row[c] = (rate[c] - dw * (value[c] / w)) / w;
+        }
+        row.iter()
+            .all(|x| x.is_finite())
+            .then(|| derivative_from_row(&row))
+    }
+
+    /// The unit normal `S_u x S_v / |S_u x S_v|`, or `None` where the surface is degenerate
+    /// (the cross product vanishes, for example at a collapsed edge).
+    ///
+    /// # Errors
+    /// As [`Surface::partial_derivatives`].
+    pub fn normal(&self, u: f64, v: f64) -> Result<Option<[f64; 3]>, EvalError> {
+        let d = self.partial_derivatives(u, v)?;
+        let (a, b) = (d.du.position, d.dv.position);
+        let n = [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ];
+        let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+        let scale = a.iter().chain(&b).fold(0.0_f64, |m, x| m.max(x.abs()));
+        if len <= 1e-14 * scale * scale || !len.is_finite() {
+            return Ok(None);
+        }
+        Ok(Some(n.map(|x| x / len)))
+    }
+
+    /// The iso-parameter curve at fixed `u` (running along v) or fixed `v` (along u), as a
+    /// curve of the surface's kind: its control points are the evaluated other-direction
+    /// curves, with their combined weights for NURBS.
+    ///
+    /// # Errors
+    /// The parameter not finite or outside its domain.
+    pub fn iso_curve(&self, fixed: Direction, value: f64) -> Result<AnyCurve<3>, EvalError> {
+        let (fixed_knots, count_fixed, along_knots, count_along) = match fixed {
+            Direction::U => (&self.knots_u, self.rows, &self.knots_v, self.cols),
+            Direction::V => (&self.knots_v, self.cols, &self.knots_u, self.rows),
+        };
+        crate::curve::check_parameter(value, fixed_knots.domain())?;
+        let index = |a: usize, f: usize| match fixed {
+            Direction::U => f * self.cols + a,
+            Direction::V => a * self.cols + f,
+        };
+        let k = fixed_knots.span(value);
+        let mut scratch = Vec::new();
+        let mut line = vec![0.0; count_fixed * S];
+        let mut line_w = vec![1.0; count_fixed];
+        let mut points = Vec::with_capacity(count_along);
+        let mut weights = Vec::with_capacity(count_along);
+        let mut out = [0.0; S];
+        for a in 0..count_along {
+            for f in 0..count_fixed {
+                let src = index(a, f);
+                line[f * S..(f + 1) * S].copy_from_slice(&self.data[src * S..(src + 1) * S]);
+                line_w[f] = self.weights.as_ref().map_or(1.0, |w| w[src]);
+            }
+            let lw = self.weights.as_ref().map(|_| line_w.as_slice());
+            weights.push(blossom(
+                fixed_knots,
+                S,
+                &line,
+                lw,
+                k,
+                |_| value,
+                &mut scratch,
+                &mut out,
+            ));
+            points.push(point_from_row::<3>(&out));
+        }
+        let built = match self.kind {
+            SurfaceKind::Bezier => Bezier::new(points).map(AnyCurve::Bezier),
+            SurfaceKind::BSpline => {
+                BSpline::new(points, along_knots.clone()).map(AnyCurve::BSpline)
+            }
+            SurfaceKind::Nurbs => {
+                Nurbs::new(points, weights, along_knots.clone()).map(AnyCurve::Nurbs)
+            }
+        };
+        // The points come from evaluating valid data and the knots are the surface's own.
+        Ok(built.unwrap_or_else(|e| unreachable!("iso-curve data is valid: {e}")))
+    }
+
+    /// Bounds of the control values (they contain the surface, by the convex hull property).
+    pub fn control_bounding_box(&self) -> BoundingBox<3> {
+        let packed = Packed::new(S, self.data.clone());
+        BoundingBox::from_channel_ranges(|c| packed.control_range(c))
+    }
+}
+
+fn check_grid(rows: usize, cols: usize, points: usize) -> Result<(), CurveError> {
+    if rows == 0 || cols == 0 || rows * cols != points {
+        return Err(CurveError::GridSize { points, rows, cols });
+    }
+    Ok(())
+}
+
+fn bezier_knots(degree: usize) -> KnotVector {
+    KnotVector::from_parts_unchecked(
+        degree,
+        core::iter::repeat_n(0.0, degree + 1)
+            .chain(core::iter::repeat_n(1.0, degree + 1))
+            .collect(),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::degrees::Degrees;
+
+    fn grid(rows: usize, cols: usize) -> Vec<ControlPoint<3>> {
+        let mut pts = Vec::new();
+        for i in 0..rows {
+            for j in 0..cols {
+                let (x, y) = (i as f64, j as f64);
+                let z = (x * 0.7 + y * y * 0.3).sin();
+                let t = (i + j) as f64 / (rows + cols) as f64;
+                pts.push(ControlPoint::new(
+                    [x, y, z],
+                    Degrees::new(t, 1.0 - t, t * 0.5).unwrap(),
+                ));
+            }
+        }
+        pts
+    }
+
+    /// Direct tensor-product Bernstein sum.
+    fn bernstein_surface(
+        pts: &[ControlPoint<3>],
+        rows: usize,
+        cols: usize,
+        u: f64,
+        v: f64,
+    ) -> [f64; 4] {
+        let b = |n: usize, i: usize, t: f64| {
+            let c = (0..i).fold(1.0, |acc, k| acc * (n - k) as f64 / (k + 1) as f64);
+            c * t.powi(i as i32) * (1.0 - t).powi((n - i) as i32)
+        };
+        let mut out = [0.0; 4];
+        for i in 0..rows {
+            for j in 0..cols {
+                let w = b(rows - 1, i, u) * b(cols - 1, j, v);
+                let p = pts[i * cols + j];
+                for a in 0..3 {
+                    out[a] += w * p.position[a];
+                }
+                out[3] += w * p.degrees.truth();
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn surface_bezier_matches_tensor_bernstein() {
+        let pts = grid(4, 3);
+        let s = Surface::bezier(4, 3, pts.clone()).unwrap();
+        for &(u, v) in &[(0.0, 0.0), (0.3, 0.8), (1.0, 0.5), (0.77, 0.21)] {
+            let p = s.evaluate(u, v).unwrap();
+            let want = bernstein_surface(&pts, 4, 3, u, v);
+            for a in 0..3 {
+                assert!((p.position[a] - want[a]).abs() < 1e-14);
+            }
+            assert!((p.degrees.truth() - want[3]).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn surface_partials_match_finite_differences_and_iso_curves() {
+        let pts = grid(5, 4);
+        let ku = KnotVector::clamped_uniform(2, 5).unwrap();
+        let kv = KnotVector::clamped_uniform(3, 4).unwrap();
+        let weights: Vec<f64> = (0..20).map(|k| 0.5 + (k % 7) as f64 * 0.25).collect();
+        let bs = Surface::bspline(5, 4, pts.clone(), ku.clone(), kv.clone()).unwrap();
+        let nu = Surface::nurbs(5, 4, pts, weights, ku, kv).unwrap();
+        for s in [&bs, &nu] {
+            let (u, v, h) = (0.37, 0.61, 1e-6);
+            let d = s.partial_derivatives(u, v).unwrap();
+            let fu = |du: f64| s.evaluate(u + du, v).unwrap();
+            let fv = |dv: f64| s.evaluate(u, v + dv).unwrap();
+            for a in 0..3 {
+                let nu_ = (fu(h).position[a] - fu(-h).position[a]) / (2.0 * h);
+                let nv = (fv(h).position[a] - fv(-h).position[a]) / (2.0 * h);
+                assert!(
+                    (nu_ - d.du.position[a]).abs() < 1e-6,
+                    "{nu_} {}",
+                    d.du.position[a]
+                );
+                assert!(
+                    (nv - d.dv.position[a]).abs() < 1e-6,
+                    "{nv} {}",
+                    d.dv.position[a]
+                );
+            }
+            let dt = (fu(h).degrees.truth() - fu(-h).degrees.truth()) / (2.0 * h);
+            assert!((dt - d.du.truth).abs() < 1e-6);
+            let n = s.normal(u, v).unwrap().unwrap();
+            let dot = n[0] * d.du.position[0] + n[1] * d.du.position[1] + n[2] * d.du.position[2];
+            assert!(dot.abs() < 1e-12);
+            // Iso curves are curves of the library passing through the surface.
+            let iso_u = s.iso_curve(Direction::U, u).unwrap();
+            let iso_v = s.iso_curve(Direction::V, v).unwrap();
+            let p = s.evaluate(u, v).unwrap();
+            for q in [iso_u.evaluate(v).unwrap(), iso_v.evaluate(u).unwrap()] {
+                for a in 0..3 {
+                    assert!((p.position[a] - q.position[a]).abs() < 1e-13);
+                }
+                assert!((p.degrees.falsity() - q.degrees.falsity()).abs() < 1e-14);
+            }
+        }
+    }
+
+    #[test]
+    fn surface_errors() {
+        assert_eq!(
+            Surface::bezier(2, 3, grid(2, 2)).unwrap_err().to_string(),
+            "4 control points do not fill a grid of 2 rows x 3 columns (6 points)"
+        );
+        let e = Surface::bspline(
+            3,
+            3,
+            grid(3, 3),
+            KnotVector::clamped_uniform(2, 3).unwrap(),
+            KnotVector::clamped_uniform(1, 4).unwrap(),
+        )
+        .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "knots_v: knot vector has 6 knots, expected 5 (number of control points + degree + 1)"
+        );
+    }
+}
