@@ -1,0 +1,298 @@
+//! CSV tables: a header row, then one control point per row.
+//!
+//! Columns (case-insensitive): `x`, `y`, optional `z`, `truth`, `indeterminacy`, `falsity`
+//! (aliases `T`, `I`, `F`) and an optional `name`. Lines starting with `#` are comments, empty
+//! lines are skipped, cells are trimmed, CRLF line ends and a UTF-8 byte order mark are
+//! accepted. Line numbers in errors are physical lines of the file (1-based, comments counted).
+
+use neutrospline::{DegreeError, Degrees, Membership};
+
+use super::{
+    duplicate_rule, line_of, missing_degree, parse_number, strip_bom, Field, Format, InputError,
+    Kind, Model, Origin, PointRecord,
+};
+
+/// Parses a CSV table; `membership` is the rule the degrees must obey.
+pub(super) fn parse(file: &str, bytes: &[u8], membership: Membership) -> Result<Model, InputError> {
+    let error = |line: Option<usize>, field: Option<String>, message: String| InputError {
+        file: file.to_owned(),
+        line,
+        field,
+        message,
+    };
+
+    let bytes = strip_bom(bytes);
+    let text = std::str::from_utf8(bytes).map_err(|e| {
+        error(
+            Some(line_of(bytes, e.valid_up_to())),
+            None,
+            "invalid UTF-8 (the file must be UTF-8 encoded)".to_owned(),
+        )
+    })?;
+
+    let mut reader = ::csv::ReaderBuilder::new()
+        .has_headers(false)
+        .comment(Some(b'#'))
+        .trim(::csv::Trim::All)
+        .flexible(true)
+        .from_reader(text.as_bytes());
+    let mut records = reader.records();
+    let record_line =
+        |record: &::csv::StringRecord| record.position().map(|p| physical_line(text, p.byte()));
+    let csv_error = |e: ::csv::Error| {
+        let line = e.position().map(|p| physical_line(text, p.byte()));
+        error(line, None, format!("malformed CSV: {e}"))
+    };
+
+    let header = match records.next() {
+        None => {
+            return Err(error(
+                None,
+                None,
+                "empty file (expected a header row such as `x,y,truth,indeterminacy,falsity`)"
+                    .to_owned(),
+            ))
+        }
+        Some(record) => record.map_err(csv_error)?,
+    };
+    let header_line = record_line(&header);
+    let columns = read_header(&header).map_err(|m| error(header_line, None, m))?;
+    let has = |f: Field| columns.contains(&f);
+    for f in [Field::X, Field::Y] {
+        if !has(f) {
+            return Err(error(
+                header_line,
+                None,
+                format!("missing column `{}` (every file needs x and y)", f.name()),
+            ));
+        }
+    }
+    if !has(Field::Truth) {
+        return Err(error(
+            header_line,
+            None,
+            "missing column `truth` (every membership rule requires it)".to_owned(),
+        ));
+    }
+    if let Some(DegreeError::Missing { kind, membership }) =
+        missing_degree(membership, has(Field::Indeterminacy), has(Field::Falsity))
+    {
+        return Err(error(
+            header_line,
+            None,
+            format!("missing column `{kind}` ({membership} rule requires it)"),
+        ));
+    }
+    let dimension = if has(Field::Z) { 3 } else { 2 };
+
+    let mut points = Vec::new();
+    for record in records {
+        let record = record.map_err(csv_error)?;
+        let line = record_line(&record);
+        if record.len() != columns.len() {
+            return Err(error(
+                line,
+                None,
+                format!(
+                    "the row has {} cells but the header has {} (every row needs one cell per column)",
+                    record.len(),
+                    columns.len()
+                ),
+            ));
+        }
+        let mut values = [None::<f64>; 7];
+        let mut name = None;
+        for ((&field, cell), heading) in columns.iter().zip(record.iter()).zip(header.iter()) {
+            if field == Field::Name {
+                name = (!cell.is_empty()).then(|| cell.to_owned());
+                continue;
+            }
+            let value = parse_number(cell)
+                .map_err(|m| error(line, Some(format!("column `{heading}`")), m))?;
+            values[field.index()] = Some(value);
+        }
+        let get = |f: Field| values[f.index()];
+        let degrees = Degrees::with_membership(
+            membership,
+            get(Field::Truth).unwrap_or_default(),
+            get(Field::Indeterminacy),
+            get(Field::Falsity),
+        )
+        .map_err(|e| error(line, None, e.to_string()))?;
+        let position = [Field::X, Field::Y, Field::Z][..dimension]
+            .iter()
+            .map(|&f| get(f).unwrap_or_default())
+            .collect();
+        points.push(PointRecord {
+            name,
+            position,
+            degrees,
+            origin: Origin { line, field: None },
+        });
+    }
+    if points.is_empty() {
+        return Err(error(
+            None,
+            None,
+            "no control points (the header row is not followed by any data row)".to_owned(),
+        ));
+    }
+    Ok(Model {
+        file: file.to_owned(),
+        format: Format::Csv,
+        kind: Kind::Bezier,
+        name: None,
+        description: None,
+        membership,
+        dimension,
+        points,
+    })
+}
+
+/// The physical line of the record that the `csv` reader reports at byte `offset`.
+///
+/// The reader reports the position where the previous record ended, before the empty and
+/// comment lines it skipped; skip them here too to find the line the record starts on.
+fn physical_line(text: &str, offset: u64) -> usize {
+    let bytes = text.as_bytes();
+    let mut pos = usize::try_from(offset)
+        .unwrap_or(usize::MAX)
+        .min(bytes.len());
+    while let Some(&b) = bytes.get(pos) {
+        match b {
+            b'\n' | b'\r' => pos += 1,
+            b'#' => {
+                pos = bytes[pos..]
+                    .iter()
+                    .position(|&c| c == b'\n')
+                    .map_or(bytes.len(), |n| pos + n + 1);
+            }
+            _ => break,
+        }
+    }
+    line_of(bytes, pos)
+}
+
+/// The field of each header cell; the message explains an unknown or repeated column.
+fn read_header(header: &::csv::StringRecord) -> Result<Vec<Field>, String> {
+    let mut columns: Vec<Field> = Vec::with_capacity(header.len());
+    for (i, heading) in header.iter().enumerate() {
+        let field = Field::from_name(heading, true).ok_or_else(|| {
+            format!(
+                "unknown column `{heading}` (known columns: {})",
+                Field::known_list()
+            )
+        })?;
+        if let Some(j) = columns.iter().position(|&f| f == field) {
+            return Err(format!(
+                "column {} `{heading}` repeats column {} `{}` ({})",
+                i + 1,
+                j + 1,
+                header.get(j).unwrap_or_default(),
+                duplicate_rule()
+            ));
+        }
+        columns.push(field);
+    }
+    Ok(columns)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse_ok(text: &str) -> Model {
+        parse("t.csv", text.as_bytes(), Membership::Neutrosophic).unwrap()
+    }
+
+    fn parse_err(text: &[u8], membership: Membership) -> String {
+        parse("t.csv", text, membership).unwrap_err().to_string()
+    }
+
+    const EXAMPLE1: &str = "name,x,y,truth,indeterminacy,falsity\n\
+        C0,1,3,0.3,0.6,0.1\nC1,3,6,0.8,0.1,0.1\nC2,6,2,0.7,0.1,0.2\nC3,9,5,0.2,0.4,0.4\n";
+
+    #[test]
+    fn csv_parse_example1() {
+        let m = parse_ok(EXAMPLE1);
+        assert_eq!(m.dimension, 2);
+        assert_eq!(m.points.len(), 4);
+        assert_eq!(m.points[3].name.as_deref(), Some("C3"));
+        assert_eq!(m.points[3].position, vec![9.0, 5.0]);
+        assert_eq!(m.points[3].degrees.to_array(), [0.2, 0.4, 0.4]);
+        assert_eq!(m.points[2].origin.line, Some(4));
+    }
+
+    #[test]
+    fn csv_parse_bom_crlf_comments_aliases_whitespace() {
+        let text =
+            "\u{FEFF}# a comment\r\n X , Y ,z, t , I,F\r\n\r\n# another\r\n 1 , 2,3,0.5,0.25,0\r\n";
+        let m = parse_ok(text);
+        assert_eq!(m.dimension, 3);
+        assert_eq!(m.points[0].position, vec![1.0, 2.0, 3.0]);
+        assert_eq!(m.points[0].degrees.to_array(), [0.5, 0.25, 0.0]);
+        assert_eq!(m.points[0].origin.line, Some(5));
+    }
+
+    #[test]
+    fn csv_parse_line_numbers_count_comments() {
+        let text = "x,y,truth,indeterminacy,falsity\n# c\n1,2,0,0,0\n# c\n\n1,2,1.5,0,0\n";
+        assert_eq!(
+            parse_err(text.as_bytes(), Membership::Neutrosophic),
+            "t.csv:6: truth = 1.5 is outside [0, 1] (every degree must be in [0, 1])"
+        );
+    }
+
+    #[test]
+    fn csv_parse_errors() {
+        use Membership::*;
+        let cases: &[(&[u8], Membership, &str)] = &[
+            (b"", Neutrosophic, "t.csv: empty file (expected a header row such as `x,y,truth,indeterminacy,falsity`)"),
+            (b"# only a comment\n", Neutrosophic, "t.csv: empty file (expected a header row such as `x,y,truth,indeterminacy,falsity`)"),
+            (b"x,y,truth,indeterminacy,falsity\n", Neutrosophic, "t.csv: no control points (the header row is not followed by any data row)"),
+            (b"x,truth,indeterminacy,falsity\n1,0,0,0\n", Neutrosophic, "t.csv:1: missing column `y` (every file needs x and y)"),
+            (b"x,y,indeterminacy,falsity\n1,0,0,0\n", Neutrosophic, "t.csv:1: missing column `truth` (every membership rule requires it)"),
+            (b"x,y,truth,falsity\n1,0,0,0\n", Neutrosophic, "t.csv:1: missing column `indeterminacy` (neutrosophic rule requires it)"),
+            (b"x,y,truth\n1,0,0\n", Intuitionistic, "t.csv:1: missing column `falsity` (intuitionistic rule requires it)"),
+            (b"x,y,truth,T,indeterminacy,falsity\n", Neutrosophic, "t.csv:1: column 4 `T` repeats column 3 `truth` (each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity)"),
+            (b"x,y,x\n", Neutrosophic, "t.csv:1: column 3 `x` repeats column 1 `x` (each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity)"),
+            (b"x,y,w\n", Neutrosophic, "t.csv:1: unknown column `w` (known columns: x, y, z, truth (T), indeterminacy (I), falsity (F), name)"),
+            (b"x,y,truth,indeterminacy,falsity\n1,2,abc,0,0\n", Neutrosophic, "t.csv:2: column `truth`: value `abc` is not a number"),
+            (b"x,y,truth,indeterminacy,falsity\n1,NaN,0,0,0\n", Neutrosophic, "t.csv:2: column `y`: value `NaN` is not a finite number (NaN and infinities are not allowed)"),
+            (b"x,y,truth,indeterminacy,falsity\n1,2,0,0,inf\n", Neutrosophic, "t.csv:2: column `falsity`: value `inf` is not a finite number (NaN and infinities are not allowed)"),
+            (b"x,y,truth,indeterminacy,falsity\n1,2,0,0\n", Neutrosophic, "t.csv:2: the row has 4 cells but the header has 5 (every row needs one cell per column)"),
+            (b"x,y,truth,indeterminacy,falsity\n1,2,0,0,0,9\n", Neutrosophic, "t.csv:2: the row has 6 cells but the header has 5 (every row needs one cell per column)"),
+            (b"x,y,truth,indeterminacy,falsity\n1,2,0,0,0\n1,\xff,0,0,0\n", Neutrosophic, "t.csv:3: invalid UTF-8 (the file must be UTF-8 encoded)"),
+            (b"x,y,truth,falsity\n1,2,0.7,0.6\n", Intuitionistic, "t.csv:2: truth + falsity = 0.7 + 0.6 = 1.2999999999999998 exceeds 1 (intuitionistic rule: truth + falsity <= 1)"),
+            (b"x,y,truth,falsity\n1,2,0.7,0.1\n", Fuzzy, "t.csv:2: falsity = 0.1 is not allowed (fuzzy rule: only truth is given; falsity must be absent or 0)"),
+        ];
+        for (text, membership, expected) in cases {
+            assert_eq!(
+                &parse_err(text, *membership),
+                expected,
+                "input {:?}",
+                String::from_utf8_lossy(text)
+            );
+        }
+    }
+
+    #[test]
+    fn csv_parse_membership_rules() {
+        let m = parse(
+            "t.csv",
+            b"x,y,truth,falsity\n0,0,0.5,0.25\n",
+            Membership::Intuitionistic,
+        )
+        .unwrap();
+        assert_eq!(m.points[0].degrees.to_array(), [0.5, 0.25, 0.25]);
+        let m = parse("t.csv", b"x,y,truth\n0,0,0.5\n", Membership::Fuzzy).unwrap();
+        assert_eq!(m.points[0].degrees.to_array(), [0.5, 0.0, 0.0]);
+    }
+
+    #[test]
+    fn csv_parse_quoted_name_and_empty_name() {
+        let m = parse_ok("name,x,y,T,I,F\n\"a, b\",1,2,0,0,0\n,1,2,0,0,0\n");
+        assert_eq!(m.points[0].name.as_deref(), Some("a, b"));
+        assert_eq!(m.points[1].name, None);
+    }
+}

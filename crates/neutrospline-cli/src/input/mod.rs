@@ -1,0 +1,508 @@
+//! Reading curve files: CSV tables of control points and TOML / JSON models.
+//!
+//! Every format is parsed into the neutral [`Model`] (name, description, membership rule,
+//! dimension and control points with optional names); [`Model::into_curve`] then builds the
+//! core library's curve. The degrees of each control point are validated by the core
+//! ([`Degrees::with_membership`]) while parsing, so that an error can name its line or field.
+//! Every failure is an [`InputError`], whose message names the file, the line and / or field,
+//! the value and the rule.
+
+mod csv;
+mod model;
+
+use std::fmt;
+use std::path::Path;
+
+use neutrospline::{Bezier, ControlPoint, CurveError, DegreeError, Degrees, Membership};
+
+use crate::curve::AnyCurve;
+
+/// The name used for standard input in messages.
+pub const STDIN_NAME: &str = "<stdin>";
+
+/// The file extensions the command accepts, with `-` meaning CSV on standard input.
+pub const ACCEPTED_EXTENSIONS: &str = ".csv, .toml, .json; `-` reads CSV from standard input";
+
+/// An invalid input file: where and what.
+///
+/// Displays as `FILE[:LINE][: FIELD]: MESSAGE`, the `error: ` prefix being added by `main`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct InputError {
+    /// The file as given on the command line (or [`STDIN_NAME`]).
+    pub file: String,
+    /// The physical, 1-based line in the file, when known.
+    pub line: Option<usize>,
+    /// The field: a CSV column (`` column `truth` ``) or a model path (`control_points[2].x`).
+    pub field: Option<String>,
+    /// What is wrong, naming the value and the rule.
+    pub message: String,
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.file)?;
+        if let Some(line) = self.line {
+            write!(f, ":{line}")?;
+        }
+        if let Some(field) = &self.field {
+            write!(f, ": {field}")?;
+        }
+        write!(f, ": {}", self.message)
+    }
+}
+
+impl std::error::Error for InputError {}
+
+/// An error in the command line that only shows once the arguments are interpreted
+/// (for example an unsupported file extension). `main` exits with status 2 for it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct UsageError(pub String);
+
+impl fmt::Display for UsageError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for UsageError {}
+
+/// The kinds of curve a model file may declare with `kind = "..."`.
+///
+/// Only Bézier curves exist so far; B-spline and NURBS kinds are planned.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// A Bézier curve: the control points are the curve's Bernstein coefficients.
+    Bezier,
+}
+
+impl Kind {
+    /// Every kind, in the order they are listed in messages.
+    pub const ALL: [Kind; 1] = [Kind::Bezier];
+
+    /// The name used in files.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Kind::Bezier => "bezier",
+        }
+    }
+
+    /// Parses an exact kind name.
+    pub fn from_name(name: &str) -> Option<Kind> {
+        Kind::ALL.into_iter().find(|k| k.name() == name)
+    }
+
+    /// `bezier, ...`: the known kinds, for messages.
+    pub fn known_list() -> String {
+        join(Kind::ALL.iter().map(|k| k.name()))
+    }
+}
+
+impl fmt::Display for Kind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// The file formats, chosen by extension.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// A CSV table (`.csv`, or standard input).
+    Csv,
+    /// A TOML model (`.toml`).
+    Toml,
+    /// A JSON model (`.json`).
+    Json,
+}
+
+impl Format {
+    /// The format of `path` by its extension (case-insensitive); `-` is CSV on standard input.
+    ///
+    /// # Errors
+    /// A [`UsageError`] naming the accepted extensions.
+    pub fn from_path(path: &str) -> Result<Format, UsageError> {
+        if path == "-" {
+            return Ok(Format::Csv);
+        }
+        let ext = Path::new(path)
+            .extension()
+            .map(|e| e.to_string_lossy().to_ascii_lowercase());
+        match ext.as_deref() {
+            Some("csv") => Ok(Format::Csv),
+            Some("toml") => Ok(Format::Toml),
+            Some("json") => Ok(Format::Json),
+            Some(other) => Err(UsageError(format!(
+                "{path}: unsupported file extension `.{other}` (accepted: {ACCEPTED_EXTENSIONS})"
+            ))),
+            None => Err(UsageError(format!(
+                "{path}: the file name has no extension (accepted: {ACCEPTED_EXTENSIONS})"
+            ))),
+        }
+    }
+}
+
+/// The fields of a control point: CSV columns and model keys.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Field {
+    X,
+    Y,
+    Z,
+    Truth,
+    Indeterminacy,
+    Falsity,
+    Name,
+}
+
+impl Field {
+    /// Every field, in the order they are listed in messages.
+    pub(crate) const ALL: [Field; 7] = [
+        Field::X,
+        Field::Y,
+        Field::Z,
+        Field::Truth,
+        Field::Indeterminacy,
+        Field::Falsity,
+        Field::Name,
+    ];
+
+    /// The canonical name.
+    pub(crate) const fn name(self) -> &'static str {
+        match self {
+            Field::X => "x",
+            Field::Y => "y",
+            Field::Z => "z",
+            Field::Truth => "truth",
+            Field::Indeterminacy => "indeterminacy",
+            Field::Falsity => "falsity",
+            Field::Name => "name",
+        }
+    }
+
+    /// The one-letter alias of a degree.
+    pub(crate) const fn alias(self) -> Option<&'static str> {
+        match self {
+            Field::Truth => Some("T"),
+            Field::Indeterminacy => Some("I"),
+            Field::Falsity => Some("F"),
+            _ => None,
+        }
+    }
+
+    /// Index in [`Field::ALL`].
+    pub(crate) fn index(self) -> usize {
+        Field::ALL.iter().position(|&f| f == self).unwrap_or(0)
+    }
+
+    /// The field called `text` (its name or alias), exactly or ignoring ASCII case.
+    pub(crate) fn from_name(text: &str, ignore_case: bool) -> Option<Field> {
+        let same = |a: &str| {
+            if ignore_case {
+                a.eq_ignore_ascii_case(text)
+            } else {
+                a == text
+            }
+        };
+        Field::ALL
+            .into_iter()
+            .find(|f| same(f.name()) || f.alias().is_some_and(same))
+    }
+
+    /// `x, y, z, truth (T), indeterminacy (I), falsity (F), name`.
+    pub(crate) fn known_list() -> String {
+        Field::ALL
+            .iter()
+            .map(|f| match f.alias() {
+                Some(a) => format!("{} ({a})", f.name()),
+                None => f.name().to_owned(),
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}
+
+/// Explains why two names of the same field clash.
+pub(crate) fn duplicate_rule() -> &'static str {
+    "each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity"
+}
+
+/// One control point as read from a file, its degrees already validated by its rule.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointRecord {
+    /// The optional name (`C0`, ...).
+    pub name: Option<String>,
+    /// `x`, `y` and, for 3-D input, `z`.
+    pub position: Vec<f64>,
+    /// The validated degrees.
+    pub degrees: Degrees,
+    /// Where the point was read, for errors found later.
+    pub origin: Origin,
+}
+
+/// Where something was read: the line and the field path of a point.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct Origin {
+    /// Physical 1-based line, when known.
+    pub line: Option<usize>,
+    /// Field path such as `control_points[2]`, for models.
+    pub field: Option<String>,
+}
+
+/// A curve file in the neutral form shared by every format.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Model {
+    /// The file as named in messages.
+    pub file: String,
+    /// The format it was read in.
+    pub format: Format,
+    /// The kind of curve.
+    pub kind: Kind,
+    /// Optional name of the curve.
+    pub name: Option<String>,
+    /// Optional free-text description.
+    pub description: Option<String>,
+    /// The rule the degrees were validated with.
+    pub membership: Membership,
+    /// 2 or 3.
+    pub dimension: usize,
+    /// The control points, in order (at least one).
+    pub points: Vec<PointRecord>,
+}
+
+impl Model {
+    /// Builds the core curve.
+    ///
+    /// # Errors
+    /// The core's [`CurveError`], located at the offending control point.
+    pub fn into_curve(self) -> Result<AnyCurve, InputError> {
+        match (self.kind, self.dimension) {
+            (Kind::Bezier, 3) => Ok(AnyCurve::Spatial(self.bezier::<3>()?)),
+            (Kind::Bezier, _) => Ok(AnyCurve::Planar(self.bezier::<2>()?)),
+        }
+    }
+
+    fn bezier<const D: usize>(&self) -> Result<Bezier<D>, InputError> {
+        let points = self
+            .points
+            .iter()
+            .map(|p| {
+                let mut position = [0.0; D];
+                for (slot, &value) in position.iter_mut().zip(&p.position) {
+                    *slot = value;
+                }
+                ControlPoint::new(position, p.degrees)
+            })
+            .collect();
+        Bezier::new(points).map_err(|e| self.curve_error(&e))
+    }
+
+    fn curve_error(&self, e: &CurveError) -> InputError {
+        let origin = match e {
+            CurveError::PositionNotFinite { index, .. } => self
+                .points
+                .get(*index)
+                .map(|p| p.origin.clone())
+                .unwrap_or_default(),
+            _ => Origin::default(),
+        };
+        InputError {
+            file: self.file.clone(),
+            line: origin.line,
+            field: origin.field,
+            message: e.to_string(),
+        }
+    }
+}
+
+/// Which membership rule applies: the file's own declaration, else the command line's, else
+/// neutrosophic. A declaration that contradicts the command line is an error (`Err` carries the
+/// message).
+pub fn resolve_membership(
+    declared: Option<Membership>,
+    cli: Option<Membership>,
+) -> Result<Membership, String> {
+    match (declared, cli) {
+        (Some(d), Some(c)) if d != c => Err(format!(
+            "the file declares membership `{d}` but --membership is `{c}` \
+             (omit --membership or make them agree)"
+        )),
+        (Some(d), _) => Ok(d),
+        (None, Some(c)) => Ok(c),
+        (None, None) => Ok(Membership::default()),
+    }
+}
+
+/// The degree that `membership` requires but that is absent when only the degrees flagged
+/// present are given, as decided by the core's own rule (probed with zeros).
+pub(crate) fn missing_degree(
+    membership: Membership,
+    has_indeterminacy: bool,
+    has_falsity: bool,
+) -> Option<DegreeError> {
+    match Degrees::with_membership(
+        membership,
+        0.0,
+        has_indeterminacy.then_some(0.0),
+        has_falsity.then_some(0.0),
+    ) {
+        Err(e @ DegreeError::Missing { .. }) => Some(e),
+        _ => None,
+    }
+}
+
+/// Parses a number written in a file; NaN and infinities are rejected (message only).
+pub(crate) fn parse_number(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        Ok(_) => Err(format!(
+            "value `{text}` is not a finite number (NaN and infinities are not allowed)"
+        )),
+        Err(_) => Err(format!("value `{text}` is not a number")),
+    }
+}
+
+/// Message for a non-finite number that arrived already parsed (TOML `nan`, `inf`).
+pub(crate) fn not_finite_message(value: f64) -> String {
+    format!("value {value} is not a finite number (NaN and infinities are not allowed)")
+}
+
+/// The 1-based line of byte `offset` in `text`.
+pub(crate) fn line_of(text: &[u8], offset: usize) -> usize {
+    let end = offset.min(text.len());
+    text[..end].iter().filter(|&&b| b == b'\n').count() + 1
+}
+
+/// Removes a leading UTF-8 byte order mark.
+pub(crate) fn strip_bom(bytes: &[u8]) -> &[u8] {
+    bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes)
+}
+
+/// `a, b, c`.
+pub(crate) fn join<'a>(items: impl IntoIterator<Item = &'a str>) -> String {
+    items.into_iter().collect::<Vec<_>>().join(", ")
+}
+
+/// Parses the contents of `file` (already read) in `format`.
+///
+/// `membership` is the command line's `--membership`, if any: for CSV it chooses the rule;
+/// for models it applies when the file declares none, and must agree with the file otherwise.
+///
+/// # Errors
+/// An [`InputError`] naming the file, line or field, value and rule.
+pub fn parse(
+    file: &str,
+    format: Format,
+    bytes: &[u8],
+    membership: Option<Membership>,
+) -> Result<Model, InputError> {
+    match format {
+        Format::Csv => csv::parse(file, bytes, membership.unwrap_or_default()),
+        Format::Toml => model::parse_toml(file, bytes, membership),
+        Format::Json => model::parse_json(file, bytes, membership),
+    }
+}
+
+/// Reads and parses `path` (`-` for CSV on standard input).
+///
+/// # Errors
+/// [`UsageError`] for an unsupported extension, an I/O error with context, or [`InputError`].
+pub fn load(path: &str, membership: Option<Membership>) -> anyhow::Result<Model> {
+    use std::io::Read;
+
+    let format = Format::from_path(path)?;
+    let (file, bytes) = if path == "-" {
+        let mut bytes = Vec::new();
+        std::io::stdin()
+            .lock()
+            .read_to_end(&mut bytes)
+            .map_err(|e| anyhow::anyhow!("{STDIN_NAME}: cannot read standard input: {e}"))?;
+        (STDIN_NAME.to_owned(), bytes)
+    } else {
+        let bytes = std::fs::read(path).map_err(|e| anyhow::anyhow!("{path}: cannot read: {e}"))?;
+        (path.to_owned(), bytes)
+    };
+    Ok(parse(&file, format, &bytes, membership)?)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn format_from_path_by_extension() {
+        assert_eq!(Format::from_path("a.csv"), Ok(Format::Csv));
+        assert_eq!(Format::from_path("dir/a.TOML"), Ok(Format::Toml));
+        assert_eq!(Format::from_path("a.json"), Ok(Format::Json));
+        assert_eq!(Format::from_path("-"), Ok(Format::Csv));
+        assert_eq!(
+            Format::from_path("a.txt").unwrap_err().to_string(),
+            "a.txt: unsupported file extension `.txt` (accepted: .csv, .toml, .json; `-` reads CSV from standard input)"
+        );
+        assert!(Format::from_path("noext").is_err());
+    }
+
+    #[test]
+    fn input_error_display() {
+        let e = InputError {
+            file: "a.toml".into(),
+            line: Some(7),
+            field: Some("control_points[2].x".into()),
+            message: "expected a number, found a string".into(),
+        };
+        assert_eq!(
+            e.to_string(),
+            "a.toml:7: control_points[2].x: expected a number, found a string"
+        );
+        let e = InputError {
+            file: "a.json".into(),
+            line: None,
+            field: None,
+            message: "m".into(),
+        };
+        assert_eq!(e.to_string(), "a.json: m");
+    }
+
+    #[test]
+    fn resolve_membership_rules() {
+        use Membership::*;
+        assert_eq!(resolve_membership(None, None), Ok(Neutrosophic));
+        assert_eq!(resolve_membership(None, Some(Fuzzy)), Ok(Fuzzy));
+        assert_eq!(resolve_membership(Some(Fuzzy), Some(Fuzzy)), Ok(Fuzzy));
+        assert_eq!(resolve_membership(Some(Fuzzy), None), Ok(Fuzzy));
+        assert!(resolve_membership(Some(Fuzzy), Some(Intuitionistic)).is_err());
+    }
+
+    #[test]
+    fn missing_degree_follows_core_rule() {
+        use Membership::*;
+        assert!(missing_degree(Neutrosophic, true, true).is_none());
+        assert!(missing_degree(Neutrosophic, false, true).is_some());
+        assert!(missing_degree(Neutrosophic, true, false).is_some());
+        assert!(missing_degree(Intuitionistic, false, true).is_none());
+        assert!(missing_degree(Intuitionistic, true, false).is_some());
+        assert!(missing_degree(Fuzzy, false, false).is_none());
+    }
+
+    #[test]
+    fn parse_number_rejects_non_finite() {
+        assert_eq!(parse_number("1.5"), Ok(1.5));
+        assert_eq!(parse_number("-2e3"), Ok(-2000.0));
+        assert_eq!(
+            parse_number("NaN").unwrap_err(),
+            "value `NaN` is not a finite number (NaN and infinities are not allowed)"
+        );
+        assert!(parse_number("inf").is_err());
+        assert_eq!(
+            parse_number("abc").unwrap_err(),
+            "value `abc` is not a number"
+        );
+        assert_eq!(parse_number("").unwrap_err(), "value `` is not a number");
+    }
+
+    #[test]
+    fn line_of_counts_newlines() {
+        let text = b"a\nb\r\nc";
+        assert_eq!(line_of(text, 0), 1);
+        assert_eq!(line_of(text, 2), 2);
+        assert_eq!(line_of(text, 5), 3);
+        assert_eq!(line_of(text, 99), 3);
+    }
+}

@@ -1,0 +1,73 @@
+//! The `neutrospline` command: evaluate, check and demonstrate neutrosophic Bezier curves.
+//!
+//! A thin layer over the `neutrospline` library: it parses arguments and files, calls the
+//! library, writes tables and maps errors to exit codes (0 success, 1 invalid input or failure,
+//! 2 usage error).
+
+mod commands;
+mod curve;
+mod input;
+mod output;
+
+use std::io::Write;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+use commands::{check::CheckArgs, eval::EvalArgs, example::ExampleArgs};
+
+/// Evaluate and check neutrosophic Bezier curves: control points carrying truth,
+/// indeterminacy and falsity degrees.
+#[derive(Debug, Parser)]
+#[command(
+    name = "neutrospline",
+    version,
+    after_help = "Files: .csv (a header row, one control point per row), .toml or .json (a model \
+with kind, optional name, description and membership, and control_points).\n\
+Exit status: 0 success, 1 invalid input (message on stderr starting with `error:`), 2 usage error."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Evaluate a curve at parameters: one row per parameter (t, position, degrees)
+    Eval(EvalArgs),
+    /// Validate a curve file and print its kind, degree, dimension and degree ranges
+    Check(CheckArgs),
+    /// Run the paper's Example 1 from built-in data and print its control points and curve
+    Example(ExampleArgs),
+}
+
+fn run(cli: &Cli) -> anyhow::Result<()> {
+    match &cli.command {
+        Command::Eval(args) => commands::eval::run(args),
+        Command::Check(args) => commands::check::run(args),
+        Command::Example(args) => commands::example::run(args),
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // Help and version exit 0, errors 2; a closed pipe while printing is ignored.
+            let _ = e.print();
+            return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
+        }
+    };
+    match run(&cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) if output::is_broken_pipe(&e) => ExitCode::SUCCESS,
+        Err(e) => {
+            let _ = writeln!(std::io::stderr(), "error: {e:#}");
+            if e.downcast_ref::<input::UsageError>().is_some() {
+                ExitCode::from(2)
+            } else {
+                ExitCode::FAILURE
+            }
+        }
+    }
+}
