@@ -1,0 +1,381 @@
+//! Callouts of the `controls` view: next to each control point, a box with its name and
+//! three bars (truth, indeterminacy, falsity) whose lengths are the degrees, with the values.
+//! Boxes are placed where they cover the least of the drawing.
+
+use neutrospline::DegreeKind;
+
+use crate::font::text_width;
+use crate::layout::{support, Rect, BASELINE_FROM_CENTRE};
+use crate::svg::{Anchor, Color, Style, SvgWriter, TextStyle};
+use crate::theme::{self, Theme};
+
+/// Above this many control points the callouts shrink to three bars and the name.
+pub(crate) const MAX_FULL_CALLOUTS: usize = 10;
+
+/// A degree value for display: up to three decimals, trailing zeros removed ("0.3", "0.625").
+pub(crate) fn format_degree(v: f64) -> String {
+    let s = format!("{:.3}", theme::unit(v));
+    let s = s.trim_end_matches('0');
+    if s.ends_with('.') {
+        format!("{s}0")
+    } else {
+        s.to_string()
+    }
+}
+
+struct Content {
+    name: Option<String>,
+    deg: [f64; 3],
+}
+
+struct Dims {
+    fs: f64,
+    pad: f64,
+    row: f64,
+    letter: f64,
+    bar: f64,
+    value: f64,
+    compact: bool,
+}
+
+impl Dims {
+    fn new(theme: &Theme, compact: bool, contents: &[Content]) -> Dims {
+        let fs = if compact {
+            theme.note()
+        } else {
+            theme.callout()
+        };
+        let value = contents
+            .iter()
+            .flat_map(|c| {
+                c.deg
+                    .iter()
+                    .map(|&v| text_width(&format_degree(v), fs, false))
+            })
+            .fold(0.0, f64::max);
+        Dims {
+            fs,
+            pad: 0.45 * fs,
+            row: 1.3 * fs,
+            letter: text_width("I", fs, true)
+                .max(text_width("T", fs, true))
+                .max(text_width("F", fs, true)),
+            bar: 3.6 * fs,
+            value,
+            compact,
+        }
+    }
+
+    fn size(&self, c: &Content) -> (f64, f64) {
+        if self.compact {
+            // Three vertical bars, name above.
+            let name_w = c
+                .name
+                .as_deref()
+                .map_or(0.0, |n| text_width(n, self.fs, true));
+            let bars_w = 3.0 * 0.45 * self.fs + 2.0 * 0.15 * self.fs;
+            let h = 1.6 * self.fs + if c.name.is_some() { self.row } else { 0.0 };
+            (name_w.max(bars_w) + 2.0 * self.pad, h + 2.0 * self.pad)
+        } else {
+            let name_w = c
+                .name
+                .as_deref()
+                .map_or(0.0, |n| text_width(n, self.fs * 1.1, true));
+            let rows_w = self.letter + 0.4 * self.fs + self.bar + 0.4 * self.fs + self.value;
+            let rows = 3.0 + if c.name.is_some() { 1.0 } else { 0.0 };
+            (
+                name_w.max(rows_w) + 2.0 * self.pad,
+                rows * self.row + 2.0 * self.pad,
+            )
+        }
+    }
+}
+
+/// What labels placed around points keep clear of: segments (with clearances), rectangles
+/// (such as the legend), and the outside of `bounds`.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Keep {
+    pub obstacles: Vec<Obstacle>,
+    pub bounds: Rect,
+    pub avoid: Vec<Rect>,
+}
+
+impl Keep {
+    /// Badness of covering `rect`: area outside the bounds, area over avoided rectangles, and
+    /// the number of obstacle segments it meets (weighted by `per_hit`).
+    fn cost(&self, rect: &Rect, per_hit: f64) -> f64 {
+        let hits = self
+            .obstacles
+            .iter()
+            .filter(|o| {
+                let c = o.clearance;
+                Rect::new(rect.x - c, rect.y - c, rect.w + 2.0 * c, rect.h + 2.0 * c)
+                    .hits_segment(o.a, o.b)
+            })
+            .count() as f64;
+        rect.outside(&self.bounds) * 100.0
+            + self.avoid.iter().map(|o| o.overlap(rect)).sum::<f64>() * 100.0
+            + hits * per_hit
+    }
+}
+
+/// Places and draws callouts for points at pixel positions `at` with degrees `deg` and
+/// names, keeping clear of what `keep` says.
+pub(crate) fn draw_callouts(
+    svg: &mut SvgWriter,
+    theme: &Theme,
+    at: &[(f64, f64)],
+    deg: &[[f64; 3]],
+    names: &[String],
+    keep: &Keep,
+) {
+    let compact = at.len() > MAX_FULL_CALLOUTS;
+    let contents: Vec<Content> = deg
+        .iter()
+        .enumerate()
+        .map(|(i, d)| Content {
+            name: names.get(i).cloned(),
+            deg: *d,
+        })
+        .collect();
+    let dims = Dims::new(theme, compact, &contents);
+    let r = theme.marker_r();
+    let marker_boxes: Vec<Rect> = at
+        .iter()
+        .map(|p| Rect::new(p.0 - r, p.1 - r, 2.0 * r, 2.0 * r))
+        .collect();
+    let mut placed: Vec<Rect> = Vec::new();
+    svg.begin_group("callouts");
+    for (i, (p, c)) in at.iter().zip(&contents).enumerate() {
+        let (w, h) = dims.size(c);
+        let base = r + 1.2 * theme.gap();
+        let mut best: Option<(f64, Rect, f64)> = None;
+        for dist in [1.0, 2.0, 3.5, 5.5] {
+            for k in 0..16 {
+                let a = (k as f64) * std::f64::consts::PI / 8.0 - std::f64::consts::FRAC_PI_2;
+                let dir = (a.cos(), a.sin());
+                let d = base * dist;
+                let s = support(dir, w, h);
+                let cx = p.0 + dir.0 * (d + s);
+                let cy = p.1 + dir.1 * (d + s);
+                let rect = Rect::new(cx - w / 2.0, cy - h / 2.0, w, h);
+                let mut score = keep.cost(&rect, 2.0e4);
+                score += placed.iter().map(|o| o.overlap(&rect)).sum::<f64>() * 50.0;
+                score += marker_boxes
+                    .iter()
+                    .enumerate()
+                    .filter(|(j, m)| *j != i && m.overlap(&rect) > 0.0)
+                    .count() as f64
+                    * 4.0e5;
+                score += d * 30.0 + (dir.1 + 1.0) * 20.0;
+                if best.as_ref().is_none_or(|b| score < b.0) {
+                    best = Some((score, rect, d));
+                }
+            }
+        }
+        let Some((_, rect, d)) = best else { continue };
+        if d > base * 1.01 {
+            // Leader from the marker's edge to the nearest point of the box.
+            let q = (
+                p.0.clamp(rect.x, rect.right()),
+                p.1.clamp(rect.y, rect.bottom()),
+            );
+            let (dx, dy) = (q.0 - p.0, q.1 - p.1);
+            let n = (dx * dx + dy * dy).sqrt().max(1e-9);
+            svg.line(
+                (p.0 + dx / n * r, p.1 + dy / n * r),
+                q,
+                &Style::stroke(theme::CONSTRUCTION, theme.s * 1.5),
+            );
+        }
+        draw_box(svg, theme, &dims, c, rect);
+        placed.push(rect);
+    }
+    svg.end_group();
+}
+
+fn draw_box(svg: &mut SvgWriter, theme: &Theme, dims: &Dims, c: &Content, rect: Rect) {
+    svg.rect(
+        rect.x,
+        rect.y,
+        rect.w,
+        rect.h,
+        &Style::stroke(theme::PANE_EDGE, theme.s * 1.5)
+            .with_fill(Color::WHITE)
+            .with_fill_opacity(0.92)
+            .square()
+            .with_class("callout"),
+    );
+    let fs = dims.fs;
+    let x = rect.x + dims.pad;
+    let mut y = rect.y + dims.pad;
+    if dims.compact {
+        if let Some(name) = &c.name {
+            svg.text(
+                rect.x + rect.w / 2.0,
+                y + dims.row / 2.0 + BASELINE_FROM_CENTRE * fs,
+                name,
+                &TextStyle::new(fs, theme::INK)
+                    .bold()
+                    .anchor(Anchor::Middle)
+                    .with_class("point-name"),
+            );
+            y += dims.row;
+        }
+        let bw = 0.45 * fs;
+        let total = 3.0 * bw + 2.0 * 0.15 * fs;
+        let full = 1.6 * fs;
+        let mut bx = rect.x + (rect.w - total) / 2.0;
+        for kind in DegreeKind::ALL {
+            let v = theme::unit(c.deg[kind.index()]);
+            svg.rect(bx, y, bw, full, &Style::fill(theme::TRACK).square());
+            svg.rect(
+                bx,
+                y + full * (1.0 - v),
+                bw,
+                full * v,
+                &Style::fill(theme::degree_color(kind)).square(),
+            );
+            bx += bw + 0.15 * fs;
+        }
+        return;
+    }
+    if let Some(name) = &c.name {
+        svg.text(
+            x,
+            y + dims.row / 2.0 + BASELINE_FROM_CENTRE * fs * 1.1,
+            name,
+            &TextStyle::new(fs * 1.1, theme::INK)
+                .bold()
+                .with_class("point-name"),
+        );
+        y += dims.row;
+    }
+    for kind in DegreeKind::ALL {
+        let v = c.deg[kind.index()];
+        let cy = y + dims.row / 2.0;
+        let color = theme::degree_color(kind);
+        svg.text(
+            x + dims.letter / 2.0,
+            cy + BASELINE_FROM_CENTRE * fs,
+            theme::degree_letter(kind),
+            &TextStyle::new(fs, color).bold().anchor(Anchor::Middle),
+        );
+        let bx = x + dims.letter + 0.4 * fs;
+        let bh = 0.62 * fs;
+        svg.rect(
+            bx,
+            cy - bh / 2.0,
+            dims.bar,
+            bh,
+            &Style::fill(theme::TRACK).square(),
+        );
+        svg.rect(
+            bx,
+            cy - bh / 2.0,
+            dims.bar * theme::unit(v),
+            bh,
+            &Style::fill(color)
+                .square()
+                .with_class(&format!("bar {}", kind.name())),
+        );
+        svg.text(
+            bx + dims.bar + 0.4 * fs + dims.value,
+            cy + BASELINE_FROM_CENTRE * fs,
+            &format_degree(v),
+            &TextStyle::new(fs, theme::INK).anchor(Anchor::End),
+        );
+        y += dims.row;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn format_degree_values() {
+        assert_eq!(format_degree(0.3), "0.3");
+        assert_eq!(format_degree(0.625), "0.625");
+        assert_eq!(format_degree(1.0), "1.0");
+        assert_eq!(format_degree(0.0), "0.0");
+        assert_eq!(format_degree(f64::NAN), "0.0");
+    }
+}
+
+/// A segment that labels should not cover, with a clearance in pixels on each side.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Obstacle {
+    pub a: (f64, f64),
+    pub b: (f64, f64),
+    pub clearance: f64,
+}
+
+/// Obstacles along a polyline.
+pub(crate) fn obstacles_of(pts: &[(f64, f64)], clearance: f64) -> Vec<Obstacle> {
+    pts.windows(2)
+        .map(|w| Obstacle {
+            a: w[0],
+            b: w[1],
+            clearance,
+        })
+        .collect()
+}
+
+/// Centres for the names of points at `at`: each among 8 spots around its point, chosen to
+/// keep clear of what `keep` says and of the other points and names.
+pub(crate) fn place_names(
+    theme: &Theme,
+    at: &[(f64, f64)],
+    names: &[String],
+    keep: &Keep,
+) -> Vec<(f64, f64)> {
+    let r = theme.marker_r();
+    let fs = theme.name();
+    let h = crate::layout::TEXT_BOX * fs;
+    let mut placed: Vec<Rect> = Vec::new();
+    let mut out = Vec::new();
+    for (i, (p, name)) in at.iter().zip(names).enumerate() {
+        let w = text_width(name, fs, true);
+        let mut best: Option<(f64, Rect)> = None;
+        // Up-right first (the usual place), then the other diagonals and sides.
+        let dirs: [(f64, f64); 8] = [
+            (1.0, -1.0),
+            (-1.0, -1.0),
+            (1.0, 1.0),
+            (-1.0, 1.0),
+            (0.0, -1.0),
+            (1.0, 0.0),
+            (0.0, 1.0),
+            (-1.0, 0.0),
+        ];
+        for (rank, (dx, dy)) in dirs.iter().enumerate() {
+            for step in [1.0, 2.2] {
+                let n: f64 = (dx * dx + dy * dy).sqrt();
+                let dir = (dx / n, dy / n);
+                let d = (r + 0.6 * theme.gap()) * step + support(dir, w, h);
+                let c = (p.0 + dir.0 * d, p.1 + dir.1 * d);
+                let rect = Rect::new(c.0 - w / 2.0, c.1 - h / 2.0, w, h);
+                let mut score = keep.cost(&rect, 1.0e3);
+                score += placed.iter().map(|o| o.overlap(&rect)).sum::<f64>() * 100.0;
+                score += at
+                    .iter()
+                    .enumerate()
+                    .filter(|(j, q)| {
+                        *j != i
+                            && Rect::new(q.0 - r, q.1 - r, 2.0 * r, 2.0 * r).overlap(&rect) > 0.0
+                    })
+                    .count() as f64
+                    * 1.0e5;
+                score += rank as f64 * 10.0 + (step - 1.0) * 400.0;
+                if best.as_ref().is_none_or(|b| score < b.0) {
+                    best = Some((score, rect));
+                }
+            }
+        }
+        let rect = best.map_or(Rect::new(p.0, p.1, w, h), |b| b.1);
+        out.push(rect.centre());
+        placed.push(rect);
+    }
+    out
+}

@@ -1,0 +1,257 @@
+//! Figure options.
+
+use crate::error::PlotError;
+
+/// Default image width in pixels.
+pub const DEFAULT_WIDTH: u32 = 1600;
+/// Default image height in pixels.
+pub const DEFAULT_HEIGHT: u32 = 1200;
+/// Default camera azimuth in degrees (measured in the x-y plane from the x axis).
+pub const DEFAULT_AZIMUTH: f64 = -55.0;
+/// Default camera elevation in degrees (above the x-y plane).
+pub const DEFAULT_ELEVATION: f64 = 25.0;
+/// Default number of curve samples.
+pub const DEFAULT_SAMPLES: usize = 200;
+
+/// Smallest image side accepted, in pixels.
+pub const MIN_SIDE: u32 = 64;
+/// Largest image side accepted, in pixels.
+pub const MAX_SIDE: u32 = 16384;
+/// Smallest number of curve samples accepted.
+pub const MIN_SAMPLES: usize = 2;
+/// Largest number of curve samples accepted.
+pub const MAX_SAMPLES: usize = 100_000;
+
+/// How to draw a figure: size, texts, camera and sampling.
+///
+/// Every length in a figure (fonts, lines, markers, margins) scales with
+/// `min(width / 1600, height / 1200)`, so a figure looks the same at any size.
+///
+/// ```
+/// use neutrospline_plot::PlotOptions;
+/// let options = PlotOptions::default()
+///     .with_size(800, 600)
+///     .with_title("Example 1")
+///     .with_camera(-60.0, 30.0);
+/// assert_eq!(options.width(), 800);
+/// assert_eq!(options.title(), Some("Example 1"));
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlotOptions {
+    width: u32,
+    height: u32,
+    title: Option<String>,
+    caption: Option<String>,
+    azimuth: f64,
+    elevation: f64,
+    samples: usize,
+}
+
+impl Default for PlotOptions {
+    fn default() -> PlotOptions {
+        PlotOptions {
+            width: DEFAULT_WIDTH,
+            height: DEFAULT_HEIGHT,
+            title: None,
+            caption: None,
+            azimuth: DEFAULT_AZIMUTH,
+            elevation: DEFAULT_ELEVATION,
+            samples: DEFAULT_SAMPLES,
+        }
+    }
+}
+
+impl PlotOptions {
+    /// The same as [`PlotOptions::default`].
+    pub fn new() -> PlotOptions {
+        PlotOptions::default()
+    }
+
+    /// Sets width and height in pixels (default 1600 x 1200).
+    pub fn with_size(mut self, width: u32, height: u32) -> PlotOptions {
+        self.width = width;
+        self.height = height;
+        self
+    }
+
+    /// Sets the width in pixels (default 1600).
+    pub fn with_width(mut self, width: u32) -> PlotOptions {
+        self.width = width;
+        self
+    }
+
+    /// Sets the height in pixels (default 1200).
+    pub fn with_height(mut self, height: u32) -> PlotOptions {
+        self.height = height;
+        self
+    }
+
+    /// Sets the title; an empty title draws none. Without one, each view has its own title
+    /// built from the model's label (for example "Neutrosophic Bézier curve: truth").
+    pub fn with_title(mut self, title: impl Into<String>) -> PlotOptions {
+        self.title = Some(title.into());
+        self
+    }
+
+    /// Sets a caption, drawn under the plot and wrapped to the figure width (for example the
+    /// source of the data, or an erratum).
+    pub fn with_caption(mut self, caption: impl Into<String>) -> PlotOptions {
+        self.caption = Some(caption.into());
+        self
+    }
+
+    /// Sets the 3-D camera azimuth in degrees (default -55).
+    pub fn with_azimuth(mut self, degrees: f64) -> PlotOptions {
+        self.azimuth = degrees;
+        self
+    }
+
+    /// Sets the 3-D camera elevation in degrees, in \[-90, 90\] (default 25).
+    pub fn with_elevation(mut self, degrees: f64) -> PlotOptions {
+        self.elevation = degrees;
+        self
+    }
+
+    /// Sets azimuth and elevation of the 3-D camera, in degrees.
+    pub fn with_camera(self, azimuth: f64, elevation: f64) -> PlotOptions {
+        self.with_azimuth(azimuth).with_elevation(elevation)
+    }
+
+    /// Sets the number of points at which a curve is evaluated (default 200, evenly spaced in
+    /// the parameter). Models built from samples are drawn as given.
+    pub fn with_samples(mut self, samples: usize) -> PlotOptions {
+        self.samples = samples;
+        self
+    }
+
+    /// Image width in pixels.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Image height in pixels.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// The title, if one was set (`Some("")` draws none).
+    pub fn title(&self) -> Option<&str> {
+        self.title.as_deref()
+    }
+
+    /// The caption, if one was set.
+    pub fn caption(&self) -> Option<&str> {
+        self.caption.as_deref()
+    }
+
+    /// Camera azimuth in degrees.
+    pub fn azimuth(&self) -> f64 {
+        self.azimuth
+    }
+
+    /// Camera elevation in degrees.
+    pub fn elevation(&self) -> f64 {
+        self.elevation
+    }
+
+    /// Number of curve samples.
+    pub fn samples(&self) -> usize {
+        self.samples
+    }
+
+    /// Checks every option.
+    ///
+    /// # Errors
+    /// [`PlotError::InvalidSize`], [`PlotError::InvalidSamples`] or
+    /// [`PlotError::InvalidCamera`].
+    pub fn validate(&self) -> Result<(), PlotError> {
+        check_size(self.width, self.height)?;
+        if !(MIN_SAMPLES..=MAX_SAMPLES).contains(&self.samples) {
+            return Err(PlotError::InvalidSamples {
+                samples: self.samples,
+                min: MIN_SAMPLES,
+                max: MAX_SAMPLES,
+            });
+        }
+        if !self.azimuth.is_finite() {
+            return Err(PlotError::InvalidCamera {
+                angle: "azimuth",
+                value: self.azimuth,
+                rule: "must be finite",
+            });
+        }
+        if !(self.elevation.is_finite() && (-90.0..=90.0).contains(&self.elevation)) {
+            return Err(PlotError::InvalidCamera {
+                angle: "elevation",
+                value: self.elevation,
+                rule: "must be between -90 and 90",
+            });
+        }
+        Ok(())
+    }
+}
+
+pub(crate) fn check_size(width: u32, height: u32) -> Result<(), PlotError> {
+    let ok = |s: u32| (MIN_SIDE..=MAX_SIDE).contains(&s);
+    if ok(width) && ok(height) {
+        Ok(())
+    } else {
+        Err(PlotError::InvalidSize {
+            width,
+            height,
+            min: MIN_SIDE,
+            max: MAX_SIDE,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn options_defaults() {
+        let o = PlotOptions::default();
+        assert_eq!((o.width(), o.height()), (1600, 1200));
+        assert_eq!((o.azimuth(), o.elevation()), (-55.0, 25.0));
+        assert_eq!(o.samples(), 200);
+        assert_eq!(o.title(), None);
+        assert_eq!(o.validate(), Ok(()));
+    }
+
+    #[test]
+    fn options_validate_messages() {
+        let e = PlotOptions::default()
+            .with_size(0, 10)
+            .validate()
+            .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "image size 0x10 is not supported (each side must be between 64 and 16384 pixels)"
+        );
+        let e = PlotOptions::default()
+            .with_samples(1)
+            .validate()
+            .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "samples = 1 is not supported (must be between 2 and 100000)"
+        );
+        let e = PlotOptions::default()
+            .with_elevation(95.0)
+            .validate()
+            .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "camera elevation = 95 degrees is not supported (must be between -90 and 90)"
+        );
+        let e = PlotOptions::default()
+            .with_azimuth(f64::NAN)
+            .validate()
+            .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "camera azimuth = NaN degrees is not supported (must be finite)"
+        );
+    }
+}

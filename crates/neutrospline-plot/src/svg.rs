@@ -1,0 +1,498 @@
+//! A small deterministic SVG writer.
+//!
+//! Coordinates and lengths are written with at most two decimals (trailing zeros removed,
+//! `-0` written as `0`); a non-finite number is written as `0`, so no output ever contains
+//! `NaN` or `inf`. Element order is the order of the calls, so equal input gives equal bytes.
+
+use std::fmt::Write as _;
+
+use crate::font::FONT_FAMILY_CSS;
+
+/// An sRGB colour.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Color(pub u8, pub u8, pub u8);
+
+impl Color {
+    pub(crate) const WHITE: Color = Color(255, 255, 255);
+
+    /// Linear interpolation in sRGB between `self` (at 0) and `other` (at 1).
+    pub(crate) fn mix(self, other: Color, t: f64) -> Color {
+        let t = if t.is_finite() {
+            t.clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        let f = |a: u8, b: u8| (f64::from(a) + (f64::from(b) - f64::from(a)) * t).round() as u8;
+        Color(f(self.0, other.0), f(self.1, other.1), f(self.2, other.2))
+    }
+
+    fn hex(self) -> String {
+        format!("#{:02x}{:02x}{:02x}", self.0, self.1, self.2)
+    }
+}
+
+/// Formats a number with at most two decimals, deterministically.
+pub(crate) fn num(v: f64) -> String {
+    if !v.is_finite() {
+        return "0".to_string();
+    }
+    let s = format!("{v:.2}");
+    let s = if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    };
+    if s == "-0" {
+        "0".to_string()
+    } else {
+        s
+    }
+}
+
+/// Escapes text for XML content and attribute values.
+pub(crate) fn escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            c if (c as u32) < 0x20 && c != '\t' => out.push(' '),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// Stroke and fill of a shape.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Style {
+    pub stroke: Option<Color>,
+    pub stroke_width: f64,
+    pub dash: Option<[f64; 2]>,
+    pub fill: Option<Color>,
+    pub fill_opacity: f64,
+    pub stroke_opacity: f64,
+    /// Round caps and joins (else butt caps, miter joins).
+    pub round: bool,
+    pub class: Option<String>,
+}
+
+impl Style {
+    pub(crate) fn stroke(color: Color, width: f64) -> Style {
+        Style {
+            stroke: Some(color),
+            stroke_width: width,
+            dash: None,
+            fill: None,
+            fill_opacity: 1.0,
+            stroke_opacity: 1.0,
+            round: true,
+            class: None,
+        }
+    }
+
+    pub(crate) fn fill(color: Color) -> Style {
+        Style {
+            stroke: None,
+            stroke_width: 0.0,
+            dash: None,
+            fill: Some(color),
+            fill_opacity: 1.0,
+            stroke_opacity: 1.0,
+            round: true,
+            class: None,
+        }
+    }
+
+    pub(crate) fn with_fill(mut self, color: Color) -> Style {
+        self.fill = Some(color);
+        self
+    }
+
+    pub(crate) fn with_dash(mut self, on: f64, off: f64) -> Style {
+        self.dash = Some([on, off]);
+        self
+    }
+
+    pub(crate) fn with_fill_opacity(mut self, a: f64) -> Style {
+        self.fill_opacity = a;
+        self
+    }
+
+    pub(crate) fn square(mut self) -> Style {
+        self.round = false;
+        self
+    }
+
+    pub(crate) fn with_class(mut self, class: &str) -> Style {
+        self.class = Some(class.to_string());
+        self
+    }
+
+    fn write_attrs(&self, out: &mut String) {
+        if let Some(class) = &self.class {
+            let _ = write!(out, " class=\"{}\"", escape(class));
+        }
+        match self.fill {
+            Some(c) => {
+                let _ = write!(out, " fill=\"{}\"", c.hex());
+                if self.fill_opacity < 1.0 {
+                    let _ = write!(out, " fill-opacity=\"{}\"", num(self.fill_opacity));
+                }
+            }
+            None => out.push_str(" fill=\"none\""),
+        }
+        if let Some(c) = self.stroke {
+            let _ = write!(
+                out,
+                " stroke=\"{}\" stroke-width=\"{}\"",
+                c.hex(),
+                num(self.stroke_width)
+            );
+            if self.stroke_opacity < 1.0 {
+                let _ = write!(out, " stroke-opacity=\"{}\"", num(self.stroke_opacity));
+            }
+            if self.round {
+                out.push_str(" stroke-linecap=\"round\" stroke-linejoin=\"round\"");
+            } else {
+                out.push_str(" stroke-linejoin=\"miter\"");
+            }
+            if let Some([on, off]) = self.dash {
+                let _ = write!(out, " stroke-dasharray=\"{} {}\"", num(on), num(off));
+            }
+        }
+    }
+}
+
+/// Horizontal alignment of a text run relative to its anchor point.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Anchor {
+    Start,
+    Middle,
+    End,
+}
+
+/// How a text run is set.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct TextStyle {
+    pub size: f64,
+    pub bold: bool,
+    pub color: Color,
+    pub anchor: Anchor,
+    /// Rotation in degrees about the anchor point (negative is counter-clockwise on screen).
+    pub rotate: f64,
+    /// Width of a white halo drawn behind the glyphs (0 for none).
+    pub halo: f64,
+    pub class: Option<String>,
+}
+
+impl TextStyle {
+    pub(crate) fn new(size: f64, color: Color) -> TextStyle {
+        TextStyle {
+            size,
+            bold: false,
+            color,
+            anchor: Anchor::Start,
+            rotate: 0.0,
+            halo: 0.0,
+            class: None,
+        }
+    }
+
+    pub(crate) fn bold(mut self) -> TextStyle {
+        self.bold = true;
+        self
+    }
+
+    pub(crate) fn anchor(mut self, anchor: Anchor) -> TextStyle {
+        self.anchor = anchor;
+        self
+    }
+
+    pub(crate) fn rotate(mut self, degrees: f64) -> TextStyle {
+        self.rotate = degrees;
+        self
+    }
+
+    pub(crate) fn halo(mut self, width: f64) -> TextStyle {
+        self.halo = width;
+        self
+    }
+
+    pub(crate) fn with_class(mut self, class: &str) -> TextStyle {
+        self.class = Some(class.to_string());
+        self
+    }
+}
+
+/// An SVG document being written.
+pub(crate) struct SvgWriter {
+    out: String,
+    depth: usize,
+}
+
+impl SvgWriter {
+    /// Starts a document of `width` x `height` pixels with a white background.
+    pub(crate) fn new(width: u32, height: u32, title: &str) -> SvgWriter {
+        let mut out = String::with_capacity(64 * 1024);
+        out.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+        let _ = writeln!(
+            out,
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{width}\" \
+             height=\"{height}\" viewBox=\"0 0 {width} {height}\" font-family=\"{FONT_FAMILY_CSS}\">"
+        );
+        if !title.is_empty() {
+            let _ = writeln!(out, "<title>{}</title>", escape(title));
+        }
+        let _ = writeln!(
+            out,
+            "<rect x=\"0\" y=\"0\" width=\"{width}\" height=\"{height}\" fill=\"#ffffff\"/>"
+        );
+        SvgWriter { out, depth: 1 }
+    }
+
+    fn indent(&mut self) {
+        for _ in 0..self.depth {
+            self.out.push(' ');
+        }
+    }
+
+    /// Opens a `<g>` with the given class (for structure and for tests), closed by `end_group`.
+    pub(crate) fn begin_group(&mut self, class: &str) {
+        self.indent();
+        let _ = writeln!(self.out, "<g class=\"{}\">", escape(class));
+        self.depth += 1;
+    }
+
+    pub(crate) fn end_group(&mut self) {
+        self.depth = self.depth.saturating_sub(1);
+        self.indent();
+        self.out.push_str("</g>\n");
+    }
+
+    /// Opens a `<clipPath>`-clipped group limited to the rectangle; closed by `end_group`.
+    pub(crate) fn begin_clip(&mut self, id: &str, x: f64, y: f64, w: f64, h: f64) {
+        self.indent();
+        let _ = writeln!(
+            self.out,
+            "<clipPath id=\"{id}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath>",
+            num(x),
+            num(y),
+            num(w.max(0.0)),
+            num(h.max(0.0))
+        );
+        self.indent();
+        let _ = writeln!(self.out, "<g clip-path=\"url(#{id})\">");
+        self.depth += 1;
+    }
+
+    pub(crate) fn rect(&mut self, x: f64, y: f64, w: f64, h: f64, style: &Style) {
+        self.indent();
+        let _ = write!(
+            self.out,
+            "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"",
+            num(x),
+            num(y),
+            num(w.max(0.0)),
+            num(h.max(0.0))
+        );
+        style.write_attrs(&mut self.out);
+        self.out.push_str("/>\n");
+    }
+
+    pub(crate) fn line(&mut self, a: (f64, f64), b: (f64, f64), style: &Style) {
+        self.indent();
+        let _ = write!(
+            self.out,
+            "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\"",
+            num(a.0),
+            num(a.1),
+            num(b.0),
+            num(b.1)
+        );
+        style.write_attrs(&mut self.out);
+        self.out.push_str("/>\n");
+    }
+
+    fn points_attr(&mut self, points: &[(f64, f64)]) {
+        self.out.push_str(" points=\"");
+        for (i, p) in points.iter().enumerate() {
+            if i > 0 {
+                self.out.push(' ');
+            }
+            let _ = write!(self.out, "{},{}", num(p.0), num(p.1));
+        }
+        self.out.push('"');
+    }
+
+    pub(crate) fn polyline(&mut self, points: &[(f64, f64)], style: &Style) {
+        if points.is_empty() {
+            return;
+        }
+        if points.len() == 1 {
+            // A zero-length path still shows its round cap as a dot.
+            self.line(points[0], points[0], style);
+            return;
+        }
+        self.indent();
+        self.out.push_str("<polyline");
+        self.points_attr(points);
+        style.write_attrs(&mut self.out);
+        self.out.push_str("/>\n");
+    }
+
+    pub(crate) fn polygon(&mut self, points: &[(f64, f64)], style: &Style) {
+        if points.len() < 3 {
+            return;
+        }
+        self.indent();
+        self.out.push_str("<polygon");
+        self.points_attr(points);
+        style.write_attrs(&mut self.out);
+        self.out.push_str("/>\n");
+    }
+
+    pub(crate) fn circle(&mut self, c: (f64, f64), r: f64, style: &Style) {
+        self.indent();
+        let _ = write!(
+            self.out,
+            "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"",
+            num(c.0),
+            num(c.1),
+            num(r.max(0.0))
+        );
+        style.write_attrs(&mut self.out);
+        self.out.push_str("/>\n");
+    }
+
+    /// Writes `text` with its baseline at `y`; `x` is the anchor (start, middle or end).
+    pub(crate) fn text(&mut self, x: f64, y: f64, text: &str, style: &TextStyle) {
+        self.indent();
+        let _ = write!(self.out, "<text x=\"{}\" y=\"{}\"", num(x), num(y));
+        if let Some(class) = &style.class {
+            let _ = write!(self.out, " class=\"{}\"", escape(class));
+        }
+        let _ = write!(
+            self.out,
+            " font-size=\"{}\" fill=\"{}\"",
+            num(style.size),
+            style.color.hex()
+        );
+        if style.bold {
+            self.out.push_str(" font-weight=\"bold\"");
+        }
+        match style.anchor {
+            Anchor::Start => {}
+            Anchor::Middle => self.out.push_str(" text-anchor=\"middle\""),
+            Anchor::End => self.out.push_str(" text-anchor=\"end\""),
+        }
+        if style.rotate != 0.0 {
+            let _ = write!(
+                self.out,
+                " transform=\"rotate({} {} {})\"",
+                num(style.rotate),
+                num(x),
+                num(y)
+            );
+        }
+        if style.halo > 0.0 {
+            let _ = write!(
+                self.out,
+                " stroke=\"#ffffff\" stroke-width=\"{}\" stroke-linejoin=\"round\" paint-order=\"stroke\"",
+                num(style.halo)
+            );
+        }
+        let _ = writeln!(self.out, ">{}</text>", escape(text));
+    }
+
+    /// A vertical linear gradient (bottom to top) from evenly spaced colour stops.
+    pub(crate) fn vertical_gradient(&mut self, id: &str, stops: &[Color]) {
+        self.indent();
+        let _ = writeln!(
+            self.out,
+            "<defs><linearGradient id=\"{id}\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">"
+        );
+        let last = stops.len().saturating_sub(1).max(1) as f64;
+        for (i, c) in stops.iter().enumerate() {
+            self.indent();
+            let _ = writeln!(
+                self.out,
+                " <stop offset=\"{}\" stop-color=\"{}\"/>",
+                num(i as f64 / last),
+                c.hex()
+            );
+        }
+        self.indent();
+        self.out.push_str("</linearGradient></defs>\n");
+    }
+
+    /// A rectangle filled with the gradient `id`.
+    pub(crate) fn gradient_rect(&mut self, id: &str, x: f64, y: f64, w: f64, h: f64) {
+        self.indent();
+        let _ = writeln!(
+            self.out,
+            "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"url(#{id})\"/>",
+            num(x),
+            num(y),
+            num(w.max(0.0)),
+            num(h.max(0.0))
+        );
+    }
+
+    /// Finishes the document.
+    pub(crate) fn finish(mut self) -> String {
+        while self.depth > 1 {
+            self.end_group();
+        }
+        self.out.push_str("</svg>\n");
+        self.out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn num_formats_two_decimals() {
+        assert_eq!(num(1.0), "1");
+        assert_eq!(num(1.234), "1.23");
+        assert_eq!(num(1.5), "1.5");
+        assert_eq!(num(-0.001), "0");
+        assert_eq!(num(-2.0), "-2");
+        assert_eq!(num(f64::NAN), "0");
+        assert_eq!(num(f64::INFINITY), "0");
+        assert_eq!(num(100.0), "100");
+    }
+
+    #[test]
+    fn escape_xml() {
+        assert_eq!(escape("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
+    }
+
+    #[test]
+    fn writer_document_is_closed() {
+        let mut w = SvgWriter::new(10, 20, "t");
+        w.begin_group("g");
+        w.polyline(
+            &[(0.0, 0.0), (1.0, 1.0)],
+            &Style::stroke(Color(0, 0, 0), 1.0),
+        );
+        let s = w.finish();
+        assert!(s.starts_with("<?xml"));
+        assert!(s.ends_with("</g>\n</svg>\n"));
+        assert!(s.contains("points=\"0,0 1,1\""));
+    }
+
+    #[test]
+    fn color_mix_endpoints() {
+        let a = Color(0, 0, 0);
+        let b = Color(200, 100, 50);
+        assert_eq!(a.mix(b, 0.0), a);
+        assert_eq!(a.mix(b, 1.0), b);
+        assert_eq!(a.mix(b, 0.5), Color(100, 50, 25));
+    }
+}

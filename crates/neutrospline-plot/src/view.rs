@@ -1,0 +1,136 @@
+//! The kinds of figure.
+
+use core::fmt;
+use core::str::FromStr;
+
+use neutrospline::DegreeKind;
+
+use crate::error::PlotError;
+
+/// Which figure to draw. Names (for [`FromStr`] and [`Display`](fmt::Display)) are the
+/// lowercase variant names: `controls`, `truth`, `indeterminacy`, `falsity`, `all`, `plane`.
+///
+/// | view | 2-D model (the paper's figures) | 3-D model |
+/// |---|---|---|
+/// | `controls` | Fig. 1: control polygon and points, each with a callout of its name and three degree bars | the same in a 3-D box, with drop lines to the floor |
+/// | `truth`, `indeterminacy`, `falsity` | Fig. 2-4: space curve `(x, y, degree)` with its control polygon above the crisp curve (its shadow on the degree = 0 plane) | the 3-D curve coloured by that degree, with a colour bar and its shadow on the floor |
+/// | `all` | Fig. 5: the three space curves in one box | three panels, one per degree, sharing a colour bar |
+/// | `plane` | crisp curve with three bands along it whose widths are the degrees | the same bands along the curve's projection in the 3-D box |
+///
+/// ```
+/// use neutrospline_plot::View;
+/// let view: View = "truth".parse()?;
+/// assert_eq!(view, View::Truth);
+/// assert_eq!(view.to_string(), "truth");
+/// # Ok::<(), neutrospline_plot::PlotError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum View {
+    /// The control points with their degrees (paper Fig. 1).
+    Controls,
+    /// The truth curve (paper Fig. 2).
+    Truth,
+    /// The indeterminacy curve (paper Fig. 3).
+    Indeterminacy,
+    /// The falsity curve (paper Fig. 4).
+    Falsity,
+    /// The three degree curves together (paper Fig. 5).
+    All,
+    /// A flat view: the three degrees as bands along the crisp curve.
+    Plane,
+}
+
+impl View {
+    /// Every view, in the paper's order, `plane` last.
+    pub const ALL: [View; 6] = [
+        View::Controls,
+        View::Truth,
+        View::Indeterminacy,
+        View::Falsity,
+        View::All,
+        View::Plane,
+    ];
+
+    /// The view's name, as parsed and displayed.
+    pub const fn name(self) -> &'static str {
+        match self {
+            View::Controls => "controls",
+            View::Truth => "truth",
+            View::Indeterminacy => "indeterminacy",
+            View::Falsity => "falsity",
+            View::All => "all",
+            View::Plane => "plane",
+        }
+    }
+
+    /// The degree a single-degree view shows (`truth`, `indeterminacy`, `falsity`), else `None`.
+    pub const fn degree(self) -> Option<DegreeKind> {
+        match self {
+            View::Truth => Some(DegreeKind::Truth),
+            View::Indeterminacy => Some(DegreeKind::Indeterminacy),
+            View::Falsity => Some(DegreeKind::Falsity),
+            _ => None,
+        }
+    }
+}
+
+impl From<DegreeKind> for View {
+    fn from(kind: DegreeKind) -> View {
+        match kind {
+            DegreeKind::Truth => View::Truth,
+            DegreeKind::Indeterminacy => View::Indeterminacy,
+            DegreeKind::Falsity => View::Falsity,
+        }
+    }
+}
+
+impl fmt::Display for View {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for View {
+    type Err = PlotError;
+
+    /// Parses a view name (exact, lowercase).
+    ///
+    /// # Errors
+    /// [`PlotError::UnknownView`] for any other text.
+    fn from_str(s: &str) -> Result<View, PlotError> {
+        View::ALL
+            .into_iter()
+            .find(|v| v.name() == s)
+            .ok_or_else(|| PlotError::UnknownView {
+                name: s.to_string(),
+            })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn view_names_round_trip() {
+        for v in View::ALL {
+            assert_eq!(v.to_string().parse::<View>(), Ok(v));
+        }
+    }
+
+    #[test]
+    fn view_unknown_name_message() {
+        let err = "Truth".parse::<View>().unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "unknown view \"Truth\" (expected one of: controls, truth, indeterminacy, falsity, all, plane)"
+        );
+    }
+
+    #[test]
+    fn view_degree_kinds() {
+        assert_eq!(View::Falsity.degree(), Some(DegreeKind::Falsity));
+        assert_eq!(View::All.degree(), None);
+        assert_eq!(View::from(DegreeKind::Indeterminacy), View::Indeterminacy);
+    }
+}
