@@ -170,11 +170,12 @@ impl KnotVector {
     /// The parameters follow the control polygon: `s_i - s_{i-1}` proportional to
     /// `|P_i - P_{i-1}|^exponent`, so `exponent = 1` is chord length and `0.5` centripetal
     /// (see [`KnotVector::chord_length`], [`KnotVector::centripetal`]). Coincident points
-    /// fall back to uniform spacing.
+    /// fall back to uniform spacing: all of them, or enough repeated points that a knot
+    /// would appear more than `degree + 1` times (`degree + 1` equal points at an end, for
+    /// example); fewer repeated points give repeated knots.
     ///
     /// # Errors
-    /// [`KnotError::TooFewControlPoints`]; [`KnotError::MultiplicityTooHigh`] cannot occur,
-    /// but repeated control points may produce repeated knots.
+    /// [`KnotError::TooFewControlPoints`]; the result is always a valid clamped vector.
     pub fn averaged<const D: usize>(
         degree: usize,
         positions: &[[f64; D]],
@@ -206,13 +207,22 @@ impl KnotVector {
             params.push((acc / total).min(1.0));
         }
         params.push(1.0);
-        let interior =
-            (1..count - degree).map(|j| params[j..j + degree].iter().sum::<f64>() / degree as f64);
+        // Averages of the same values summed in another order may differ in the last bit:
+        // keep the knots non-decreasing (and inside [0, 1]) explicitly.
+        let mut previous = 0.0_f64;
+        let interior = (1..count - degree).map(|j| {
+            let average = params[j..j + degree].iter().sum::<f64>() / degree as f64;
+            previous = average.clamp(previous, 1.0);
+            previous
+        });
         let knots: Vec<f64> = core::iter::repeat_n(0.0, degree + 1)
             .chain(interior)
             .chain(core::iter::repeat_n(1.0, degree + 1))
             .collect();
+        // Repeated control points repeat parameters; `degree + 1` equal points at an end (or
+        // `2 degree + 1` inside) would repeat a knot more than `degree + 1` times.
         KnotVector::new(knots, degree, count)
+            .or_else(|_| KnotVector::clamped_uniform(degree, count))
     }
 
     /// Chord-length knots: [`KnotVector::averaged`] with exponent 1.
@@ -379,5 +389,17 @@ mod tests {
         // All points equal: uniform fallback.
         let z = KnotVector::chord_length(1, &[[2.0], [2.0], [2.0]]).unwrap();
         assert_eq!(z.knots(), &[0.0, 0.0, 0.5, 1.0, 1.0]);
+        // Regression: the last two points equal made the knot 1 appear three times for
+        // degree 1 (MultiplicityTooHigh); now the uniform fallback.
+        let e = KnotVector::chord_length(1, &[[0.0], [3.0], [3.0]]).unwrap();
+        assert_eq!(e.knots(), &[0.0, 0.0, 0.5, 1.0, 1.0]);
+        let c = KnotVector::centripetal(2, &[[1.0], [1.0], [1.0], [4.0], [5.0]]).unwrap();
+        assert_eq!(
+            c.knots(),
+            &[0.0, 0.0, 0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0, 1.0, 1.0]
+        );
+        // Fewer repeated points keep their (repeated) chord-length knots.
+        let r = KnotVector::chord_length(1, &[[0.0], [1.0], [1.0], [4.0]]).unwrap();
+        assert_eq!(r.knots(), &[0.0, 0.0, 0.25, 0.25, 1.0, 1.0]);
     }
 }

@@ -311,9 +311,19 @@ impl Spline {
         }
     }
 
-    /// Degree elevation by one: split into Bézier pieces, elevate each, join them with
-    /// breakpoints of multiplicity `p + 1`, then remove knots (exactly, in homogeneous form)
-    /// down to the original multiplicity plus one. The result is clamped on the domain.
+    /// Degree elevation by one, clamped on the domain: the same curve as a spline of degree
+    /// `q = p + 1` on the knots `U'` that repeat the domain ends `q + 1` times and each
+    /// interior breakpoint once more than before (at most `q + 1` times).
+    ///
+    /// Each new control point is computed on its own, from the blossom: `Q_i = F(u'_{i+1},
+    /// ..., u'_{i+q})`, where `F(x_1, ..., x_q) = (1/q) sum_j f(x_1, ..., x_{j-1}, x_{j+1},
+    /// ..., x_q)` is the blossom of the elevated polynomial piece on a span inside
+    /// `[u'_{i+1}, u'_{i+q}]` and `f` that of the original piece (de Boor, in homogeneous
+    /// form for rational splines). No value depends on another computed value, so rounding
+    /// errors stay local. (Knot removal after Bézier elevation, the textbook method, chains
+    /// every new control point to its neighbours: its error grew exponentially with the
+    /// number of spans, to relative errors of 1e-9 for degree 5 and O(1) for degree 7 at 40
+    /// control points.)
     ///
     /// Degree channels (`degree_channels`) of the new control points are projected onto the
     /// range of the old control values, which contains them exactly (elevated control points
@@ -323,65 +333,81 @@ impl Spline {
         let q = p + 1;
         let stride = self.stride;
         let rational = self.weights.is_some();
-        let segments = self.bezier_segments();
-        let mut knots = Vec::new();
-        let mut rows: Vec<f64> = Vec::new();
-        let mut weights: Vec<f64> = Vec::new();
-        for (index, seg) in segments.iter().enumerate() {
-            let (data, w) = elevate_bezier(&seg.packed, seg.weights.as_deref());
-            // Pieces meeting continuously share their joint (breakpoint of multiplicity q);
-            // at a discontinuity (multiplicity p + 1) both ends are kept (multiplicity q + 1).
-            let discontinuous = index > 0 && self.knots.multiplicity(seg.start) > p;
-            let skip = usize::from(index > 0 && !discontinuous);
-            rows.extend_from_slice(&data[skip * stride..]);
-            weights.extend_from_slice(&w[skip..]);
-            let copies = if index == 0 || discontinuous {
-                q + 1
-            } else {
-                q
-            };
-            knots.extend(core::iter::repeat_n(seg.start, copies));
-        }
-        if let Some(last) = segments.last() {
-            knots.extend(core::iter::repeat_n(last.end, q + 1));
-        }
-        // Homogeneous form for the removals.
-        let hstride = stride + 1;
-        let mut hom = Vec::with_capacity(weights.len() * hstride);
-        for (row, &w) in rows.chunks_exact(stride).zip(&weights) {
-            hom.extend(row.iter().map(|v| v * w));
-            hom.push(w);
-        }
+        let (start, end) = self.knots.domain();
+        // The new knots.
+        let mut knots: Vec<f64> = core::iter::repeat_n(start, q + 1).collect();
         for b in self.knots.interior_breakpoints() {
-            let target = (self.knots.multiplicity(b) + 1).min(q);
-            for _ in target..q {
-                remove_knot_once(&mut knots, q, &mut hom, hstride, b);
-            }
+            let copies = (self.knots.multiplicity(b) + 1).min(q + 1);
+            knots.extend(core::iter::repeat_n(b, copies));
         }
-        // Back to Euclidean form.
-        let ranges: Vec<(f64, f64)> = degree_channels
-            .clone()
-            .map(|c| {
-                (0..self.count()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), i| {
-                    let v = self.row(i)[c];
-                    (lo.min(v), hi.max(v))
-                })
-            })
-            .collect();
-        let count = hom.len() / hstride;
+        knots.extend(core::iter::repeat_n(end, q + 1));
+        let count = knots.len() - q - 1;
+        // Homogeneous rows `(w P, w)` (weight 1 without weights).
+        let hom = self.homogeneous();
+        let hstride = stride + 1;
         let mut data = Vec::with_capacity(count * stride);
         let mut new_weights = Vec::with_capacity(count);
-        for row in hom.chunks_exact(hstride) {
-            let w = row[stride];
-            for (c, v) in row[..stride].iter().enumerate() {
-                let mut value = if rational { v / w } else { *v };
+        let mut row = vec![0.0; hstride];
+        let mut sum = vec![0.0; hstride];
+        let mut scratch = Vec::new();
+        let mut args = Vec::with_capacity(q);
+        let ranges: Vec<(f64, f64)> = degree_channels
+            .clone()
+            .map(|c| self.channel_range(c))
+            .collect();
+        for i in 0..count {
+            let window = &knots[i + 1..=i + q];
+            // A non-empty span k' of the new knots with i <= k' <= i + q inside the domain:
+            // the one nearest the middle of the window. Its interval is a span of the old
+            // knots too.
+            let candidates =
+                (i..=i + q).filter(|&k| k >= q && k < count && knots[k] < knots[k + 1]);
+            let middle = 2 * i + q; // twice i + q/2
+            let k_new = candidates
+                .min_by_key(|&k| (2 * k + 1).abs_diff(middle))
+                .unwrap_or_else(|| unreachable!("every control point has a span"));
+            let (a, b) = (knots[k_new], knots[k_new + 1]);
+            let k = self.knots.span(a); // [a, b] is a non-empty span of the old knots
+            let centre = 0.5 * (a + b);
+            sum.iter_mut().for_each(|v| *v = 0.0);
+            for skip in 0..q {
+                args.clear();
+                args.extend(
+                    window
+                        .iter()
+                        .enumerate()
+                        .filter(|&(j, _)| j != skip)
+                        .map(|(_, &x)| x),
+                );
+                // The farthest arguments at the first (widest) levels of de Boor's triangle.
+                args.sort_by(|x, y| (y - centre).abs().total_cmp(&(x - centre).abs()));
+                blossom_extrapolating(
+                    &self.knots,
+                    hstride,
+                    &hom.data,
+                    k,
+                    &args,
+                    &mut scratch,
+                    &mut row,
+                );
+                for (s, v) in sum.iter_mut().zip(&row) {
+                    *s += v;
+                }
+            }
+            let w = sum[stride] / q as f64;
+            new_weights.push(w);
+            for (c, v) in sum[..stride].iter().enumerate() {
+                let mut value = if rational {
+                    v / sum[stride]
+                } else {
+                    v / q as f64
+                };
                 if degree_channels.contains(&c) {
                     let (lo, hi) = ranges[c - degree_channels.start];
                     value = value.clamp(lo, hi);
                 }
                 data.push(value);
             }
-            new_weights.push(w);
         }
         Spline {
             knots: KnotVector::from_parts_unchecked(q, knots),
@@ -390,89 +416,44 @@ impl Spline {
             weights: rational.then_some(new_weights),
         }
     }
+
+    /// Smallest and largest control value of channel `c`.
+    fn channel_range(&self, c: usize) -> (f64, f64) {
+        (0..self.count()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), i| {
+            let v = self.row(i)[c];
+            (lo.min(v), hi.max(v))
+        })
+    }
 }
 
-/// Elevates one (possibly rational) Bézier piece: `Q_i = (i/(n+1)) P_{i-1} + (1 - i/(n+1)) P_i`
-/// in homogeneous space. Returns rows and weights.
-fn elevate_bezier(packed: &Packed, weights: Option<&[f64]>) -> (Vec<f64>, Vec<f64>) {
-    let n = packed.degree();
-    let stride = packed.data().len() / (n + 1);
-    let m = (n + 1) as f64;
-    let mut out = Vec::with_capacity((n + 2) * stride);
-    let mut out_w = Vec::with_capacity(n + 2);
-    let weight = |i: usize| weights.map_or(1.0, |w| w[i]);
-    out.extend_from_slice(packed.row(0));
-    out_w.push(weight(0));
-    let mut pair = vec![0.0; 2 * stride];
-    for i in 1..=n {
-        pair[..stride].copy_from_slice(packed.row(i - 1));
-        pair[stride..].copy_from_slice(packed.row(i));
-        let ws = weights.map(|_| (weight(i - 1), weight(i)));
-        let coefficients = (i as f64 / m, (n + 1 - i) as f64 / m);
-        let w = combine(&mut pair, stride, (0, 0, 1), coefficients, ws);
-        out.extend_from_slice(&pair[..stride]);
-        out_w.push(w);
-    }
-    out.extend_from_slice(packed.row(n));
-    out_w.push(weight(n));
-    (out, out_w)
-}
-
-/// Removes one occurrence of the interior knot `u` from a non-rational spline of degree `p`
-/// whose curve allows it exactly (the inverse of Boehm's insertion).
-///
-/// With `U'` the knots without one `u`, `k` its span there and `s` the multiplicity of `u`
-/// before removal, insertion gives `P_i = a_i Q_i + (1 - a_i) Q_{i-1}` for
-/// `k - p + 1 <= i <= k - s + 1`, `a_i = (u - U'_i) / (U'_{i+p} - U'_i)`; the unknowns
-/// `Q_{k-p+1} ..= Q_{k-s}` are solved from the left for the first half and from the right for
-/// the second half (one equation is redundant when the removal is exact).
-fn remove_knot_once(knots: &mut Vec<f64>, p: usize, data: &mut Vec<f64>, stride: usize, u: f64) {
-    let r = knots.iter().rposition(|&x| x == u).expect("knot present");
-    let s = knots.iter().filter(|&&x| x == u).count();
-    let mut bar = knots.clone();
-    bar.remove(r);
-    let k = r - 1;
-    let n = data.len() / stride;
-    let p_row = |i: usize| &data[i * stride..(i + 1) * stride];
-    let a = |i: usize| (u - bar[i]) / (bar[i + p] - bar[i]);
-    let lo = k + 1 - p;
-    let hi = k - s; // may be lo - 1: nothing to solve
-    let mut q: Vec<f64> = Vec::with_capacity((n - 1) * stride);
-    for j in 0..lo {
-        q.extend_from_slice(p_row(j));
-    }
-    let unknowns = (hi + 1).saturating_sub(lo);
-    let mut solved = vec![0.0; unknowns * stride];
-    let forward = unknowns.div_ceil(2);
-    for idx in 0..forward {
-        let i = lo + idx;
-        let ai = a(i);
-        for c in 0..stride {
-            let prev = if idx == 0 {
-                p_row(i - 1)[c]
-            } else {
-                solved[(idx - 1) * stride + c]
-            };
-            solved[idx * stride + c] = (p_row(i)[c] - (1.0 - ai) * prev) / ai;
+/// The blossom `f(args[0], ..., args[p-1])` of the polynomial piece on span `k` of the
+/// non-rational spline with rows `data` (stride `stride`) over `knots`, by de Boor's triangle
+/// with `args[r - 1]` at level `r`, *without* restricting the arguments to the span: the
+/// coefficients may leave \[0, 1\] (extrapolation). Writes the row into `out`.
+fn blossom_extrapolating(
+    knots: &KnotVector,
+    stride: usize,
+    data: &[f64],
+    k: usize,
+    args: &[f64],
+    scratch: &mut Vec<f64>,
+    out: &mut [f64],
+) {
+    let p = knots.degree();
+    let u = knots.knots();
+    scratch.clear();
+    scratch.extend_from_slice(&data[(k - p) * stride..(k + 1) * stride]);
+    for r in 1..=p {
+        let t = args[r - 1];
+        for j in (r..=p).rev() {
+            let lo = u[j + k - p];
+            let hi = u[j + 1 + k - r];
+            let alpha = (t - lo) / (hi - lo);
+            for c in 0..stride {
+                let (x, y) = (scratch[(j - 1) * stride + c], scratch[j * stride + c]);
+                scratch[j * stride + c] = (1.0 - alpha) * x + alpha * y;
+            }
         }
     }
-    for idx in (forward..unknowns).rev() {
-        let j = lo + idx; // solve Q_j from the equation i = j + 1
-        let i = j + 1;
-        let ai = a(i);
-        for c in 0..stride {
-            let next = if idx + 1 == unknowns {
-                p_row(j + 2)[c] // Q_{hi+1} = P_{hi+2}
-            } else {
-                solved[(idx + 1) * stride + c]
-            };
-            solved[idx * stride + c] = (p_row(i)[c] - ai * next) / (1.0 - ai);
-        }
-    }
-    q.extend_from_slice(&solved);
-    for j in hi + 1..n - 1 {
-        q.extend_from_slice(p_row(j + 1));
-    }
-    *knots = bar;
-    *data = q;
+    out.copy_from_slice(&scratch[p * stride..(p + 1) * stride]);
 }
