@@ -1,13 +1,14 @@
-//! The `neutrospline` command: evaluate, check and demonstrate neutrosophic Bezier curves.
+//! The `neutrospline` command: evaluate, check and demonstrate neutrosophic curves (Bézier,
+//! B-spline, NURBS) and tensor-product surfaces.
 //!
 //! A thin layer over the `neutrospline` library: it parses arguments and files, calls the
 //! library, writes tables and maps errors to exit codes (0 success, 1 invalid input or failure,
 //! 2 usage error).
 
 mod commands;
-mod curve;
 mod input;
 mod output;
+mod shape;
 
 use std::io::Write;
 use std::process::ExitCode;
@@ -16,15 +17,21 @@ use clap::{Parser, Subcommand};
 
 use commands::{check::CheckArgs, eval::EvalArgs, example::ExampleArgs};
 
-/// Evaluate and check neutrosophic Bezier curves: control points carrying truth,
-/// indeterminacy and falsity degrees.
+/// Evaluate and check neutrosophic curves and surfaces (Bezier, B-spline, NURBS): control
+/// points carrying truth, indeterminacy and falsity degrees.
 #[derive(Debug, Parser)]
 #[command(
     name = "neutrospline",
     version,
-    after_help = "Files: .csv (a header row, one control point per row), .toml or .json (a model \
-with kind, optional name, description and membership, and control_points).\n\
-Exit status: 0 success, 1 invalid input (message on stderr starting with `error:`), 2 usage error."
+    after_help = "Kinds: bezier, bspline, nurbs (curves, 2-D or 3-D); bezier-surface, \
+bspline-surface, nurbs-surface (3-D, control points row by row).\n\
+Files: .toml or .json models (kind, optional name, description and membership, degree and knots \
+for curves, rows, cols, degree_u, degree_v, knots_u and knots_v for surfaces, and \
+control_points with x, y[, z], truth, indeterminacy, falsity[, weight][, name]); .csv tables \
+(a header row, one control point per row; the kind, degree, knots and grid come from --kind, \
+--degree, --knots, --rows, ...).\n\
+Exit status: 0 success, 1 invalid input, including a command-line option that contradicts the \
+file (message on stderr starting with `error:`), 2 usage error."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -33,9 +40,10 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
-    /// Evaluate a curve at parameters: one row per parameter (t, position, degrees)
+    /// Evaluate a curve or surface at parameters: one row per parameter (t or u, v, then
+    /// position and degrees)
     Eval(EvalArgs),
-    /// Validate a curve file and print its kind, degree, dimension and degree ranges
+    /// Validate a model file and print its kind, degrees, knots, domain and degree ranges
     Check(CheckArgs),
     /// Run the paper's Example 1 from built-in data and print its control points and curve
     Example(ExampleArgs),

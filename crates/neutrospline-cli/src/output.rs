@@ -41,7 +41,8 @@ pub fn rounded(v: f64, decimals: usize) -> String {
 /// Writes a numeric table. Rows are produced lazily, so that any number of samples streams.
 ///
 /// CSV: the header, then one line per row. JSON: `[` then one object per row with the columns
-/// as keys in column order, then `]`.
+/// as keys in column order, then `]`. A missing value (`None`) is an empty CSV cell or a JSON
+/// `null`.
 ///
 /// # Errors
 /// The first error of `rows`, or a write error.
@@ -49,14 +50,17 @@ pub fn write_table<W: Write + ?Sized>(
     w: &mut W,
     format: TableFormat,
     columns: &[String],
-    rows: impl IntoIterator<Item = anyhow::Result<Vec<f64>>>,
+    rows: impl IntoIterator<Item = anyhow::Result<Vec<Option<f64>>>>,
 ) -> anyhow::Result<()> {
     match format {
         TableFormat::Csv => {
             writeln!(w, "{}", columns.join(","))?;
             for row in rows {
                 let row = row?;
-                let cells: Vec<String> = row.iter().map(|&v| number(v)).collect();
+                let cells: Vec<String> = row
+                    .iter()
+                    .map(|v| v.map(number).unwrap_or_default())
+                    .collect();
                 writeln!(w, "{}", cells.join(","))?;
             }
         }
@@ -68,7 +72,10 @@ pub fn write_table<W: Write + ?Sized>(
                 let fields: Vec<String> = columns
                     .iter()
                     .zip(&row)
-                    .map(|(c, &v)| format!("{}: {}", json_string(c), number(v)))
+                    .map(|(c, v)| {
+                        let value = v.map_or_else(|| "null".to_owned(), number);
+                        format!("{}: {value}", json_string(c))
+                    })
                     .collect();
                 let separator = if first { "" } else { "," };
                 write!(w, "{separator}\n  {{{}}}", fields.join(", "))?;
@@ -261,6 +268,15 @@ mod tests {
     use super::*;
 
     fn table(format: TableFormat, rows: Vec<Vec<f64>>) -> String {
+        table_with_gaps(
+            format,
+            rows.into_iter()
+                .map(|r| r.into_iter().map(Some).collect())
+                .collect(),
+        )
+    }
+
+    fn table_with_gaps(format: TableFormat, rows: Vec<Vec<Option<f64>>>) -> String {
         let columns = vec!["t".to_owned(), "x".to_owned()];
         let mut out = Vec::new();
         write_table(&mut out, format, &columns, rows.into_iter().map(Ok)).unwrap();
@@ -304,6 +320,19 @@ mod tests {
         let v: serde_json::Value = serde_json::from_str(&s).unwrap();
         assert_eq!(v[1]["x"].as_f64(), Some(1e-20));
         assert_eq!(table(TableFormat::Json, vec![]), "[]\n");
+    }
+
+    #[test]
+    fn write_table_missing_values() {
+        let rows = vec![vec![Some(0.5), None]];
+        assert_eq!(
+            table_with_gaps(TableFormat::Csv, rows.clone()),
+            "t,x\n0.5,\n"
+        );
+        assert_eq!(
+            table_with_gaps(TableFormat::Json, rows),
+            "[\n  {\"t\": 0.5, \"x\": null}\n]\n"
+        );
     }
 
     #[test]

@@ -375,11 +375,9 @@ fn eval_usage_errors_exit_2() {
         assert!(out.stdout.is_empty(), "{args:?}");
     }
     let out = run_in(&dir, &["eval", "example1.csv", "--at", "1.5"], None);
-    assert!(
-        out.stderr
-            .contains("parameter `1.5` is outside [0, 1] (every parameter must be in [0, 1])"),
-        "{}",
-        out.stderr
+    assert_eq!(
+        out.stderr,
+        "error: --at: t = 1.5 is outside the curve's domain [0, 1]\n"
     );
 }
 
@@ -420,7 +418,7 @@ fn csv_errors_have_exact_messages() {
         (b"x,y,truth,indeterminacy\n1,2,0,0\n", "error: bad.csv:1: missing column `falsity` (neutrosophic rule requires it)"),
         (b"x,y,truth,indeterminacy,falsity,T\n", "error: bad.csv:1: column 6 `T` repeats column 3 `truth` (each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity)"),
         (b"X,y,x,truth,indeterminacy,falsity\n", "error: bad.csv:1: column 3 `x` repeats column 1 `X` (each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity)"),
-        (b"x,y,w,truth,indeterminacy,falsity\n", "error: bad.csv:1: unknown column `w` (known columns: x, y, z, truth (T), indeterminacy (I), falsity (F), name)"),
+        (b"x,y,w,truth,indeterminacy,falsity\n", "error: bad.csv:1: unknown column `w` (known columns: x, y, z, truth (T), indeterminacy (I), falsity (F), weight, name)"),
         (b"# c\nx,y,truth,indeterminacy,falsity\n# c\n1,2,high,0,0\n", "error: bad.csv:4: column `truth`: value `high` is not a number"),
         (b"x,y,truth,indeterminacy,falsity\n1,2,0,0,0\n1,,0,0,0\n", "error: bad.csv:3: column `y`: value `` is not a number"),
         (b"x,y,truth,indeterminacy,falsity\r\n1,NaN,0,0,0\r\n", "error: bad.csv:2: column `y`: value `NaN` is not a finite number (NaN and infinities are not allowed)"),
@@ -480,15 +478,15 @@ fn toml_errors_name_field_path_and_line() {
     let cases: &[(&str, &str, &str)] = &[
         ("truth = 0.25", "truth = 1.5", "error: bad.toml:14: control_points[1]: truth = 1.5 is outside [0, 1] (every degree must be in [0, 1])"),
         ("y = 1\n", "y = \"one\"\n", "error: bad.toml:13: control_points[1].y: expected a number, found a string"),
-        ("y = 1\n", "y = 1\nw = 2\n", "error: bad.toml:14: control_points[1]: unknown key `w` (known keys: x, y, z, truth (T), indeterminacy (I), falsity (F), name)"),
+        ("y = 1\n", "y = 1\nw = 2\n", "error: bad.toml:14: control_points[1]: unknown key `w` (known keys: x, y, z, truth (T), indeterminacy (I), falsity (F), weight, name)"),
         ("y = 1\n", "y = 1\nT = 0.5\n", "error: bad.toml:15: control_points[1]: key `truth` repeats key `T` (each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity)"),
         ("y = 1\n", "y = 1\nz = 2\n", "error: bad.toml:11: control_points[1]: has `z` but control_points[0] has none (all control points must have the same dimension)"),
         ("y = 1\n", "y = inf\n", "error: bad.toml:13: control_points[1].y: value inf is not a finite number (NaN and infinities are not allowed)"),
         ("falsity = 0.125\n", "", "error: bad.toml:11: control_points[1]: missing key `falsity` (neutrosophic rule requires it)"),
         ("y = 1\n", "", "error: bad.toml:11: control_points[1]: missing key `y` (every control point needs x and y)"),
-        ("kind = \"bezier\"", "kind = \"bspline\"", "error: bad.toml:1: kind: unknown kind `bspline` (known kinds: bezier)"),
-        ("kind = \"bezier\"\n", "", "error: bad.toml: missing key `kind` (known kinds: bezier)"),
-        ("name = \"test\"", "name = \"test\"\ncolour = \"red\"", "error: bad.toml:3: unknown key `colour` (known keys: kind, name, description, membership, control_points)"),
+        ("kind = \"bezier\"", "kind = \"spline\"", "error: bad.toml:1: kind: unknown kind `spline` (known kinds: bezier, bspline, nurbs, bezier-surface, bspline-surface, nurbs-surface)"),
+        ("kind = \"bezier\"\n", "", "error: bad.toml: missing key `kind` (known kinds: bezier, bspline, nurbs, bezier-surface, bspline-surface, nurbs-surface)"),
+        ("name = \"test\"", "name = \"test\"\ncolour = \"red\"", "error: bad.toml:3: unknown key `colour` (known keys: kind, name, description, membership, degree, knots, rows, cols, degree_u, degree_v, knots_u, knots_v, control_points)"),
         ("name = \"test\"", "name = 7", "error: bad.toml:2: name: expected a string, found a number"),
         ("name = \"test\"", "membership = \"crisp\"", "error: bad.toml:2: membership: unknown membership rule `crisp` (expected one of: neutrosophic, intuitionistic, fuzzy)"),
         ("name = \"test\"", "name = \"test\"\nname = \"again\"", "error: bad.toml:3: invalid TOML: duplicate key `name` in document root"),
@@ -583,7 +581,7 @@ fn json_errors_name_field_path() {
         (r#"{"kind": "bezier", "control_points": {}}"#,
          "error: bad.json: control_points: expected an array, found an object"),
         (r#"{"kind": "bezier", "extra": 1, "control_points": []}"#,
-         "error: bad.json: unknown key `extra` (known keys: kind, name, description, membership, control_points)"),
+         "error: bad.json: unknown key `extra` (known keys: kind, name, description, membership, degree, knots, rows, cols, degree_u, degree_v, knots_u, knots_v, control_points)"),
         (r#"{"kind": "bezier", "control_points": [{"x": 0, "y": 0, "z": 0, "T": 0.5, "I": 0.5, "F": 0.5}, {"x": 0, "y": 0, "T": 0.5, "I": 0.5, "F": 0.5}]}"#,
          "error: bad.json: control_points[1]: has no `z` but control_points[0] has one (all control points must have the same dimension)"),
         ("{\n  \"kind\": \"bezier\",\n  \"control_points\": [\n}\n", "error: bad.json:4: invalid JSON: expected value (column 1)"),
@@ -607,7 +605,7 @@ fn check_prints_summary() {
     assert_eq!(
         out.stdout,
         "example1.toml: valid\nkind: bezier\nname: Example 1\ndegree: 3\ndimension: 2\n\
-         control points: 4\nmembership: neutrosophic\ntruth: 0.2..0.8\n\
+         control points: 4\nmembership: neutrosophic\ndomain: [0, 1]\ntruth: 0.2..0.8\n\
          indeterminacy: 0.1..0.6\nfalsity: 0.1..0.4\n"
     );
     let out = run_in(&examples_dir(), &["check", "helix3d.toml"], None);

@@ -1,20 +1,63 @@
-//! `neutrospline check FILE`: validate a file and summarise the curve.
+//! `neutrospline check FILE`: validate a file and summarise the curve or surface.
 
-use crate::commands::MembershipArg;
-use crate::input;
+use neutrospline::KnotVector;
+
+use crate::commands::options::ModelArgs;
+use crate::input::{self, KnotRule, KnotSpec, KnotsSetting, Structure};
 use crate::output::{self, number};
+use crate::shape::Shape;
 
 /// Arguments of `check`.
 #[derive(Debug, clap::Args)]
+#[command(
+    after_help = "Prints `FILE: valid`, then one `label: value` line each: kind, name (if \
+any), degree (curves) or degree_u and degree_v (surfaces), dimension, control points (with \
+rows x columns for surfaces), membership, knots (B-spline and NURBS; knots_u and knots_v for \
+surfaces), domain (domain_u and domain_v), weights (NURBS: min..max), and the truth, \
+indeterminacy and falsity ranges (min..max over the control points).\n\
+Model options: a CSV file lists control points only, so these give its kind, degree, knots and \
+grid; with a TOML/JSON file an option fills in a key the file leaves out, and must agree with \
+the file where it declares the key."
+)]
 pub struct CheckArgs {
-    /// The curve file: .csv, .toml or .json; `-` reads CSV from standard input
+    /// The model file: .csv, .toml or .json; `-` reads CSV from standard input
     #[arg(value_name = "FILE")]
     pub file: String,
 
-    /// Membership rule for the degrees. For CSV it chooses the rule (default neutrosophic); for
-    /// TOML/JSON it applies when the file declares none and must agree with the file otherwise
-    #[arg(long, value_enum, value_name = "RULE")]
-    pub membership: Option<MembershipArg>,
+    /// Shape settings for CSV files.
+    #[command(flatten)]
+    pub model: ModelArgs,
+}
+
+/// Knot lists longer than this are shortened to their first and last [`KNOTS_SHOWN`].
+const KNOTS_IN_FULL: usize = 16;
+/// Knots shown at each end of a long list.
+const KNOTS_SHOWN: usize = 6;
+
+/// `0, 0, 0, 0.5, 1, 1, 1 (7 knots, clamped-uniform)` or `... (9 knots, given, unclamped)`;
+/// long lists show their ends only.
+fn knots_line(knots: &KnotVector, setting: Option<&KnotsSetting>) -> String {
+    let values = knots.knots();
+    let shown: Vec<String> = if values.len() > KNOTS_IN_FULL {
+        let head = values[..KNOTS_SHOWN].iter().map(|&k| number(k));
+        let tail = values[values.len() - KNOTS_SHOWN..]
+            .iter()
+            .map(|&k| number(k));
+        head.chain(["...".to_owned()]).chain(tail).collect()
+    } else {
+        values.iter().map(|&k| number(k)).collect()
+    };
+    let source = match setting.map(|s| &s.spec) {
+        None => KnotRule::ClampedUniform.name(),
+        Some(KnotSpec::Rule(rule)) => rule.name(),
+        Some(KnotSpec::Explicit(_)) if knots.is_clamped() => "given, clamped",
+        Some(KnotSpec::Explicit(_)) => "given, unclamped",
+    };
+    format!("{} ({} knots, {source})", shown.join(", "), values.len())
+}
+
+fn domain_line((a, b): (f64, f64)) -> String {
+    format!("[{}, {}]", number(a), number(b))
 }
 
 /// Validates the file and prints its summary.
@@ -22,25 +65,75 @@ pub struct CheckArgs {
 /// # Errors
 /// An invalid file, or a write error.
 pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
-    let model = input::load(&args.file, args.membership.map(Into::into))?;
+    let model = input::load(&args.file, &args.model.overrides())?;
     let file = model.file.clone();
-    let kind = model.kind;
     let name = model.name.clone();
     let membership = model.membership;
-    let curve = model.into_curve()?;
+    let structure = model.structure.clone();
+    let shape = model.into_shape()?;
     output::emit(None, |w| {
         writeln!(w, "{file}: valid")?;
-        writeln!(w, "kind: {kind}")?;
+        writeln!(w, "kind: {}", shape.kind())?;
         if let Some(name) = &name {
             writeln!(w, "name: {name}")?;
         }
-        writeln!(w, "degree: {}", curve.degree())?;
-        writeln!(w, "dimension: {}", curve.dimension())?;
-        writeln!(w, "control points: {}", curve.len())?;
-        writeln!(w, "membership: {membership}")?;
+        match (&shape, &structure) {
+            (
+                Shape::Surface(s),
+                Structure::Surface {
+                    knots_u, knots_v, ..
+                },
+            ) => {
+                writeln!(w, "degree_u: {}", s.degree_u())?;
+                writeln!(w, "degree_v: {}", s.degree_v())?;
+                writeln!(w, "dimension: 3")?;
+                let plural =
+                    |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
+                writeln!(
+                    w,
+                    "control points: {} ({} x {})",
+                    shape.len(),
+                    plural(s.rows(), "row"),
+                    plural(s.cols(), "column")
+                )?;
+                writeln!(w, "membership: {membership}")?;
+                if shape.kind().has_knots() {
+                    writeln!(w, "knots_u: {}", knots_line(s.knots_u(), knots_u.as_ref()))?;
+                    writeln!(w, "knots_v: {}", knots_line(s.knots_v(), knots_v.as_ref()))?;
+                }
+                writeln!(w, "domain_u: {}", domain_line(s.domain_u()))?;
+                writeln!(w, "domain_v: {}", domain_line(s.domain_v()))?;
+            }
+            _ => {
+                let setting = match &structure {
+                    Structure::Curve { knots, .. } => knots.as_ref(),
+                    Structure::Surface { .. } => None,
+                };
+                if let Some(degree) = shape.curve_degree() {
+                    writeln!(w, "degree: {degree}")?;
+                }
+                writeln!(w, "dimension: {}", shape.dimension())?;
+                writeln!(w, "control points: {}", shape.len())?;
+                writeln!(w, "membership: {membership}")?;
+                if let Some(knots) = shape.curve_knots() {
+                    writeln!(w, "knots: {}", knots_line(knots, setting))?;
+                }
+                if let Some(domain) = shape.curve_domain() {
+                    writeln!(w, "domain: {}", domain_line(domain))?;
+                }
+            }
+        }
+        if let Some(weights) = shape.weights() {
+            let (min, max) = weights
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &w| {
+                    (lo.min(w), hi.max(w))
+                });
+            writeln!(w, "weights: {}..{}", number(min), number(max))?;
+        }
         for (label, range) in ["truth", "indeterminacy", "falsity"]
             .iter()
-            .zip(curve.degree_ranges())
+            .zip(shape.degree_ranges())
         {
             writeln!(w, "{label}: {}..{}", number(range.min), number(range.max))?;
         }

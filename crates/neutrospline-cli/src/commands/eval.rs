@@ -1,20 +1,35 @@
-//! `neutrospline eval FILE`: a table of the curve (and its derivative) at chosen parameters.
+//! `neutrospline eval FILE`: a table of the curve or surface (and its derivatives) at chosen
+//! parameters, written row by row as it is computed.
 
 use std::path::PathBuf;
 
-use crate::commands::MembershipArg;
-use crate::input;
+use crate::commands::options::ModelArgs;
+use crate::input::{self, UsageError};
 use crate::output::{self, TableFormat};
+use crate::shape::{Extras, Param, Shape};
 
 /// Arguments of `eval`.
 #[derive(Debug, clap::Args)]
+#[command(after_help = "Columns:\n  \
+curves    t, x, y[, z], truth, indeterminacy, falsity; with --derivative the rates d/dt\n            \
+dx, dy[, dz], dtruth, dindeterminacy, dfalsity\n  \
+surfaces  u, v, x, y, z, truth, indeterminacy, falsity; with --derivative the partial\n            \
+derivatives dx_du, dy_du, dz_du, dtruth_du, dindeterminacy_du, dfalsity_du, then\n            \
+dx_dv, ..., dfalsity_dv; with --normal the unit normal nx, ny, nz (empty in CSV, null\n            \
+in JSON, where the surface is degenerate)\n\
+The domain of a curve is [knot_p, knot_{m-p}] ([0, 1] for Bezier curves and for the default\n\
+clamped-uniform knots); `neutrospline check FILE` prints it.\n\
+Model options: a CSV file lists control points only, so these give its kind, degree, knots and\n\
+grid; with a TOML/JSON file an option fills in a key the file leaves out, and must agree with\n\
+the file where it declares the key.")]
 pub struct EvalArgs {
-    /// The curve file: .csv, .toml or .json; `-` reads CSV from standard input
+    /// The model file: .csv, .toml or .json; `-` reads CSV from standard input
     #[arg(value_name = "FILE")]
     pub file: String,
 
-    /// Evaluate at N evenly spaced parameters t_k = k / (N - 1), k = 0..N-1, from 0 to 1
-    /// inclusive (N = 1: t = 0 only)
+    /// Curves: evaluate at N evenly spaced parameters t_k = a + (b - a) k / (N - 1),
+    /// k = 0..N-1, over the whole domain [a, b], ends exact (N = 1: t = a only). Surfaces: the
+    /// N x N grid of such u and v, u varying slowest
     #[arg(
         long,
         value_name = "N",
@@ -24,18 +39,23 @@ pub struct EvalArgs {
     )]
     pub samples: u64,
 
-    /// Evaluate at these parameters, in this order (each in [0, 1])
+    /// Evaluate at these parameters, in this order: T1,T2,... for a curve, U:V,U:V,... for a
+    /// surface (each inside the domain)
     #[arg(
         long,
-        value_name = "T1,T2,...",
-        value_parser = parse_parameters,
-        allow_negative_numbers = true
+        value_name = "T1,T2,...|U:V,...",
+        value_parser = parse_at,
+        allow_hyphen_values = true
     )]
-    pub at: Option<Parameters>,
+    pub at: Option<AtList>,
 
-    /// Add the first derivative: columns dx, dy[, dz], dtruth, dindeterminacy, dfalsity
+    /// Add the first derivatives (curves: d/dt; surfaces: d/du and d/dv; see Columns below)
     #[arg(long)]
     pub derivative: bool,
+
+    /// Surfaces: add the unit normal (S_u x S_v normalised) as columns nx, ny, nz
+    #[arg(long)]
+    pub normal: bool,
 
     /// Output format: csv (a header row, then one row per parameter) or json (an array of
     /// objects keyed by column name)
@@ -47,44 +67,86 @@ pub struct EvalArgs {
     #[arg(short = 'o', long = "output", value_name = "OUT")]
     pub output: Option<PathBuf>,
 
-    /// Membership rule for the degrees. For CSV it chooses the rule (default neutrosophic); for
-    /// TOML/JSON it applies when the file declares none and must agree with the file otherwise
-    #[arg(long, value_enum, value_name = "RULE")]
-    pub membership: Option<MembershipArg>,
+    /// Shape settings for CSV files.
+    #[command(flatten)]
+    pub model: ModelArgs,
 }
 
-/// The parameters given with `--at`.
+/// The parameters given with `--at`, each with its text for messages.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Parameters(pub Vec<f64>);
+pub struct AtList(pub Vec<(Param, String)>);
 
-/// Parses `T1,T2,...`: each a finite number in [0, 1].
-fn parse_parameters(text: &str) -> Result<Parameters, String> {
-    text.split(',')
-        .map(|item| {
-            let item = item.trim();
-            match item.parse::<f64>() {
-                Ok(t) if (0.0..=1.0).contains(&t) => Ok(t),
-                Ok(t) if t.is_nan() => Err(format!(
-                    "parameter `{item}` is not a number (every parameter must be in [0, 1])"
-                )),
-                Ok(_) => Err(format!(
-                    "parameter `{item}` is outside [0, 1] (every parameter must be in [0, 1])"
-                )),
-                Err(_) => Err(format!("parameter `{item}` is not a number")),
-            }
-        })
-        .collect::<Result<_, _>>()
-        .map(Parameters)
+/// Parses a finite number of `--at`.
+fn parse_value(item: &str) -> Result<f64, String> {
+    match item.parse::<f64>() {
+        Ok(t) if t.is_finite() => Ok(t),
+        Ok(_) => Err(format!("parameter `{item}` is not a finite number")),
+        Err(_) => Err(format!("parameter `{item}` is not a number")),
+    }
 }
 
-/// The parameters to evaluate at.
-fn parameters(args: &EvalArgs) -> Box<dyn Iterator<Item = f64> + '_> {
-    match &args.at {
-        Some(Parameters(ts)) => Box::new(ts.iter().copied()),
-        None if args.samples <= 1 => Box::new(std::iter::once(0.0)),
-        None => {
-            let last = args.samples - 1;
-            Box::new((0..=last).map(move |k| k as f64 / last as f64))
+/// Parses `T1,T2,...` or `U:V,U:V,...`: finite numbers, all items of the same form. Domains
+/// are checked once the file is read.
+fn parse_at(text: &str) -> Result<AtList, String> {
+    let mut items: Vec<(Param, String)> = Vec::new();
+    for item in text.split(',') {
+        let item = item.trim();
+        let param = match item.split_once(':') {
+            None => Param::T(parse_value(item)?),
+            Some((u, v)) => {
+                let pair = parse_value(u.trim()).and_then(|u| Ok((u, parse_value(v.trim())?)));
+                match pair {
+                    Ok((u, v)) => Param::Uv(u, v),
+                    Err(_) => {
+                        return Err(format!(
+                            "`{item}` is not a pair U:V of finite numbers (such as 0.5:0.25)"
+                        ))
+                    }
+                }
+            }
+        };
+        if let Some((first, first_text)) = items.first() {
+            if matches!(first, Param::T(_)) != matches!(param, Param::T(_)) {
+                return Err(format!(
+                    "`{first_text}` and `{item}` mix single parameters and pairs (give \
+                     T1,T2,... for a curve or U:V,U:V,... for a surface)"
+                ));
+            }
+        }
+        items.push((param, item.to_owned()));
+    }
+    Ok(AtList(items))
+}
+
+/// Sample `k` of `n` evenly spaced over `[a, b]`: `a + (b - a) k / (n - 1)`, with both ends
+/// exact and never beyond `b` (for `n = 1`, `a`).
+fn sample(k: u64, n: u64, (a, b): (f64, f64)) -> f64 {
+    if k == 0 || n <= 1 {
+        a
+    } else if k + 1 >= n {
+        b
+    } else {
+        (a + (b - a) * (k as f64 / (n - 1) as f64)).clamp(a, b)
+    }
+}
+
+/// The parameters to evaluate at, lazily.
+fn parameters<'a>(args: &'a EvalArgs, shape: &Shape) -> Box<dyn Iterator<Item = Param> + 'a> {
+    if let Some(AtList(items)) = &args.at {
+        return Box::new(items.iter().map(|(p, _)| *p));
+    }
+    let n = args.samples;
+    match shape {
+        Shape::Surface(s) => {
+            let (du, dv) = (s.domain_u(), s.domain_v());
+            Box::new((0..n).flat_map(move |i| {
+                let u = sample(i, n, du);
+                (0..n).map(move |j| Param::Uv(u, sample(j, n, dv)))
+            }))
+        }
+        _ => {
+            let domain = shape.curve_domain().unwrap_or((0.0, 1.0));
+            Box::new((0..n).map(move |k| Param::T(sample(k, n, domain))))
         }
     }
 }
@@ -92,17 +154,36 @@ fn parameters(args: &EvalArgs) -> Box<dyn Iterator<Item = f64> + '_> {
 /// Evaluates and writes the table.
 ///
 /// # Errors
-/// An invalid file, an evaluation error, or a write error.
+/// An invalid file, a usage error (`--at` outside the domain, `--normal` for a curve), an
+/// evaluation error, or a write error.
 pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
-    let model = input::load(&args.file, args.membership.map(Into::into))?;
+    let model = input::load(&args.file, &args.model.overrides())?;
     let file = model.file.clone();
-    let curve = model.into_curve()?;
-    let columns = curve.columns(args.derivative);
-    let sampler = curve.sampler(args.derivative);
-    let rows = parameters(args).map(|t| {
+    let shape = model.into_shape()?;
+    if args.normal && !shape.is_surface() {
+        return Err(UsageError(format!(
+            "--normal applies only to surfaces ({file} holds a {} curve)",
+            shape.kind()
+        ))
+        .into());
+    }
+    if let Some(AtList(items)) = &args.at {
+        for (param, text) in items {
+            shape
+                .check_param(*param, text)
+                .map_err(|m| UsageError(format!("--at: {m}")))?;
+        }
+    }
+    let extras = Extras {
+        derivative: args.derivative,
+        normal: args.normal,
+    };
+    let columns = shape.columns(extras);
+    let sampler = shape.sampler(extras);
+    let rows = parameters(args, &shape).map(|param| {
         sampler
-            .row(t)
-            .map_err(|e| anyhow::anyhow!("{file}: cannot evaluate at t = {t}: {e}"))
+            .row(param)
+            .map_err(|e| anyhow::anyhow!("{file}: cannot evaluate at {param}: {e}"))
     });
     output::emit(args.output.as_deref(), |w| {
         output::write_table(w, args.format, &columns, rows)
@@ -113,22 +194,54 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
 mod tests {
     use super::*;
 
+    fn ts(list: &AtList) -> Vec<Param> {
+        list.0.iter().map(|(p, _)| *p).collect()
+    }
+
     #[test]
-    fn parse_parameters_accepts_and_rejects() {
+    fn parse_at_accepts_and_rejects() {
         assert_eq!(
-            parse_parameters("0, 0.5,1"),
-            Ok(Parameters(vec![0.0, 0.5, 1.0]))
+            ts(&parse_at("0, 0.5,1").unwrap()),
+            [Param::T(0.0), Param::T(0.5), Param::T(1.0)]
+        );
+        assert_eq!(ts(&parse_at("-2.5").unwrap()), [Param::T(-2.5)]);
+        assert_eq!(
+            ts(&parse_at("0:1, 0.5 : 0.25").unwrap()),
+            [Param::Uv(0.0, 1.0), Param::Uv(0.5, 0.25)]
         );
         assert_eq!(
-            parse_parameters("0,1.5").unwrap_err(),
-            "parameter `1.5` is outside [0, 1] (every parameter must be in [0, 1])"
+            parse_at("0,NaN").unwrap_err(),
+            "parameter `NaN` is not a finite number"
         );
-        assert!(parse_parameters("-0.1").is_err());
-        assert!(parse_parameters("NaN").is_err());
-        assert!(parse_parameters("inf").is_err());
         assert_eq!(
-            parse_parameters("0,,1").unwrap_err(),
+            parse_at("0,,1").unwrap_err(),
             "parameter `` is not a number"
         );
+        assert_eq!(
+            parse_at("0.5:").unwrap_err(),
+            "`0.5:` is not a pair U:V of finite numbers (such as 0.5:0.25)"
+        );
+        assert!(parse_at("1:2:3").is_err());
+        assert!(parse_at("inf:0").is_err());
+        assert_eq!(
+            parse_at("0.5,0.5:0.5").unwrap_err(),
+            "`0.5` and `0.5:0.5` mix single parameters and pairs (give T1,T2,... for a curve or U:V,U:V,... for a surface)"
+        );
+    }
+
+    #[test]
+    fn sample_ends_are_exact() {
+        let d = (0.1, 0.7);
+        assert_eq!(sample(0, 7, d), 0.1);
+        assert_eq!(sample(6, 7, d), 0.7);
+        assert_eq!(sample(0, 1, d), 0.1);
+        for k in 0..1000 {
+            let t = sample(k, 1000, (1.0 / 3.0, 2.0 / 3.0));
+            assert!((1.0 / 3.0..=2.0 / 3.0).contains(&t));
+        }
+        // On [0, 1] the samples are exactly k / (n - 1).
+        for k in 0..=100 {
+            assert_eq!(sample(k, 101, (0.0, 1.0)), k as f64 / 100.0);
+        }
     }
 }

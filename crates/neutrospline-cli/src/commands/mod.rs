@@ -4,6 +4,7 @@
 pub mod check;
 pub mod eval;
 pub mod example;
+pub mod options;
 
 use neutrospline::Membership;
 

@@ -1,19 +1,26 @@
 //! CSV tables: a header row, then one control point per row.
 //!
-//! Columns (case-insensitive): `x`, `y`, optional `z`, `truth`, `indeterminacy`, `falsity`
-//! (aliases `T`, `I`, `F`) and an optional `name`. Lines starting with `#` are comments, empty
-//! lines are skipped, cells are trimmed, CRLF line ends and a UTF-8 byte order mark are
-//! accepted. Line numbers in errors are physical lines of the file (1-based, comments counted).
+//! Columns (case-insensitive): `x`, `y`, optional `z` (required for surfaces), `truth`,
+//! `indeterminacy`, `falsity` (aliases `T`, `I`, `F`), `weight` (exactly for the NURBS kinds)
+//! and an optional `name`. Lines starting with `#` are comments, empty lines are skipped, cells
+//! are trimmed, CRLF line ends and a UTF-8 byte order mark are accepted. Line numbers in errors
+//! are physical lines of the file (1-based, comments counted).
+//!
+//! A CSV file lists control points only: the kind, degree, knots and grid come from the
+//! command line ([`Overrides`]: `--kind`, `--degree`, `--knots`, `--rows`, ...).
 
-use neutrospline::{DegreeError, Degrees, Membership};
+use neutrospline::{DegreeError, Degrees};
 
 use super::{
     duplicate_rule, line_of, missing_degree, parse_number, strip_bom, Field, Format, InputError,
-    Kind, Model, Origin, PointRecord,
+    Key, Kind, KnotsSetting, Model, Origin, Overrides, PointRecord, Setting, Structure,
 };
 
-/// Parses a CSV table; `membership` is the rule the degrees must obey.
-pub(super) fn parse(file: &str, bytes: &[u8], membership: Membership) -> Result<Model, InputError> {
+/// Parses a CSV table; the command line's `overrides` give the kind, the membership rule the
+/// degrees must obey, and the structure.
+pub(super) fn parse(file: &str, bytes: &[u8], overrides: &Overrides) -> Result<Model, InputError> {
+    let kind = overrides.kind.unwrap_or(Kind::DEFAULT);
+    let membership = overrides.membership.unwrap_or_default();
     let error = |line: Option<usize>, field: Option<String>, message: String| InputError {
         file: file.to_owned(),
         line,
@@ -83,6 +90,33 @@ pub(super) fn parse(file: &str, bytes: &[u8], membership: Membership) -> Result<
             format!("missing column `{kind}` ({membership} rule requires it)"),
         ));
     }
+    if kind.is_surface() && !has(Field::Z) {
+        return Err(error(
+            header_line,
+            None,
+            "missing column `z` (surfaces are 3-D: every control point needs x, y and z)"
+                .to_owned(),
+        ));
+    }
+    if kind.is_rational() && !has(Field::Weight) {
+        return Err(error(
+            header_line,
+            None,
+            format!(
+                "missing column `weight` (kind `{kind}` needs a positive weight for every control point)"
+            ),
+        ));
+    }
+    if !kind.is_rational() && has(Field::Weight) {
+        return Err(error(
+            header_line,
+            None,
+            format!(
+                "column `weight` does not apply to kind `{kind}` (weights only apply to NURBS: \
+                 --kind nurbs or --kind nurbs-surface)"
+            ),
+        ));
+    }
     let dimension = if has(Field::Z) { 3 } else { 2 };
 
     let mut points = Vec::new();
@@ -100,15 +134,19 @@ pub(super) fn parse(file: &str, bytes: &[u8], membership: Membership) -> Result<
                 ),
             ));
         }
-        let mut values = [None::<f64>; 7];
+        let mut values = [None::<f64>; 8];
         let mut name = None;
         for ((&field, cell), heading) in columns.iter().zip(record.iter()).zip(header.iter()) {
             if field == Field::Name {
                 name = (!cell.is_empty()).then(|| cell.to_owned());
                 continue;
             }
-            let value = parse_number(cell)
-                .map_err(|m| error(line, Some(format!("column `{heading}`")), m))?;
+            let value = match (field, cell.parse::<f64>()) {
+                // Any number, NaN and infinities included: the core's NURBS weight rule judges it.
+                (Field::Weight, Ok(w)) => w,
+                _ => parse_number(cell)
+                    .map_err(|m| error(line, Some(format!("column `{heading}`")), m))?,
+            };
             values[field.index()] = Some(value);
         }
         let get = |f: Field| values[f.index()];
@@ -127,7 +165,12 @@ pub(super) fn parse(file: &str, bytes: &[u8], membership: Membership) -> Result<
             name,
             position,
             degrees,
+            weight: get(Field::Weight),
             origin: Origin { line, field: None },
+            weight_origin: Origin {
+                line,
+                field: Some("column `weight`".to_owned()),
+            },
         });
     }
     if points.is_empty() {
@@ -140,13 +183,62 @@ pub(super) fn parse(file: &str, bytes: &[u8], membership: Membership) -> Result<
     Ok(Model {
         file: file.to_owned(),
         format: Format::Csv,
-        kind: Kind::Bezier,
+        kind,
         name: None,
         description: None,
         membership,
         dimension,
         points,
+        structure: structure(kind, overrides),
     })
+}
+
+/// The structure given on the command line (`--degree`, `--knots`, `--rows`, ...).
+fn structure(kind: Kind, overrides: &Overrides) -> Structure {
+    let number = |key: Key, value: Option<usize>| {
+        value.map(|value| Setting {
+            value,
+            origin: Origin {
+                line: None,
+                field: Some(key.option().to_owned()),
+            },
+        })
+    };
+    let knots = |key: Key, spec: &Option<super::KnotSpec>| {
+        spec.clone().map(|spec| KnotsSetting {
+            spec,
+            origin: Origin {
+                line: None,
+                field: Some(key.option().to_owned()),
+            },
+            lines: Vec::new(),
+        })
+    };
+    if kind.is_surface() {
+        // `check_overrides` made sure that --rows and --cols are given for surface kinds.
+        let count = |key: Key, value: Option<usize>| {
+            number(key, value).unwrap_or(Setting {
+                value: 0,
+                origin: Origin {
+                    line: None,
+                    field: Some(key.option().to_owned()),
+                },
+            })
+        };
+        Structure::Surface {
+            rows: count(Key::Rows, overrides.rows),
+            cols: count(Key::Cols, overrides.cols),
+            degree_u: number(Key::DegreeU, overrides.degree_u),
+            degree_v: number(Key::DegreeV, overrides.degree_v),
+            knots_u: knots(Key::KnotsU, &overrides.knots_u),
+            knots_v: knots(Key::KnotsV, &overrides.knots_v),
+        }
+    } else {
+        Structure::Curve {
+            degree: number(Key::Degree, overrides.degree),
+            knots: knots(Key::Knots, &overrides.knots),
+        }
+    }
 }
 
 /// The physical line of the record that the `csv` reader reports at byte `offset`.
@@ -200,13 +292,23 @@ fn read_header(header: &::csv::StringRecord) -> Result<Vec<Field>, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use neutrospline::Membership;
+
+    fn rule(membership: Membership) -> Overrides {
+        Overrides {
+            membership: Some(membership),
+            ..Overrides::default()
+        }
+    }
 
     fn parse_ok(text: &str) -> Model {
-        parse("t.csv", text.as_bytes(), Membership::Neutrosophic).unwrap()
+        parse("t.csv", text.as_bytes(), &rule(Membership::Neutrosophic)).unwrap()
     }
 
     fn parse_err(text: &[u8], membership: Membership) -> String {
-        parse("t.csv", text, membership).unwrap_err().to_string()
+        parse("t.csv", text, &rule(membership))
+            .unwrap_err()
+            .to_string()
     }
 
     const EXAMPLE1: &str = "name,x,y,truth,indeterminacy,falsity\n\
@@ -256,7 +358,7 @@ mod tests {
             (b"x,y,truth\n1,0,0\n", Intuitionistic, "t.csv:1: missing column `falsity` (intuitionistic rule requires it)"),
             (b"x,y,truth,T,indeterminacy,falsity\n", Neutrosophic, "t.csv:1: column 4 `T` repeats column 3 `truth` (each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity)"),
             (b"x,y,x\n", Neutrosophic, "t.csv:1: column 3 `x` repeats column 1 `x` (each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity)"),
-            (b"x,y,w\n", Neutrosophic, "t.csv:1: unknown column `w` (known columns: x, y, z, truth (T), indeterminacy (I), falsity (F), name)"),
+            (b"x,y,w\n", Neutrosophic, "t.csv:1: unknown column `w` (known columns: x, y, z, truth (T), indeterminacy (I), falsity (F), weight, name)"),
             (b"x,y,truth,indeterminacy,falsity\n1,2,abc,0,0\n", Neutrosophic, "t.csv:2: column `truth`: value `abc` is not a number"),
             (b"x,y,truth,indeterminacy,falsity\n1,NaN,0,0,0\n", Neutrosophic, "t.csv:2: column `y`: value `NaN` is not a finite number (NaN and infinities are not allowed)"),
             (b"x,y,truth,indeterminacy,falsity\n1,2,0,0,inf\n", Neutrosophic, "t.csv:2: column `falsity`: value `inf` is not a finite number (NaN and infinities are not allowed)"),
@@ -281,11 +383,11 @@ mod tests {
         let m = parse(
             "t.csv",
             b"x,y,truth,falsity\n0,0,0.5,0.25\n",
-            Membership::Intuitionistic,
+            &rule(Membership::Intuitionistic),
         )
         .unwrap();
         assert_eq!(m.points[0].degrees.to_array(), [0.5, 0.25, 0.25]);
-        let m = parse("t.csv", b"x,y,truth\n0,0,0.5\n", Membership::Fuzzy).unwrap();
+        let m = parse("t.csv", b"x,y,truth\n0,0,0.5\n", &rule(Membership::Fuzzy)).unwrap();
         assert_eq!(m.points[0].degrees.to_array(), [0.5, 0.0, 0.0]);
     }
 

@@ -1,21 +1,30 @@
-//! Reading curve files: CSV tables of control points and TOML / JSON models.
+//! Reading model files: CSV tables of control points and TOML / JSON models.
 //!
-//! Every format is parsed into the neutral [`Model`] (name, description, membership rule,
-//! dimension and control points with optional names); [`Model::into_curve`] then builds the
-//! core library's curve. The degrees of each control point are validated by the core
-//! ([`Degrees::with_membership`]) while parsing, so that an error can name its line or field.
-//! Every failure is an [`InputError`], whose message names the file, the line and / or field,
-//! the value and the rule.
+//! Every format is parsed into the neutral [`Model`] (kind, name, description, membership rule,
+//! dimension, control points with optional names and weights, and the [`Structure`]: degree,
+//! knots, grid); [`Model::into_shape`] then builds the core library's curve or surface. The
+//! degrees of each control point are validated by the core ([`Degrees::with_membership`])
+//! while parsing, and knots by the core's `KnotVector` while building, so that an error can
+//! name its line or field. Every failure is an [`InputError`], whose message names the file,
+//! the line and / or field, the value and the rule.
 
+mod build;
 mod csv;
 mod model;
+mod settings;
 
 use std::fmt;
 use std::path::Path;
 
-use neutrospline::{Bezier, ControlPoint, CurveError, DegreeError, Degrees, Membership};
+use neutrospline::{DegreeError, Degrees, Membership};
 
-use crate::curve::AnyCurve;
+pub use settings::{
+    resolve, Key, KeyValue, Kind, KnotRule, KnotSpec, KnotsSetting, Overrides, Setting, Structure,
+};
+
+/// The largest degree or count of control points accepted, in files and on the command line
+/// (larger values are surely mistakes; every integer up to it is exact in a 64-bit float).
+pub const MAX_INTEGER: u64 = 1_000_000_000;
 
 /// The name used for standard input in messages.
 pub const STDIN_NAME: &str = "<stdin>";
@@ -66,43 +75,6 @@ impl fmt::Display for UsageError {
 
 impl std::error::Error for UsageError {}
 
-/// The kinds of curve a model file may declare with `kind = "..."`.
-///
-/// Only Bézier curves exist so far; B-spline and NURBS kinds are planned.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Kind {
-    /// A Bézier curve: the control points are the curve's Bernstein coefficients.
-    Bezier,
-}
-
-impl Kind {
-    /// Every kind, in the order they are listed in messages.
-    pub const ALL: [Kind; 1] = [Kind::Bezier];
-
-    /// The name used in files.
-    pub const fn name(self) -> &'static str {
-        match self {
-            Kind::Bezier => "bezier",
-        }
-    }
-
-    /// Parses an exact kind name.
-    pub fn from_name(name: &str) -> Option<Kind> {
-        Kind::ALL.into_iter().find(|k| k.name() == name)
-    }
-
-    /// `bezier, ...`: the known kinds, for messages.
-    pub fn known_list() -> String {
-        join(Kind::ALL.iter().map(|k| k.name()))
-    }
-}
-
-impl fmt::Display for Kind {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
 /// The file formats, chosen by extension.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Format {
@@ -149,18 +121,20 @@ pub(crate) enum Field {
     Truth,
     Indeterminacy,
     Falsity,
+    Weight,
     Name,
 }
 
 impl Field {
     /// Every field, in the order they are listed in messages.
-    pub(crate) const ALL: [Field; 7] = [
+    pub(crate) const ALL: [Field; 8] = [
         Field::X,
         Field::Y,
         Field::Z,
         Field::Truth,
         Field::Indeterminacy,
         Field::Falsity,
+        Field::Weight,
         Field::Name,
     ];
 
@@ -173,6 +147,7 @@ impl Field {
             Field::Truth => "truth",
             Field::Indeterminacy => "indeterminacy",
             Field::Falsity => "falsity",
+            Field::Weight => "weight",
             Field::Name => "name",
         }
     }
@@ -206,7 +181,7 @@ impl Field {
             .find(|f| same(f.name()) || f.alias().is_some_and(same))
     }
 
-    /// `x, y, z, truth (T), indeterminacy (I), falsity (F), name`.
+    /// `x, y, z, truth (T), indeterminacy (I), falsity (F), weight, name`.
     pub(crate) fn known_list() -> String {
         Field::ALL
             .iter()
@@ -233,8 +208,12 @@ pub struct PointRecord {
     pub position: Vec<f64>,
     /// The validated degrees.
     pub degrees: Degrees,
+    /// The NURBS weight (present exactly for the NURBS kinds; checked when the shape is built).
+    pub weight: Option<f64>,
     /// Where the point was read, for errors found later.
     pub origin: Origin,
+    /// Where the weight was read (`control_points[2].weight`, `` column `weight` ``).
+    pub weight_origin: Origin,
 }
 
 /// Where something was read: the line and the field path of a point.
@@ -246,68 +225,37 @@ pub struct Origin {
     pub field: Option<String>,
 }
 
-/// A curve file in the neutral form shared by every format.
+/// A model file in the neutral form shared by every format.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Model {
     /// The file as named in messages.
     pub file: String,
     /// The format it was read in.
     pub format: Format,
-    /// The kind of curve.
+    /// The kind of curve or surface.
     pub kind: Kind,
-    /// Optional name of the curve.
+    /// Optional name.
     pub name: Option<String>,
     /// Optional free-text description.
     pub description: Option<String>,
     /// The rule the degrees were validated with.
     pub membership: Membership,
-    /// 2 or 3.
+    /// 2 or 3 (always 3 for surfaces).
     pub dimension: usize,
-    /// The control points, in order (at least one).
+    /// The control points, in order (at least one; surfaces row by row).
     pub points: Vec<PointRecord>,
+    /// Degree, knots and grid, as declared.
+    pub structure: Structure,
 }
 
 impl Model {
-    /// Builds the core curve.
-    ///
-    /// # Errors
-    /// The core's [`CurveError`], located at the offending control point.
-    pub fn into_curve(self) -> Result<AnyCurve, InputError> {
-        match (self.kind, self.dimension) {
-            (Kind::Bezier, 3) => Ok(AnyCurve::Spatial(self.bezier::<3>()?)),
-            (Kind::Bezier, _) => Ok(AnyCurve::Planar(self.bezier::<2>()?)),
-        }
-    }
-
-    fn bezier<const D: usize>(&self) -> Result<Bezier<D>, InputError> {
-        let points = self
-            .points
-            .iter()
-            .map(|p| {
-                let mut position = [0.0; D];
-                for (slot, &value) in position.iter_mut().zip(&p.position) {
-                    *slot = value;
-                }
-                ControlPoint::new(position, p.degrees)
-            })
-            .collect();
-        Bezier::new(points).map_err(|e| self.curve_error(&e))
-    }
-
-    fn curve_error(&self, e: &CurveError) -> InputError {
-        let origin = match e {
-            CurveError::PositionNotFinite { index, .. } => self
-                .points
-                .get(*index)
-                .map(|p| p.origin.clone())
-                .unwrap_or_default(),
-            _ => Origin::default(),
-        };
+    /// An error located at `origin` in this model's file.
+    pub(crate) fn error_at(&self, origin: &Origin, message: String) -> InputError {
         InputError {
             file: self.file.clone(),
             line: origin.line,
-            field: origin.field,
-            message: e.to_string(),
+            field: origin.field.clone(),
+            message,
         }
     }
 }
@@ -319,15 +267,7 @@ pub fn resolve_membership(
     declared: Option<Membership>,
     cli: Option<Membership>,
 ) -> Result<Membership, String> {
-    match (declared, cli) {
-        (Some(d), Some(c)) if d != c => Err(format!(
-            "the file declares membership `{d}` but --membership is `{c}` \
-             (omit --membership or make them agree)"
-        )),
-        (Some(d), _) => Ok(d),
-        (None, Some(c)) => Ok(c),
-        (None, None) => Ok(Membership::default()),
-    }
+    resolve("membership", "--membership", declared, cli).map(Option::unwrap_or_default)
 }
 
 /// The degree that `membership` requires but that is absent when only the degrees flagged
@@ -382,8 +322,9 @@ pub(crate) fn join<'a>(items: impl IntoIterator<Item = &'a str>) -> String {
 
 /// Parses the contents of `file` (already read) in `format`.
 ///
-/// `membership` is the command line's `--membership`, if any: for CSV it chooses the rule;
-/// for models it applies when the file declares none, and must agree with the file otherwise.
+/// `overrides` are the command line's shape options (`--membership`, `--kind`, `--degree`,
+/// ...): for CSV they are the only source; for models they apply when the file declares
+/// nothing, and must agree with the file otherwise.
 ///
 /// # Errors
 /// An [`InputError`] naming the file, line or field, value and rule.
@@ -391,23 +332,60 @@ pub fn parse(
     file: &str,
     format: Format,
     bytes: &[u8],
-    membership: Option<Membership>,
+    overrides: &Overrides,
 ) -> Result<Model, InputError> {
     match format {
-        Format::Csv => csv::parse(file, bytes, membership.unwrap_or_default()),
-        Format::Toml => model::parse_toml(file, bytes, membership),
-        Format::Json => model::parse_json(file, bytes, membership),
+        Format::Csv => csv::parse(file, bytes, overrides),
+        Format::Toml => model::parse_toml(file, bytes, overrides),
+        Format::Json => model::parse_json(file, bytes, overrides),
     }
+}
+
+/// Checks the command-line options among themselves, before any file is read: each option
+/// must apply to `--kind` when it is given, and a CSV file (which declares nothing) needs the
+/// kind's required options.
+///
+/// # Errors
+/// A [`UsageError`].
+pub fn check_overrides(format: Format, overrides: &Overrides) -> Result<(), UsageError> {
+    let kind = match (overrides.kind, format) {
+        (Some(kind), _) => kind,
+        (None, Format::Csv) => Kind::DEFAULT,
+        (None, _) => return Ok(()),
+    };
+    if let Some(message) = overrides.inapplicable(kind) {
+        let message = if overrides.kind.is_none() {
+            format!("{message}; choose the kind with --kind")
+        } else {
+            message
+        };
+        return Err(UsageError(message));
+    }
+    if format == Format::Csv {
+        if let Some(key) = Key::ALL
+            .into_iter()
+            .find(|&k| k.required_for(kind) && overrides.get(k).is_none())
+        {
+            return Err(UsageError(format!(
+                "kind `{kind}` needs {} for a CSV file ({}; a CSV file only lists control points)",
+                key.option(),
+                key.purpose()
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// Reads and parses `path` (`-` for CSV on standard input).
 ///
 /// # Errors
-/// [`UsageError`] for an unsupported extension, an I/O error with context, or [`InputError`].
-pub fn load(path: &str, membership: Option<Membership>) -> anyhow::Result<Model> {
+/// [`UsageError`] for an unsupported extension or options that do not fit together, an I/O
+/// error with context, or [`InputError`].
+pub fn load(path: &str, overrides: &Overrides) -> anyhow::Result<Model> {
     use std::io::Read;
 
     let format = Format::from_path(path)?;
+    check_overrides(format, overrides)?;
     let (file, bytes) = if path == "-" {
         let mut bytes = Vec::new();
         std::io::stdin()
@@ -419,7 +397,7 @@ pub fn load(path: &str, membership: Option<Membership>) -> anyhow::Result<Model>
         let bytes = std::fs::read(path).map_err(|e| anyhow::anyhow!("{path}: cannot read: {e}"))?;
         (path.to_owned(), bytes)
     };
-    Ok(parse(&file, format, &bytes, membership)?)
+    Ok(parse(&file, format, &bytes, overrides)?)
 }
 
 #[cfg(test)]

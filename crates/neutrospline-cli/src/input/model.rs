@@ -1,24 +1,40 @@
 //! TOML and JSON models.
 //!
 //! ```toml
-//! kind = "bezier"                  # required; known kinds: bezier
-//! name = "Example 1"               # optional
+//! kind = "bspline"                 # required (or --kind): bezier | bspline | nurbs |
+//!                                  #   bezier-surface | bspline-surface | nurbs-surface
+//! name = "Example"                 # optional
 //! description = "..."              # optional
 //! membership = "neutrosophic"      # optional: neutrosophic (default) | intuitionistic | fuzzy
+//!
+//! # Curves
+//! degree = 3                       # bspline, nurbs: required; bezier: optional, must be n
+//! knots = [0, 0, 0, 0, 0.5, 1, 1, 1, 1]  # bspline, nurbs: optional; an array of n + p + 2
+//!                                  #   values, or "clamped-uniform" (default) |
+//!                                  #   "chord-length" | "centripetal"
+//! # Surfaces (control points row by row: the row index runs along u, the column along v)
+//! rows = 4                         # required: control points along u
+//! cols = 4                         # required: control points along v
+//! degree_u = 3                     # bspline-/nurbs-surface: required; bezier-surface:
+//! degree_v = 3                     #   optional, must be rows - 1 and cols - 1
+//! knots_u = "clamped-uniform"      # bspline-/nurbs-surface: optional, an array or
+//! knots_v = [0, 0, 0, 0, 1, 1, 1, 1]  #   "clamped-uniform" (default)
 //!
 //! [[control_points]]               # one table per control point, in order
 //! name = "C0"                      # optional
 //! x = 1.0                          # required
 //! y = 3.0                          # required
-//! # z = 0.0                        # optional; all points have it or none
+//! z = 0.0                          # optional for curves (all points or none); surfaces: required
 //! truth = 0.3                      # or T
 //! indeterminacy = 0.6              # or I
 //! falsity = 0.1                    # or F
+//! weight = 1.0                     # nurbs, nurbs-surface: required (> 0); other kinds: an error
 //! ```
 //!
-//! Keys are case-sensitive; unknown and repeated keys are errors. The document is first read
-//! into a small untyped tree ([`Node`]) that keeps every key, in order, with its source span
-//! (TOML only), so that errors can name the field path and the line.
+//! Keys are case-sensitive; unknown and repeated keys are errors, and so are keys that do not
+//! apply to the kind. The document is first read into a small untyped tree ([`Node`]) that
+//! keeps every key, in order, with its source span (TOML only), so that errors can name the
+//! field path and the line.
 
 use std::fmt;
 use std::ops::Range;
@@ -27,16 +43,26 @@ use neutrospline::{DegreeError, DegreeKind, Degrees, Membership};
 use serde::de::{self, Deserialize, Deserializer, MapAccess, SeqAccess, Visitor};
 
 use super::{
-    duplicate_rule, line_of, not_finite_message, resolve_membership, strip_bom, Field, Format,
-    InputError, Kind, Model, Origin, PointRecord,
+    duplicate_rule, line_of, not_finite_message, resolve, resolve_membership, strip_bom, Field,
+    Format, InputError, Key, KeyValue, Kind, KnotRule, KnotSpec, KnotsSetting, Model, Origin,
+    Overrides, PointRecord, Setting, Structure,
 };
+use crate::output::number;
 
 /// The keys of a model's top-level table.
-const TOP_KEYS: [&str; 5] = [
+const TOP_KEYS: [&str; 13] = [
     "kind",
     "name",
     "description",
     "membership",
+    "degree",
+    "knots",
+    "rows",
+    "cols",
+    "degree_u",
+    "degree_v",
+    "knots_u",
+    "knots_v",
     "control_points",
 ];
 
@@ -217,7 +243,7 @@ impl<'de, const SPANNED: bool> Visitor<'de> for NodeVisitor<SPANNED> {
 pub(super) fn parse_toml(
     file: &str,
     bytes: &[u8],
-    membership: Option<Membership>,
+    overrides: &Overrides,
 ) -> Result<Model, InputError> {
     let walker = Walker::new(file, bytes, Format::Toml)?;
     let text = walker.text;
@@ -231,14 +257,14 @@ pub(super) fn parse_toml(
             .join("; ");
         walker.error(e.span().as_ref(), None, format!("invalid TOML: {message}"))
     })?;
-    walker.model(root.0, membership)
+    walker.model(root.0, overrides)
 }
 
 /// Parses a JSON model.
 pub(super) fn parse_json(
     file: &str,
     bytes: &[u8],
-    membership: Option<Membership>,
+    overrides: &Overrides,
 ) -> Result<Model, InputError> {
     let walker = Walker::new(file, bytes, Format::Json)?;
     let root = serde_json::from_str::<JsonNode>(walker.text).map_err(|e| {
@@ -252,7 +278,14 @@ pub(super) fn parse_json(
             message: format!("invalid JSON: {message} (column {})", e.column()),
         }
     })?;
-    walker.model(root.0, membership)
+    walker.model(root.0, overrides)
+}
+
+/// A structure key's value, where it was declared, and the lines of explicit knots.
+struct Declared {
+    value: KeyValue,
+    origin: Origin,
+    lines: Vec<Option<usize>>,
 }
 
 /// Turns the untyped tree into a [`Model`], with located errors.
@@ -330,7 +363,7 @@ impl<'a> Walker<'a> {
         }
     }
 
-    fn model(&self, root: Node, cli: Option<Membership>) -> Result<Model, InputError> {
+    fn model(&self, root: Node, cli: &Overrides) -> Result<Model, InputError> {
         let Value::Table(entries) = &root.value else {
             return Err(self.error(
                 root.span.as_ref(),
@@ -342,7 +375,7 @@ impl<'a> Walker<'a> {
                 ),
             ));
         };
-        let mut top: [Option<&Node>; TOP_KEYS.len()] = Default::default();
+        let mut top: [Option<&Entry>; TOP_KEYS.len()] = Default::default();
         for entry in entries {
             let Some(i) = TOP_KEYS.iter().position(|&k| k == entry.key) else {
                 return Err(self.error(
@@ -362,21 +395,17 @@ impl<'a> Walker<'a> {
                     format!("duplicated key `{}` (each key may appear once)", entry.key),
                 ));
             }
-            top[i] = Some(&entry.value);
+            top[i] = Some(entry);
         }
-        let [kind, name, description, membership, control_points] = top;
+        let entry = |key: &str| top[TOP_KEYS.iter().position(|&k| k == key).unwrap_or(0)];
+        let node = |key: &str| entry(key).map(|e| &e.value);
 
-        let kind = match kind {
-            None => {
-                return Err(self.error(
-                    None,
-                    None,
-                    format!("missing key `kind` (known kinds: {})", Kind::known_list()),
-                ))
-            }
+        let kind_node = node("kind");
+        let declared_kind = match kind_node {
+            None => None,
             Some(node) => {
                 let text = self.string(node, "kind")?;
-                Kind::from_name(&text).ok_or_else(|| {
+                Some(Kind::from_name(&text).ok_or_else(|| {
                     self.error(
                         node.span.as_ref(),
                         Some("kind".to_owned()),
@@ -385,14 +414,35 @@ impl<'a> Walker<'a> {
                             Kind::known_list()
                         ),
                     )
-                })?
+                })?)
             }
         };
-        let name = name.map(|n| self.string(n, "name")).transpose()?;
-        let description = description
+        let kind_error = |message: String| {
+            self.error(
+                kind_node.and_then(|n| n.span.as_ref()),
+                kind_node.map(|_| "kind".to_owned()),
+                message,
+            )
+        };
+        let kind = resolve("kind", "--kind", declared_kind, cli.kind)
+            .map_err(kind_error)?
+            .ok_or_else(|| {
+                self.error(
+                    None,
+                    None,
+                    format!("missing key `kind` (known kinds: {})", Kind::known_list()),
+                )
+            })?;
+        if let Some(message) = cli.inapplicable(kind) {
+            return Err(kind_error(message));
+        }
+
+        let name = node("name").map(|n| self.string(n, "name")).transpose()?;
+        let description = node("description")
             .map(|n| self.string(n, "description"))
             .transpose()?;
-        let declared = match membership {
+        let membership_node = node("membership");
+        let declared = match membership_node {
             None => None,
             Some(node) => {
                 let text = self.string(node, "membership")?;
@@ -405,15 +455,17 @@ impl<'a> Walker<'a> {
                 })?)
             }
         };
-        let membership = resolve_membership(declared, cli).map_err(|m| {
+        let membership = resolve_membership(declared, cli.membership).map_err(|m| {
             self.error(
-                membership.and_then(|n| n.span.as_ref()),
+                membership_node.and_then(|n| n.span.as_ref()),
                 Some("membership".to_owned()),
                 m,
             )
         })?;
 
-        let Some(list) = control_points else {
+        let structure = self.structure(kind, &|key| entry(key.name()), cli)?;
+
+        let Some(list) = node("control_points") else {
             return Err(self.error(
                 None,
                 None,
@@ -432,7 +484,7 @@ impl<'a> Walker<'a> {
         }
         let mut points: Vec<PointRecord> = Vec::with_capacity(items.len());
         for (i, item) in items.iter().enumerate() {
-            let point = self.point(item, i, membership)?;
+            let point = self.point(item, i, membership, kind)?;
             if let Some(first) = points.first() {
                 if first.position.len() != point.position.len() {
                     let (has, other) = if point.position.len() == 3 {
@@ -462,7 +514,197 @@ impl<'a> Walker<'a> {
             membership,
             dimension,
             points,
+            structure,
         })
+    }
+
+    /// Reads the structure keys that `kind` takes, merged with the command line's options.
+    fn structure<'e>(
+        &self,
+        kind: Kind,
+        entry: &dyn Fn(Key) -> Option<&'e Entry>,
+        cli: &Overrides,
+    ) -> Result<Structure, InputError> {
+        let mut values: Vec<Option<Declared>> = Vec::new();
+        for key in Key::ALL {
+            let found = entry(key);
+            if let Some(e) = found {
+                if !key.applies_to(kind) {
+                    return Err(self.error(
+                        e.key_span.as_ref(),
+                        None,
+                        format!(
+                            "key `{}` does not apply to kind `{kind}` ({} is for: {})",
+                            key.name(),
+                            key.name(),
+                            key.kinds_list()
+                        ),
+                    ));
+                }
+            }
+            let declared = found.map(|e| self.key_value(key, &e.value)).transpose()?;
+            let origin = Origin {
+                line: found.and_then(|e| self.line(e.value.span.as_ref())),
+                field: Some(key.name().to_owned()),
+            };
+            let (value, lines) = match declared {
+                Some((value, lines)) => (Some(value), lines),
+                None => (None, Vec::new()),
+            };
+            let from_file = value.is_some();
+            let value = resolve(key.name(), key.option(), value, cli.get(key)).map_err(|m| {
+                self.error(
+                    found.and_then(|e| e.value.span.as_ref()),
+                    Some(key.name().to_owned()),
+                    m,
+                )
+            })?;
+            if value.is_none() && key.required_for(kind) {
+                return Err(self.error(
+                    None,
+                    None,
+                    format!(
+                        "missing key `{}` (kind `{kind}` needs {}; or give {})",
+                        key.name(),
+                        key.purpose(),
+                        key.option()
+                    ),
+                ));
+            }
+            let origin = if from_file {
+                origin
+            } else {
+                Origin {
+                    line: None,
+                    field: Some(key.option().to_owned()),
+                }
+            };
+            values.push(value.map(|value| Declared {
+                value,
+                origin,
+                lines,
+            }));
+        }
+        let mut take =
+            |key: Key| values[Key::ALL.iter().position(|&k| k == key).unwrap_or(0)].take();
+        let number = |v: Option<Declared>| {
+            v.and_then(|d| match d.value {
+                KeyValue::Number(value) => Some(Setting {
+                    value,
+                    origin: d.origin,
+                }),
+                KeyValue::Knots(_) => None,
+            })
+        };
+        let knots = |v: Option<Declared>| {
+            v.and_then(|d| match d.value {
+                KeyValue::Knots(spec) => Some(KnotsSetting {
+                    spec,
+                    origin: d.origin,
+                    lines: d.lines,
+                }),
+                KeyValue::Number(_) => None,
+            })
+        };
+        if kind.is_surface() {
+            let count = |v: Option<Setting<usize>>, key: Key| {
+                // Required for every surface kind: checked above.
+                v.unwrap_or(Setting {
+                    value: 0,
+                    origin: Origin {
+                        line: None,
+                        field: Some(key.name().to_owned()),
+                    },
+                })
+            };
+            Ok(Structure::Surface {
+                rows: count(number(take(Key::Rows)), Key::Rows),
+                cols: count(number(take(Key::Cols)), Key::Cols),
+                degree_u: number(take(Key::DegreeU)),
+                degree_v: number(take(Key::DegreeV)),
+                knots_u: knots(take(Key::KnotsU)),
+                knots_v: knots(take(Key::KnotsV)),
+            })
+        } else {
+            Ok(Structure::Curve {
+                degree: number(take(Key::Degree)),
+                knots: knots(take(Key::Knots)),
+            })
+        }
+    }
+
+    /// The value of a structure key, with the line of each knot for explicit knots.
+    fn key_value(
+        &self,
+        key: Key,
+        node: &Node,
+    ) -> Result<(KeyValue, Vec<Option<usize>>), InputError> {
+        let path = key.name();
+        if key.is_knots() {
+            return match &node.value {
+                Value::String(text) => {
+                    let rule = KnotRule::from_name(text).ok_or_else(|| {
+                        self.error(
+                            node.span.as_ref(),
+                            Some(path.to_owned()),
+                            format!(
+                                "unknown knot rule `{text}` (expected one of: {}, or an array of knot values)",
+                                KnotRule::known_list()
+                            ),
+                        )
+                    })?;
+                    Ok((KeyValue::Knots(KnotSpec::Rule(rule)), Vec::new()))
+                }
+                Value::Array(items) => {
+                    let mut knots = Vec::with_capacity(items.len());
+                    let mut lines = Vec::with_capacity(items.len());
+                    for (i, item) in items.iter().enumerate() {
+                        knots.push(self.number(item, &format!("{path}[{i}]"))?);
+                        lines.push(self.line(item.span.as_ref()));
+                    }
+                    Ok((KeyValue::Knots(KnotSpec::Explicit(knots)), lines))
+                }
+                _ => Err(self.expected(
+                    node,
+                    path,
+                    &format!(
+                        "an array of knot values or one of: {}",
+                        KnotRule::known_list()
+                    ),
+                )),
+            };
+        }
+        let (min, what) = if key.is_count() {
+            (1, "a positive integer")
+        } else {
+            (0, "a non-negative integer")
+        };
+        let value = match node.value {
+            Value::Integer(v) => Some(v as f64),
+            Value::Float(v) => Some(v),
+            _ => None,
+        };
+        let max = super::MAX_INTEGER as f64;
+        match value {
+            Some(v) if v.fract() == 0.0 && v >= min as f64 && v <= max => {
+                Ok((KeyValue::Number(v as usize), Vec::new()))
+            }
+            Some(v) if v.fract() == 0.0 && v > max => Err(self.error(
+                node.span.as_ref(),
+                Some(path.to_owned()),
+                format!(
+                    "{} is too large (at most {})",
+                    number(v),
+                    super::MAX_INTEGER
+                ),
+            )),
+            Some(v) => Err(self.error(
+                node.span.as_ref(),
+                Some(path.to_owned()),
+                format!("expected {what}, found {}", number(v)),
+            )),
+            None => Err(self.expected(node, path, what)),
+        }
     }
 
     fn point(
@@ -470,13 +712,14 @@ impl<'a> Walker<'a> {
         item: &Node,
         index: usize,
         membership: Membership,
+        kind: Kind,
     ) -> Result<PointRecord, InputError> {
         let path = format!("control_points[{index}]");
         let Value::Table(entries) = &item.value else {
             return Err(self.expected(item, &path, self.table_word()));
         };
-        let mut nodes: [Option<&Node>; 7] = Default::default();
-        let mut keys: [Option<&str>; 7] = Default::default();
+        let mut nodes: [Option<&Node>; 8] = Default::default();
+        let mut keys: [Option<&str>; 8] = Default::default();
         for entry in entries {
             let Some(field) = Field::from_name(&entry.key, false) else {
                 return Err(self.error(
@@ -497,6 +740,16 @@ impl<'a> Walker<'a> {
                         "key `{}` repeats key `{previous}` ({})",
                         entry.key,
                         duplicate_rule()
+                    ),
+                ));
+            }
+            if field == Field::Weight && !kind.is_rational() {
+                return Err(self.error(
+                    entry.key_span.as_ref(),
+                    Some(path.clone()),
+                    format!(
+                        "key `weight` does not apply to kind `{kind}` (weights only apply to NURBS: {})",
+                        Kind::rational_list()
                     ),
                 ));
             }
@@ -531,8 +784,35 @@ impl<'a> Walker<'a> {
                 )
             })?);
         }
-        if let Some(z) = value(Field::Z)? {
-            position.push(z);
+        match value(Field::Z)? {
+            Some(z) => position.push(z),
+            None if kind.is_surface() => {
+                return Err(self.error(
+                    item.span.as_ref(),
+                    Some(path.clone()),
+                    "missing key `z` (surfaces are 3-D: every control point needs x, y and z)"
+                        .to_owned(),
+                ))
+            }
+            None => {}
+        }
+        // Any number, NaN and infinities included: the core's NURBS weight rule judges it.
+        let weight = match node(Field::Weight) {
+            None => None,
+            Some(n) => match n.value {
+                Value::Integer(v) => Some(v as f64),
+                Value::Float(v) => Some(v),
+                _ => return Err(self.expected(n, &format!("{path}.weight"), "a number")),
+            },
+        };
+        if weight.is_none() && kind.is_rational() {
+            return Err(self.error(
+                item.span.as_ref(),
+                Some(path.clone()),
+                format!(
+                    "missing key `weight` (kind `{kind}` needs a positive weight for every control point)"
+                ),
+            ));
         }
         let truth = value(Field::Truth)?.ok_or_else(|| {
             self.error(
@@ -573,14 +853,24 @@ impl<'a> Walker<'a> {
             };
             self.error(span, Some(path.clone()), message)
         })?;
+        let weight_origin = Origin {
+            line: self.line(
+                node(Field::Weight)
+                    .and_then(|n| n.span.as_ref())
+                    .or(item.span.as_ref()),
+            ),
+            field: Some(format!("{path}.weight")),
+        };
         Ok(PointRecord {
             name,
             position,
             degrees,
+            weight,
             origin: Origin {
                 line: self.line(item.span.as_ref()),
                 field: Some(path),
             },
+            weight_origin,
         })
     }
 }
@@ -588,6 +878,13 @@ impl<'a> Walker<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn with_membership(membership: Option<Membership>) -> Overrides {
+        Overrides {
+            membership,
+            ..Overrides::default()
+        }
+    }
 
     const EXAMPLE1_TOML: &str = r#"kind = "bezier"
 name = "Example 1"
@@ -627,21 +924,21 @@ falsity = 0.4
 "#;
 
     fn toml_err(text: &str) -> String {
-        parse_toml("m.toml", text.as_bytes(), None)
+        parse_toml("m.toml", text.as_bytes(), &Overrides::default())
             .unwrap_err()
             .to_string()
     }
 
     fn json_err(text: &str) -> String {
-        parse_json("m.json", text.as_bytes(), None)
+        parse_json("m.json", text.as_bytes(), &Overrides::default())
             .unwrap_err()
             .to_string()
     }
 
     #[test]
     fn model_parse_toml_example1() {
-        let m = parse_toml("m.toml", EXAMPLE1_TOML.as_bytes(), None).unwrap();
-        assert_eq!(m.kind, Kind::Bezier);
+        let m = parse_toml("m.toml", EXAMPLE1_TOML.as_bytes(), &Overrides::default()).unwrap();
+        assert_eq!(m.kind, Kind::DEFAULT);
         assert_eq!(m.name.as_deref(), Some("Example 1"));
         assert_eq!(m.membership, Membership::Neutrosophic);
         assert_eq!(m.dimension, 2);
@@ -656,7 +953,7 @@ falsity = 0.4
         let text = r#"{"kind": "bezier", "membership": "intuitionistic",
             "control_points": [{"x": 0, "y": 0, "z": 1, "truth": 0.5, "falsity": 0.25},
                                {"x": 1, "y": 0, "z": 2, "T": 0.25, "F": 0.5, "I": 0.25}]}"#;
-        let m = parse_json("m.json", text.as_bytes(), None).unwrap();
+        let m = parse_json("m.json", text.as_bytes(), &Overrides::default()).unwrap();
         assert_eq!(m.dimension, 3);
         assert_eq!(m.membership, Membership::Intuitionistic);
         assert_eq!(m.points[0].degrees.to_array(), [0.5, 0.25, 0.25]);
@@ -675,10 +972,15 @@ falsity = 0.4
             toml_err(&bad),
             "m.toml:24: control_points[2].y: expected a number, found a string"
         );
+        let bad = EXAMPLE1_TOML.replace("I = 0.1", "I = 0.1\nw = 2");
+        assert_eq!(
+            toml_err(&bad),
+            "m.toml:19: control_points[1]: unknown key `w` (known keys: x, y, z, truth (T), indeterminacy (I), falsity (F), weight, name)"
+        );
         let bad = EXAMPLE1_TOML.replace("I = 0.1", "I = 0.1\nweight = 2");
         assert_eq!(
             toml_err(&bad),
-            "m.toml:19: control_points[1]: unknown key `weight` (known keys: x, y, z, truth (T), indeterminacy (I), falsity (F), name)"
+            "m.toml:19: control_points[1]: key `weight` does not apply to kind `bezier` (weights only apply to NURBS: nurbs, nurbs-surface)"
         );
         let bad = EXAMPLE1_TOML.replace("T = 0.8", "T = 0.8\ntruth = 0.8");
         assert_eq!(
@@ -700,20 +1002,20 @@ falsity = 0.4
             toml_err(&bad),
             "m.toml:15: control_points[1].x: value NaN is not a finite number (NaN and infinities are not allowed)"
         );
-        let bad = EXAMPLE1_TOML.replace("kind = \"bezier\"", "kind = \"nurbs\"");
+        let bad = EXAMPLE1_TOML.replace("kind = \"bezier\"", "kind = \"spline\"");
         assert_eq!(
             toml_err(&bad),
-            "m.toml:1: kind: unknown kind `nurbs` (known kinds: bezier)"
+            "m.toml:1: kind: unknown kind `spline` (known kinds: bezier, bspline, nurbs, bezier-surface, bspline-surface, nurbs-surface)"
         );
         let bad = EXAMPLE1_TOML.replace("kind = \"bezier\"\n", "");
         assert_eq!(
             toml_err(&bad),
-            "m.toml: missing key `kind` (known kinds: bezier)"
+            "m.toml: missing key `kind` (known kinds: bezier, bspline, nurbs, bezier-surface, bspline-surface, nurbs-surface)"
         );
         let bad = EXAMPLE1_TOML.replace("name = \"Example 1\"", "title = \"Example 1\"");
         assert_eq!(
             toml_err(&bad),
-            "m.toml:2: unknown key `title` (known keys: kind, name, description, membership, control_points)"
+            "m.toml:2: unknown key `title` (known keys: kind, name, description, membership, degree, knots, rows, cols, degree_u, degree_v, knots_u, knots_v, control_points)"
         );
     }
 
@@ -727,17 +1029,26 @@ falsity = 0.4
     #[test]
     fn model_parse_membership_conflict_and_default() {
         let text = "kind = \"bezier\"\nmembership = \"fuzzy\"\ncontrol_points = [{x = 0, y = 0, truth = 0.5}]\n";
-        let m = parse_toml("m.toml", text.as_bytes(), None).unwrap();
+        let m = parse_toml("m.toml", text.as_bytes(), &Overrides::default()).unwrap();
         assert_eq!(m.points[0].degrees.to_array(), [0.5, 0.0, 0.0]);
-        let e = parse_toml("m.toml", text.as_bytes(), Some(Membership::Neutrosophic))
-            .unwrap_err()
-            .to_string();
+        let e = parse_toml(
+            "m.toml",
+            text.as_bytes(),
+            &with_membership(Some(Membership::Neutrosophic)),
+        )
+        .unwrap_err()
+        .to_string();
         assert_eq!(
             e,
             "m.toml:2: membership: the file declares membership `fuzzy` but --membership is `neutrosophic` (omit --membership or make them agree)"
         );
         let text = "kind = \"bezier\"\ncontrol_points = [{x = 0, y = 0, truth = 0.5}]\n";
-        let m = parse_toml("m.toml", text.as_bytes(), Some(Membership::Fuzzy)).unwrap();
+        let m = parse_toml(
+            "m.toml",
+            text.as_bytes(),
+            &with_membership(Some(Membership::Fuzzy)),
+        )
+        .unwrap();
         assert_eq!(m.membership, Membership::Fuzzy);
     }
 
@@ -784,8 +1095,38 @@ falsity = 0.4
     }
 
     #[test]
+    fn model_parse_json_numbers_round_trip_exactly() {
+        // Regression: serde_json's default float parser was 2 ULP off for this value, so a
+        // JSON model evaluated differently from the same TOML model.
+        let y = -1.7669093114403063_f64;
+        let text = format!(
+            r#"{{"kind": "bezier", "control_points": [{{"x": 0, "y": {y}, "T": 1, "I": 0, "F": 0}}]}}"#
+        );
+        let m = parse_json("m.json", text.as_bytes(), &Overrides::default()).unwrap();
+        assert_eq!(m.points[0].position[1].to_bits(), y.to_bits());
+    }
+
+    #[test]
+    fn model_parse_structure_keys_and_knot_lines() {
+        let text = "kind = \"nurbs\"\ndegree = 1\nknots = [\n  0, 0,\n  1, 1,\n]\n\
+                    control_points = [{ x = 0, y = 0, T = 1, I = 0, F = 0, weight = 2 },\n\
+                    { x = 1, y = 0, T = 1, I = 0, F = 0, weight = 0.5 }]\n";
+        let m = parse_toml("m.toml", text.as_bytes(), &Overrides::default()).unwrap();
+        let Structure::Curve { degree, knots } = &m.structure else {
+            panic!("a curve")
+        };
+        assert_eq!(degree.as_ref().map(|d| d.value), Some(1));
+        let knots = knots.as_ref().unwrap();
+        assert_eq!(knots.spec, KnotSpec::Explicit(vec![0.0, 0.0, 1.0, 1.0]));
+        assert_eq!(knots.origin.line, Some(3));
+        assert_eq!(knots.lines, [Some(4), Some(4), Some(5), Some(5)]);
+        assert_eq!(m.points[1].weight, Some(0.5));
+        assert_eq!(m.points[1].weight_origin.line, Some(8));
+    }
+
+    #[test]
     fn model_parse_invalid_utf8() {
-        let e = parse_json("m.json", b"{\"kind\":\n\"\xff\"}", None).unwrap_err();
+        let e = parse_json("m.json", b"{\"kind\":\n\"\xff\"}", &Overrides::default()).unwrap_err();
         assert_eq!(
             e.to_string(),
             "m.json:2: invalid UTF-8 (the file must be UTF-8 encoded)"

@@ -1,0 +1,113 @@
+//! The options shared by the commands that read a model file: the membership rule and the
+//! shape settings a CSV file cannot hold (kind, degree, knots, grid).
+
+use neutrospline::{CurveKind, SurfaceKind};
+
+use crate::commands::MembershipArg;
+use crate::input::{Kind, KnotSpec, Overrides};
+
+/// The `--kind` values, mirroring [`Kind`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum KindArg {
+    /// Bezier curve (default for CSV): degree n = number of control points - 1, t in [0, 1].
+    Bezier,
+    /// B-spline curve: needs --degree; --knots optional.
+    Bspline,
+    /// NURBS curve: as bspline, plus a `weight` column.
+    Nurbs,
+    /// Bezier surface: needs --rows and --cols; degrees rows - 1 and cols - 1.
+    BezierSurface,
+    /// B-spline surface: needs --rows, --cols, --degree-u, --degree-v.
+    BsplineSurface,
+    /// NURBS surface: as bspline-surface, plus a `weight` column.
+    NurbsSurface,
+}
+
+impl From<KindArg> for Kind {
+    fn from(k: KindArg) -> Kind {
+        match k {
+            KindArg::Bezier => Kind::Curve(CurveKind::Bezier),
+            KindArg::Bspline => Kind::Curve(CurveKind::BSpline),
+            KindArg::Nurbs => Kind::Curve(CurveKind::Nurbs),
+            KindArg::BezierSurface => Kind::Surface(SurfaceKind::Bezier),
+            KindArg::BsplineSurface => Kind::Surface(SurfaceKind::BSpline),
+            KindArg::NurbsSurface => Kind::Surface(SurfaceKind::Nurbs),
+        }
+    }
+}
+
+/// The largest degree or count accepted on the command line (as in files: larger values are
+/// surely mistakes, and the core's `degree + 1` must not overflow).
+const MAX: u64 = crate::input::MAX_INTEGER;
+
+/// Parses a `--knots` value.
+fn parse_knots(text: &str) -> Result<KnotSpec, String> {
+    KnotSpec::parse_option(text)
+}
+
+/// The model options of `eval` and `check`.
+#[derive(Debug, Clone, clap::Args)]
+#[command(next_help_heading = "Model options")]
+pub struct ModelArgs {
+    /// Membership rule for the degrees. For CSV it chooses the rule (default neutrosophic)
+    #[arg(long, value_enum, value_name = "RULE")]
+    pub membership: Option<MembershipArg>,
+
+    /// Kind of curve or surface (CSV default: bezier)
+    #[arg(long, value_enum, value_name = "KIND")]
+    pub kind: Option<KindArg>,
+
+    /// Polynomial degree of a curve (required for bspline and nurbs; for bezier it must be the
+    /// number of control points - 1)
+    #[arg(long, value_name = "P", value_parser = clap::value_parser!(u64).range(..=MAX))]
+    pub degree: Option<u64>,
+
+    /// Knots of a bspline or nurbs curve: clamped-uniform (default), chord-length,
+    /// centripetal, or the values K0,K1,... (number of control points + degree + 1 of them,
+    /// non-decreasing)
+    #[arg(long, value_name = "RULE|K0,K1,...", value_parser = parse_knots, allow_hyphen_values = true)]
+    pub knots: Option<KnotSpec>,
+
+    /// Surfaces: control points along u (the control points are listed row by row)
+    #[arg(long, value_name = "R", value_parser = clap::value_parser!(u64).range(1..=MAX))]
+    pub rows: Option<u64>,
+
+    /// Surfaces: control points along v (per row)
+    #[arg(long, value_name = "C", value_parser = clap::value_parser!(u64).range(1..=MAX))]
+    pub cols: Option<u64>,
+
+    /// Degree along u of a bspline or nurbs surface (bezier-surface: must be rows - 1)
+    #[arg(long, value_name = "P", value_parser = clap::value_parser!(u64).range(..=MAX))]
+    pub degree_u: Option<u64>,
+
+    /// Degree along v of a bspline or nurbs surface (bezier-surface: must be cols - 1)
+    #[arg(long, value_name = "Q", value_parser = clap::value_parser!(u64).range(..=MAX))]
+    pub degree_v: Option<u64>,
+
+    /// Knots along u of a bspline or nurbs surface: clamped-uniform (default) or K0,K1,...
+    #[arg(long, value_name = "RULE|K0,K1,...", value_parser = parse_knots, allow_hyphen_values = true)]
+    pub knots_u: Option<KnotSpec>,
+
+    /// Knots along v of a bspline or nurbs surface: clamped-uniform (default) or K0,K1,...
+    #[arg(long, value_name = "RULE|K0,K1,...", value_parser = parse_knots, allow_hyphen_values = true)]
+    pub knots_v: Option<KnotSpec>,
+}
+
+impl ModelArgs {
+    /// The options as the input layer takes them.
+    pub fn overrides(&self) -> Overrides {
+        let count = |v: Option<u64>| v.map(|v| usize::try_from(v).unwrap_or(usize::MAX));
+        Overrides {
+            membership: self.membership.map(Into::into),
+            kind: self.kind.map(Into::into),
+            degree: count(self.degree),
+            knots: self.knots.clone(),
+            rows: count(self.rows),
+            cols: count(self.cols),
+            degree_u: count(self.degree_u),
+            degree_v: count(self.degree_v),
+            knots_u: self.knots_u.clone(),
+            knots_v: self.knots_v.clone(),
+        }
+    }
+}

@@ -1,0 +1,322 @@
+//! From a [`Model`] to the core's curve or surface: every check of knots, weights and grids is
+//! the core's own (`KnotVector::new`, `Nurbs::new`, `Surface::nurbs`, ...); this module only
+//! chooses the constructor and locates the core's errors at the key, line or control point
+//! they concern.
+
+use neutrospline::{
+    AnyCurve, BSpline, Bezier, ControlPoint, CurveError, CurveKind, Direction, KnotError,
+    KnotVector, Nurbs, Surface, SurfaceError, SurfaceKind,
+};
+
+use super::{
+    InputError, Key, Kind, KnotRule, KnotSpec, KnotsSetting, Model, Origin, Setting, Structure,
+};
+use crate::shape::Shape;
+
+/// A knot vector that could not be built: the located error, and the core's error when it
+/// came from the core.
+struct KnotFailure {
+    located: InputError,
+    error: Option<KnotError>,
+    degree: usize,
+}
+
+impl Model {
+    /// Builds the core curve or surface.
+    ///
+    /// # Errors
+    /// The core's knot, weight and grid errors, located at the key (`degree`, `knots_u`, ...,
+    /// or the command-line option that gave it), the knot's line, or the control point.
+    pub fn into_shape(self) -> Result<Shape, InputError> {
+        match &self.structure {
+            Structure::Curve { degree, knots } => {
+                let (degree, knots) = (degree.as_ref(), knots.as_ref());
+                if self.dimension == 3 {
+                    self.curve::<3>(degree, knots).map(Shape::Spatial)
+                } else {
+                    self.curve::<2>(degree, knots).map(Shape::Planar)
+                }
+            }
+            Structure::Surface {
+                rows,
+                cols,
+                degree_u,
+                degree_v,
+                knots_u,
+                knots_v,
+            } => self
+                .surface(
+                    rows,
+                    cols,
+                    [degree_u.as_ref(), degree_v.as_ref()],
+                    [knots_u.as_ref(), knots_v.as_ref()],
+                )
+                .map(Shape::Surface),
+        }
+    }
+
+    /// The control points with `D` coordinates (the parsers made every position that long).
+    fn control_points<const D: usize>(&self) -> Vec<ControlPoint<D>> {
+        self.points
+            .iter()
+            .map(|p| {
+                let mut position = [0.0; D];
+                for (slot, &value) in position.iter_mut().zip(&p.position) {
+                    *slot = value;
+                }
+                ControlPoint::new(position, p.degrees)
+            })
+            .collect()
+    }
+
+    /// The weights of the control points (1 where a point has none).
+    fn weights(&self) -> Vec<f64> {
+        self.points
+            .iter()
+            .map(|p| p.weight.unwrap_or(1.0))
+            .collect()
+    }
+
+    fn curve<const D: usize>(
+        &self,
+        degree: Option<&Setting<usize>>,
+        knots: Option<&KnotsSetting>,
+    ) -> Result<AnyCurve<D>, InputError> {
+        let points = self.control_points::<D>();
+        let count = points.len();
+        let kind = match self.kind {
+            Kind::Curve(kind) => kind,
+            Kind::Surface(_) => return Err(self.internal("a surface kind with curve settings")),
+        };
+        if kind == CurveKind::Bezier {
+            if let Some(degree) = degree.filter(|d| d.value + 1 != count) {
+                return Err(self.error_at(
+                    &degree.origin,
+                    format!(
+                        "degree {} does not match the {count} control points (a bezier curve of \
+                         n + 1 control points has degree n = {})",
+                        degree.value,
+                        count - 1
+                    ),
+                ));
+            }
+            return Bezier::new(points)
+                .map(AnyCurve::Bezier)
+                .map_err(|e| self.curve_error(&e));
+        }
+        let degree = degree.ok_or_else(|| self.missing(Key::Degree))?;
+        let positions: Vec<[f64; D]> = points.iter().map(|p| p.position).collect();
+        let knots = self
+            .knot_vector(degree, count, knots, Some(&positions))
+            .map_err(|e| e.located)?;
+        match kind {
+            CurveKind::Nurbs => Nurbs::new(points, self.weights(), knots).map(AnyCurve::Nurbs),
+            _ => BSpline::new(points, knots).map(AnyCurve::BSpline),
+        }
+        .map_err(|e| self.curve_error(&e))
+    }
+
+    fn surface(
+        &self,
+        rows: &Setting<usize>,
+        cols: &Setting<usize>,
+        degrees: [Option<&Setting<usize>>; 2],
+        knots: [Option<&KnotsSetting>; 2],
+    ) -> Result<Surface, InputError> {
+        let count = self.points.len();
+        if rows.value.checked_mul(cols.value) != Some(count) {
+            let grid = CurveError::GridSize {
+                points: count,
+                rows: rows.value,
+                cols: cols.value,
+            };
+            return Err(self.error_at(&rows.origin, grid.to_string()));
+        }
+        let kind = match self.kind {
+            Kind::Surface(kind) => kind,
+            Kind::Curve(_) => return Err(self.internal("a curve kind with surface settings")),
+        };
+        let points = self.control_points::<3>();
+        let sizes = [(Key::DegreeU, rows), (Key::DegreeV, cols)];
+        if kind == SurfaceKind::Bezier {
+            for ((key, size), degree) in sizes.into_iter().zip(degrees) {
+                if let Some(degree) = degree.filter(|d| d.value + 1 != size.value) {
+                    let count_key = if key == Key::DegreeU { "rows" } else { "cols" };
+                    return Err(self.error_at(
+                        &degree.origin,
+                        format!(
+                            "{} {} does not match {count_key} = {} (a bezier surface has {} = \
+                             {count_key} - 1 = {})",
+                            key.name(),
+                            degree.value,
+                            size.value,
+                            key.name(),
+                            size.value - 1
+                        ),
+                    ));
+                }
+            }
+            return Surface::bezier(rows.value, cols.value, points)
+                .map_err(|e| self.surface_error(&e));
+        }
+        let [knots_u, knots_v] = knots;
+        let [degree_u, degree_v] = degrees;
+        let degree_u = degree_u.ok_or_else(|| self.missing(Key::DegreeU))?;
+        let degree_v = degree_v.ok_or_else(|| self.missing(Key::DegreeV))?;
+        let knots_u = self
+            .knot_vector::<3>(degree_u, rows.value, knots_u, None)
+            .map_err(|e| self.surface_knot_error(*e, Direction::U))?;
+        let knots_v = self
+            .knot_vector::<3>(degree_v, cols.value, knots_v, None)
+            .map_err(|e| self.surface_knot_error(*e, Direction::V))?;
+        match kind {
+            SurfaceKind::Nurbs => Surface::nurbs(
+                rows.value,
+                cols.value,
+                points,
+                self.weights(),
+                knots_u,
+                knots_v,
+            ),
+            _ => Surface::bspline(rows.value, cols.value, points, knots_u, knots_v),
+        }
+        .map_err(|e| self.surface_error(&e))
+    }
+
+    /// Rewords the count-related knot errors of a surface direction in terms of its rows or
+    /// columns and its degree key (the core speaks of "control points" and "degree").
+    fn surface_knot_error(&self, e: KnotFailure, direction: Direction) -> InputError {
+        let (count_key, degree_key, axis) = match direction {
+            Direction::U => ("rows", "degree_u", "u"),
+            Direction::V => ("cols", "degree_v", "v"),
+        };
+        let message = match &e.error {
+            Some(KnotError::TooFewControlPoints { count, degree }) => format!(
+                "{count_key} = {count} control points along {axis} are too few for degree \
+                 {degree} (need at least {degree_key} + 1 = {})",
+                degree + 1
+            ),
+            Some(KnotError::WrongLength { got, expected }) => format!(
+                "knot vector has {got} knots, expected {expected} ({count_key} + {degree_key} \
+                 + 1 = {} + {} + 1)",
+                expected - e.degree - 1,
+                e.degree
+            ),
+            _ => e.located.message.clone(),
+        };
+        InputError {
+            message,
+            ..e.located
+        }
+    }
+
+    /// The knots of one direction, by the core's constructor for the rule, or validated by
+    /// `KnotVector::new`. `positions` is the control polygon, for the rules that need it
+    /// (curves only).
+    fn knot_vector<const D: usize>(
+        &self,
+        degree: &Setting<usize>,
+        count: usize,
+        knots: Option<&KnotsSetting>,
+        positions: Option<&[[f64; D]]>,
+    ) -> Result<KnotVector, Box<KnotFailure>> {
+        let failure = |located: InputError, error: Option<KnotError>| {
+            Box::new(KnotFailure {
+                located,
+                error,
+                degree: degree.value,
+            })
+        };
+        let p = degree.value;
+        let spec = knots.map(|k| &k.spec);
+        let result = match (spec, positions) {
+            (None | Some(KnotSpec::Rule(KnotRule::ClampedUniform)), _) => {
+                KnotVector::clamped_uniform(p, count)
+            }
+            (Some(KnotSpec::Rule(KnotRule::ChordLength)), Some(positions)) => {
+                KnotVector::chord_length(p, positions)
+            }
+            (Some(KnotSpec::Rule(KnotRule::Centripetal)), Some(positions)) => {
+                KnotVector::centripetal(p, positions)
+            }
+            (Some(KnotSpec::Rule(rule)), None) => {
+                let origin = knots.map(|k| k.origin.clone()).unwrap_or_default();
+                let located = self.error_at(
+                    &origin,
+                    format!(
+                        "{} knots are only available for curves (for surfaces use {} or an \
+                         array of knot values)",
+                        rule.name(),
+                        KnotRule::ClampedUniform.name()
+                    ),
+                );
+                return Err(failure(located, None));
+            }
+            (Some(KnotSpec::Explicit(values)), _) => KnotVector::new(values.clone(), p, count),
+        };
+        result.map_err(|e| {
+            let message = e.to_string();
+            let located = match (&e, knots) {
+                (KnotError::TooFewControlPoints { .. }, _) | (_, None) => {
+                    self.error_at(&degree.origin, message)
+                }
+                (
+                    KnotError::Decreasing { index, .. } | KnotError::NotFinite { index, .. },
+                    Some(k),
+                ) => {
+                    let origin = Origin {
+                        line: k.line_of_knot(*index),
+                        field: k.origin.field.clone(),
+                    };
+                    self.error_at(&origin, message)
+                }
+                (_, Some(k)) => self.error_at(&k.origin, message),
+            };
+            failure(located, Some(e))
+        })
+    }
+
+    fn curve_error(&self, e: &CurveError) -> InputError {
+        let point = |index: usize| self.points.get(index);
+        match e {
+            CurveError::WeightNotPositive { index, value } => self.error_at(
+                &point(*index)
+                    .map(|p| p.weight_origin.clone())
+                    .unwrap_or_default(),
+                format!(
+                    "weight = {value} is not a positive finite number (NURBS weights must be > 0)"
+                ),
+            ),
+            CurveError::PositionNotFinite { index, .. } => self.error_at(
+                &point(*index).map(|p| p.origin.clone()).unwrap_or_default(),
+                e.to_string(),
+            ),
+            _ => self.error_at(&Origin::default(), e.to_string()),
+        }
+    }
+
+    fn surface_error(&self, e: &SurfaceError) -> InputError {
+        match e {
+            SurfaceError::Curve(e) => self.curve_error(e),
+            _ => self.error_at(&Origin::default(), e.to_string()),
+        }
+    }
+
+    fn missing(&self, key: Key) -> InputError {
+        self.error_at(
+            &Origin::default(),
+            format!(
+                "missing {} (kind `{}` needs {}: give `{}` in a model file, or {})",
+                key.name(),
+                self.kind,
+                key.purpose(),
+                key.name(),
+                key.option()
+            ),
+        )
+    }
+
+    fn internal(&self, what: &str) -> InputError {
+        self.error_at(&Origin::default(), format!("internal error: {what}"))
+    }
+}

@@ -1,0 +1,448 @@
+//! The shapes the command works with: the core's curves of any kind (planar or spatial) and
+//! its surfaces, with the table columns and row-by-row evaluation that `eval` writes.
+
+use std::fmt;
+
+use neutrospline::{
+    AnyCurve, BSplineDerivative, BezierDerivative, DerivativeValue, EvalError, KnotVector,
+    NurbsDerivative, Range, Surface,
+};
+
+use crate::input::Kind;
+use crate::output::number;
+
+/// A curve or surface read from a file.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Shape {
+    /// A curve in the plane (x, y).
+    Planar(AnyCurve<2>),
+    /// A curve in space (x, y, z).
+    Spatial(AnyCurve<3>),
+    /// A tensor-product surface in space.
+    Surface(Surface),
+}
+
+/// A parameter of a shape: `t` on a curve, `(u, v)` on a surface.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Param {
+    /// A curve parameter.
+    T(f64),
+    /// A surface parameter pair.
+    Uv(f64, f64),
+}
+
+impl fmt::Display for Param {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Param::T(t) => write!(f, "t = {}", number(t)),
+            Param::Uv(u, v) => write!(f, "u = {}, v = {}", number(u), number(v)),
+        }
+    }
+}
+
+/// Which extra columns a table has.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Extras {
+    /// First derivatives (curves: d/dt; surfaces: d/du and d/dv).
+    pub derivative: bool,
+    /// The unit normal (surfaces).
+    pub normal: bool,
+}
+
+/// A row of a table: `None` is a value that does not exist (a normal where the surface is
+/// degenerate), written as an empty CSV cell or JSON `null`.
+pub type Row = Vec<Option<f64>>;
+
+/// Column names of the position, by dimension.
+const AXES: [&str; 3] = ["x", "y", "z"];
+/// Column names of the degrees.
+const DEGREES: [&str; 3] = ["truth", "indeterminacy", "falsity"];
+
+/// `x, y, z, truth, indeterminacy, falsity` for a dimension.
+fn channel_names(dimension: usize) -> impl Iterator<Item = &'static str> {
+    AXES[..dimension].iter().chain(DEGREES.iter()).copied()
+}
+
+/// The domain `[a, b]` of a curve or one direction of a surface, as text: `[0, 1]`, or with its
+/// knot indices, `[knot 2, knot 7] = [2, 5]`.
+fn domain_text(domain: (f64, f64), knots: Option<&KnotVector>, prefix: &str) -> String {
+    let values = format!("[{}, {}]", number(domain.0), number(domain.1));
+    match knots {
+        Some(k) => {
+            let p = k.degree();
+            let end = k.knots().len() - 1 - p;
+            format!("[{prefix}{p}, {prefix}{end}] = {values}")
+        }
+        None => values,
+    }
+}
+
+fn contains(domain: (f64, f64), t: f64) -> bool {
+    domain.0 <= t && t <= domain.1
+}
+
+impl Shape {
+    /// The kind, as named in files.
+    pub fn kind(&self) -> Kind {
+        match self {
+            Shape::Planar(c) => Kind::Curve(c.kind()),
+            Shape::Spatial(c) => Kind::Curve(c.kind()),
+            Shape::Surface(s) => Kind::Surface(s.kind()),
+        }
+    }
+
+    /// 2 or 3.
+    pub fn dimension(&self) -> usize {
+        match self {
+            Shape::Planar(_) => 2,
+            Shape::Spatial(_) | Shape::Surface(_) => 3,
+        }
+    }
+
+    /// Whether this is a surface.
+    pub fn is_surface(&self) -> bool {
+        matches!(self, Shape::Surface(_))
+    }
+
+    /// Number of control points.
+    pub fn len(&self) -> usize {
+        match self {
+            Shape::Planar(c) => c.len(),
+            Shape::Spatial(c) => c.len(),
+            Shape::Surface(s) => s.rows() * s.cols(),
+        }
+    }
+
+    /// The polynomial degree of a curve.
+    pub fn curve_degree(&self) -> Option<usize> {
+        match self {
+            Shape::Planar(c) => Some(c.degree()),
+            Shape::Spatial(c) => Some(c.degree()),
+            Shape::Surface(_) => None,
+        }
+    }
+
+    /// The knot vector of a B-spline or NURBS curve.
+    pub fn curve_knots(&self) -> Option<&KnotVector> {
+        match self {
+            Shape::Planar(c) => c.knots(),
+            Shape::Spatial(c) => c.knots(),
+            Shape::Surface(_) => None,
+        }
+    }
+
+    /// The domain of a curve.
+    pub fn curve_domain(&self) -> Option<(f64, f64)> {
+        match self {
+            Shape::Planar(c) => Some(c.domain()),
+            Shape::Spatial(c) => Some(c.domain()),
+            Shape::Surface(_) => None,
+        }
+    }
+
+    /// The weights of a NURBS curve or surface.
+    pub fn weights(&self) -> Option<&[f64]> {
+        match self {
+            Shape::Planar(c) => c.weights(),
+            Shape::Spatial(c) => c.weights(),
+            Shape::Surface(s) => s.weights(),
+        }
+    }
+
+    /// Range (min, max) of truth, indeterminacy and falsity over the control points.
+    pub fn degree_ranges(&self) -> [Range; 3] {
+        match self {
+            Shape::Planar(c) => {
+                let b = c.control_bounding_box();
+                [b.truth, b.indeterminacy, b.falsity]
+            }
+            Shape::Spatial(c) => {
+                let b = c.control_bounding_box();
+                [b.truth, b.indeterminacy, b.falsity]
+            }
+            Shape::Surface(s) => {
+                let b = s.control_bounding_box();
+                [b.truth, b.indeterminacy, b.falsity]
+            }
+        }
+    }
+
+    /// The domain of a curve as text, with its knot indices for splines.
+    pub fn curve_domain_text(&self) -> Option<String> {
+        self.curve_domain()
+            .map(|d| domain_text(d, self.curve_knots(), "knot "))
+    }
+
+    /// Checks that `param` has the right form (`T` for curves, `U:V` for surfaces) and lies in
+    /// the domain; the message names the domain.
+    ///
+    /// # Errors
+    /// A message for `--at`.
+    pub fn check_param(&self, param: Param, text: &str) -> Result<(), String> {
+        match (self, param) {
+            (Shape::Surface(_), Param::T(_)) => Err(format!(
+                "`{text}` is not a pair U:V (a surface is evaluated at --at U:V,U:V,...)"
+            )),
+            (Shape::Planar(_) | Shape::Spatial(_), Param::Uv(..)) => Err(format!(
+                "`{text}` is a pair U:V but the file holds a curve (give --at T1,T2,...)"
+            )),
+            (Shape::Surface(s), Param::Uv(u, v)) => {
+                for (name, value, domain, knots) in [
+                    ("u", u, s.domain_u(), s.knots_u()),
+                    ("v", v, s.domain_v(), s.knots_v()),
+                ] {
+                    if !contains(domain, value) {
+                        let knots =
+                            (s.kind() != neutrospline::SurfaceKind::Bezier).then_some(knots);
+                        return Err(format!(
+                            "{name} = {} (in `{text}`) is outside the surface's {name} domain {}",
+                            number(value),
+                            domain_text(domain, knots, &format!("knot_{name} "))
+                        ));
+                    }
+                }
+                Ok(())
+            }
+            (_, Param::T(t)) => {
+                let domain = self.curve_domain().unwrap_or((0.0, 1.0));
+                if contains(domain, t) {
+                    Ok(())
+                } else {
+                    Err(format!(
+                        "t = {} is outside the curve's domain {}",
+                        number(t),
+                        self.curve_domain_text().unwrap_or_default()
+                    ))
+                }
+            }
+        }
+    }
+
+    /// Column names of a table of samples.
+    ///
+    /// Curves: `t`, then `x, y[, z], truth, indeterminacy, falsity`, and with `derivative`
+    /// the same names prefixed by `d` (`dx, ..., dfalsity`). Surfaces: `u, v, x, y, z, truth,
+    /// indeterminacy, falsity`; with `derivative` each channel's `d<name>_du` then
+    /// `d<name>_dv`; with `normal` `nx, ny, nz`.
+    pub fn columns(&self, extras: Extras) -> Vec<String> {
+        let names: Vec<&str> = channel_names(self.dimension()).collect();
+        let mut columns: Vec<String> = if self.is_surface() {
+            vec!["u".to_owned(), "v".to_owned()]
+        } else {
+            vec!["t".to_owned()]
+        };
+        columns.extend(names.iter().map(|n| (*n).to_owned()));
+        if extras.derivative {
+            if self.is_surface() {
+                for direction in ["du", "dv"] {
+                    columns.extend(names.iter().map(|n| format!("d{n}_{direction}")));
+                }
+            } else {
+                columns.extend(names.iter().map(|n| format!("d{n}")));
+            }
+        }
+        if extras.normal && self.is_surface() {
+            columns.extend(["nx", "ny", "nz"].map(str::to_owned));
+        }
+        columns
+    }
+
+    /// A sampler producing one row per parameter, in the order of [`Shape::columns`].
+    pub fn sampler(&self, extras: Extras) -> Sampler<'_> {
+        match self {
+            Shape::Planar(c) => Sampler::Planar(CurveSampler::new(c, extras.derivative)),
+            Shape::Spatial(c) => Sampler::Spatial(CurveSampler::new(c, extras.derivative)),
+            Shape::Surface(s) => Sampler::Surface(s, extras),
+        }
+    }
+}
+
+/// Evaluates a shape (and its derivatives) row by row.
+pub enum Sampler<'a> {
+    /// For a planar curve.
+    Planar(CurveSampler<'a, 2>),
+    /// For a spatial curve.
+    Spatial(CurveSampler<'a, 3>),
+    /// For a surface.
+    Surface(&'a Surface, Extras),
+}
+
+impl Sampler<'_> {
+    /// The row at `param`: the parameter, the position, the degrees and, if asked, their
+    /// derivatives and the normal.
+    ///
+    /// # Errors
+    /// The core's [`EvalError`] (parameter outside the domain, overflow), or a parameter of the
+    /// wrong form (a pair for a curve, a single value for a surface; [`Shape::check_param`]
+    /// rules those out beforehand).
+    pub fn row(&self, param: Param) -> anyhow::Result<Row> {
+        Ok(match (self, param) {
+            (Sampler::Planar(s), Param::T(t)) => s.row(t)?,
+            (Sampler::Spatial(s), Param::T(t)) => s.row(t)?,
+            (Sampler::Surface(s, extras), Param::Uv(u, v)) => surface_row(s, *extras, u, v)?,
+            (Sampler::Surface(..), Param::T(_)) => {
+                anyhow::bail!("a surface needs a parameter pair (u, v)")
+            }
+            (_, Param::Uv(..)) => anyhow::bail!("a curve takes one parameter t"),
+        })
+    }
+}
+
+/// The first derivative of a curve of any kind, built once for many parameters.
+enum AnyDerivative<const D: usize> {
+    Bezier(BezierDerivative<D>),
+    BSpline(BSplineDerivative<D>),
+    Nurbs(NurbsDerivative<D>),
+}
+
+impl<const D: usize> AnyDerivative<D> {
+    fn new(curve: &AnyCurve<D>) -> Self {
+        match curve {
+            AnyCurve::Bezier(c) => AnyDerivative::Bezier(c.derivative()),
+            AnyCurve::BSpline(c) => AnyDerivative::BSpline(c.derivative()),
+            AnyCurve::Nurbs(c) => AnyDerivative::Nurbs(c.derivative()),
+        }
+    }
+
+    fn evaluate(&self, t: f64) -> Result<DerivativeValue<D>, EvalError> {
+        match self {
+            AnyDerivative::Bezier(d) => d.evaluate(t),
+            AnyDerivative::BSpline(d) => d.evaluate(t),
+            AnyDerivative::Nurbs(d) => d.evaluate(t),
+        }
+    }
+}
+
+/// A curve with its derivative computed once.
+pub struct CurveSampler<'a, const D: usize> {
+    curve: &'a AnyCurve<D>,
+    derivative: Option<AnyDerivative<D>>,
+}
+
+impl<'a, const D: usize> CurveSampler<'a, D> {
+    fn new(curve: &'a AnyCurve<D>, derivative: bool) -> Self {
+        CurveSampler {
+            curve,
+            derivative: derivative.then(|| AnyDerivative::new(curve)),
+        }
+    }
+
+    fn row(&self, t: f64) -> Result<Row, EvalError> {
+        let p = self.curve.evaluate(t)?;
+        let mut row = Vec::with_capacity(1 + 2 * (D + 3));
+        row.push(t);
+        row.extend(p.position);
+        row.extend(p.degrees.to_array());
+        if let Some(derivative) = &self.derivative {
+            push_rates(&mut row, &derivative.evaluate(t)?);
+        }
+        Ok(row.into_iter().map(Some).collect())
+    }
+}
+
+fn push_rates<const D: usize>(row: &mut Vec<f64>, d: &DerivativeValue<D>) {
+    row.extend(d.position);
+    row.extend([d.truth, d.indeterminacy, d.falsity]);
+}
+
+fn surface_row(surface: &Surface, extras: Extras, u: f64, v: f64) -> Result<Row, EvalError> {
+    let p = surface.evaluate(u, v)?;
+    let mut values = Vec::with_capacity(2 + 3 * 6);
+    values.extend([u, v]);
+    values.extend(p.position);
+    values.extend(p.degrees.to_array());
+    if extras.derivative {
+        let d = surface.partial_derivatives(u, v)?;
+        push_rates(&mut values, &d.du);
+        push_rates(&mut values, &d.dv);
+    }
+    let mut row: Row = values.into_iter().map(Some).collect();
+    if extras.normal {
+        match surface.normal(u, v)? {
+            Some(n) => row.extend(n.map(Some)),
+            None => row.extend([None; 3]),
+        }
+    }
+    Ok(row)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use neutrospline::{ControlPoint, Degrees, KnotVector};
+
+    fn planar_bspline() -> Shape {
+        let d = Degrees::new(0.5, 0.25, 0.0).unwrap();
+        let points = (0..5)
+            .map(|i| ControlPoint::new([f64::from(i), 0.0], d))
+            .collect();
+        let knots = KnotVector::new((0..8).map(f64::from).collect(), 2, 5).unwrap();
+        Shape::Planar(AnyCurve::BSpline(
+            neutrospline::BSpline::new(points, knots).unwrap(),
+        ))
+    }
+
+    #[test]
+    fn shape_columns() {
+        let c = planar_bspline();
+        assert_eq!(
+            c.columns(Extras::default()).join(","),
+            "t,x,y,truth,indeterminacy,falsity"
+        );
+        assert_eq!(
+            c.columns(Extras {
+                derivative: true,
+                normal: true
+            })
+            .join(","),
+            "t,x,y,truth,indeterminacy,falsity,dx,dy,dtruth,dindeterminacy,dfalsity"
+        );
+        let d = Degrees::new(0.5, 0.25, 0.0).unwrap();
+        let s = Shape::Surface(
+            Surface::bezier(
+                2,
+                2,
+                vec![
+                    ControlPoint::new([0.0, 0.0, 0.0], d),
+                    ControlPoint::new([0.0, 1.0, 0.0], d),
+                    ControlPoint::new([1.0, 0.0, 0.0], d),
+                    ControlPoint::new([1.0, 1.0, 0.0], d),
+                ],
+            )
+            .unwrap(),
+        );
+        assert_eq!(
+            s.columns(Extras {
+                derivative: true,
+                normal: true
+            })
+            .join(","),
+            "u,v,x,y,z,truth,indeterminacy,falsity,\
+             dx_du,dy_du,dz_du,dtruth_du,dindeterminacy_du,dfalsity_du,\
+             dx_dv,dy_dv,dz_dv,dtruth_dv,dindeterminacy_dv,dfalsity_dv,nx,ny,nz"
+        );
+        let row = s
+            .sampler(Extras {
+                derivative: false,
+                normal: true,
+            })
+            .row(Param::Uv(0.5, 0.5))
+            .unwrap();
+        assert_eq!(&row[8..], &[Some(0.0), Some(0.0), Some(1.0)]);
+    }
+
+    #[test]
+    fn shape_check_param_names_the_domain() {
+        let c = planar_bspline();
+        assert_eq!(c.check_param(Param::T(2.0), "2"), Ok(()));
+        assert_eq!(c.check_param(Param::T(5.0), "5"), Ok(()));
+        assert_eq!(
+            c.check_param(Param::T(1.5), "1.5").unwrap_err(),
+            "t = 1.5 is outside the curve's domain [knot 2, knot 5] = [2, 5]"
+        );
+        assert_eq!(
+            c.check_param(Param::Uv(0.5, 0.5), "0.5:0.5").unwrap_err(),
+            "`0.5:0.5` is a pair U:V but the file holds a curve (give --at T1,T2,...)"
+        );
+    }
+}
