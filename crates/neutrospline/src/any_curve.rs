@@ -2,12 +2,12 @@
 
 use core::fmt;
 
-use crate::bezier::Bezier;
-use crate::bspline::BSpline;
+use crate::bezier::{Bezier, BezierDerivative};
+use crate::bspline::{BSpline, BSplineDerivative};
 use crate::curve::{Bounded, CurveError, EvalError, Evaluate};
 use crate::degrees::DegreeKind;
 use crate::knots::KnotVector;
-use crate::nurbs::Nurbs;
+use crate::nurbs::{Nurbs, NurbsDerivative};
 use crate::point::{Affine, BoundingBox, ControlPoint, CurvePoint, DerivativeValue};
 
 /// The kinds of curve the library models.
@@ -139,13 +139,21 @@ impl<const D: usize> AnyCurve<D> {
         forward!(self, c => c.evaluate_channels(ts, out))
     }
 
-    /// The first derivative at `t`. For repeated use at many parameters, build the kind's own
-    /// derivative object once instead (`derivative()`).
+    /// The first derivative, as an object to evaluate at many parameters.
+    pub fn derivative(&self) -> AnyDerivative<D> {
+        match self {
+            AnyCurve::Bezier(c) => AnyDerivative::Bezier(c.derivative()),
+            AnyCurve::BSpline(c) => AnyDerivative::BSpline(c.derivative()),
+            AnyCurve::Nurbs(c) => AnyDerivative::Nurbs(c.derivative()),
+        }
+    }
+
+    /// The first derivative at `t`. For many parameters, build [`AnyCurve::derivative`] once.
     ///
     /// # Errors
     /// `t` not finite or outside the domain; [`EvalError::Overflow`].
     pub fn derivative_at(&self, t: f64) -> Result<DerivativeValue<D>, EvalError> {
-        forward!(self, c => c.derivative().evaluate(t))
+        self.derivative().evaluate(t)
     }
 
     /// Tight bounds of positions and degrees.
@@ -187,6 +195,31 @@ impl AnyCurve<2> {
             AnyCurve::Bezier(c) => AnyCurve::Bezier(c.degree_curve(kind)),
             AnyCurve::BSpline(c) => AnyCurve::BSpline(c.degree_curve(kind)),
             AnyCurve::Nurbs(c) => AnyCurve::Nurbs(c.degree_curve(kind)),
+        }
+    }
+}
+
+/// The first derivative of an [`AnyCurve`], of the matching kind.
+#[derive(Clone, Debug, PartialEq)]
+pub enum AnyDerivative<const D: usize> {
+    /// Of a Bézier curve.
+    Bezier(BezierDerivative<D>),
+    /// Of a B-spline curve.
+    BSpline(BSplineDerivative<D>),
+    /// Of a NURBS curve.
+    Nurbs(NurbsDerivative<D>),
+}
+
+impl<const D: usize> AnyDerivative<D> {
+    /// The derivative at `t` in the curve's domain.
+    ///
+    /// # Errors
+    /// `t` not finite or outside the domain; [`EvalError::Overflow`].
+    pub fn evaluate(&self, t: f64) -> Result<DerivativeValue<D>, EvalError> {
+        match self {
+            AnyDerivative::Bezier(d) => d.evaluate(t),
+            AnyDerivative::BSpline(d) => d.evaluate(t),
+            AnyDerivative::Nurbs(d) => d.evaluate(t),
         }
     }
 }

@@ -5,7 +5,7 @@
 #[non_exhaustive]
 pub enum KnotError {
     /// Too few control points for the degree (a degree-p spline needs at least p + 1).
-    #[error("{count} control points are too few for degree {degree} (need at least degree + 1 = {need})", need = degree + 1)]
+    #[error("{count} control points are too few for degree {degree} (need at least degree + 1 = {need})", need = degree.saturating_add(1))]
     TooFewControlPoints {
         /// Number of control points.
         count: usize,
@@ -96,10 +96,11 @@ impl KnotVector {
     /// # Errors
     /// The first rule broken, as a [`KnotError`].
     pub fn new(knots: Vec<f64>, degree: usize, count: usize) -> Result<Self, KnotError> {
-        if count < degree + 1 {
+        if count <= degree {
             return Err(KnotError::TooFewControlPoints { count, degree });
         }
-        let expected = count + degree + 1;
+        // count > degree, so count + degree + 1 <= 2 count: no overflow for any real list.
+        let expected = count.saturating_add(degree).saturating_add(1);
         if knots.len() != expected {
             return Err(KnotError::WrongLength {
                 got: knots.len(),
@@ -151,7 +152,7 @@ impl KnotVector {
     /// # Errors
     /// [`KnotError::TooFewControlPoints`] when `count < degree + 1`.
     pub fn clamped_uniform(degree: usize, count: usize) -> Result<Self, KnotError> {
-        if count < degree + 1 {
+        if count <= degree {
             return Err(KnotError::TooFewControlPoints { count, degree });
         }
         let segments = count - degree;
@@ -182,7 +183,7 @@ impl KnotVector {
         exponent: f64,
     ) -> Result<Self, KnotError> {
         let count = positions.len();
-        if count < degree + 1 {
+        if count <= degree {
             return Err(KnotError::TooFewControlPoints { count, degree });
         }
         if degree == 0 {
@@ -348,6 +349,16 @@ mod tests {
             KnotVector::new(vec![0.0, 0.0, f64::NAN, 1.0, 1.0], 1, 3),
             Err(KnotError::NotFinite { index: 2, .. })
         ));
+        // Absurd degrees are an error, not an arithmetic overflow.
+        assert_eq!(
+            KnotVector::clamped_uniform(usize::MAX, 3).unwrap_err().to_string(),
+            format!(
+                "3 control points are too few for degree {} (need at least degree + 1 = {})",
+                usize::MAX,
+                usize::MAX
+            )
+        );
+        assert!(KnotVector::new(vec![0.0; 4], usize::MAX, 3).is_err());
         assert_eq!(
             KnotVector::new(vec![0.0; 4], 1, 1).unwrap_err().to_string(),
             "1 control points are too few for degree 1 (need at least degree + 1 = 2)"

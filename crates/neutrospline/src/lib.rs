@@ -64,7 +64,7 @@ mod spline;
 pub mod strategies;
 mod surface;
 
-pub use any_curve::{AnyCurve, CurveKind};
+pub use any_curve::{AnyCurve, AnyDerivative, CurveKind};
 pub use bezier::{Bezier, BezierDerivative};
 pub use bspline::{BSpline, BSplineDerivative, BezierSegment};
 pub use curve::{

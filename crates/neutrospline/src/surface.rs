@@ -121,6 +121,8 @@ pub struct Surface {
     knots_v: KnotVector,
     data: Vec<f64>,
     weights: Option<Vec<f64>>,
+    /// Rows `(w P, w)` of the homogeneous form (weight 1 without weights), for derivatives.
+    homogeneous: Vec<f64>,
 }
 
 const S: usize = stride(3);
@@ -236,6 +238,7 @@ impl Surface {
                 });
             }
         }
+        let homogeneous = homogeneous_rows(&data, weights.as_deref());
         Ok(Surface {
             kind,
             rows,
@@ -244,6 +247,7 @@ impl Surface {
             knots_v,
             data,
             weights,
+            homogeneous,
         })
     }
 
@@ -369,17 +373,6 @@ impl Surface {
         Ok(point_from_row(&out))
     }
 
-    /// Rows `(w P, w)` of the homogeneous form (weight 1 for non-rational surfaces).
-    fn homogeneous(&self) -> Vec<f64> {
-        let mut h = Vec::with_capacity(self.rows * self.cols * (S + 1));
-        for (k, row) in self.data.chunks_exact(S).enumerate() {
-            let w = self.weights.as_ref().map_or(1.0, |w| w[k]);
-            h.extend(row.iter().map(|x| x * w));
-            h.push(w);
-        }
-        h
-    }
-
     /// The partial derivatives `dS/du` and `dS/dv` of position and degrees, by the quotient
     /// rule on the homogeneous form `H = sum N_i N_j w_ij (P_ij, 1)`: `S_u = (H_u - H_u^w S) / H^w`.
     ///
@@ -388,11 +381,11 @@ impl Surface {
     pub fn partial_derivatives(&self, u: f64, v: f64) -> Result<SurfaceDerivatives, EvalError> {
         self.check(u, v)?;
         let hs = S + 1;
-        let h = self.homogeneous();
+        let h = &self.homogeneous;
         // Along u: evaluate every column in v first... by symmetry, build the curve of the
         // other direction at the fixed parameter and differentiate it.
-        let du = self.directional(&h, hs, Direction::U, u, v);
-        let dv = self.directional(&h, hs, Direction::V, u, v);
+        let du = self.directional(h, hs, Direction::U, u, v);
+        let dv = self.directional(h, hs, Direction::V, u, v);
         let (du, dv) = (
             du.ok_or(EvalError::Overflow { t: u })?,
             dv.ok_or(EvalError::Overflow { t: v })?,
@@ -418,12 +411,21 @@ impl Surface {
             Direction::U => a * self.cols + f,
             Direction::V => f * self.cols + a,
         };
+        let t = match direction {
+            Direction::U => u,
+            Direction::V => v,
+        };
         let k = fixed_knots.span(fixed);
+        // Only the control lines of the span containing `t` (and so of its derivative)
+        // matter; the iso-curve's other rows stay zero and are never read.
+        let k_along = along.span(t);
+        let first_along = k_along - along.degree();
+        let first_fixed = k - fixed_knots.degree();
         let mut scratch = Vec::new();
         let mut iso = vec![0.0; count_along * hs];
         let mut line = vec![0.0; count_fixed * hs];
-        for a in 0..count_along {
-            for f in 0..count_fixed {
+        for a in first_along..=k_along {
+            for f in first_fixed..=k {
                 let src = index(a, f);
                 line[f * hs..(f + 1) * hs].copy_from_slice(&h[src * hs..(src + 1) * hs]);
             }
@@ -443,10 +445,6 @@ impl Surface {
             stride: hs,
             data: iso,
             weights: None,
-        };
-        let t = match direction {
-            Direction::U => u,
-            Direction::V => v,
         };
         let mut value = [0.0; S + 1];
         let mut rate = [0.0; S + 1];
@@ -543,6 +541,17 @@ impl Surface {
         let packed = Packed::new(S, self.data.clone());
         BoundingBox::from_channel_ranges(|c| packed.control_range(c))
     }
+}
+
+/// Rows `(w P, w)` of the homogeneous form (weight 1 for non-rational surfaces).
+fn homogeneous_rows(data: &[f64], weights: Option<&[f64]>) -> Vec<f64> {
+    let mut h = Vec::with_capacity(data.len() / S * (S + 1));
+    for (k, row) in data.chunks_exact(S).enumerate() {
+        let w = weights.map_or(1.0, |w| w[k]);
+        h.extend(row.iter().map(|x| x * w));
+        h.push(w);
+    }
+    h
 }
 
 fn check_grid(rows: usize, cols: usize, points: usize) -> Result<(), CurveError> {
