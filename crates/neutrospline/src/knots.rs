@@ -351,7 +351,9 @@ mod tests {
         ));
         // Absurd degrees are an error, not an arithmetic overflow.
         assert_eq!(
-            KnotVector::clamped_uniform(usize::MAX, 3).unwrap_err().to_string(),
+            KnotVector::clamped_uniform(usize::MAX, 3)
+                .unwrap_err()
+                .to_string(),
             format!(
                 "3 control points are too few for degree {} (need at least degree + 1 = {})",
                 usize::MAX,
