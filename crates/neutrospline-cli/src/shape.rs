@@ -104,8 +104,8 @@ impl Shape {
         matches!(self, Shape::Surface(_))
     }
 
-    /// Number of control points.
-    pub fn len(&self) -> usize {
+    /// Number of control points (never 0).
+    pub fn control_count(&self) -> usize {
         match self {
             Shape::Planar(c) => c.len(),
             Shape::Spatial(c) => c.len(),

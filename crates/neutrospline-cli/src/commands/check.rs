@@ -92,7 +92,7 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
                 writeln!(
                     w,
                     "control points: {} ({} x {})",
-                    shape.len(),
+                    shape.control_count(),
                     plural(s.rows(), "row"),
                     plural(s.cols(), "column")
                 )?;
@@ -113,7 +113,7 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
                     writeln!(w, "degree: {degree}")?;
                 }
                 writeln!(w, "dimension: {}", shape.dimension())?;
-                writeln!(w, "control points: {}", shape.len())?;
+                writeln!(w, "control points: {}", shape.control_count())?;
                 writeln!(w, "membership: {membership}")?;
                 if let Some(knots) = shape.curve_knots() {
                     writeln!(w, "knots: {}", knots_line(knots, setting))?;

@@ -1,0 +1,82 @@
+//! The `neutrospline` command: evaluate, check and demonstrate neutrosophic curves (Bézier,
+//! B-spline, NURBS) and tensor-product surfaces.
+//!
+//! A thin layer over the `neutrospline` library: it parses arguments and files, calls the
+//! library, writes tables and maps errors to exit codes (0 success, 1 invalid input or failure,
+//! 2 usage error).
+
+pub mod commands;
+pub mod input;
+pub mod output;
+pub mod shape;
+
+use std::io::Write;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+use commands::{check::CheckArgs, eval::EvalArgs, example::ExampleArgs};
+
+/// Evaluate and check neutrosophic curves and surfaces (Bezier, B-spline, NURBS): control
+/// points carrying truth, indeterminacy and falsity degrees.
+#[derive(Debug, Parser)]
+#[command(
+    name = "neutrospline",
+    version,
+    after_help = "Kinds: bezier, bspline, nurbs (curves, 2-D or 3-D); bezier-surface, \
+bspline-surface, nurbs-surface (3-D, control points row by row).\n\
+Files: .toml or .json models (kind, optional name, description and membership, degree and knots \
+for curves, rows, cols, degree_u, degree_v, knots_u and knots_v for surfaces, and \
+control_points with x, y[, z], truth, indeterminacy, falsity[, weight][, name]); .csv tables \
+(a header row, one control point per row; the kind, degree, knots and grid come from --kind, \
+--degree, --knots, --rows, ...).\n\
+Exit status: 0 success, 1 invalid input, including a command-line option that contradicts the \
+file (message on stderr starting with `error:`), 2 usage error."
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Evaluate a curve or surface at parameters: one row per parameter (t or u, v, then
+    /// position and degrees)
+    Eval(EvalArgs),
+    /// Validate a model file and print its kind, degrees, knots, domain and degree ranges
+    Check(CheckArgs),
+    /// Run the paper's Example 1 from built-in data and print its control points and curve
+    Example(ExampleArgs),
+}
+
+fn run(cli: &Cli) -> anyhow::Result<()> {
+    match &cli.command {
+        Command::Eval(args) => commands::eval::run(args),
+        Command::Check(args) => commands::check::run(args),
+        Command::Example(args) => commands::example::run(args),
+    }
+}
+
+/// Parses the command line, runs the command and maps the outcome to the exit status.
+pub fn main_with_args() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // Help and version exit 0, errors 2; a closed pipe while printing is ignored.
+            let _ = e.print();
+            return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
+        }
+    };
+    match run(&cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) if output::is_broken_pipe(&e) => ExitCode::SUCCESS,
+        Err(e) => {
+            let _ = writeln!(std::io::stderr(), "error: {e:#}");
+            if e.downcast_ref::<input::UsageError>().is_some() {
+                ExitCode::from(2)
+            } else {
+                ExitCode::FAILURE
+            }
+        }
+    }
+}
