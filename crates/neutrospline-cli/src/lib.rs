@@ -15,7 +15,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
-use commands::{check::CheckArgs, eval::EvalArgs, example::ExampleArgs};
+use commands::{check::CheckArgs, eval::EvalArgs, example::ExampleArgs, plot::PlotArgs};
 
 /// Evaluate and check neutrosophic curves and surfaces (Bezier, B-spline, NURBS): control
 /// points carrying truth, indeterminacy and falsity degrees.
@@ -45,7 +45,10 @@ enum Command {
     Eval(EvalArgs),
     /// Validate a model file and print its kind, degrees, knots, domain and degree ranges
     Check(CheckArgs),
-    /// Run the paper's Example 1 from built-in data and print its control points and curve
+    /// Draw a figure of a curve or surface (SVG or PNG): the paper's views and a plane view
+    Plot(PlotArgs),
+    /// Run the paper's Example 1 from built-in data: print its control points and curve, and
+    /// with --out DIR write the paper's five figures and the curve table
     Example(ExampleArgs),
 }
 
@@ -53,6 +56,7 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
     match &cli.command {
         Command::Eval(args) => commands::eval::run(args),
         Command::Check(args) => commands::check::run(args),
+        Command::Plot(args) => commands::plot::run(args),
         Command::Example(args) => commands::example::run(args),
     }
 }

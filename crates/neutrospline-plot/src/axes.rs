@@ -5,7 +5,7 @@ use crate::font::text_width;
 use crate::layout::{support, text_centred, Rect, TEXT_BOX};
 use crate::svg::{Anchor, Style, SvgWriter, TextStyle};
 use crate::theme::{self, Theme};
-use crate::ticks::{padded, ticks_inside, Ticks};
+use crate::ticks::{padded, ticks_inside, widen_degenerate, Ticks};
 
 /// Number of tick intervals for an axis `len` pixels long.
 fn tick_target(len: f64, per: f64) -> usize {
@@ -27,6 +27,9 @@ pub(crate) struct Axes2 {
     scale: f64,
     xlabel: String,
     ylabel: String,
+    /// Axes of an image that fills the frame (a heat map): no grid, which the image would
+    /// hide anyway, and the y label set upright (a lone `v` turned on its side reads as `>`).
+    image: bool,
 }
 
 impl Axes2 {
@@ -87,7 +90,87 @@ impl Axes2 {
             scale,
             xlabel: labels.0.to_string(),
             ylabel: labels.1.to_string(),
+            image: false,
         }
+    }
+
+    /// Axes whose frame is exactly the data rectangle `x` by `y` (no padding), at equal
+    /// scale, as large as fits in `plot` with its labels, centred in it: for images such as
+    /// heat maps that fill their frame.
+    pub(crate) fn exact(
+        plot: Rect,
+        x: (f64, f64),
+        y: (f64, f64),
+        theme: &Theme,
+        labels: (&str, &str),
+    ) -> Axes2 {
+        let (x0, x1) = widen_degenerate(x.0, x.1);
+        let (y0, y1) = widen_degenerate(y.0, y.1);
+        let tick = theme.tick();
+        let bottom =
+            theme.tick_len() + theme.gap() + tick * TEXT_BOX + theme.gap() + 1.3 * theme.label();
+        let top = 0.6 * tick;
+        let mut left = 4.0 * tick;
+        let mut right = 1.5 * tick;
+        let mut result = None;
+        for _ in 0..3 {
+            let (aw, ah) = (plot.w - left - right, plot.h - top - bottom);
+            let scale = (aw / (x1 - x0)).min(ah / (y1 - y0)).max(1e-300);
+            let (fw, fh) = ((x1 - x0) * scale, (y1 - y0) * scale);
+            let frame = Rect::new(
+                plot.x + left + (aw - fw) / 2.0,
+                plot.y + top + (ah - fh) / 2.0,
+                fw,
+                fh,
+            );
+            let xt = ticks_inside(x0, x1, tick_target(frame.w, 190.0 * theme.s));
+            let yt = ticks_inside(y0, y1, tick_target(frame.h, 150.0 * theme.s));
+            let need_left = theme.tick_len()
+                + theme.gap()
+                + widest(&yt.labels(), tick)
+                + theme.gap()
+                + 1.3 * theme.label();
+            let need_right = widest(&xt.labels(), tick) / 2.0 + theme.gap();
+            let done = (need_left - left).abs() < 0.5 && (need_right - right).abs() < 0.5;
+            left = need_left;
+            right = need_right.max(theme.gap());
+            result = Some((frame, xt, yt, scale));
+            if done {
+                break;
+            }
+        }
+        let (frame, xt, yt, scale) =
+            result.unwrap_or_else(|| (plot, ticks_inside(x0, x1, 5), ticks_inside(y0, y1, 5), 1.0));
+        Axes2 {
+            frame,
+            xt,
+            yt,
+            scale,
+            xlabel: labels.0.to_string(),
+            ylabel: labels.1.to_string(),
+            image: true,
+        }
+    }
+
+    /// Pixels per data unit.
+    pub(crate) fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    /// The frame with its tick and axis labels: what the axes occupy.
+    pub(crate) fn outer(&self, theme: &Theme) -> Rect {
+        let tick = theme.tick();
+        let widest_y = widest(&self.yt.labels(), tick);
+        let left = theme.tick_len() + 2.0 * theme.gap() + widest_y + 1.05 * theme.label();
+        let bottom = theme.tick_len() + 2.0 * theme.gap() + TEXT_BOX * tick + 1.05 * theme.label();
+        let half_x = widest(&self.xt.labels(), tick) / 2.0;
+        let f = self.frame;
+        Rect::new(
+            f.x - left,
+            f.y - 0.5 * tick,
+            f.w + left + half_x,
+            f.h + 0.5 * tick + bottom,
+        )
     }
 
     /// Pixel position of data point `(x, y)`.
@@ -107,7 +190,9 @@ impl Axes2 {
         let ts = TextStyle::new(theme.tick(), theme::INK).with_class("tick-label");
         for (v, label) in self.xt.values.iter().zip(self.xt.labels()) {
             let (px, _) = self.map(*v, self.yt.lo);
-            svg.line((px, f.y), (px, f.bottom()), &grid);
+            if !self.image {
+                svg.line((px, f.y), (px, f.bottom()), &grid);
+            }
             svg.line(
                 (px, f.bottom()),
                 (px, f.bottom() + theme.tick_len()),
@@ -126,7 +211,9 @@ impl Axes2 {
         let mut widest_y: f64 = 0.0;
         for (v, label) in self.yt.values.iter().zip(self.yt.labels()) {
             let (_, py) = self.map(self.xt.lo, *v);
-            svg.line((f.x, py), (f.right(), py), &grid);
+            if !self.image {
+                svg.line((f.x, py), (f.right(), py), &grid);
+            }
             svg.line((f.x - theme.tick_len(), py), (f.x, py), &tick_style);
             widest_y = widest_y.max(text_width(&label, theme.tick(), false));
             svg.text(
@@ -157,15 +244,28 @@ impl Axes2 {
             &self.xlabel,
             &ls,
         );
-        text_centred(
-            svg,
-            (
-                f.x - theme.tick_len() - 2.0 * theme.gap() - widest_y - 0.5 * theme.label(),
-                f.y + f.h / 2.0,
-            ),
-            &self.ylabel,
-            &ls.clone().rotate(-90.0),
-        );
+        if self.image {
+            let w = text_width(&self.ylabel, theme.label(), false);
+            text_centred(
+                svg,
+                (
+                    f.x - theme.tick_len() - 3.0 * theme.gap() - widest_y - w / 2.0,
+                    f.y + f.h / 2.0,
+                ),
+                &self.ylabel,
+                &ls,
+            );
+        } else {
+            text_centred(
+                svg,
+                (
+                    f.x - theme.tick_len() - 2.0 * theme.gap() - widest_y - 0.5 * theme.label(),
+                    f.y + f.h / 2.0,
+                ),
+                &self.ylabel,
+                &ls.clone().rotate(-90.0),
+            );
+        }
         svg.end_group();
     }
 }
@@ -220,6 +320,8 @@ pub(crate) struct Axes3 {
     back: [usize; 3],
     labels: Vec<Label3>,
     axis_edges: Vec<AxisEdge>,
+    /// Pixel bounds of the box and its labels, as fitted.
+    bounds: Rect,
 }
 
 fn lerp_axis(t: &Ticks, side: usize) -> f64 {
@@ -255,6 +357,7 @@ impl Axes3 {
             back,
             labels: Vec::new(),
             axis_edges: Vec::new(),
+            bounds: area,
         };
         // Edges that carry ticks: x along (y front, z back), y along (x front, z back),
         // z at whichever side corner is leftmost on screen.
@@ -423,6 +526,17 @@ impl Axes3 {
         }
     }
 
+    /// A data-space normal `n` as a unit vector in camera coordinates (screen right, screen
+    /// up, towards the viewer), after the box's per-axis scaling; `None` for a zero vector.
+    pub(crate) fn view_normal(&self, n: [f64; 3]) -> Option<[f64; 3]> {
+        // Box coordinates scale axis a by len[a] / span[a]; normals scale by the inverse.
+        let b = [0, 1, 2].map(|a| n[a] * (self.ticks[a].hi - self.ticks[a].lo) / self.len[a]);
+        let q = self.cam.project(b);
+        let v = [q.x, q.y, q.depth];
+        let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        (len > 0.0 && len.is_finite()).then(|| v.map(|x| x / len))
+    }
+
     /// Box coordinates (centred, edge lengths `len`) of a data point.
     fn to_box(&self, p: [f64; 3]) -> [f64; 3] {
         [0, 1, 2].map(|a| (self.ticks[a].unit(p[a]) - 0.5) * self.len[a])
@@ -447,6 +561,16 @@ impl Axes3 {
     pub(crate) fn px(&self, p: [f64; 3]) -> (f64, f64) {
         let (x, y, _) = self.screen(p);
         (x, y)
+    }
+
+    /// Pixels per box unit: how large the box is drawn.
+    pub(crate) fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    /// Pixel bounds of the box with its tick and axis labels.
+    pub(crate) fn bounds(&self) -> Rect {
+        self.bounds
     }
 
     /// The floor height: the back side of the z axis (the low end when seen from above).
@@ -557,11 +681,17 @@ impl Axes3 {
             }
         }
         self.scale = lo;
+        let e = extent(lo);
         self.origin = best.unwrap_or_else(|| {
-            let e = extent(lo);
             let (cx, cy) = area.centre();
             (cx - (e.0 + e.2) / 2.0, cy - (e.1 + e.3) / 2.0)
         });
+        self.bounds = Rect::new(
+            self.origin.0 + e.0,
+            self.origin.1 + e.1,
+            e.2 - e.0,
+            e.3 - e.1,
+        );
     }
 
     /// Hides tick labels that overlap a label of higher priority (for example the lowest

@@ -129,13 +129,29 @@ pub(crate) fn draw_callouts(
     names: &[String],
     keep: &Keep,
 ) {
+    // Points drawn at the same place with the same values (the ends of a closed curve)
+    // share one callout that names them all.
+    let mut groups: Vec<(usize, Vec<String>)> = Vec::new();
+    for (i, p) in at.iter().enumerate() {
+        let shown = deg[i].map(format_degree);
+        let same = groups.iter_mut().find(|(k, _)| {
+            let q = at[*k];
+            (p.0 - q.0).abs() < 0.5
+                && (p.1 - q.1).abs() < 0.5
+                && deg[*k].map(format_degree) == shown
+        });
+        match same {
+            Some((_, members)) => members.extend(names.get(i).cloned()),
+            None => groups.push((i, names.get(i).cloned().into_iter().collect())),
+        }
+    }
+    let at: Vec<(f64, f64)> = groups.iter().map(|(k, _)| at[*k]).collect();
     let compact = at.len() > MAX_FULL_CALLOUTS;
-    let contents: Vec<Content> = deg
+    let contents: Vec<Content> = groups
         .iter()
-        .enumerate()
-        .map(|(i, d)| Content {
-            name: names.get(i).cloned(),
-            deg: *d,
+        .map(|(k, members)| Content {
+            name: (!members.is_empty()).then(|| members.join(" = ")),
+            deg: deg[*k],
         })
         .collect();
     let dims = Dims::new(theme, compact, &contents);
@@ -160,7 +176,7 @@ pub(crate) fn draw_callouts(
                 let cy = p.1 + dir.1 * (d + s);
                 let rect = Rect::new(cx - w / 2.0, cy - h / 2.0, w, h);
                 let mut score = keep.cost(&rect, 2.0e4);
-                score += placed.iter().map(|o| o.overlap(&rect)).sum::<f64>() * 50.0;
+                score += placed.iter().map(|o| o.overlap(&rect)).sum::<f64>() * 300.0;
                 score += marker_boxes
                     .iter()
                     .enumerate()

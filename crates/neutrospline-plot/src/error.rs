@@ -57,7 +57,7 @@ pub enum PlotError {
     /// A position or degree that is NaN or infinite.
     #[error("{what} {index}: {channel} = {value} is not a finite number")]
     NotFinite {
-        /// `"control point"` or `"curve sample"`.
+        /// `"control point"`, `"curve sample"` or `"surface sample"`.
         what: &'static str,
         /// Index of the point (0-based).
         index: usize,

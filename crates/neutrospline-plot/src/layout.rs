@@ -169,6 +169,15 @@ pub(crate) enum Swatch {
     },
     /// A lane of the plane view: grey track, coloured band of half its width.
     Band { color: Color },
+    /// A filled patch with an outline (a surface).
+    Patch { color: Color },
+    /// A dashed line across a patch (lines drawn over a heat map).
+    LineOnPatch {
+        patch: Color,
+        line: Color,
+        width: f64,
+        dash: (f64, f64),
+    },
 }
 
 /// A legend entry.
@@ -383,6 +392,32 @@ fn draw_swatch(svg: &mut SvgWriter, theme: &Theme, swatch: &Swatch, x: f64, cy: 
                 );
             }
         }
+        Swatch::Patch { color } => {
+            let h = 0.8 * theme.legend();
+            svg.rect(
+                x,
+                cy - h / 2.0,
+                w,
+                h,
+                &Style::stroke(theme::AXIS, theme.grid_w())
+                    .with_fill(*color)
+                    .square(),
+            );
+        }
+        Swatch::LineOnPatch {
+            patch,
+            line,
+            width,
+            dash,
+        } => {
+            let h = 0.8 * theme.legend();
+            svg.rect(x, cy - h / 2.0, w, h, &Style::fill(*patch).square());
+            svg.line(
+                (x, cy),
+                (x + w, cy),
+                &Style::stroke(*line, *width).with_dash(dash.0, dash.1),
+            );
+        }
         Swatch::Band { color } => {
             let h = 0.7 * theme.legend();
             svg.rect(x, cy - h / 2.0, w, h, &Style::fill(theme::TRACK).square());
@@ -460,11 +495,6 @@ impl Frame {
     pub(crate) fn legend_rect(&self, theme: &Theme) -> Option<Rect> {
         let (w, h) = self.legend.size(theme);
         (w > 0.0).then(|| Rect::new(self.legend_pos.0, self.legend_pos.1, w, h))
-    }
-
-    /// Size of the legend box.
-    pub(crate) fn legend_size(&self, theme: &Theme) -> (f64, f64) {
-        self.legend.size(theme)
     }
 
     /// Moves the legend's top-left corner.

@@ -1,12 +1,14 @@
 //! # neutrospline-plot
 //!
-//! Figures of neutrosophic curves as SVG and PNG: the paper's figures 1-5 (control points;
-//! truth, indeterminacy and falsity curves; all three together) and a flat `plane` view.
+//! Figures of neutrosophic curves and surfaces as SVG and PNG: the paper's figures 1-5
+//! (control points; truth, indeterminacy and falsity curves; all three together), a flat
+//! `plane` view, and the same six views for tensor-product surfaces.
 //!
 //! A [`PlotModel`] holds what to draw: a curve (any kind implementing
-//! [`neutrospline::Evaluate`], sampled when drawn, or precomputed samples), its control
-//! points and optionally their names. [`render_svg`] draws one [`View`] of it with
-//! [`PlotOptions`]; [`svg_to_png`] and [`render_png`] rasterize.
+//! [`neutrospline::Evaluate`], sampled when drawn, or precomputed samples) or a surface
+//! ([`PlotModel::from_surface`]: Bézier, B-spline or NURBS), its control points and optionally
+//! their names. [`render_svg`] draws one [`View`] of it with [`PlotOptions`]; [`svg_to_png`]
+//! and [`render_png`] rasterize.
 //!
 //! ```
 //! use neutrospline_plot::{render_png, render_svg, PlotModel, PlotOptions, View};
@@ -42,11 +44,36 @@
 //! - `truth`, `indeterminacy`, `falsity`: the 3-D curve coloured by that degree (viridis,
 //!   0 to 1) with a colour bar, control polygon, points coloured alike, drop lines and the
 //!   curve's shadow on the floor of the box;
-//! - `all`: three such panels side by side, one per degree, sharing the colour bar;
+//! - `all`: three such panels, one per degree, sharing the colour bar: in a 2 x 2 grid with
+//!   the legend in the fourth cell, or in a row or a column with the legend beside them,
+//!   whichever draws the panels largest for the figure's size (every panel and the legend keep
+//!   to their own cells, so nothing overlaps at any size);
 //! - `controls`: the 3-D control polygon with the same callouts as in 2-D, drop lines and
 //!   shadow;
 //! - `plane`: the same lanes as in 2-D, drawn along the curve's projection in the 3-D view
 //!   (the lanes are flat on the screen; the box keeps the 3-D context).
+//!
+//! For surfaces (positions x, y, z; a `rows x cols` control net), sampled on an `N x N`
+//! grid ([`PlotOptions::with_samples`], default [`DEFAULT_SURFACE_SAMPLES`] = 40 per
+//! direction, at most [`MAX_SURFACE_SAMPLES`]):
+//! - `truth`, `indeterminacy`, `falsity`: the surface as a mesh of `(N - 1)^2` quads coloured
+//!   by that degree (viridis, 0 to 1, with a colour bar), shaded by its normals (Lambert
+//!   lighting from the upper left that darkens a face by at most a third, so the colour
+//!   stays readable), drawn far to near (painter's algorithm) with about eight iso-parameter
+//!   lines each way and a dark boundary; the control net as a dashed grey wire with its
+//!   points coloured by the degree, in full where it lies in front of the surface and faint
+//!   where the surface hides it;
+//! - `all`: three such panels, arranged like the curves';
+//! - `controls`: the net over the surface in neutral grey; each control point drawn as a
+//!   small box of three bars (its truth, indeterminacy and falsity; a full bar is 1),
+//!   shrunk where points crowd, for a regular subset of at most 64 points on large nets; the
+//!   four corners named (`P00`, ... or the model's names);
+//! - `plane`: the parameter domain seen from above: one heat map per degree over (u, v), `u`
+//!   across and `v` up, with the interior knot lines of a spline surface dashed in white,
+//!   arranged like `all`.
+//!
+//! A surface that shows no area (a single row or column, all points equal, or a flat one
+//! seen edge on) is drawn as a coloured curve or a point.
 //!
 //! Every figure has a title (a default per view, or [`PlotOptions::with_title`]), an optional
 //! caption ([`PlotOptions::with_caption`], for sources and errata), labelled axes with
@@ -59,7 +86,9 @@
 //! element order), with real `<text>` elements in the bundled DejaVu Sans ([`FONT_FAMILY`],
 //! fallback `sans-serif`). PNG is rasterized from that SVG with resvg using only the bundled
 //! font. Both are byte-for-byte reproducible. Degenerate models (one point, all points equal,
-//! a straight line, all degrees 0 or 1) render with padded axis ranges and never produce NaN.
+//! a straight line, all degrees 0 or 1, a 1 x 1 or flat surface) render with padded axis
+//! ranges and never produce NaN. A surface figure at the default 40 x 40 samples is about
+//! 0.3 MB of SVG (the three-panel `all`, about 0.8 MB).
 //!
 //! ## Font
 //! DejaVu Sans (regular and bold), bundled in the crate under its own free license (see
@@ -67,6 +96,8 @@
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
+#[cfg(test)]
+mod audit;
 mod axes;
 mod callout;
 mod camera;
@@ -75,9 +106,11 @@ mod font;
 mod layout;
 mod model;
 mod options;
+mod panels;
 mod png;
 mod render;
 mod scene;
+mod surface;
 mod svg;
 mod theme;
 mod ticks;
@@ -85,10 +118,14 @@ mod view;
 
 pub use error::PlotError;
 pub use font::FONT_FAMILY;
-pub use model::{PlotModel, BEZIER_LABEL, BSPLINE_LABEL, CURVE_LABEL, NURBS_LABEL};
+pub use model::{
+    PlotModel, BEZIER_LABEL, BEZIER_SURFACE_LABEL, BSPLINE_LABEL, BSPLINE_SURFACE_LABEL,
+    CURVE_LABEL, NURBS_LABEL, NURBS_SURFACE_LABEL,
+};
 pub use options::{
     PlotOptions, DEFAULT_AZIMUTH, DEFAULT_ELEVATION, DEFAULT_HEIGHT, DEFAULT_SAMPLES,
-    DEFAULT_WIDTH, MAX_SAMPLES, MAX_SIDE, MIN_SAMPLES, MIN_SIDE,
+    DEFAULT_SURFACE_SAMPLES, DEFAULT_WIDTH, MAX_SAMPLES, MAX_SIDE, MAX_SURFACE_SAMPLES,
+    MIN_SAMPLES, MIN_SIDE,
 };
 pub use png::{render_png, svg_to_png};
 pub use render::render_svg;

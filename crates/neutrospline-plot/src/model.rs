@@ -4,7 +4,8 @@ use std::fmt;
 use std::sync::Arc;
 
 use neutrospline::{
-    AnyCurve, Bezier, ControlPoint, CurveKind, CurvePoint, Evaluate, NeutrosophicPoint,
+    AnyCurve, Bezier, ControlPoint, CurveKind, CurvePoint, Evaluate, NeutrosophicPoint, Surface,
+    SurfaceKind,
 };
 
 use crate::error::PlotError;
@@ -79,37 +80,110 @@ struct CurveSampler<C, const D: usize>(C);
 impl<C: Evaluate<D> + Send + Sync, const D: usize> Sampler for CurveSampler<C, D> {
     fn sample(&self, n: usize) -> Result<Vec<Pt>, PlotError> {
         let (start, end) = self.0.domain();
-        let n = n.max(2);
-        let last = (n - 1) as f64;
-        // The end parameter is exact; the others are affine in k, never past `end`.
-        let ts: Vec<f64> = (0..n)
-            .map(|k| {
-                if k + 1 == n {
-                    end
-                } else {
-                    (start + (end - start) * (k as f64 / last)).min(end)
-                }
-            })
-            .collect();
-        let mut out = vec![self.0.start(); n];
+        let ts = parameters(start, end, n);
+        let mut out = vec![self.0.start(); ts.len()];
         self.0.evaluate_many(&ts, &mut out)?;
         to_pts(&out, "curve sample")
     }
 }
 
 #[derive(Clone)]
-enum CurveData {
+enum Geometry {
     Samples(Vec<Pt>),
     Curve(Arc<dyn Sampler>),
+    Surface(Arc<Surface>),
 }
 
-/// What a figure shows: a neutrosophic curve (sampled when drawn, or given as samples), its
-/// control points and, optionally, their names.
+/// Evenly spaced parameters from `start` to `end` (exactly), `n >= 2` of them.
+fn parameters(start: f64, end: f64, n: usize) -> Vec<f64> {
+    let n = n.max(2);
+    let last = (n - 1) as f64;
+    // The end parameter is exact; the others are affine in k, never past `end`.
+    (0..n)
+        .map(|k| {
+            if k + 1 == n {
+                end
+            } else {
+                (start + (end - start) * (k as f64 / last)).min(end)
+            }
+        })
+        .collect()
+}
+
+/// A surface sampled on an `n x n` grid of parameters: points and unit normals, row `a`
+/// (along u) by column `b` (along v), stored at `a * n + b`.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Mesh {
+    pub n: usize,
+    pub u: Vec<f64>,
+    pub v: Vec<f64>,
+    pub points: Vec<Pt>,
+    /// `None` where the surface has no normal (a collapsed edge, a degenerate patch).
+    pub normals: Vec<Option<[f64; 3]>>,
+    /// The distinct interior knots in u and in v (the patch boundaries of a spline surface).
+    pub knots: [Vec<f64>; 2],
+}
+
+impl Mesh {
+    pub(crate) fn at(&self, a: usize, b: usize) -> &Pt {
+        &self.points[a * self.n + b]
+    }
+
+    pub(crate) fn normal(&self, a: usize, b: usize) -> Option<[f64; 3]> {
+        self.normals[a * self.n + b]
+    }
+}
+
+fn sample_surface(surface: &Surface, n: usize) -> Result<Mesh, PlotError> {
+    let (u0, u1) = surface.domain_u();
+    let (v0, v1) = surface.domain_v();
+    let us = parameters(u0, u1, n);
+    let vs = parameters(v0, v1, n);
+    let n = us.len();
+    let mut points = Vec::with_capacity(n * n);
+    let mut normals = Vec::with_capacity(n * n);
+    for &u in &us {
+        for &v in &vs {
+            let p = surface.evaluate(u, v)?;
+            points.push(to_pt(&p, "surface sample", points.len())?);
+            let normal = surface
+                .normal(u, v)?
+                .filter(|m| m.iter().all(|x| x.is_finite()));
+            normals.push(normal);
+        }
+    }
+    let interior = |knots: &[f64], (lo, hi): (f64, f64)| {
+        let mut k: Vec<f64> = knots
+            .iter()
+            .copied()
+            .filter(|&t| t > lo && t < hi)
+            .collect();
+        k.dedup();
+        k
+    };
+    let knots = [
+        interior(surface.knots_u().knots(), (u0, u1)),
+        interior(surface.knots_v().knots(), (v0, v1)),
+    ];
+    Ok(Mesh {
+        n,
+        u: us,
+        v: vs,
+        points,
+        normals,
+        knots,
+    })
+}
+
+/// What a figure shows: a neutrosophic curve (sampled when drawn, or given as samples) or a
+/// tensor-product surface, its control points and, optionally, their names.
 ///
 /// The model is independent of the curve kind: anything that implements
 /// [`neutrospline::Evaluate`] can feed it through [`PlotModel::from_curve`], and
 /// [`PlotModel::from_samples`] takes points computed elsewhere. Positions are 2-D (the paper's
-/// model: the degrees become the third axis of the 3-D views) or 3-D.
+/// model: the degrees become the third axis of the 3-D views) or 3-D. Surfaces of every kind
+/// come in through [`PlotModel::from_surface`]; they are 3-D, and their control points form a
+/// grid (the control net).
 ///
 /// ```
 /// use neutrospline_plot::PlotModel;
@@ -122,8 +196,10 @@ enum CurveData {
 #[derive(Clone)]
 pub struct PlotModel {
     dimension: usize,
-    curve: CurveData,
+    curve: Geometry,
     controls: Vec<Pt>,
+    /// Rows and columns of a surface's control net.
+    grid: Option<(usize, usize)>,
     names: Vec<String>,
     label: String,
 }
@@ -131,13 +207,15 @@ pub struct PlotModel {
 impl fmt::Debug for PlotModel {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let curve = match &self.curve {
-            CurveData::Samples(s) => format!("{} samples", s.len()),
-            CurveData::Curve(_) => "curve".to_string(),
+            Geometry::Samples(s) => format!("{} samples", s.len()),
+            Geometry::Curve(_) => "curve".to_string(),
+            Geometry::Surface(_) => "surface".to_string(),
         };
         f.debug_struct("PlotModel")
             .field("dimension", &self.dimension)
             .field("curve", &curve)
             .field("controls", &self.controls.len())
+            .field("grid", &self.grid)
             .field("names", &self.names)
             .field("label", &self.label)
             .finish()
@@ -152,6 +230,12 @@ pub const BSPLINE_LABEL: &str = "Neutrosophic B-spline curve";
 pub const NURBS_LABEL: &str = "Neutrosophic NURBS curve";
 /// The label of models made by [`PlotModel::from_curve`] and [`PlotModel::from_samples`].
 pub const CURVE_LABEL: &str = "Neutrosophic curve";
+/// The label of models made from a Bézier surface ([`SurfaceKind::Bezier`]).
+pub const BEZIER_SURFACE_LABEL: &str = "Neutrosophic Bézier surface";
+/// The label of models made from a B-spline surface ([`SurfaceKind::BSpline`]).
+pub const BSPLINE_SURFACE_LABEL: &str = "Neutrosophic B-spline surface";
+/// The label of models made from a NURBS surface ([`SurfaceKind::Nurbs`]).
+pub const NURBS_SURFACE_LABEL: &str = "Neutrosophic NURBS surface";
 
 impl PlotModel {
     /// A model of any curve kind: `curve` is sampled evenly in its parameter domain when the
@@ -174,8 +258,9 @@ impl PlotModel {
         }
         Ok(PlotModel {
             dimension: D,
-            curve: CurveData::Curve(Arc::new(CurveSampler(curve))),
+            curve: Geometry::Curve(Arc::new(CurveSampler(curve))),
             controls: to_pts(controls, "control point")?,
+            grid: None,
             names: Vec::new(),
             label: CURVE_LABEL.to_string(),
         })
@@ -235,10 +320,54 @@ impl PlotModel {
         }
         Ok(PlotModel {
             dimension: D,
-            curve: CurveData::Samples(to_pts(curve, "curve sample")?),
+            curve: Geometry::Samples(to_pts(curve, "curve sample")?),
             controls: to_pts(controls, "control point")?,
+            grid: None,
             names: Vec::new(),
             label: CURVE_LABEL.to_string(),
+        })
+    }
+
+    /// A model of a tensor-product surface of any kind and its control net, labelled by kind
+    /// ("Neutrosophic Bézier surface", "Neutrosophic B-spline surface", "Neutrosophic NURBS
+    /// surface"). The surface is sampled on an `N x N` grid, evenly spaced in its parameter
+    /// domain, when the figure is drawn (`N` from
+    /// [`PlotOptions::surface_samples`](crate::PlotOptions::surface_samples)); its normals
+    /// shade the mesh. The control points are taken row by row (as
+    /// [`Surface::control_points`]), so names given to [`PlotModel::with_names`] follow that
+    /// order.
+    ///
+    /// ```
+    /// use neutrospline::{ControlPoint, Degrees, Surface};
+    /// use neutrospline_plot::{render_svg, PlotModel, PlotOptions, View};
+    /// let d = Degrees::new(0.7, 0.2, 0.1)?;
+    /// let grid = (0..4)
+    ///     .map(|k| ControlPoint::new([f64::from(k / 2), f64::from(k % 2), 0.0], d))
+    ///     .collect();
+    /// let model = PlotModel::from_surface(&Surface::bezier(2, 2, grid)?)?;
+    /// assert_eq!(model.label(), "Neutrosophic Bézier surface");
+    /// assert_eq!(model.grid(), Some((2, 2)));
+    /// let options = PlotOptions::default().with_size(400, 300).with_samples(8);
+    /// assert!(render_svg(&model, View::Truth, &options)?.contains("class=\"mesh\""));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`PlotError::NotFinite`] for a control value that is not finite (degrees built
+    /// unchecked).
+    pub fn from_surface(surface: &Surface) -> Result<PlotModel, PlotError> {
+        let label = match surface.kind() {
+            SurfaceKind::Bezier => BEZIER_SURFACE_LABEL,
+            SurfaceKind::BSpline => BSPLINE_SURFACE_LABEL,
+            SurfaceKind::Nurbs => NURBS_SURFACE_LABEL,
+        };
+        Ok(PlotModel {
+            dimension: 3,
+            curve: Geometry::Surface(Arc::new(surface.clone())),
+            controls: to_pts(&surface.control_points(), "control point")?,
+            grid: Some((surface.rows(), surface.cols())),
+            names: Vec::new(),
+            label: label.to_string(),
         })
     }
 
@@ -278,6 +407,16 @@ impl PlotModel {
         self.controls.len()
     }
 
+    /// Whether the model is a surface ([`PlotModel::from_surface`]).
+    pub fn is_surface(&self) -> bool {
+        matches!(self.curve, Geometry::Surface(_))
+    }
+
+    /// Rows and columns of a surface's control net (`None` for curves).
+    pub fn grid(&self) -> Option<(usize, usize)> {
+        self.grid
+    }
+
     /// The control point names (empty when none were given).
     pub fn names(&self) -> &[String] {
         &self.names
@@ -292,11 +431,20 @@ impl PlotModel {
         &self.controls
     }
 
-    /// The curve points: the given samples, or `samples` evaluations.
+    /// The curve points: the given samples, or `samples` evaluations (none for a surface).
     pub(crate) fn curve_points(&self, samples: usize) -> Result<Vec<Pt>, PlotError> {
         match &self.curve {
-            CurveData::Samples(s) => Ok(s.clone()),
-            CurveData::Curve(c) => c.sample(samples),
+            Geometry::Samples(s) => Ok(s.clone()),
+            Geometry::Curve(c) => c.sample(samples),
+            Geometry::Surface(_) => Ok(Vec::new()),
+        }
+    }
+
+    /// The surface sampled on an `n x n` grid, if the model is a surface.
+    pub(crate) fn mesh(&self, n: usize) -> Result<Option<Mesh>, PlotError> {
+        match &self.curve {
+            Geometry::Surface(s) => sample_surface(s, n).map(Some),
+            _ => Ok(None),
         }
     }
 }
@@ -313,8 +461,9 @@ impl From<&Bezier<2>> for PlotModel {
             .collect();
         PlotModel {
             dimension: 2,
-            curve: CurveData::Curve(Arc::new(CurveSampler(curve.clone()))),
+            curve: Geometry::Curve(Arc::new(CurveSampler(curve.clone()))),
             controls,
+            grid: None,
             names: Vec::new(),
             label: BEZIER_LABEL.to_string(),
         }
@@ -333,8 +482,9 @@ impl From<&Bezier<3>> for PlotModel {
             .collect();
         PlotModel {
             dimension: 3,
-            curve: CurveData::Curve(Arc::new(CurveSampler(curve.clone()))),
+            curve: Geometry::Curve(Arc::new(CurveSampler(curve.clone()))),
             controls,
+            grid: None,
             names: Vec::new(),
             label: BEZIER_LABEL.to_string(),
         }

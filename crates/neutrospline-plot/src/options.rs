@@ -12,6 +12,10 @@ pub const DEFAULT_AZIMUTH: f64 = -55.0;
 pub const DEFAULT_ELEVATION: f64 = 25.0;
 /// Default number of curve samples.
 pub const DEFAULT_SAMPLES: usize = 200;
+/// Default number of surface samples per parameter direction (a 40 x 40 grid, 39 x 39 quads).
+pub const DEFAULT_SURFACE_SAMPLES: usize = 40;
+/// Largest number of surface samples per direction accepted (keeps an SVG near 1 MB).
+pub const MAX_SURFACE_SAMPLES: usize = 100;
 
 /// Smallest image side accepted, in pixels.
 pub const MIN_SIDE: u32 = 64;
@@ -44,7 +48,8 @@ pub struct PlotOptions {
     caption: Option<String>,
     azimuth: f64,
     elevation: f64,
-    samples: usize,
+    /// `None`: the default of the model's kind.
+    samples: Option<usize>,
 }
 
 impl Default for PlotOptions {
@@ -56,7 +61,7 @@ impl Default for PlotOptions {
             caption: None,
             azimuth: DEFAULT_AZIMUTH,
             elevation: DEFAULT_ELEVATION,
-            samples: DEFAULT_SAMPLES,
+            samples: None,
         }
     }
 }
@@ -118,9 +123,11 @@ impl PlotOptions {
     }
 
     /// Sets the number of points at which a curve is evaluated (default 200, evenly spaced in
-    /// the parameter). Models built from samples are drawn as given.
+    /// the parameter), or for a surface the number per parameter direction (default 40, at
+    /// most [`MAX_SURFACE_SAMPLES`]): the mesh is `samples x samples` points. Models built
+    /// from samples are drawn as given.
     pub fn with_samples(mut self, samples: usize) -> PlotOptions {
-        self.samples = samples;
+        self.samples = Some(samples);
         self
     }
 
@@ -154,9 +161,33 @@ impl PlotOptions {
         self.elevation
     }
 
-    /// Number of curve samples.
+    /// Number of curve samples: the one set, else [`DEFAULT_SAMPLES`].
     pub fn samples(&self) -> usize {
-        self.samples
+        self.samples.unwrap_or(DEFAULT_SAMPLES)
+    }
+
+    /// Number of surface samples per parameter direction: the one set, else
+    /// [`DEFAULT_SURFACE_SAMPLES`].
+    pub fn surface_samples(&self) -> usize {
+        self.samples.unwrap_or(DEFAULT_SURFACE_SAMPLES)
+    }
+
+    /// Checks the options for drawing a surface: [`PlotOptions::validate`], and at most
+    /// [`MAX_SURFACE_SAMPLES`] samples per direction.
+    ///
+    /// # Errors
+    /// Those of [`PlotOptions::validate`]; [`PlotError::InvalidSamples`] above the maximum.
+    pub fn validate_surface(&self) -> Result<(), PlotError> {
+        self.validate()?;
+        let n = self.surface_samples();
+        if n > MAX_SURFACE_SAMPLES {
+            return Err(PlotError::InvalidSamples {
+                samples: n,
+                min: MIN_SAMPLES,
+                max: MAX_SURFACE_SAMPLES,
+            });
+        }
+        Ok(())
     }
 
     /// Checks every option.
@@ -166,9 +197,9 @@ impl PlotOptions {
     /// [`PlotError::InvalidCamera`].
     pub fn validate(&self) -> Result<(), PlotError> {
         check_size(self.width, self.height)?;
-        if !(MIN_SAMPLES..=MAX_SAMPLES).contains(&self.samples) {
+        if !(MIN_SAMPLES..=MAX_SAMPLES).contains(&self.samples()) {
             return Err(PlotError::InvalidSamples {
-                samples: self.samples,
+                samples: self.samples(),
                 min: MIN_SAMPLES,
                 max: MAX_SAMPLES,
             });
@@ -215,6 +246,8 @@ mod tests {
         assert_eq!((o.width(), o.height()), (1600, 1200));
         assert_eq!((o.azimuth(), o.elevation()), (-55.0, 25.0));
         assert_eq!(o.samples(), 200);
+        assert_eq!(o.surface_samples(), 40);
+        assert_eq!(o.clone().with_samples(12).surface_samples(), 12);
         assert_eq!(o.title(), None);
         assert_eq!(o.validate(), Ok(()));
     }
@@ -236,6 +269,14 @@ mod tests {
         assert_eq!(
             e.to_string(),
             "samples = 1 is not supported (must be between 2 and 100000)"
+        );
+        let e = PlotOptions::default()
+            .with_samples(101)
+            .validate_surface()
+            .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "samples = 101 is not supported (must be between 2 and 100)"
         );
         let e = PlotOptions::default()
             .with_elevation(95.0)

@@ -9,7 +9,9 @@ use crate::error::PlotError;
 use crate::layout::{text_centred, ColorBar, Entry, Frame, Legend, LegendPlace, Rect, Swatch};
 use crate::model::{PlotModel, Pt};
 use crate::options::PlotOptions;
+use crate::panels;
 use crate::scene::{Scene, Shape, DATA, FLOOR, OVER};
+use crate::surface;
 use crate::svg::{Color, Style, SvgWriter, TextStyle};
 use crate::theme::{self, Marker, Theme};
 use crate::ticks::{padded, ticks_inside, ticks_loose, Ticks};
@@ -19,18 +21,19 @@ use crate::view::View;
 const CHUNK: usize = 6;
 
 /// Everything a view needs.
-struct Ctx<'a> {
-    theme: Theme,
-    options: &'a PlotOptions,
-    curve: Vec<Pt>,
-    controls: &'a [Pt],
-    names: &'a [String],
-    title: String,
-    caption: String,
+pub(crate) struct Ctx<'a> {
+    pub theme: Theme,
+    pub options: &'a PlotOptions,
+    /// The curve samples (for a surface: the mesh points, so that extents cover them).
+    pub curve: Vec<Pt>,
+    pub controls: &'a [Pt],
+    pub names: &'a [String],
+    pub title: String,
+    pub caption: String,
 }
 
 impl Ctx<'_> {
-    fn cam(&self) -> Camera {
+    pub(crate) fn cam(&self) -> Camera {
         Camera::new(self.options.azimuth(), self.options.elevation())
     }
 
@@ -39,7 +42,7 @@ impl Ctx<'_> {
     }
 
     /// (min, max) of coordinate `axis` over curve and control points.
-    fn extent(&self, axis: usize) -> (f64, f64) {
+    pub(crate) fn extent(&self, axis: usize) -> (f64, f64) {
         self.all_points()
             .map(|p| p.pos[axis])
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
@@ -47,7 +50,7 @@ impl Ctx<'_> {
             })
     }
 
-    fn frame(&self, legend: Legend, place: LegendPlace) -> Frame {
+    pub(crate) fn frame(&self, legend: Legend, place: LegendPlace) -> Frame {
         Frame::new(
             self.options.width(),
             self.options.height(),
@@ -85,13 +88,15 @@ impl Ctx<'_> {
         svg.end_group();
     }
 
-    fn svg(&self) -> SvgWriter {
+    pub(crate) fn svg(&self) -> SvgWriter {
         SvgWriter::new(self.options.width(), self.options.height(), &self.title)
     }
 }
 
-fn default_title(label: &str, view: View) -> String {
+fn default_title(label: &str, view: View, surface: bool) -> String {
     match view {
+        View::Controls if surface => "Neutrosophic control net".to_string(),
+        View::Plane if surface => format!("{label}: degree maps"),
         View::Controls => "Neutrosophic control points".to_string(),
         View::Truth | View::Indeterminacy | View::Falsity => format!("{label}: {view}"),
         View::All => format!("{label}: all three degrees"),
@@ -107,7 +112,9 @@ fn default_title(label: &str, view: View) -> String {
 /// are real SVG `<text>` elements.
 ///
 /// # Errors
-/// Invalid options ([`PlotOptions::validate`]), a curve that cannot be sampled
+/// Invalid options ([`PlotOptions::validate`]; for a surface
+/// [`PlotOptions::validate_surface`], which caps the samples per direction), a curve or
+/// surface that cannot be sampled
 /// ([`PlotError::Evaluate`], [`PlotError::NotFinite`]), or coordinates whose range overflows
 /// ([`PlotError::RangeTooLarge`]).
 ///
@@ -124,11 +131,19 @@ pub fn render_svg(
     view: View,
     options: &PlotOptions,
 ) -> Result<String, PlotError> {
-    options.validate()?;
-    let curve = model.curve_points(options.samples())?;
+    if model.is_surface() {
+        options.validate_surface()?;
+    } else {
+        options.validate()?;
+    }
+    let mesh = model.mesh(options.surface_samples())?;
+    let curve = match &mesh {
+        Some(mesh) => mesh.points.clone(),
+        None => model.curve_points(options.samples())?,
+    };
     let title = match options.title() {
         Some(t) => t.to_string(),
-        None => default_title(model.label(), view),
+        None => default_title(model.label(), view, model.is_surface()),
     };
     let ctx = Ctx {
         theme: Theme::new(options.width(), options.height()),
@@ -150,6 +165,9 @@ pub fn render_svg(
             });
         }
     }
+    if let (Some(mesh), Some(grid)) = (&mesh, model.grid()) {
+        return Ok(surface::render(&ctx, mesh, grid, view));
+    }
     let svg = match (model.dimension(), view) {
         (2, View::Controls) => controls_2d(&ctx),
         (2, View::Plane) => plane_2d(&ctx),
@@ -163,7 +181,7 @@ pub fn render_svg(
     Ok(svg)
 }
 
-fn line_entry(color: Color, width: f64, dash: Option<(f64, f64)>, label: &str) -> Entry {
+pub(crate) fn line_entry(color: Color, width: f64, dash: Option<(f64, f64)>, label: &str) -> Entry {
     Entry {
         swatch: Swatch::Line {
             color,
@@ -175,7 +193,13 @@ fn line_entry(color: Color, width: f64, dash: Option<(f64, f64)>, label: &str) -
     }
 }
 
-fn polygon_entry(theme: &Theme, color: Color, shape: Marker, fill: Color, label: &str) -> Entry {
+pub(crate) fn polygon_entry(
+    theme: &Theme,
+    color: Color,
+    shape: Marker,
+    fill: Color,
+    label: &str,
+) -> Entry {
     Entry {
         swatch: Swatch::Line {
             color,
@@ -187,18 +211,18 @@ fn polygon_entry(theme: &Theme, color: Color, shape: Marker, fill: Color, label:
     }
 }
 
-fn marker_style(theme: &Theme, fill: Color) -> Style {
+pub(crate) fn marker_style(theme: &Theme, fill: Color) -> Style {
     Style::stroke(theme::CRISP, theme.s * 1.8).with_fill(fill)
 }
 
-fn name_style(theme: &Theme) -> TextStyle {
+pub(crate) fn name_style(theme: &Theme) -> TextStyle {
     TextStyle::new(theme.name(), theme::INK)
         .bold()
         .halo(theme.s * 7.0)
         .with_class("point-name")
 }
 
-fn flat(pts: &[(f64, f64, f64)]) -> Vec<(f64, f64)> {
+pub(crate) fn flat(pts: &[(f64, f64, f64)]) -> Vec<(f64, f64)> {
     pts.iter().map(|p| (p.0, p.1)).collect()
 }
 
@@ -671,7 +695,7 @@ fn plane_2d(ctx: &Ctx) -> String {
 // ---------------------------------------------------------------------------------------------
 // 3-D models
 
-fn axes3_for(ctx: &Ctx, area: Rect, target: usize, avoid: Option<Rect>) -> Axes3 {
+pub(crate) fn axes3_for(ctx: &Ctx, area: Rect, target: usize, avoid: Option<Rect>) -> Axes3 {
     let t: [Ticks; 3] = [0, 1, 2].map(|a| {
         let (lo, hi) = ctx.extent(a);
         let (lo, hi) = padded(lo, hi, 0.03);
@@ -786,7 +810,12 @@ fn coloured_curve(scene: &mut Scene, ctx: &Ctx, axes: &Axes3, kind: DegreeKind) 
     flat(&pts)
 }
 
-fn colour_markers(scene: &mut Scene, ctx: &Ctx, ctrl: &[(f64, f64, f64)], kind: DegreeKind) {
+pub(crate) fn colour_markers(
+    scene: &mut Scene,
+    ctx: &Ctx,
+    ctrl: &[(f64, f64, f64)],
+    kind: DegreeKind,
+) {
     let th = &ctx.theme;
     for (p, c) in ctrl.iter().zip(ctx.controls) {
         scene.push(
@@ -855,47 +884,40 @@ fn coloured_3d(ctx: &Ctx, kind: DegreeKind) -> String {
     svg.finish()
 }
 
-/// Three panels (truth, indeterminacy, falsity) and the legend in a 2 x 2 grid.
+/// Three panels (truth, indeterminacy, falsity) and the shared legend, arranged by
+/// [`panels::choose`].
 fn all_3d(ctx: &Ctx) -> String {
     let th = &ctx.theme;
     let mut legend = coloured_legend(th, "degree");
     legend.notes.clear();
-    let mut frame = ctx.frame(legend.clone(), LegendPlace::Manual);
-    let plot = frame.plot;
-    let (cw, ch) = (plot.w / 2.0, plot.h / 2.0);
-    let (_, lh) = frame.legend_size(th);
-    if lh > 0.92 * ch {
-        let bar = 13.0 * th.legend();
-        let length = (1.0 - (lh - 0.92 * ch) / bar).max(0.3);
-        if let Some(cb) = legend.colorbar.as_mut() {
-            cb.length = length;
-        }
-        frame = ctx.frame(legend, LegendPlace::Manual);
-    }
+    let grid = panels::choose(
+        th,
+        &legend,
+        &|legend, place| ctx.frame(legend, place),
+        &|area| {
+            let axes = axes3_for(ctx, area, 5, None);
+            (axes.scale(), axes.bounds().y)
+        },
+    );
     let mut svg = ctx.svg();
-    let head = 1.3 * th.subtitle();
     for (j, kind) in DegreeKind::ALL.iter().enumerate() {
-        let cell = Rect::new(
-            plot.x + cw * (j % 2) as f64,
-            plot.y + ch * (j / 2) as f64,
-            cw,
-            ch,
-        );
-        text_centred(
-            &mut svg,
-            (cell.x + cw / 2.0, cell.y + 0.5 * th.subtitle()),
-            kind.name(),
-            &TextStyle::new(th.subtitle(), theme::degree_color(*kind))
-                .bold()
-                .with_class("panel-title"),
-        );
-        let area = Rect::new(cell.x, cell.y + head, cw, ch - head);
-        coloured_panel(&mut svg, ctx, area, *kind, None);
+        panel_title(&mut svg, th, grid.title_centre(j, th), *kind);
+        coloured_panel(&mut svg, ctx, grid.area(j, th), *kind, None);
     }
-    let (lw, lh) = frame.legend_size(th);
-    frame.place_legend(plot.x + cw + (cw - lw) / 2.0, plot.y + ch + (ch - lh) / 2.0);
-    frame.draw(&mut svg, th);
+    grid.frame.draw(&mut svg, th);
     svg.finish()
+}
+
+/// The title of one panel of an `all` figure: the degree's name in its colour.
+pub(crate) fn panel_title(svg: &mut SvgWriter, th: &Theme, at: (f64, f64), kind: DegreeKind) {
+    text_centred(
+        svg,
+        at,
+        kind.name(),
+        &TextStyle::new(th.subtitle(), theme::degree_color(kind))
+            .bold()
+            .with_class("panel-title"),
+    );
 }
 
 /// Control points of a 3-D model with callouts.

@@ -1,7 +1,7 @@
 //! Depth-sorted drawing of 3-D primitives (painter's algorithm).
 
 use crate::layout::marker;
-use crate::svg::{Style, SvgWriter};
+use crate::svg::{Color, Style, SvgWriter};
 use crate::theme::Marker;
 
 /// Something to draw, already projected to pixels.
@@ -9,6 +9,10 @@ pub(crate) enum Shape {
     Polyline(Vec<(f64, f64)>, Style),
     Polygon(Vec<(f64, f64)>, Style),
     Marker(Marker, (f64, f64), f64, Style),
+    /// A mesh face: filled and outlined in one colour, outline width inherited.
+    Face(Vec<(f64, f64)>, Color),
+    /// A mesh edge of the inherited width.
+    Edge((f64, f64), (f64, f64), Color),
 }
 
 struct Prim {
@@ -79,11 +83,17 @@ impl Scene {
                 .then(a.seq.cmp(&b.seq))
         });
         for p in self.prims {
-            match p.shape {
-                Shape::Polyline(pts, style) => svg.polyline(&pts, &style),
-                Shape::Polygon(pts, style) => svg.polygon(&pts, &style),
-                Shape::Marker(shape, c, r, style) => marker(svg, shape, c, r, &style),
-            }
+            draw_shape(svg, p.shape);
         }
+    }
+}
+
+fn draw_shape(svg: &mut SvgWriter, shape: Shape) {
+    match shape {
+        Shape::Polyline(pts, style) => svg.polyline(&pts, &style),
+        Shape::Polygon(pts, style) => svg.polygon(&pts, &style),
+        Shape::Marker(shape, c, r, style) => marker(svg, shape, c, r, &style),
+        Shape::Face(pts, color) => svg.face(&pts, color),
+        Shape::Edge(a, b, color) => svg.edge(a, b, color),
     }
 }

@@ -267,6 +267,47 @@ impl SvgWriter {
         self.depth += 1;
     }
 
+    /// Opens a `<g>` whose children inherit the given stroke width, round joins and no fill
+    /// unless they set their own: compact output for the many faces and edges of a mesh
+    /// ([`SvgWriter::face`], [`SvgWriter::edge`]).
+    pub(crate) fn begin_mesh_group(&mut self, class: &str, stroke_width: f64) {
+        self.indent();
+        let _ = writeln!(
+            self.out,
+            "<g class=\"{}\" fill=\"none\" stroke-width=\"{}\" stroke-linejoin=\"round\">",
+            escape(class),
+            num(stroke_width)
+        );
+        self.depth += 1;
+    }
+
+    /// A polygon filled and outlined in `color` (the outline, of the inherited width, closes
+    /// the hairline seams between neighbouring faces).
+    pub(crate) fn face(&mut self, points: &[(f64, f64)], color: Color) {
+        if points.len() < 3 {
+            return;
+        }
+        self.indent();
+        self.out.push_str("<polygon");
+        self.points_attr(points);
+        let hex = color.hex();
+        let _ = writeln!(self.out, " fill=\"{hex}\" stroke=\"{hex}\"/>");
+    }
+
+    /// A line in `color` of the inherited width.
+    pub(crate) fn edge(&mut self, a: (f64, f64), b: (f64, f64), color: Color) {
+        self.indent();
+        let _ = writeln!(
+            self.out,
+            "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\"/>",
+            num(a.0),
+            num(a.1),
+            num(b.0),
+            num(b.1),
+            color.hex()
+        );
+    }
+
     pub(crate) fn end_group(&mut self) {
         self.depth = self.depth.saturating_sub(1);
         self.indent();

@@ -22,6 +22,10 @@ pub(crate) const CRISP: Color = Color(0x22, 0x22, 0x22);
 pub(crate) const CONSTRUCTION: Color = Color(0x6e, 0x6e, 0x6e);
 /// Shadows and drop lines.
 pub(crate) const SHADOW: Color = Color(0x9a, 0x9a, 0x9a);
+/// A surface drawn without a degree (the `controls` view of a surface).
+pub(crate) const SURFACE: Color = Color(0xcf, 0xd5, 0xdc);
+/// Knot lines over a heat map.
+pub(crate) const KNOT: Color = Color(0xff, 0xff, 0xff);
 /// Background of the degree lanes of the plane view.
 pub(crate) const TRACK: Color = Color(0xe6, 0xe8, 0xeb);
 

@@ -10,12 +10,12 @@ use crate::error::PlotError;
 /// Which figure to draw. Names (for [`FromStr`] and [`Display`](fmt::Display)) are the
 /// lowercase variant names: `controls`, `truth`, `indeterminacy`, `falsity`, `all`, `plane`.
 ///
-/// | view | 2-D model (the paper's figures) | 3-D model |
-/// |---|---|---|
-/// | `controls` | Fig. 1: control polygon and points, each with a callout of its name and three degree bars | the same in a 3-D box, with drop lines to the floor |
-/// | `truth`, `indeterminacy`, `falsity` | Fig. 2-4: space curve `(x, y, degree)` with its control polygon above the crisp curve (its shadow on the degree = 0 plane) | the 3-D curve coloured by that degree, with a colour bar and its shadow on the floor |
-/// | `all` | Fig. 5: the three space curves in one box | three panels, one per degree, sharing a colour bar |
-/// | `plane` | crisp curve with three bands along it whose widths are the degrees | the same bands along the curve's projection in the 3-D box |
+/// | view | 2-D model (the paper's figures) | 3-D model | surface |
+/// |---|---|---|---|
+/// | `controls` | Fig. 1: control polygon and points, each with a callout of its name and three degree bars | the same in a 3-D box, with drop lines to the floor | the control net over the grey surface, each point drawn as three degree bars, corners named |
+/// | `truth`, `indeterminacy`, `falsity` | Fig. 2-4: space curve `(x, y, degree)` with its control polygon above the crisp curve (its shadow on the degree = 0 plane) | the 3-D curve coloured by that degree, with a colour bar and its shadow on the floor | the shaded mesh coloured by that degree, with the control net and a colour bar |
+/// | `all` | Fig. 5: the three space curves in one box | three panels, one per degree, sharing a colour bar | three meshes, one per degree, sharing a colour bar |
+/// | `plane` | crisp curve with three bands along it whose widths are the degrees | the same bands along the curve's projection in the 3-D box | three heat maps of the degrees over the parameter domain (u, v), with knot lines |
 ///
 /// ```
 /// use neutrospline_plot::View;

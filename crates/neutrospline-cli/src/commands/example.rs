@@ -1,12 +1,39 @@
-//! `neutrospline example`: the paper's Example 1 from built-in data.
+//! `neutrospline example`: the paper's Example 1 from built-in data, and its five figures.
 
-use neutrospline::{example1, EXAMPLE1_NAMES};
+use std::fs;
+use std::path::{Path, PathBuf};
 
-use crate::output::{self, number, rounded, Align};
+use anyhow::Context;
+use neutrospline::{example1, AnyCurve, EXAMPLE1_NAMES};
+use neutrospline_plot::{PlotModel, PlotOptions, View};
 
-/// Arguments of `example`. (A later step adds `--out DIR` for the paper's figures.)
+use crate::commands::plot::{write_figure, FigureFormat};
+use crate::output::{self, number, rounded, Align, TableFormat};
+use crate::shape::{Extras, Param, Shape};
+
+/// Arguments of `example`.
 #[derive(Debug, clap::Args)]
-pub struct ExampleArgs {}
+pub struct ExampleArgs {
+    /// Also write the paper's figures 1 to 5 (figure1.svg, figure1.png, ..., figure5.png) and
+    /// the curve table (example1.csv) into DIR, created if needed
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+}
+
+/// The paper's figures: file stem and view (Fig. 1 control points; Fig. 2, 3, 4 the truth,
+/// indeterminacy and falsity curves; Fig. 5 all three).
+pub const FIGURES: [(&str, View); 5] = [
+    ("figure1", View::Controls),
+    ("figure2", View::Truth),
+    ("figure3", View::Indeterminacy),
+    ("figure4", View::Falsity),
+    ("figure5", View::All),
+];
+
+/// The caption of every figure: where the data comes from, with the erratum (SPEC section 5).
+pub const CAPTION: &str = "Example 1 of Mahmud et al., Table 1 data. Erratum: the paper's \
+Table 3 gives C3 an indeterminacy of 0.1; Table 1, which defines the example, gives 0.4, \
+used here.";
 
 /// Number of intervals of the curve table: t = k / STEPS.
 const STEPS: u32 = 10;
@@ -22,8 +49,12 @@ which defines the example, gives 0.4; this output follows Table 1.";
 ///
 /// # Errors
 /// A write error, or an evaluation error (none for the built-in data).
-pub fn run(_args: &ExampleArgs) -> anyhow::Result<()> {
+pub fn run(args: &ExampleArgs) -> anyhow::Result<()> {
     let curve = example1();
+    let written = match &args.out {
+        Some(dir) => write_outputs(dir)?,
+        None => Vec::new(),
+    };
     let header = ["t", "x", "y", "truth", "indeterminacy", "falsity"];
     let right = [Align::Right; 6];
 
@@ -76,6 +107,48 @@ pub fn run(_args: &ExampleArgs) -> anyhow::Result<()> {
         output::write_text_table(w, &header, &right, &samples)?;
         writeln!(w)?;
         writeln!(w, "{ERRATUM}")?;
+        if !written.is_empty() {
+            writeln!(w)?;
+            writeln!(w, "Wrote:")?;
+            for path in &written {
+                writeln!(w, "  {}", path.display())?;
+            }
+        }
         Ok(())
     })
+}
+
+/// Writes the five figures as SVG and PNG and the curve table into `dir`; returns the paths.
+///
+/// # Errors
+/// The directory cannot be created, or a file cannot be rendered or written.
+fn write_outputs(dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    fs::create_dir_all(dir)
+        .with_context(|| format!("{}: cannot create directory", dir.display()))?;
+    let curve = example1();
+    let model = PlotModel::from_bezier(&curve)?.with_names(EXAMPLE1_NAMES)?;
+    let options = PlotOptions::new().with_caption(CAPTION);
+    let mut written = Vec::new();
+    for (stem, view) in FIGURES {
+        for (ext, format) in [("svg", FigureFormat::Svg), ("png", FigureFormat::Png)] {
+            let path = dir.join(format!("{stem}.{ext}"));
+            write_figure(&model, view, &options, &path, format)?;
+            written.push(path);
+        }
+    }
+    // The curve table at t = k/10 in full precision, in `eval`'s CSV format.
+    let shape = Shape::Planar(AnyCurve::Bezier(curve));
+    let extras = Extras::default();
+    let columns = shape.columns(extras);
+    let sampler = shape.sampler(extras);
+    let rows = (0..=STEPS).map(|k| {
+        let param = Param::T(f64::from(k) / f64::from(STEPS));
+        sampler.row(param)
+    });
+    let path = dir.join("example1.csv");
+    output::emit(Some(&path), |w| {
+        output::write_table(w, TableFormat::Csv, &columns, rows)
+    })?;
+    written.push(path);
+    Ok(written)
 }

@@ -5,6 +5,7 @@ pub mod check;
 pub mod eval;
 pub mod example;
 pub mod options;
+pub mod plot;
 
 use neutrospline::Membership;
 

@@ -1,0 +1,176 @@
+//! `neutrospline plot FILE -o OUT.svg|OUT.png --view VIEW`: a figure of a curve or surface.
+
+use std::path::{Path, PathBuf};
+
+use neutrospline_plot::{render_png, render_svg, PlotModel, PlotOptions, View};
+
+use crate::commands::options::ModelArgs;
+use crate::input::{self, UsageError};
+use crate::output;
+use crate::shape::Shape;
+
+/// The figure formats, chosen by the output file's extension.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FigureFormat {
+    /// Scalable vector graphics (text stays text).
+    Svg,
+    /// A raster image, rendered with the bundled fonts.
+    Png,
+}
+
+impl FigureFormat {
+    /// The format of `path`, from its extension (case-insensitive).
+    ///
+    /// # Errors
+    /// A usage error naming the accepted extensions.
+    pub fn from_path(path: &Path) -> Result<FigureFormat, UsageError> {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase);
+        match ext.as_deref() {
+            Some("svg") => Ok(FigureFormat::Svg),
+            Some("png") => Ok(FigureFormat::Png),
+            _ => Err(UsageError(format!(
+                "{}: unsupported figure extension (accepted: .svg, .png)",
+                path.display()
+            ))),
+        }
+    }
+}
+
+fn parse_view(text: &str) -> Result<View, String> {
+    text.parse::<View>().map_err(|e| e.to_string())
+}
+
+/// Arguments of `plot`.
+#[derive(Debug, clap::Args)]
+#[command(after_help = "Views:\n  \
+controls       the control points and polygon, each point with its truth, indeterminacy and\n                 \
+falsity (paper Fig. 1)\n  \
+truth          3-D axes x, y, truth: the space curve (x(t), y(t), truth(t)), its control\n                 \
+polygon, and the crisp curve as its shadow (paper Fig. 2; 3-D models and surfaces:\n                 \
+coloured by truth)\n  \
+indeterminacy  the same for indeterminacy (paper Fig. 3)\n  \
+falsity        the same for falsity (paper Fig. 4)\n  \
+all            the three together (paper Fig. 5)\n  \
+plane          the crisp curve with three bands along it whose widths follow the degrees\n\
+The format follows the extension of OUT: .svg or .png.")]
+pub struct PlotArgs {
+    /// The model file: .csv, .toml or .json; `-` reads CSV from standard input
+    #[arg(value_name = "FILE")]
+    pub file: String,
+
+    /// The figure to write: OUT.svg or OUT.png (replaced atomically)
+    #[arg(short = 'o', long = "output", value_name = "OUT")]
+    pub output: PathBuf,
+
+    /// Which view to draw: controls, truth, indeterminacy, falsity, all, plane
+    #[arg(long, value_name = "VIEW", default_value = "all", value_parser = parse_view)]
+    pub view: View,
+
+    /// Width in pixels (the SVG's size too)
+    #[arg(long, value_name = "PX", default_value_t = neutrospline_plot::DEFAULT_WIDTH)]
+    pub width: u32,
+
+    /// Height in pixels
+    #[arg(long, value_name = "PX", default_value_t = neutrospline_plot::DEFAULT_HEIGHT)]
+    pub height: u32,
+
+    /// Title above the figure (default: the kind of model and the view; "" for none)
+    #[arg(long, value_name = "TEXT")]
+    pub title: Option<String>,
+
+    /// Caption under the figure (default: the model's description, if it has one)
+    #[arg(long, value_name = "TEXT")]
+    pub caption: Option<String>,
+
+    /// 3-D camera: angle around the vertical axis, in degrees
+    #[arg(long, value_name = "DEG", default_value_t = neutrospline_plot::DEFAULT_AZIMUTH, allow_hyphen_values = true)]
+    pub azimuth: f64,
+
+    /// 3-D camera: angle above the horizontal plane, in degrees
+    #[arg(long, value_name = "DEG", default_value_t = neutrospline_plot::DEFAULT_ELEVATION, allow_hyphen_values = true)]
+    pub elevation: f64,
+
+    /// Points sampled along a curve (surfaces: samples per direction of the mesh; default 40)
+    #[arg(long, value_name = "N")]
+    pub samples: Option<usize>,
+
+    #[command(flatten)]
+    pub model: ModelArgs,
+}
+
+/// The plot model of a shape, with the control points' names when the file gives any.
+///
+/// # Errors
+/// A shape the plot crate cannot draw (for example non-finite samples).
+pub fn plot_model(shape: &Shape, names: &[Option<String>]) -> anyhow::Result<PlotModel> {
+    let model = match shape {
+        Shape::Planar(c) => PlotModel::from_any(c)?,
+        Shape::Spatial(c) => PlotModel::from_any(c)?,
+        Shape::Surface(s) => PlotModel::from_surface(s)?,
+    };
+    if names.iter().all(Option::is_none) {
+        return Ok(model);
+    }
+    let names = names
+        .iter()
+        .enumerate()
+        .map(|(i, n)| n.clone().unwrap_or_else(|| format!("P{i}")));
+    Ok(model.with_names(names)?)
+}
+
+/// Renders `model` as `format` and writes it atomically to `path`.
+///
+/// # Errors
+/// A rendering error or a write error naming the file.
+pub fn write_figure(
+    model: &PlotModel,
+    view: View,
+    options: &PlotOptions,
+    path: &Path,
+    format: FigureFormat,
+) -> anyhow::Result<()> {
+    let bytes = match format {
+        FigureFormat::Svg => render_svg(model, view, options)?.into_bytes(),
+        FigureFormat::Png => render_png(model, view, options)?,
+    };
+    output::emit(Some(path), |w| {
+        w.write_all(&bytes)?;
+        Ok(())
+    })
+}
+
+/// Reads the model, renders the view and writes the figure.
+///
+/// # Errors
+/// An invalid file, an unsupported output extension or option (usage errors), a rendering
+/// error or a write error.
+pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
+    let format = FigureFormat::from_path(&args.output)?;
+    let mut options = PlotOptions::new()
+        .with_size(args.width, args.height)
+        .with_camera(args.azimuth, args.elevation);
+    if let Some(n) = args.samples {
+        options = options.with_samples(n);
+    }
+    options.validate().map_err(|e| UsageError(e.to_string()))?;
+    let model = input::load(&args.file, &args.model.overrides())?;
+    let names: Vec<Option<String>> = model.points.iter().map(|p| p.name.clone()).collect();
+    let description = model.description.clone();
+    let shape = model.into_shape()?;
+    if shape.is_surface() && args.samples.is_some() {
+        options
+            .validate_surface()
+            .map_err(|e| UsageError(e.to_string()))?;
+    }
+    if let Some(title) = &args.title {
+        options = options.with_title(title.clone());
+    }
+    if let Some(caption) = args.caption.clone().or(description) {
+        options = options.with_caption(caption);
+    }
+    let plot = plot_model(&shape, &names)?;
+    write_figure(&plot, args.view, &options, &args.output, format)
+}

@@ -1,0 +1,226 @@
+//! End-to-end tests of `neutrospline plot` and `neutrospline example --out`.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_neutrospline"))
+}
+
+fn repo_file(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples")
+        .join(name)
+}
+
+fn run(args: &[&str]) -> Output {
+    let out = bin().args(args).output().expect("run neutrospline");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!stderr.contains("panicked"), "panic: {stderr}");
+    out
+}
+
+/// Width and height from a PNG's IHDR chunk, after checking the signature.
+fn png_size(bytes: &[u8]) -> (u32, u32) {
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n", "not a PNG");
+    assert_eq!(&bytes[12..16], b"IHDR");
+    let w = u32::from_be_bytes(bytes[16..20].try_into().unwrap());
+    let h = u32::from_be_bytes(bytes[20..24].try_into().unwrap());
+    (w, h)
+}
+
+#[test]
+fn example_out_writes_ten_figures_and_the_table() {
+    let dir = tempfile::tempdir().unwrap();
+    let out_dir = dir.path().join("figures");
+    let out = run(&["example", "--out", out_dir.to_str().unwrap()]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert!(stdout.contains("0.5  4.625      4   0.625            0.2    0.175"));
+    for k in 1..=5 {
+        let svg = fs::read_to_string(out_dir.join(format!("figure{k}.svg"))).unwrap();
+        assert!(svg.starts_with("<svg") || svg.starts_with("<?xml"));
+        assert!(
+            svg.contains("Erratum"),
+            "figure{k} lacks the erratum caption"
+        );
+        assert!(!svg.contains("NaN"));
+        let png = fs::read(out_dir.join(format!("figure{k}.png"))).unwrap();
+        assert_eq!(png_size(&png), (1600, 1200));
+        assert!(stdout.contains(&format!("figure{k}.png")));
+    }
+    // Figure 5 shows all three degrees with a legend; figure 1 names the control points.
+    let fig5 = fs::read_to_string(out_dir.join("figure5.svg")).unwrap();
+    for word in ["truth", "indeterminacy", "falsity"] {
+        assert!(fig5.contains(word), "figure5 lacks {word}");
+    }
+    let fig1 = fs::read_to_string(out_dir.join("figure1.svg")).unwrap();
+    for name in ["C0", "C1", "C2", "C3"] {
+        assert!(fig1.contains(&format!(">{name}<")), "figure1 lacks {name}");
+    }
+    // The table is eval's CSV at t = k/10.
+    let table = fs::read_to_string(out_dir.join("example1.csv")).unwrap();
+    let eval = run(&[
+        "eval",
+        repo_file("example1.csv").to_str().unwrap(),
+        "--at",
+        "0,0.1,0.2,0.3,0.4,0.5,0.6,0.7,0.8,0.9,1",
+    ]);
+    assert_eq!(table, String::from_utf8(eval.stdout).unwrap());
+    assert_eq!(fs::read_dir(&out_dir).unwrap().count(), 11, "stray files");
+}
+
+#[test]
+fn plot_every_view_of_every_example_kind() {
+    let dir = tempfile::tempdir().unwrap();
+    for file in [
+        "example1.toml",
+        "helix3d.toml",
+        "bspline.toml",
+        "nurbs-circle.toml",
+        "surface.toml",
+        "nurbs-surface.json",
+    ] {
+        for view in [
+            "controls",
+            "truth",
+            "indeterminacy",
+            "falsity",
+            "all",
+            "plane",
+        ] {
+            let out_path = dir.path().join(format!("{file}-{view}.svg"));
+            let out = run(&[
+                "plot",
+                repo_file(file).to_str().unwrap(),
+                "-o",
+                out_path.to_str().unwrap(),
+                "--view",
+                view,
+                "--samples",
+                "30",
+            ]);
+            assert_eq!(
+                out.status.code(),
+                Some(0),
+                "{file} {view}: {}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+            let svg = fs::read_to_string(&out_path).unwrap();
+            assert!(
+                svg.contains("</svg>") && !svg.contains("NaN"),
+                "{file} {view}"
+            );
+        }
+    }
+}
+
+#[test]
+fn plot_png_options_and_determinism() {
+    let dir = tempfile::tempdir().unwrap();
+    let a = dir.path().join("a.png");
+    let b = dir.path().join("b.PNG");
+    for path in [&a, &b] {
+        let out = run(&[
+            "plot",
+            repo_file("bspline.toml").to_str().unwrap(),
+            "-o",
+            path.to_str().unwrap(),
+            "--view",
+            "truth",
+            "--width",
+            "800",
+            "--height",
+            "500",
+            "--title",
+            "My B-spline",
+            "--azimuth",
+            "-30",
+            "--elevation",
+            "40",
+        ]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    let (pa, pb) = (fs::read(&a).unwrap(), fs::read(&b).unwrap());
+    assert_eq!(png_size(&pa), (800, 500));
+    assert_eq!(pa, pb, "same input, different bytes");
+    let svg = dir.path().join("t.svg");
+    run(&[
+        "plot",
+        repo_file("bspline.toml").to_str().unwrap(),
+        "-o",
+        svg.to_str().unwrap(),
+        "--title",
+        "My B-spline",
+    ]);
+    assert!(fs::read_to_string(&svg).unwrap().contains("My B-spline"));
+}
+
+#[test]
+fn plot_usage_errors_exit_2_and_keep_old_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let target = dir.path().join("keep.svg");
+    fs::write(&target, "old figure").unwrap();
+    let file = repo_file("example1.csv");
+    let out = run(&[
+        "plot",
+        file.to_str().unwrap(),
+        "-o",
+        target.to_str().unwrap(),
+        "--view",
+        "side",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains(
+        "unknown view \"side\" (expected one of: controls, truth, indeterminacy, falsity, all, plane)"
+    ));
+    let pdf = dir.path().join("fig.pdf");
+    let out = run(&["plot", file.to_str().unwrap(), "-o", pdf.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&out.stderr).trim_end(),
+        format!(
+            "error: {}: unsupported figure extension (accepted: .svg, .png)",
+            pdf.display()
+        )
+    );
+    assert!(!pdf.exists());
+    let out = run(&[
+        "plot",
+        file.to_str().unwrap(),
+        "-o",
+        target.to_str().unwrap(),
+        "--width",
+        "10",
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // Invalid input: exit 1, the old figure is untouched and no temporary file remains.
+    let bad = dir.path().join("bad.csv");
+    fs::write(&bad, "x,y,truth,indeterminacy,falsity\n1,2,1.5,0,0\n").unwrap();
+    let out = run(&[
+        "plot",
+        bad.to_str().unwrap(),
+        "-o",
+        target.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).starts_with("error: "));
+    assert_eq!(fs::read_to_string(&target).unwrap(), "old figure");
+    assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 2, "stray files");
+}

@@ -1,0 +1,177 @@
+//! The layout of the three-panel `all` figures (one panel per degree) with a shared legend.
+//!
+//! Three arrangements compete: a 2 x 2 grid with the legend in the fourth cell, a row of
+//! three with the legend in a column on the right, and a column of three with the legend on
+//! the right. Each panel must stay inside its cell and the legend inside its own place, so
+//! nothing can overlap; the colour bar is shortened until the legend fits. The arrangement
+//! whose smallest panel is drawn at the largest scale wins (ties go to the grid). Each panel
+//! title sits right above its drawing.
+
+use crate::layout::{Frame, Legend, LegendPlace, Rect};
+use crate::theme::Theme;
+
+/// Shortest colour bar, relative to the default length, before an arrangement is rejected.
+const MIN_BAR: f64 = 0.22;
+
+/// Where the three panels and the legend of an `all` figure go.
+pub(crate) struct Panels {
+    /// Title, caption and the placed legend.
+    pub frame: Frame,
+    /// One cell per degree (truth, indeterminacy, falsity), panel title included.
+    pub cells: [Rect; 3],
+    /// The top of each panel's drawing (pixels), once fitted: its title goes right above.
+    tops: [f64; 3],
+}
+
+impl Panels {
+    /// Height of a panel title row.
+    pub(crate) fn head(theme: &Theme) -> f64 {
+        1.3 * theme.subtitle()
+    }
+
+    /// The drawing area of panel `j`: its cell below the panel title.
+    pub(crate) fn area(&self, j: usize, theme: &Theme) -> Rect {
+        area_of(&self.cells[j], theme)
+    }
+
+    /// The centre of panel `j`'s title: right above its drawing, inside its cell.
+    pub(crate) fn title_centre(&self, j: usize, theme: &Theme) -> (f64, f64) {
+        let c = &self.cells[j];
+        let highest = c.y + 0.5 * theme.subtitle();
+        (
+            c.x + c.w / 2.0,
+            (self.tops[j] - 0.8 * theme.subtitle()).max(highest),
+        )
+    }
+}
+
+fn area_of(cell: &Rect, theme: &Theme) -> Rect {
+    let head = Panels::head(theme);
+    Rect::new(cell.x, cell.y + head, cell.w, cell.h - head)
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Arrangement {
+    Grid,
+    Row,
+    Column,
+}
+
+/// Sets the colour bar so that the legend is at most `avail` tall; returns whether it fits
+/// with a bar of at least [`MIN_BAR`].
+fn fit_bar(legend: &mut Legend, theme: &Theme, avail: f64) -> bool {
+    let Some(bar) = legend.colorbar.as_mut() else {
+        return legend.size(theme).1 <= avail;
+    };
+    let wanted = bar.length;
+    bar.length = 0.0;
+    let h0 = legend.size(theme).1;
+    if let Some(bar) = legend.colorbar.as_mut() {
+        bar.length = 1.0;
+    }
+    let per = legend.size(theme).1 - h0;
+    let length = if per > 0.0 {
+        ((avail - h0) / per).min(wanted)
+    } else {
+        wanted
+    };
+    if let Some(bar) = legend.colorbar.as_mut() {
+        bar.length = length.max(MIN_BAR);
+    }
+    length >= MIN_BAR
+}
+
+/// Lays out one arrangement: the frame, the cells, and whether the legend fits.
+fn arrange(
+    arrangement: Arrangement,
+    theme: &Theme,
+    legend: &Legend,
+    frame: &dyn Fn(Legend, LegendPlace) -> Frame,
+) -> (Panels, bool) {
+    let gap = theme.gap();
+    match arrangement {
+        Arrangement::Grid => {
+            let plot = frame(legend.clone(), LegendPlace::Manual).plot;
+            let (cw, ch) = (plot.w / 2.0, plot.h / 2.0);
+            let cell = |j: usize| {
+                Rect::new(
+                    plot.x + cw * (j % 2) as f64,
+                    plot.y + ch * (j / 2) as f64,
+                    cw,
+                    ch,
+                )
+            };
+            let mut legend = legend.clone();
+            let mut fits = fit_bar(&mut legend, theme, ch - 2.0 * gap);
+            let (lw, lh) = legend.size(theme);
+            fits &= lw <= cw - 2.0 * gap;
+            let mut f = frame(legend, LegendPlace::Manual);
+            let last = cell(3);
+            // Centred in the fourth cell, but never off the canvas.
+            let x = (last.x + (cw - lw) / 2.0).clamp(0.0, (f.width - lw).max(0.0));
+            let y = (last.y + (ch - lh) / 2.0).clamp(0.0, (f.height - lh).max(0.0));
+            f.place_legend(x, y);
+            (
+                Panels {
+                    frame: f,
+                    cells: [cell(0), cell(1), cell(2)],
+                    tops: [0.0; 3],
+                },
+                fits,
+            )
+        }
+        Arrangement::Row | Arrangement::Column => {
+            let probe = frame(legend.clone(), LegendPlace::Column).plot;
+            let mut legend = legend.clone();
+            let fits = fit_bar(&mut legend, theme, probe.h);
+            let f = frame(legend, LegendPlace::Column);
+            let plot = f.plot;
+            let cells = [0, 1, 2].map(|j| {
+                let j = j as f64;
+                if arrangement == Arrangement::Row {
+                    Rect::new(plot.x + plot.w / 3.0 * j, plot.y, plot.w / 3.0, plot.h)
+                } else {
+                    Rect::new(plot.x, plot.y + plot.h / 3.0 * j, plot.w, plot.h / 3.0)
+                }
+            });
+            (
+                Panels {
+                    frame: f,
+                    cells,
+                    tops: [0.0; 3],
+                },
+                fits,
+            )
+        }
+    }
+}
+
+/// Chooses the arrangement whose smallest panel is largest: `fit` gives the scale at which a
+/// panel fills a drawing area and the top of what it then draws (pixels); `frame` builds the
+/// figure's frame for a legend.
+pub(crate) fn choose(
+    theme: &Theme,
+    legend: &Legend,
+    frame: &dyn Fn(Legend, LegendPlace) -> Frame,
+    fit: &dyn Fn(Rect) -> (f64, f64),
+) -> Panels {
+    let mut best: Option<(bool, f64, Panels)> = None;
+    for arrangement in [Arrangement::Grid, Arrangement::Row, Arrangement::Column] {
+        let (mut panels, fits) = arrange(arrangement, theme, legend, frame);
+        let fitted = panels.cells.map(|c| fit(area_of(&c, theme)));
+        let score = fitted.iter().map(|f| f.0).fold(f64::INFINITY, f64::min);
+        panels.tops = fitted.map(|f| f.1);
+        let better = match &best {
+            None => true,
+            // A fitting legend first, then the larger panels (by more than 2 %).
+            Some((bf, bs, _)) => (fits && !bf) || (fits == *bf && score > bs * 1.02),
+        };
+        if better {
+            best = Some((fits, score, panels));
+        }
+    }
+    match best {
+        Some((_, _, panels)) => panels,
+        None => arrange(Arrangement::Grid, theme, legend, frame).0,
+    }
+}
