@@ -6,16 +6,21 @@
 //! 2 usage error).
 
 pub mod commands;
+pub mod fuzzing;
 pub mod input;
+pub mod limits;
 pub mod output;
 pub mod shape;
+pub mod signals;
 
 use std::io::Write;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
-use commands::{check::CheckArgs, eval::EvalArgs, example::ExampleArgs, plot::PlotArgs};
+use commands::{
+    bench::BenchArgs, check::CheckArgs, eval::EvalArgs, example::ExampleArgs, plot::PlotArgs,
+};
 
 /// Evaluate and check neutrosophic curves and surfaces (Bezier, B-spline, NURBS): control
 /// points carrying truth, indeterminacy and falsity degrees.
@@ -31,11 +36,16 @@ control_points with x, y[, z], truth, indeterminacy, falsity[, weight][, name]);
 (a header row, one control point per row; the kind, degree, knots and grid come from --kind, \
 --degree, --knots, --rows, ...).\n\
 Exit status: 0 success, 1 invalid input, including a command-line option that contradicts the \
-file (message on stderr starting with `error:`), 2 usage error."
+file (message on stderr starting with `error:`), 2 usage error, 130 / 143 interrupted by SIGINT \
+/ SIGTERM (an output file being written is then left as it was)."
 )]
 pub struct Cli {
     #[command(subcommand)]
     command: Command,
+
+    /// Resource limits (global options).
+    #[command(flatten)]
+    limits: limits::LimitArgs,
 }
 
 #[derive(Debug, Subcommand)]
@@ -50,6 +60,9 @@ enum Command {
     /// Run the paper's Example 1 from built-in data: print its control points and curve, and
     /// with --out DIR write the paper's five figures and the curve table
     Example(ExampleArgs),
+    /// Time the library's batch evaluator (Mpts/s) on Example 1 or a random curve of a given
+    /// degree, next to a memory-bandwidth reference
+    Bench(BenchArgs),
 }
 
 fn run(cli: &Cli) -> anyhow::Result<()> {
@@ -58,6 +71,7 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         Command::Check(args) => commands::check::run(args),
         Command::Plot(args) => commands::plot::run(args),
         Command::Example(args) => commands::example::run(args),
+        Command::Bench(args) => commands::bench::run(args, &mut std::io::stdout().lock()),
     }
 }
 
@@ -71,12 +85,18 @@ pub fn main_with_args() -> ExitCode {
             return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
         }
     };
+    limits::install(cli.limits.limits());
     match run(&cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) if output::is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
             let _ = writeln!(std::io::stderr(), "error: {e:#}");
-            if e.downcast_ref::<input::UsageError>().is_some() {
+            if let Some(i) = e
+                .chain()
+                .find_map(|c| c.downcast_ref::<signals::Interrupted>())
+            {
+                ExitCode::from(i.exit_code())
+            } else if e.downcast_ref::<input::UsageError>().is_some() {
                 ExitCode::from(2)
             } else {
                 ExitCode::FAILURE

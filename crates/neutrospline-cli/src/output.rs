@@ -56,6 +56,7 @@ pub fn write_table<W: Write + ?Sized>(
         TableFormat::Csv => {
             writeln!(w, "{}", columns.join(","))?;
             for row in rows {
+                crate::signals::check()?;
                 let row = row?;
                 let cells: Vec<String> = row
                     .iter()
@@ -68,6 +69,7 @@ pub fn write_table<W: Write + ?Sized>(
             write!(w, "[")?;
             let mut first = true;
             for row in rows {
+                crate::signals::check()?;
                 let row = row?;
                 let fields: Vec<String> = columns
                     .iter()
@@ -166,8 +168,14 @@ pub fn emit(
         Some(path) => {
             // Write through a symbolic link to its target, and into special files (a device
             // such as /dev/null, a FIFO) directly: renaming over them would replace them.
+            if path.as_os_str().is_empty() {
+                anyhow::bail!(": cannot write: an empty path");
+            }
             let target = fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
             match fs::metadata(&target) {
+                Ok(meta) if meta.is_dir() => {
+                    anyhow::bail!("{}: cannot write: it is a directory", path.display())
+                }
                 Ok(meta) if !meta.is_file() && !meta.is_dir() => write_directly(path, write),
                 _ => write_atomically(path, &target, write),
             }
@@ -204,10 +212,17 @@ fn write_atomically(
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
     };
+    // From here on SIGINT and SIGTERM only set a flag (checked between rows and before the
+    // rename), so that an interruption removes the temporary file.
+    crate::signals::install();
     let (temp, file) = create_temp(dir, file_name).with_context(cannot)?;
     let mut guard = RemoveOnDrop(Some(temp.clone()));
     let mut w = BufWriter::new(file);
-    write(&mut w)?;
+    let not_written = || format!("{shown}: not written");
+    write(&mut w).map_err(|e| match e.downcast_ref::<crate::signals::Interrupted>() {
+        Some(_) => e.context(not_written()),
+        None => e,
+    })?;
     let file = w
         .into_inner()
         .map_err(|e| e.into_error())
@@ -218,6 +233,7 @@ fn write_atomically(
         // Best effort: a new file keeps the mode of the one it replaces.
         let _ = fs::set_permissions(&temp, old.permissions());
     }
+    crate::signals::check().with_context(not_written)?;
     fs::rename(&temp, target).with_context(cannot)?;
     guard.0 = None;
     Ok(())

@@ -327,14 +327,17 @@ impl<'a, const D: usize> CurveSampler<'a, D> {
         }
     }
 
-    fn row(&self, t: f64) -> Result<Row, EvalError> {
-        let p = self.curve.evaluate(t)?;
+    fn row(&self, t: f64) -> anyhow::Result<Row> {
+        let p = self.curve.evaluate(t).map_err(explain("position"))?;
         let mut row = Vec::with_capacity(1 + 2 * (D + 3));
         row.push(t);
         row.extend(p.position);
         row.extend(p.degrees.to_array());
         if let Some(derivative) = &self.derivative {
-            push_rates(&mut row, &derivative.evaluate(t)?);
+            push_rates(
+                &mut row,
+                &derivative.evaluate(t).map_err(explain("derivative"))?,
+            );
         }
         Ok(row.into_iter().map(Some).collect())
     }
@@ -345,20 +348,33 @@ fn push_rates<const D: usize>(row: &mut Vec<f64>, d: &DerivativeValue<D>) {
     row.extend([d.truth, d.indeterminacy, d.falsity]);
 }
 
-fn surface_row(surface: &Surface, extras: Extras, u: f64, v: f64) -> Result<Row, EvalError> {
-    let p = surface.evaluate(u, v)?;
+/// The core's error, with an overflow said in terms of what overflowed (the core's message
+/// names a parameter `t` even on a surface).
+fn explain(what: &'static str) -> impl Fn(EvalError) -> anyhow::Error {
+    move |e| match e {
+        EvalError::Overflow { .. } => {
+            anyhow::anyhow!("the {what} overflows a 64-bit float (control values too large)")
+        }
+        e => e.into(),
+    }
+}
+
+fn surface_row(surface: &Surface, extras: Extras, u: f64, v: f64) -> anyhow::Result<Row> {
+    let p = surface.evaluate(u, v).map_err(explain("position"))?;
     let mut values = Vec::with_capacity(2 + 3 * 6);
     values.extend([u, v]);
     values.extend(p.position);
     values.extend(p.degrees.to_array());
     if extras.derivative {
-        let d = surface.partial_derivatives(u, v)?;
+        let d = surface
+            .partial_derivatives(u, v)
+            .map_err(explain("derivative"))?;
         push_rates(&mut values, &d.du);
         push_rates(&mut values, &d.dv);
     }
     let mut row: Row = values.into_iter().map(Some).collect();
     if extras.normal {
-        match surface.normal(u, v)? {
+        match surface.normal(u, v).map_err(explain("derivative"))? {
             Some(n) => row.extend(n.map(Some)),
             None => row.extend([None; 3]),
         }

@@ -477,7 +477,7 @@ fn toml_errors_name_field_path_and_line() {
     // Lines 11-16 hold the second control point: its table starts at line 11.
     let cases: &[(&str, &str, &str)] = &[
         ("truth = 0.25", "truth = 1.5", "error: bad.toml:14: control_points[1]: truth = 1.5 is outside [0, 1] (every degree must be in [0, 1])"),
-        ("y = 1\n", "y = \"one\"\n", "error: bad.toml:13: control_points[1].y: expected a number, found a string"),
+        ("y = 1\n", "y = \"one\"\n", "error: bad.toml:13: control_points[1].y: expected a number, found the string \"one\""),
         ("y = 1\n", "y = 1\nw = 2\n", "error: bad.toml:14: control_points[1]: unknown key `w` (known keys: x, y, z, truth (T), indeterminacy (I), falsity (F), weight, name)"),
         ("y = 1\n", "y = 1\nT = 0.5\n", "error: bad.toml:15: control_points[1]: key `truth` repeats key `T` (each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity)"),
         ("y = 1\n", "y = 1\nz = 2\n", "error: bad.toml:11: control_points[1]: has `z` but control_points[0] has none (all control points must have the same dimension)"),
@@ -573,7 +573,7 @@ fn json_errors_name_field_path() {
         (r#"{"kind": "bezier", "control_points": [{"x": 0, "y": 0, "T": 0.5, "I": 0.5, "F": 0.5}, {"x": 0, "y": 0, "T": 0.5, "I": 1.5, "F": 0.5}]}"#,
          "error: bad.json: control_points[1]: indeterminacy = 1.5 is outside [0, 1] (every degree must be in [0, 1])"),
         (r#"{"kind": "bezier", "control_points": [{"x": 0, "y": "0", "T": 0.5, "I": 0.5, "F": 0.5}]}"#,
-         "error: bad.json: control_points[0].y: expected a number, found a string"),
+         "error: bad.json: control_points[0].y: expected a number, found the string \"0\""),
         (r#"{"kind": "bezier", "control_points": [{"x": 0, "y": 0, "truth": 0.5, "T": 0.5, "I": 0.5, "F": 0.5}]}"#,
          "error: bad.json: control_points[0]: key `T` repeats key `truth` (each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity)"),
         (r#"{"kind": "bezier", "kind": "bezier", "control_points": []}"#,

@@ -44,10 +44,14 @@
 //!   [`NeutrosophicPoint`]. Deserialization checks exactly like the constructors.
 //! - `proptest`: the module `strategies`, proptest generators of valid degrees, control points
 //!   and curves, for property tests of code built on this crate.
+//! - `simd`, `avx512`, `parallel`: faster batch evaluation ([`BezierBatch`], [`evaluate_curves`]):
+//!   SIMD kernels chosen at run time (AVX2 + FMA; AVX-512 with `avx512`) and threads (rayon).
+//!   Without them the same results come from a portable kernel on the calling thread.
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
 mod any_curve;
+mod batch;
 mod bernstein;
 mod bezier;
 mod bspline;
@@ -65,6 +69,10 @@ pub mod strategies;
 mod surface;
 
 pub use any_curve::{AnyCurve, AnyDerivative, CurveKind};
+pub use batch::{
+    batch_instruction_set, evaluate_curves, BatchOptions, BatchParams, BezierBatch,
+    BATCH_DIRECT_MAX_DEGREE, PARALLEL_THRESHOLD,
+};
 pub use bezier::{Bezier, BezierDerivative};
 pub use bspline::{BSpline, BSplineDerivative, BezierSegment};
 pub use curve::{

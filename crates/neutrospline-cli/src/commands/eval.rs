@@ -151,6 +151,15 @@ fn parameters<'a>(args: &'a EvalArgs, shape: &Shape) -> Box<dyn Iterator<Item = 
     }
 }
 
+/// The number of rows `eval` writes (saturating: a surface's N x N may exceed `u64`).
+fn row_count(args: &EvalArgs, shape: &Shape) -> u64 {
+    match &args.at {
+        Some(AtList(items)) => items.len() as u64,
+        None if shape.is_surface() => args.samples.saturating_mul(args.samples),
+        None => args.samples,
+    }
+}
+
 /// Evaluates and writes the table.
 ///
 /// # Errors
@@ -180,10 +189,39 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
     };
     let columns = shape.columns(extras);
     let sampler = shape.sampler(extras);
+    let limit = crate::limits::current().max_samples;
+    let count = row_count(args, &shape);
+    if count > limit {
+        let what = match &args.at {
+            Some(_) => format!("--at gives {count} parameters"),
+            None if shape.is_surface() => format!(
+                "--samples {0} gives {0} x {0} = {count} rows on a surface",
+                args.samples
+            ),
+            None => format!("--samples {count} gives {count} rows"),
+        };
+        return Err(UsageError(format!(
+            "{what}, more than the limit of {limit} (raise it with --max-samples or \
+             NEUTROSPLINE_MAX_SAMPLES)"
+        ))
+        .into());
+    }
     let rows = parameters(args, &shape).map(|param| {
-        sampler
-            .row(param)
-            .map_err(|e| anyhow::anyhow!("{file}: cannot evaluate at {param}: {e}"))
+        let cannot =
+            |e: &dyn std::fmt::Display| anyhow::anyhow!("{file}: cannot evaluate at {param}: {e}");
+        let row = sampler.row(param).map_err(|e| cannot(&e))?;
+        // Never write an infinity or NaN: the core reports overflow, this is a safety net.
+        if let Some((column, value)) = columns
+            .iter()
+            .zip(&row)
+            .find_map(|(c, v)| v.filter(|v| !v.is_finite()).map(|v| (c, v)))
+        {
+            return Err(cannot(&format!(
+                "{column} = {value} is not a finite number (it overflows a 64-bit float; \
+                 control values too large)"
+            )));
+        }
+        Ok(row)
     });
     output::emit(args.output.as_deref(), |w| {
         output::write_table(w, args.format, &columns, rows)

@@ -1,6 +1,7 @@
 //! The subcommands: each parses nothing itself, calls the input layer and the core library,
 //! and writes through the output layer.
 
+pub mod bench;
 pub mod check;
 pub mod eval;
 pub mod example;

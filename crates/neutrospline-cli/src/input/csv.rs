@@ -11,58 +11,162 @@
 
 use neutrospline::{DegreeError, Degrees};
 
+use std::io::{BufRead, Read};
+
+use crate::limits::MAX_CSV_LINE;
+
 use super::{
-    duplicate_rule, line_of, missing_degree, parse_number, strip_bom, Field, Format, InputError,
-    Key, Kind, KnotsSetting, Model, Origin, Overrides, PointRecord, Setting, Structure,
+    duplicate_rule, line_of, missing_degree, parse_number, Field, Format, InputError, Key, Kind,
+    KnotsSetting, Model, Origin, Overrides, PointRecord, Setting, Structure,
 };
 
-/// Parses a CSV table; the command line's `overrides` give the kind, the membership rule the
-/// degrees must obey, and the structure.
+/// Parses a CSV table held in memory; see [`parse_reader`].
 pub(super) fn parse(file: &str, bytes: &[u8], overrides: &Overrides) -> Result<Model, InputError> {
+    parse_reader(file, bytes, overrides)
+}
+
+/// A reading error: the line and the message.
+type LineError = (usize, String);
+
+/// Reads the records of a CSV stream one physical line at a time (a quoted cell may span
+/// lines), never holding more than one record in memory.
+struct Records<R> {
+    reader: R,
+    /// The physical line last read.
+    line: usize,
+    /// The current record, line ends removed.
+    buffer: Vec<u8>,
+}
+
+impl<R: BufRead> Records<R> {
+    /// Appends the next physical line to the buffer (at most [`MAX_CSV_LINE`] bytes in all);
+    /// `false` at the end of the input.
+    fn read_line(&mut self) -> Result<bool, LineError> {
+        let room = (MAX_CSV_LINE + 1).saturating_sub(self.buffer.len()) as u64;
+        let read = (&mut self.reader)
+            .take(room)
+            .read_until(b'\n', &mut self.buffer)
+            .map_err(|e| (self.line + 1, format!("cannot read: {e}")))?;
+        if read == 0 {
+            return Ok(false);
+        }
+        self.line += 1;
+        if self.buffer.len() > MAX_CSV_LINE {
+            return Err((
+                self.line,
+                format!(
+                    "the line is longer than {MAX_CSV_LINE} bytes (a row of control point values \
+                     is short; is this a CSV file?)"
+                ),
+            ));
+        }
+        Ok(true)
+    }
+
+    /// The next record that is neither empty nor a comment, with the line it starts on.
+    fn next_record(&mut self) -> Result<Option<(usize, &[u8])>, LineError> {
+        loop {
+            self.buffer.clear();
+            if !self.read_line()? {
+                return Ok(None);
+            }
+            let start = self.line;
+            if start == 1 {
+                if let Some(rest) = self.buffer.strip_prefix(b"\xEF\xBB\xBF") {
+                    self.buffer = rest.to_vec();
+                }
+            }
+            // A quoted cell continues on the next line while its quotes are unbalanced.
+            while self.buffer.iter().filter(|&&b| b == b'"').count() % 2 == 1
+                && self.buffer.ends_with(b"\n")
+            {
+                if !self.read_line()? {
+                    break;
+                }
+            }
+            while let Some(b'\n' | b'\r') = self.buffer.last() {
+                self.buffer.pop();
+            }
+            // Every line must be UTF-8, comments included.
+            if let Err(e) = std::str::from_utf8(&self.buffer) {
+                return Err((
+                    start + line_of(&self.buffer, e.valid_up_to()) - 1,
+                    "invalid UTF-8 (the file must be UTF-8 encoded)".to_owned(),
+                ));
+            }
+            if self.buffer.trim_ascii().is_empty() || self.buffer.starts_with(b"#") {
+                continue;
+            }
+            return Ok(Some((start, &self.buffer)));
+        }
+    }
+}
+
+/// Splits one record (UTF-8, line ends removed) into trimmed cells.
+fn cells(record: &str) -> Result<::csv::StringRecord, String> {
+    let mut reader = ::csv::ReaderBuilder::new()
+        .has_headers(false)
+        .trim(::csv::Trim::All)
+        .flexible(true)
+        .from_reader(record.as_bytes());
+    let mut cells = ::csv::StringRecord::new();
+    reader
+        .read_record(&mut cells)
+        .map_err(|e| format!("malformed CSV: {e}"))?;
+    Ok(cells)
+}
+
+/// Parses a CSV table from a stream, line by line: an error is reported as soon as its line is
+/// read, without reading further, and only the control points are kept in memory (at most
+/// `--max-control-points` of them). The command line's `overrides` give the kind, the
+/// membership rule the degrees must obey, and the structure.
+pub(super) fn parse_reader(
+    file: &str,
+    reader: impl BufRead,
+    overrides: &Overrides,
+) -> Result<Model, InputError> {
     let kind = overrides.kind.unwrap_or(Kind::DEFAULT);
     let membership = overrides.membership.unwrap_or_default();
+    let max_points = crate::limits::current().max_control_points;
     let error = |line: Option<usize>, field: Option<String>, message: String| InputError {
         file: file.to_owned(),
         line,
         field,
         message,
     };
+    let mut records = Records {
+        reader,
+        line: 0,
+        buffer: Vec::new(),
+    };
+    // The next record as text and cells, with its line.
+    let mut next = || -> Result<Option<(usize, ::csv::StringRecord)>, InputError> {
+        let Some((line, bytes)) = records
+            .next_record()
+            .map_err(|(line, m)| error(Some(line), None, m))?
+        else {
+            return Ok(None);
+        };
+        let text = std::str::from_utf8(bytes).map_err(|e| {
+            error(
+                Some(line + line_of(bytes, e.valid_up_to()) - 1),
+                None,
+                "invalid UTF-8 (the file must be UTF-8 encoded)".to_owned(),
+            )
+        })?;
+        let cells = cells(text).map_err(|m| error(Some(line), None, m))?;
+        Ok(Some((line, cells)))
+    };
 
-    let bytes = strip_bom(bytes);
-    let text = std::str::from_utf8(bytes).map_err(|e| {
-        error(
-            Some(line_of(bytes, e.valid_up_to())),
+    let Some((header_line, header)) = next()? else {
+        return Err(error(
             None,
-            "invalid UTF-8 (the file must be UTF-8 encoded)".to_owned(),
-        )
-    })?;
-
-    let mut reader = ::csv::ReaderBuilder::new()
-        .has_headers(false)
-        .comment(Some(b'#'))
-        .trim(::csv::Trim::All)
-        .flexible(true)
-        .from_reader(text.as_bytes());
-    let mut records = reader.records();
-    let record_line =
-        |record: &::csv::StringRecord| record.position().map(|p| physical_line(text, p.byte()));
-    let csv_error = |e: ::csv::Error| {
-        let line = e.position().map(|p| physical_line(text, p.byte()));
-        error(line, None, format!("malformed CSV: {e}"))
+            None,
+            "empty file (expected a header row such as `x,y,truth,indeterminacy,falsity`)"
+                .to_owned(),
+        ));
     };
-
-    let header = match records.next() {
-        None => {
-            return Err(error(
-                None,
-                None,
-                "empty file (expected a header row such as `x,y,truth,indeterminacy,falsity`)"
-                    .to_owned(),
-            ))
-        }
-        Some(record) => record.map_err(csv_error)?,
-    };
-    let header_line = record_line(&header);
+    let header_line = Some(header_line);
     let columns = read_header(&header).map_err(|m| error(header_line, None, m))?;
     let has = |f: Field| columns.contains(&f);
     for f in [Field::X, Field::Y] {
@@ -120,9 +224,15 @@ pub(super) fn parse(file: &str, bytes: &[u8], overrides: &Overrides) -> Result<M
     let dimension = if has(Field::Z) { 3 } else { 2 };
 
     let mut points = Vec::new();
-    for record in records {
-        let record = record.map_err(csv_error)?;
-        let line = record_line(&record);
+    while let Some((line, record)) = next()? {
+        let line = Some(line);
+        if points.len() as u64 >= max_points {
+            return Err(error(
+                line,
+                None,
+                crate::limits::too_many_points(max_points),
+            ));
+        }
         if record.len() != columns.len() {
             return Err(error(
                 line,
@@ -239,30 +349,6 @@ fn structure(kind: Kind, overrides: &Overrides) -> Structure {
             knots: knots(Key::Knots, &overrides.knots),
         }
     }
-}
-
-/// The physical line of the record that the `csv` reader reports at byte `offset`.
-///
-/// The reader reports the position where the previous record ended, before the empty and
-/// comment lines it skipped; skip them here too to find the line the record starts on.
-fn physical_line(text: &str, offset: u64) -> usize {
-    let bytes = text.as_bytes();
-    let mut pos = usize::try_from(offset)
-        .unwrap_or(usize::MAX)
-        .min(bytes.len());
-    while let Some(&b) = bytes.get(pos) {
-        match b {
-            b'\n' | b'\r' => pos += 1,
-            b'#' => {
-                pos = bytes[pos..]
-                    .iter()
-                    .position(|&c| c == b'\n')
-                    .map_or(bytes.len(), |n| pos + n + 1);
-            }
-            _ => break,
-        }
-    }
-    line_of(bytes, pos)
 }
 
 /// The field of each header cell; the message explains an unknown or repeated column.
@@ -389,6 +475,44 @@ mod tests {
         assert_eq!(m.points[0].degrees.to_array(), [0.5, 0.25, 0.25]);
         let m = parse("t.csv", b"x,y,truth\n0,0,0.5\n", &rule(Membership::Fuzzy)).unwrap();
         assert_eq!(m.points[0].degrees.to_array(), [0.5, 0.0, 0.0]);
+    }
+
+    #[test]
+    fn csv_parse_streams_quoted_newlines_and_counts_lines() {
+        let text = "name,x,y,T,I,F\n\"two\nlines\",1,2,0,0,0\n  \n,1,2,0,0,2\n";
+        assert_eq!(
+            parse_err(text.as_bytes(), Membership::Neutrosophic),
+            "t.csv:5: falsity = 2 is outside [0, 1] (every degree must be in [0, 1])"
+        );
+        let m = parse_ok("name,x,y,T,I,F\n\"two\nlines\",1,2,0,0,0\n");
+        assert_eq!(m.points[0].name.as_deref(), Some("two\nlines"));
+        assert_eq!(m.points[0].origin.line, Some(2));
+    }
+
+    #[test]
+    fn csv_parse_reader_stops_at_the_first_bad_line() {
+        // A reader that fails if read past the bad line 3: the error comes first.
+        struct Endless(Vec<u8>);
+        impl std::io::Read for Endless {
+            fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+                if self.0.is_empty() {
+                    panic!("read past the bad line");
+                }
+                let n = buf.len().min(self.0.len());
+                buf[..n].copy_from_slice(&self.0[..n]);
+                self.0.drain(..n);
+                Ok(n)
+            }
+        }
+        let reader = std::io::BufReader::with_capacity(
+            8,
+            Endless(b"x,y,truth,indeterminacy,falsity\n1,2,0,0,0\n1,2,0,x,0\n".to_vec()),
+        );
+        let e = parse_reader("t.csv", reader, &rule(Membership::Neutrosophic)).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "t.csv:3: column `indeterminacy`: value `x` is not a number"
+        );
     }
 
     #[test]

@@ -48,16 +48,32 @@ pub struct InputError {
 }
 
 impl fmt::Display for InputError {
+    /// One line: control characters that a file put into a name or value (a newline inside a
+    /// quoted CSV heading or TOML key, a NUL) are written as escapes such as `\n` and `\0`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.file)?;
+        write_escaped(f, &self.file)?;
         if let Some(line) = self.line {
             write!(f, ":{line}")?;
         }
         if let Some(field) = &self.field {
-            write!(f, ": {field}")?;
+            f.write_str(": ")?;
+            write_escaped(f, field)?;
         }
-        write!(f, ": {}", self.message)
+        f.write_str(": ")?;
+        write_escaped(f, &self.message)
     }
+}
+
+/// Writes `text` with its control characters escaped (`\n`, `\0`, `\u{1b}`).
+fn write_escaped(f: &mut fmt::Formatter<'_>, text: &str) -> fmt::Result {
+    for c in text.chars() {
+        if c.is_control() {
+            write!(f, "{}", c.escape_debug())?;
+        } else {
+            write!(f, "{c}")?;
+        }
+    }
+    Ok(())
 }
 
 impl std::error::Error for InputError {}
@@ -324,7 +340,8 @@ pub(crate) fn join<'a>(items: impl IntoIterator<Item = &'a str>) -> String {
 ///
 /// `overrides` are the command line's shape options (`--membership`, `--kind`, `--degree`,
 /// ...): for CSV they are the only source; for models they apply when the file declares
-/// nothing, and must agree with the file otherwise.
+/// nothing, and must agree with the file otherwise. The limit on control points
+/// ([`crate::limits::current`]) applies.
 ///
 /// # Errors
 /// An [`InputError`] naming the file, line or field, value and rule.
@@ -334,11 +351,23 @@ pub fn parse(
     bytes: &[u8],
     overrides: &Overrides,
 ) -> Result<Model, InputError> {
-    match format {
+    let model = match format {
         Format::Csv => csv::parse(file, bytes, overrides),
         Format::Toml => model::parse_toml(file, bytes, overrides),
         Format::Json => model::parse_json(file, bytes, overrides),
+    }?;
+    check_point_count(model)
+}
+
+/// Refuses a model with more control points than the limit.
+fn check_point_count(model: Model) -> Result<Model, InputError> {
+    let limit = crate::limits::current().max_control_points;
+    if model.points.len() as u64 > limit {
+        let index = usize::try_from(limit).unwrap_or(usize::MAX);
+        let origin = model.points[index].origin.clone();
+        return Err(model.error_at(&origin, crate::limits::too_many_points(limit)));
     }
+    Ok(model)
 }
 
 /// Checks the command-line options among themselves, before any file is read: each option
@@ -378,26 +407,55 @@ pub fn check_overrides(format: Format, overrides: &Overrides) -> Result<(), Usag
 
 /// Reads and parses `path` (`-` for CSV on standard input).
 ///
+/// CSV is read as a stream, line by line, and refused at its first bad line without reading
+/// further; TOML and JSON documents are read whole, up to `--max-file-size` bytes.
+///
 /// # Errors
 /// [`UsageError`] for an unsupported extension or options that do not fit together, an I/O
 /// error with context, or [`InputError`].
 pub fn load(path: &str, overrides: &Overrides) -> anyhow::Result<Model> {
-    use std::io::Read;
+    use std::io::{BufReader, Read};
 
     let format = Format::from_path(path)?;
     check_overrides(format, overrides)?;
-    let (file, bytes) = if path == "-" {
-        let mut bytes = Vec::new();
-        std::io::stdin()
-            .lock()
-            .read_to_end(&mut bytes)
-            .map_err(|e| anyhow::anyhow!("{STDIN_NAME}: cannot read standard input: {e}"))?;
-        (STDIN_NAME.to_owned(), bytes)
-    } else {
-        let bytes = std::fs::read(path).map_err(|e| anyhow::anyhow!("{path}: cannot read: {e}"))?;
-        (path.to_owned(), bytes)
+    if path == "-" {
+        // `Format::from_path` makes standard input CSV.
+        let stdin = std::io::stdin().lock();
+        return Ok(csv::parse_reader(STDIN_NAME, stdin, overrides)?);
+    }
+    let cannot = |e: std::io::Error| anyhow::anyhow!("{path}: cannot read: {e}");
+    let file = std::fs::File::open(path).map_err(cannot)?;
+    let meta = file.metadata().map_err(cannot)?;
+    if meta.is_dir() {
+        anyhow::bail!("{path}: cannot read: it is a directory (give a .csv, .toml or .json file)");
+    }
+    if format == Format::Csv {
+        return Ok(csv::parse_reader(path, BufReader::new(file), overrides)?);
+    }
+    let limit = crate::limits::current().max_file_size;
+    let too_large = || InputError {
+        file: path.to_owned(),
+        line: None,
+        field: None,
+        message: format!(
+            "the file is larger than {limit} bytes, the limit for a TOML or JSON file (raise it \
+             with --max-file-size or NEUTROSPLINE_MAX_FILE_SIZE; CSV files are streamed and \
+             have no size limit)"
+        ),
     };
-    Ok(parse(&file, format, &bytes, overrides)?)
+    if meta.len() > limit {
+        return Err(too_large().into());
+    }
+    // The size may grow while reading (a FIFO, a file being written): read one byte more than
+    // the limit at most.
+    let mut bytes = Vec::with_capacity(usize::try_from(meta.len()).unwrap_or(0));
+    file.take(limit.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(cannot)?;
+    if bytes.len() as u64 > limit {
+        return Err(too_large().into());
+    }
+    Ok(parse(path, format, &bytes, overrides)?)
 }
 
 #[cfg(test)]
@@ -436,6 +494,20 @@ mod tests {
             message: "m".into(),
         };
         assert_eq!(e.to_string(), "a.json: m");
+    }
+
+    #[test]
+    fn input_error_display_escapes_control_characters() {
+        let e = InputError {
+            file: "a.csv".into(),
+            line: Some(1),
+            field: None,
+            message: "unknown column `a\nb\0\u{1b}[31m`".into(),
+        };
+        assert_eq!(
+            e.to_string(),
+            "a.csv:1: unknown column `a\\nb\\0\\u{1b}[31m`"
+        );
     }
 
     #[test]

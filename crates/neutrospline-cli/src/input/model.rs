@@ -107,6 +107,21 @@ impl Value {
     }
 }
 
+/// What a value is, for messages: its type, and its text when short (`the string "abc"`,
+/// `the boolean true`).
+fn found(value: &Value, format: Format) -> String {
+    const SHOWN: usize = 40;
+    match value {
+        Value::String(text) if text.chars().count() <= SHOWN => format!("the string {text:?}"),
+        Value::String(text) => {
+            let head: String = text.chars().take(SHOWN).collect();
+            format!("the string {:?}...", head)
+        }
+        Value::Bool(b) => format!("the boolean {b}"),
+        other => other.describe(format).to_owned(),
+    }
+}
+
 /// The magic key under which `toml` hands a datetime to `deserialize_any`.
 const TOML_DATETIME_KEY: &str = "$__toml_private_datetime";
 
@@ -271,14 +286,34 @@ pub(super) fn parse_json(
         let full = e.to_string();
         let suffix = format!(" at line {} column {}", e.line(), e.column());
         let message = full.strip_suffix(&suffix).unwrap_or(&full);
+        let hint = json_hint(walker.text, message, e.line(), e.column());
         InputError {
             file: file.to_owned(),
             line: (e.line() > 0).then_some(e.line()),
             field: None,
-            message: format!("invalid JSON: {message} (column {})", e.column()),
+            message: format!("invalid JSON: {message} (column {}{hint})", e.column()),
         }
     })?;
     walker.model(root.0, overrides)
+}
+
+/// An explanation of a JSON syntax error that a number causes: NaN and infinities (which
+/// other programs write but JSON does not have) and numbers beyond the 64-bit range.
+fn json_hint(text: &str, message: &str, line: usize, column: usize) -> &'static str {
+    if message.starts_with("number out of range") {
+        return "; the number does not fit a 64-bit float";
+    }
+    let at = text
+        .lines()
+        .nth(line.saturating_sub(1))
+        .and_then(|l| l.get(column.saturating_sub(1)..))
+        .unwrap_or_default();
+    let word = at.trim_start_matches(['-', '+']).to_ascii_lowercase();
+    if word.starts_with("nan") || word.starts_with("inf") {
+        "; JSON has no NaN or infinities"
+    } else {
+        ""
+    }
 }
 
 /// A structure key's value, where it was declared, and the lines of explicit knots.
@@ -329,10 +364,7 @@ impl<'a> Walker<'a> {
         self.error(
             node.span.as_ref(),
             Some(path.to_owned()),
-            format!(
-                "expected {what}, found {}",
-                node.value.describe(self.format)
-            ),
+            format!("expected {what}, found {}", found(&node.value, self.format)),
         )
     }
 
@@ -970,7 +1002,7 @@ falsity = 0.4
         let bad = EXAMPLE1_TOML.replace("y = 2.0", "y = \"two\"");
         assert_eq!(
             toml_err(&bad),
-            "m.toml:24: control_points[2].y: expected a number, found a string"
+            "m.toml:24: control_points[2].y: expected a number, found the string \"two\""
         );
         let bad = EXAMPLE1_TOML.replace("I = 0.1", "I = 0.1\nw = 2");
         assert_eq!(
@@ -1090,7 +1122,7 @@ falsity = 0.4
             json_err(
                 r#"{"kind": "bezier", "control_points": [{"x": 1, "y": 1e999, "truth": 0.5}]}"#
             ),
-            "m.json:1: invalid JSON: number out of range (column 57)"
+            "m.json:1: invalid JSON: number out of range (column 57; the number does not fit a 64-bit float)"
         );
     }
 

@@ -1,0 +1,374 @@
+//! The bodies of the fuzz targets, shared by `fuzz/` (cargo-fuzz, nightly) and the corpus replay
+//! test `tests/fuzz_corpus.rs` (stable, run by CI).
+//!
+//! Each function takes arbitrary bytes and panics only when a property is broken:
+//! - [`csv_model`], [`toml_model`], [`json_model`]: parsing never panics; an error names the
+//!   file; a model that parses and builds is evaluated and must satisfy [`check_shape`].
+//! - [`evaluate`]: control points, knots, weights and parameters decoded from the bytes are
+//!   given to the core directly; whatever the core accepts must satisfy SPEC section 4.
+//!
+//! The properties checked for a valid shape ([`check_shape`]): every evaluated degree lies in
+//! \[0, 1\] and within the range of its control values, positions are finite and inside the
+//! control points' bounding box (the convex hull property, weakened), clamped curves interpolate
+//! their end control points, and derivatives are either finite or an `Overflow` error, never a
+//! silent infinity or NaN.
+
+use neutrospline::{
+    AnyCurve, BSpline, Bezier, ControlPoint, Degrees, EvalError, KnotVector, Membership, Nurbs,
+    Surface,
+};
+
+use crate::input::{self, Format, Kind, KnotRule, KnotSpec, Overrides};
+use crate::shape::{Extras, Param, Shape};
+
+/// The name the fuzzed file is given in messages.
+const FILE: &str = "fuzz-input";
+
+/// Control points beyond this are not evaluated (keeps each run fast).
+const MAX_EVAL_POINTS: usize = 4096;
+
+/// Fuzzes the CSV reader under several command-line settings (every kind, every rule).
+pub fn csv_model(data: &[u8]) {
+    use neutrospline::{CurveKind, SurfaceKind};
+    let settings = [
+        Overrides::default(),
+        Overrides {
+            membership: Some(Membership::Intuitionistic),
+            ..Overrides::default()
+        },
+        Overrides {
+            membership: Some(Membership::Fuzzy),
+            ..Overrides::default()
+        },
+        Overrides {
+            kind: Some(Kind::Curve(CurveKind::BSpline)),
+            degree: Some(2),
+            ..Overrides::default()
+        },
+        Overrides {
+            kind: Some(Kind::Curve(CurveKind::BSpline)),
+            degree: Some(2),
+            knots: Some(KnotSpec::Rule(KnotRule::ChordLength)),
+            ..Overrides::default()
+        },
+        Overrides {
+            kind: Some(Kind::Curve(CurveKind::Nurbs)),
+            degree: Some(2),
+            ..Overrides::default()
+        },
+        Overrides {
+            kind: Some(Kind::Surface(SurfaceKind::Bezier)),
+            rows: Some(2),
+            cols: Some(2),
+            ..Overrides::default()
+        },
+        Overrides {
+            kind: Some(Kind::Surface(SurfaceKind::Nurbs)),
+            rows: Some(3),
+            cols: Some(3),
+            degree_u: Some(1),
+            degree_v: Some(2),
+            ..Overrides::default()
+        },
+    ];
+    for overrides in &settings {
+        model(Format::Csv, data, overrides);
+    }
+}
+
+/// Fuzzes the TOML reader.
+pub fn toml_model(data: &[u8]) {
+    model(Format::Toml, data, &Overrides::default());
+}
+
+/// Fuzzes the JSON reader.
+pub fn json_model(data: &[u8]) {
+    model(Format::Json, data, &Overrides::default());
+}
+
+fn model(format: Format, data: &[u8], overrides: &Overrides) {
+    match input::parse(FILE, format, data, overrides) {
+        Ok(model) => {
+            assert!(!model.points.is_empty());
+            match model.into_shape() {
+                Ok(shape) => check_shape(&shape),
+                Err(e) => assert_eq!(e.file, FILE),
+            }
+        }
+        Err(e) => {
+            assert_eq!(e.file, FILE);
+            assert!(!e.message.is_empty());
+            // One line on stderr, whatever the file holds.
+            assert!(!e.to_string().contains(['\n', '\r']), "{e}");
+        }
+    }
+}
+
+/// Reads numbers and small integers from fuzz bytes.
+struct Bytes<'a>(&'a [u8]);
+
+impl Bytes<'_> {
+    fn byte(&mut self) -> u8 {
+        match self.0.split_first() {
+            Some((&b, rest)) => {
+                self.0 = rest;
+                b
+            }
+            None => 0,
+        }
+    }
+
+    /// A float: mostly small "nice" values, sometimes any bit pattern (huge, tiny, NaN).
+    fn float(&mut self) -> f64 {
+        match self.byte() % 4 {
+            0 => f64::from(self.byte()) / 255.0,
+            1 => f64::from(self.byte() as i8) / 8.0,
+            2 => {
+                let mut raw = [0u8; 8];
+                for b in &mut raw {
+                    *b = self.byte();
+                }
+                f64::from_le_bytes(raw)
+            }
+            _ => f64::from(self.byte() as i8) * 1e306,
+        }
+    }
+
+    fn degrees(&mut self) -> Option<Degrees> {
+        Degrees::new(self.float(), self.float(), self.float()).ok()
+    }
+}
+
+/// Fuzzes the core directly: a curve or surface of any kind from arbitrary control points,
+/// knots, weights and parameters.
+pub fn evaluate(data: &[u8]) {
+    let mut b = Bytes(data);
+    let selector = b.byte();
+    let count = usize::from(b.byte() % 12) + 1;
+    let degree = usize::from(b.byte() % 6);
+    match selector % 5 {
+        0..=2 => {
+            let mut points: Vec<ControlPoint<2>> = Vec::with_capacity(count);
+            for _ in 0..count {
+                let position = [b.float(), b.float()];
+                let Some(degrees) = b.degrees() else { return };
+                points.push(ControlPoint::new(position, degrees));
+            }
+            let knots = || -> Option<KnotVector> {
+                let mut kb = Bytes(data.get(data.len() / 2..).unwrap_or_default());
+                if kb.byte() % 2 == 0 {
+                    KnotVector::clamped_uniform(degree, count).ok()
+                } else {
+                    let values = (0..count + degree + 1).map(|_| kb.float()).collect();
+                    KnotVector::new(values, degree, count).ok()
+                }
+            };
+            let curve = match selector % 5 {
+                0 => Bezier::new(points).ok().map(AnyCurve::Bezier),
+                1 => knots().and_then(|k| BSpline::new(points, k).ok().map(AnyCurve::BSpline)),
+                _ => {
+                    let weights = (0..count).map(|_| b.float()).collect();
+                    knots().and_then(|k| Nurbs::new(points, weights, k).ok().map(AnyCurve::Nurbs))
+                }
+            };
+            if let Some(curve) = curve {
+                // Arbitrary parameters: an error or a valid point, never a panic.
+                for _ in 0..4 {
+                    let t = b.float();
+                    if let Ok(p) = curve.evaluate(t) {
+                        assert!(p.position.iter().all(|c| c.is_finite()), "t = {t}: {p:?}");
+                    }
+                    if let Ok(d) = curve.derivative_at(t) {
+                        assert!(finite_rates(&d), "t = {t}: {d:?}");
+                    }
+                }
+                check_shape(&Shape::Planar(curve));
+            }
+        }
+        _ => {
+            let rows = count.min(4);
+            let cols = usize::from(b.byte() % 4) + 1;
+            let mut points: Vec<ControlPoint<3>> = Vec::with_capacity(rows * cols);
+            for _ in 0..rows * cols {
+                let position = [b.float(), b.float(), b.float()];
+                let Some(degrees) = b.degrees() else { return };
+                points.push(ControlPoint::new(position, degrees));
+            }
+            let surface = if selector % 5 == 3 {
+                Surface::bezier(rows, cols, points).ok()
+            } else {
+                let du = degree.min(rows.saturating_sub(1));
+                let dv = usize::from(b.byte() % 4).min(cols.saturating_sub(1));
+                let weights = (0..rows * cols).map(|_| b.float()).collect();
+                match (
+                    KnotVector::clamped_uniform(du, rows),
+                    KnotVector::clamped_uniform(dv, cols),
+                ) {
+                    (Ok(ku), Ok(kv)) => Surface::nurbs(rows, cols, points, weights, ku, kv).ok(),
+                    _ => None,
+                }
+            };
+            if let Some(surface) = surface {
+                check_shape(&Shape::Surface(surface));
+            }
+        }
+    }
+}
+
+fn finite_rates<const D: usize>(d: &neutrospline::DerivativeValue<D>) -> bool {
+    d.position
+        .iter()
+        .chain([&d.truth, &d.indeterminacy, &d.falsity])
+        .all(|v| v.is_finite())
+}
+
+/// `count` parameters spread over `[a, b]`, ends included.
+fn spread(count: u32, (a, b): (f64, f64)) -> impl Iterator<Item = f64> {
+    (0..=count).map(move |k| {
+        if k == 0 {
+            a
+        } else if k == count {
+            b
+        } else {
+            (a + (b - a) * (f64::from(k) / f64::from(count))).clamp(a, b)
+        }
+    })
+}
+
+/// Within `tolerance` of `[lo, hi]`.
+fn within(value: f64, lo: f64, hi: f64, tolerance: f64) -> bool {
+    value >= lo - tolerance && value <= hi + tolerance
+}
+
+/// Checks the properties of SPEC section 4 on a valid shape, and that the command's own row
+/// sampler (with derivatives and normals) either succeeds with finite values or reports an
+/// error: never a panic, never a silent infinity or NaN.
+///
+/// # Panics
+/// When a property is broken (that is the point).
+pub fn check_shape(shape: &Shape) {
+    match shape {
+        Shape::Planar(c) => check_curve(c),
+        Shape::Spatial(c) => check_curve(c),
+        Shape::Surface(s) => check_surface(s),
+    }
+    let extras = Extras {
+        derivative: true,
+        normal: shape.is_surface(),
+    };
+    let sampler = shape.sampler(extras);
+    let params: Vec<Param> = match shape {
+        Shape::Surface(s) => spread(3, s.domain_u())
+            .flat_map(|u| spread(3, s.domain_v()).map(move |v| Param::Uv(u, v)))
+            .collect(),
+        _ => spread(8, shape.curve_domain().unwrap_or((0.0, 1.0)))
+            .map(Param::T)
+            .collect(),
+    };
+    for param in params {
+        if let Ok(row) = sampler.row(param) {
+            assert!(
+                row.iter().flatten().all(|v| v.is_finite()),
+                "{param}: {row:?}"
+            );
+        }
+    }
+}
+
+fn bounds<const D: usize>(points: &[ControlPoint<D>]) -> ([f64; D], [f64; D], [[f64; 2]; 3]) {
+    let mut lo = [f64::INFINITY; D];
+    let mut hi = [f64::NEG_INFINITY; D];
+    let mut degrees = [[f64::INFINITY, f64::NEG_INFINITY]; 3];
+    for p in points {
+        for k in 0..D {
+            lo[k] = lo[k].min(p.position[k]);
+            hi[k] = hi[k].max(p.position[k]);
+        }
+        for (range, v) in degrees.iter_mut().zip(p.degrees.to_array()) {
+            range[0] = range[0].min(v);
+            range[1] = range[1].max(v);
+        }
+    }
+    (lo, hi, degrees)
+}
+
+fn check_point<const D: usize>(
+    at: &str,
+    p: &neutrospline::CurvePoint<D>,
+    (lo, hi, degrees): &([f64; D], [f64; D], [[f64; 2]; 3]),
+) {
+    for (k, &c) in p.position.iter().enumerate() {
+        assert!(c.is_finite(), "{at}: position {c}");
+        let tolerance = 1e-9 * (1.0 + lo[k].abs().max(hi[k].abs()));
+        assert!(
+            within(c, lo[k], hi[k], tolerance),
+            "{at}: coordinate {k} = {c} outside the control points' range [{}, {}]",
+            lo[k],
+            hi[k]
+        );
+    }
+    for (range, v) in degrees.iter().zip(p.degrees.to_array()) {
+        assert!((0.0..=1.0).contains(&v), "{at}: degree {v} outside [0, 1]");
+        assert!(
+            within(v, range[0], range[1], 1e-12),
+            "{at}: degree {v} outside the control values' range {range:?}"
+        );
+    }
+}
+
+fn check_curve<const D: usize>(curve: &AnyCurve<D>) {
+    if curve.len() > MAX_EVAL_POINTS {
+        return;
+    }
+    let points = curve.control_points();
+    let b = bounds(&points);
+    let domain = curve.domain();
+    for t in spread(16, domain) {
+        match curve.evaluate(t) {
+            Ok(p) => check_point(&format!("t = {t}"), &p, &b),
+            Err(e) => panic!("t = {t} inside the domain {domain:?}: {e}"),
+        }
+        match curve.derivative_at(t) {
+            Ok(d) => assert!(finite_rates(&d), "t = {t}: {d:?}"),
+            Err(EvalError::Overflow { .. }) => {}
+            Err(e) => panic!("derivative at t = {t}: {e}"),
+        }
+    }
+    let clamped = curve.knots().is_none_or(KnotVector::is_clamped);
+    if clamped {
+        let ends = [(domain.0, points[0]), (domain.1, points[points.len() - 1])];
+        for (t, control) in ends {
+            let p = curve.evaluate(t).expect("end of the domain");
+            for k in 0..D {
+                let scale = 1.0 + b.0[k].abs().max(b.1[k].abs());
+                assert!(
+                    (p.position[k] - control.position[k]).abs() <= 1e-9 * scale,
+                    "t = {t}: {p:?} does not interpolate {control:?}"
+                );
+            }
+            for (v, c) in p
+                .degrees
+                .to_array()
+                .into_iter()
+                .zip(control.degrees.to_array())
+            {
+                assert!((v - c).abs() <= 1e-12, "t = {t}: {p:?} vs {control:?}");
+            }
+        }
+    }
+}
+
+fn check_surface(surface: &Surface) {
+    if surface.rows() * surface.cols() > MAX_EVAL_POINTS {
+        return;
+    }
+    let b = bounds(&surface.control_points());
+    for u in spread(4, surface.domain_u()) {
+        for v in spread(4, surface.domain_v()) {
+            match surface.evaluate(u, v) {
+                Ok(p) => check_point(&format!("u = {u}, v = {v}"), &p, &b),
+                Err(e) => panic!("u = {u}, v = {v} inside the domain: {e}"),
+            }
+        }
+    }
+}

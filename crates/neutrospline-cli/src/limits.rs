@@ -1,0 +1,116 @@
+//! Resource limits: how many control points a file may hold, how many rows `eval` may write
+//! and how large a TOML or JSON file may be, so that an absurd input is refused with a clear
+//! error instead of exhausting memory or running for days.
+//!
+//! The limits are global options (`--max-control-points`, `--max-samples`, `--max-file-size`),
+//! also read from the environment (`NEUTROSPLINE_MAX_CONTROL_POINTS`, ...). `main` installs
+//! them once for the process ([`install`]); the readers consult [`current`].
+//!
+//! CSV files are read as a stream, line by line, so their size is not limited: a CSV file is
+//! refused at the first bad line, or at the line that exceeds the control-point limit, without
+//! reading further. TOML and JSON documents must be read whole to be parsed, hence the file
+//! size limit, checked before reading.
+
+use std::sync::OnceLock;
+
+/// Default of `--max-control-points`.
+pub const DEFAULT_MAX_CONTROL_POINTS: u64 = 1_000_000;
+/// Default of `--max-samples` (rows of an `eval` table; a surface's N x N grid counts N²).
+pub const DEFAULT_MAX_SAMPLES: u64 = 10_000_000_000;
+/// Default of `--max-file-size` (TOML and JSON files), 256 MiB.
+pub const DEFAULT_MAX_FILE_SIZE: u64 = 256 * 1024 * 1024;
+/// The longest line a CSV file may have (a control point row is a few dozen bytes).
+pub const MAX_CSV_LINE: usize = 1024 * 1024;
+
+/// The limits in force.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Limits {
+    /// The most control points a model may have (surfaces: rows x cols).
+    pub max_control_points: u64,
+    /// The most rows `eval` may produce.
+    pub max_samples: u64,
+    /// The largest TOML or JSON file, in bytes.
+    pub max_file_size: u64,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            max_control_points: DEFAULT_MAX_CONTROL_POINTS,
+            max_samples: DEFAULT_MAX_SAMPLES,
+            max_file_size: DEFAULT_MAX_FILE_SIZE,
+        }
+    }
+}
+
+/// The global options that set the limits.
+#[derive(Debug, Clone, clap::Args)]
+#[command(next_help_heading = "Limits")]
+pub struct LimitArgs {
+    /// Refuse a model with more control points than this (a CSV file is refused at the line
+    /// that exceeds it, without reading further)
+    #[arg(
+        long,
+        global = true,
+        value_name = "N",
+        env = "NEUTROSPLINE_MAX_CONTROL_POINTS",
+        default_value_t = DEFAULT_MAX_CONTROL_POINTS,
+        value_parser = clap::value_parser!(u64).range(1..)
+    )]
+    pub max_control_points: u64,
+
+    /// Refuse to evaluate more rows than this (--samples N gives N rows for a curve, N x N for
+    /// a surface)
+    #[arg(
+        long,
+        global = true,
+        value_name = "N",
+        env = "NEUTROSPLINE_MAX_SAMPLES",
+        default_value_t = DEFAULT_MAX_SAMPLES,
+        value_parser = clap::value_parser!(u64).range(1..)
+    )]
+    pub max_samples: u64,
+
+    /// Refuse a TOML or JSON file larger than this many bytes (default 256 MiB; CSV files are
+    /// streamed and not limited in size)
+    #[arg(
+        long,
+        global = true,
+        value_name = "BYTES",
+        env = "NEUTROSPLINE_MAX_FILE_SIZE",
+        default_value_t = DEFAULT_MAX_FILE_SIZE,
+        value_parser = clap::value_parser!(u64).range(1..)
+    )]
+    pub max_file_size: u64,
+}
+
+impl LimitArgs {
+    /// The limits these options set.
+    pub fn limits(&self) -> Limits {
+        Limits {
+            max_control_points: self.max_control_points,
+            max_samples: self.max_samples,
+            max_file_size: self.max_file_size,
+        }
+    }
+}
+
+static LIMITS: OnceLock<Limits> = OnceLock::new();
+
+/// Sets the limits for the rest of the process (the first call wins).
+pub fn install(limits: Limits) {
+    let _ = LIMITS.set(limits);
+}
+
+/// The limits in force: those installed, else the defaults.
+pub fn current() -> Limits {
+    LIMITS.get().copied().unwrap_or_default()
+}
+
+/// The message for a model with too many control points.
+pub(crate) fn too_many_points(limit: u64) -> String {
+    format!(
+        "more than {limit} control points (the limit; raise it with --max-control-points or \
+         NEUTROSPLINE_MAX_CONTROL_POINTS)"
+    )
+}

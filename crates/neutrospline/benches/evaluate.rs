@@ -1,0 +1,137 @@
+//! Criterion benches of the core operations over degree and size.
+//!
+//! Run with the fast paths enabled (otherwise the batch benches measure the portable kernel):
+//!
+//! ```text
+//! cargo bench -p neutrospline --features simd,parallel
+//! ```
+//!
+//! `write_reference` is the memory-bandwidth yardstick of the batch benches: a tight loop
+//! writing the same five output arrays (five f64 per point) with no arithmetic.
+
+use std::hint::black_box;
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use neutrospline::{
+    batch_instruction_set, example1, BatchOptions, BatchParams, Bezier, BezierBatch, ControlPoint,
+    Degrees,
+};
+
+/// Example 1 for degree 3, else a seeded pseudo-random curve of degree `n`.
+fn curve(n: usize) -> Bezier<2> {
+    if n == 3 {
+        return example1();
+    }
+    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let points = (0..=n)
+        .map(|_| {
+            let degrees = Degrees::new(next(), next(), next()).expect("in [0, 1]");
+            ControlPoint::new([10.0 * next(), 10.0 * next()], degrees)
+        })
+        .collect();
+    Bezier::new(points).expect("finite control points")
+}
+
+const DEGREES: [usize; 3] = [3, 7, 15];
+
+fn single(c: &mut Criterion) {
+    let mut group = c.benchmark_group("evaluate_single");
+    for n in DEGREES {
+        let bezier = curve(n);
+        group.bench_with_input(BenchmarkId::from_parameter(n), &bezier, |b, bezier| {
+            b.iter(|| bezier.evaluate(black_box(0.37)))
+        });
+    }
+    group.finish();
+}
+
+fn batch(c: &mut Criterion) {
+    let name = format!("batch_uniform_{}_1thread", batch_instruction_set());
+    let mut group = c.benchmark_group(name);
+    let options = BatchOptions::default().with_threads(1);
+    for n in DEGREES {
+        let prepared = BezierBatch::new(&curve(n));
+        for points in [1_000usize, 100_000] {
+            let mut out = vec![0.0; 5 * points];
+            group.throughput(Throughput::Elements(points as u64));
+            group.bench_function(BenchmarkId::new(format!("degree{n}"), points), |b| {
+                b.iter(|| {
+                    prepared
+                        .evaluate(BatchParams::Uniform(points), &mut out, &options)
+                        .expect("valid parameters")
+                })
+            });
+        }
+    }
+    // The scalar path over the same work, for comparison.
+    let bezier = curve(3);
+    let points = 100_000;
+    let ts: Vec<f64> = (0..points)
+        .map(|k| k as f64 / (points - 1) as f64)
+        .collect();
+    let mut out = vec![0.0; 5 * points];
+    group.throughput(Throughput::Elements(points as u64));
+    group.bench_function(BenchmarkId::new("scalar_degree3", points), |b| {
+        b.iter(|| bezier.evaluate_channels(&ts, &mut out).expect("valid"))
+    });
+    group.finish();
+}
+
+fn write_reference(c: &mut Criterion) {
+    let mut group = c.benchmark_group("write_reference");
+    for points in [100_000usize, 1_000_000] {
+        let mut out = vec![0.0; 5 * points];
+        group.throughput(Throughput::Elements(points as u64));
+        group.bench_function(BenchmarkId::from_parameter(points), |b| {
+            b.iter(|| {
+                let mut channels = out.chunks_exact_mut(points);
+                let mut next = || channels.next().expect("five channels");
+                let (x, y, t, i, f) = (next(), next(), next(), next(), next());
+                for k in 0..points {
+                    let v = k as f64;
+                    x[k] = v;
+                    y[k] = v;
+                    t[k] = v;
+                    i[k] = v;
+                    f[k] = v;
+                }
+                black_box(&mut out);
+            })
+        });
+    }
+    group.finish();
+}
+
+fn split_and_derivative(c: &mut Criterion) {
+    let mut group = c.benchmark_group("split");
+    for n in DEGREES {
+        let bezier = curve(n);
+        group.bench_with_input(BenchmarkId::from_parameter(n), &bezier, |b, bezier| {
+            b.iter(|| bezier.split(black_box(0.37)))
+        });
+    }
+    group.finish();
+    let mut group = c.benchmark_group("derivative");
+    for n in DEGREES {
+        let bezier = curve(n);
+        group.bench_with_input(BenchmarkId::from_parameter(n), &bezier, |b, bezier| {
+            b.iter(|| bezier.derivative().evaluate(black_box(0.37)))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(
+    benches,
+    single,
+    batch,
+    write_reference,
+    split_and_derivative
+);
+criterion_main!(benches);
