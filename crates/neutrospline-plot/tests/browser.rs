@@ -29,11 +29,17 @@ fn decode(path: &Path) -> (Vec<u8>, usize, u32, u32) {
 #[test]
 fn svg_renders_in_headless_chromium() {
     let required = std::env::var("NEUTROSPLINE_REQUIRE_BROWSER").is_ok_and(|v| v == "1");
-    let chromium = ["chromium", "chromium-browser"]
-        .into_iter()
-        .find(|name| Command::new(name).arg("--version").output().is_ok_and(|o| o.status.success()));
+    let chromium = ["chromium", "chromium-browser"].into_iter().find(|name| {
+        Command::new(name)
+            .arg("--version")
+            .output()
+            .is_ok_and(|o| o.status.success())
+    });
     let Some(chromium) = chromium else {
-        assert!(!required, "NEUTROSPLINE_REQUIRE_BROWSER=1 but no chromium on the PATH");
+        assert!(
+            !required,
+            "NEUTROSPLINE_REQUIRE_BROWSER=1 but no chromium on the PATH"
+        );
         eprintln!("skipped: chromium is not installed");
         return;
     };
@@ -62,7 +68,11 @@ fn svg_renders_in_headless_chromium() {
         .arg(format!("file://{}", svg_path.display()))
         .output()
         .expect("run chromium");
-    assert!(status.status.success(), "chromium failed: {}", String::from_utf8_lossy(&status.stderr));
+    assert!(
+        status.status.success(),
+        "chromium failed: {}",
+        String::from_utf8_lossy(&status.stderr)
+    );
     let (pixels, channels, width, height) = decode(&shot);
     assert_eq!((width, height), (1600, 1200));
     // The truth, indeterminacy and falsity curves are drawn in these colours (theme.rs).
@@ -72,12 +82,18 @@ fn svg_renders_in_headless_chromium() {
         ("falsity", [0xbb, 0x55, 0x66]),
     ] {
         let n = count_near(&pixels, channels, rgb, 24);
-        assert!(n > 1000, "{name}: only {n} pixels of its colour in the browser's rendering");
+        assert!(
+            n > 1000,
+            "{name}: only {n} pixels of its colour in the browser's rendering"
+        );
     }
     // Mostly a white page with a drawing, not an error page or a blank.
     let white = count_near(&pixels, channels, [255, 255, 255], 4);
     let total = pixels.len() / channels;
-    assert!(white > total / 3 && white < total * 98 / 100, "white pixels: {white} of {total}");
+    assert!(
+        white > total / 3 && white < total * 98 / 100,
+        "white pixels: {white} of {total}"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 
