@@ -1,4 +1,4 @@
-//! [`proptest`] strategies for degrees, control points and curves (feature `proptest`).
+//! [`mod@proptest`] strategies for degrees, control points and curves (feature `proptest`).
 //!
 //! Reusable by any crate that tests code built on neutrospline:
 //!
