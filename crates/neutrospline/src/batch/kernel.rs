@@ -5,13 +5,17 @@
 //!
 //! - **Bernstein weights** (degree `1 ..= DIRECT_MAX_DEGREE`): per lane,
 //!   `w_i = C(n, i) t^i s^(n-i)` with `s = 1 - t` (the powers by repeated multiplication, the
-//!   binomial coefficients exact integers rounded once), then one dot product per channel,
-//!   `v_c = sum_i w_i c_{c,i}`. O(n) per parameter and channel instead of de Casteljau's
-//!   O(n^2), with no binomial coefficient near overflow (`C(64, 32) < 2^61`) and no
-//!   cancellation: every weight is a product of non-negative factors, each with a relative
-//!   error of at most `(n + 2) u` (`u = 2^-53`), so `|computed - exact| <= (2n + 3) u
-//!   max_i |c_{c,i}|` per channel. De Casteljau's error is of the same order, so the two agree
-//!   to a few `n u max |c|` (tested to 1e-14 up to degree 15, 1e-12 up to 400).
+//!   binomial coefficients exact integers rounded once; up to degree 15 they are folded into
+//!   the control values once per curve, `C(n, i) c_{c,i}`, unless a product overflows), then
+//!   one dot product per channel, `v_c = sum_i w_i c_{c,i}`. O(n) per parameter and channel
+//!   instead of de Casteljau's O(n^2), with no binomial coefficient near overflow
+//!   (`C(64, 32) < 2^61`) and no cancellation: every weight is a product of non-negative
+//!   factors, each with a relative error of at most `(n + 3) u` (`u = 2^-53`), so
+//!   `|computed - exact| <= (2n + 4) u max_i |c_{c,i}|` per channel. De Casteljau's error is
+//!   of the same order, so the two agree to a few `n u max |c|` (tested to 1e-14 up to degree
+//!   15, 1e-12 up to 400; the worst measured is about `1.5 n u`). At `t = 0` and `t = 1` the
+//!   weights are exactly `(1, 0, ..., 0)` and `(0, ..., 0, 1)` (and `C(n, 0) = C(n, n) = 1`),
+//!   so the end control values come out exactly.
 //!   Each channel is then projected onto `[min_i c_{c,i}, max_i c_{c,i}]`. The weights are
 //!   non-negative with unit sum, so that interval contains the exact value: the projection
 //!   only removes rounding excursions (it can only move a value closer to the exact one) and
@@ -24,6 +28,9 @@ use super::lanes::Lanes;
 
 /// Highest degree evaluated with Bernstein weights; de Casteljau above it.
 pub(crate) const DIRECT_MAX_DEGREE: usize = super::BATCH_DIRECT_MAX_DEGREE;
+
+/// Highest degree with a kernel compiled for it (unrolled, binomials folded in).
+const FIXED_MAX_DEGREE: usize = 15;
 
 /// Largest number of channels (3-D positions and three degrees).
 pub(crate) const MAX_CHANNELS: usize = 6;
@@ -39,6 +46,9 @@ pub(crate) struct Coeffs {
     pub(crate) values: Vec<f64>,
     /// `C(n, i)` for `i = 0 ..= n` (empty above [`DIRECT_MAX_DEGREE`]).
     pub(crate) binomials: Vec<f64>,
+    /// `C(n, i) c_{c,i}`, channel-major, for the fixed-degree kernels (degree
+    /// `1 ..= FIXED_MAX_DEGREE`); empty otherwise, or if a product overflows.
+    pub(crate) scaled: Vec<f64>,
     /// Smallest control value of each channel.
     pub(crate) lo: [f64; MAX_CHANNELS],
     /// Largest control value of each channel.
@@ -66,11 +76,23 @@ impl Coeffs {
         } else {
             Vec::new()
         };
+        let mut scaled = Vec::new();
+        if (1..=FIXED_MAX_DEGREE).contains(&degree) {
+            scaled = values
+                .iter()
+                .enumerate()
+                .map(|(k, v)| v * binomials[k % count])
+                .collect();
+            if scaled.iter().any(|v| !v.is_finite()) {
+                scaled.clear();
+            }
+        }
         Coeffs {
             degree,
             channels,
             values,
             binomials,
+            scaled,
             lo,
             hi,
         }
@@ -93,28 +115,6 @@ fn binomial_row(n: usize) -> Vec<f64> {
         }
     }
     row.into_iter().map(|c| c as f64).collect()
-}
-
-/// `C(W - 1, i)` at compile time, for the fixed-degree kernels.
-const fn binomial_row_const<const W: usize>() -> [f64; W] {
-    let mut row = [0u64; W];
-    row[0] = 1;
-    let mut k = 1;
-    while k < W {
-        let mut i = k;
-        while i >= 1 {
-            row[i] += row[i - 1];
-            i -= 1;
-        }
-        k += 1;
-    }
-    let mut out = [0.0; W];
-    let mut i = 0;
-    while i < W {
-        out[i] = row[i] as f64;
-        i += 1;
-    }
-    out
 }
 
 /// A run of parameters, read one vector at a time.
@@ -174,12 +174,17 @@ pub(crate) fn evaluate<L: Lanes, P: Params, const CH: usize>(
         ($($w:literal)*) => {
             match coeffs.degree {
                 0 => constant(coeffs, out),
-                $($w => {
-                    let binomials = const { binomial_row_const::<{ $w + 1 }>() };
-                    run::<L, P, CH, { $w + 1 }>(l, coeffs, &binomials, params, out)
+                // The binomial coefficients folded into the control values (`scaled`): the
+                // weights are then plain products of powers, two multiplications fewer per
+                // weight. (`scaled` is empty in the rare case a product overflows.)
+                $($w if !coeffs.scaled.is_empty() => {
+                    const { assert!($w <= FIXED_MAX_DEGREE) };
+                    let ones = [1.0; $w + 1];
+                    run::<L, P, CH, { $w + 1 }>(l, coeffs, &coeffs.scaled, &ones, params, out)
                 })*
                 n if n <= DIRECT_MAX_DEGREE => {
-                    run::<L, P, CH, MAX_WEIGHTS>(l, coeffs, &coeffs.binomials, params, out)
+                    let (values, binomials) = (&coeffs.values, &coeffs.binomials);
+                    run::<L, P, CH, MAX_WEIGHTS>(l, coeffs, values, binomials, params, out)
                 }
                 _ => casteljau(l, coeffs, params, out, scratch),
             }
@@ -206,11 +211,12 @@ const MAX_WEIGHTS: usize = DIRECT_MAX_DEGREE + 1;
 fn run<L: Lanes, P: Params, const CH: usize, const W: usize>(
     l: L,
     coeffs: &Coeffs,
+    values: &[f64],
     binomials: &[f64],
     params: &P,
     out: &mut [&mut [f64]; CH],
 ) {
-    let prepared = Prepared::<L, CH, W>::new(l, coeffs, binomials);
+    let prepared = Prepared::<L, CH, W>::new(l, coeffs, values, binomials);
     // Up to degree 7 one vector of parameters per step: the out-of-order core overlaps
     // consecutive steps. Above, the dot products are long chains of multiply-adds, and two
     // vectors per step (two independent chains per channel, sharing each coefficient load)
@@ -246,8 +252,33 @@ fn run_steps<L: Lanes, P: Params, const CH: usize, const W: usize, const U: usiz
     let len = out[0].len();
     let step = U * L::LANES;
     let full = len - len % step;
-    // One iterator of whole steps per channel: a length test per step instead of a bounds
-    // check per store.
+    let vectors = full / L::LANES;
+    // The outputs as slices of vectors when the lane type allows: one index for every
+    // channel, bounds checks proven away by the equal lengths.
+    let heads = out.each_mut().map(|s| l.as_vectors_mut(&mut s[..full]));
+    if heads.iter().all(Option::is_some) {
+        let heads = heads.map(|h| h.unwrap_or_default());
+        for head in &heads {
+            assert_eq!(head.len(), vectors);
+        }
+        let mut j = 0;
+        while j < vectors {
+            let mut ts = [l.splat(0.0); U];
+            for (u, t) in ts.iter_mut().enumerate() {
+                *t = params.vector(l, (j + u) * L::LANES);
+            }
+            let v = points::<L, CH, W, U>(l, prepared, ts);
+            for c in 0..CH {
+                for u in 0..U {
+                    heads[c][j + u] = v[u][c];
+                }
+            }
+            j += U;
+        }
+        return full;
+    }
+    // Otherwise one iterator of whole steps per channel: a length test per step instead of a
+    // bounds check per store.
     let mut chunks = out.each_mut().map(|s| s[..full].chunks_exact_mut(step));
     let mut k = 0;
     while k < full {
@@ -276,31 +307,31 @@ struct Prepared<L: Lanes, const CH: usize, const W: usize> {
     /// Polynomial degree.
     n: usize,
     binomials: [L::V; W],
-    values: [[L::V; W]; CH],
+    /// Channel-major, `count` per channel. On the heap: an array of `CH * W` vectors (25 KiB
+    /// for AVX-512 at `W = 65`) overflowed test threads' stacks in unoptimised builds.
+    values: Vec<L::V>,
     lo: [L::V; CH],
     hi: [L::V; CH],
 }
 
 impl<L: Lanes, const CH: usize, const W: usize> Prepared<L, CH, W> {
     #[inline(always)]
-    fn new(l: L, coeffs: &Coeffs, binomials: &[f64]) -> Self {
+    fn new(l: L, coeffs: &Coeffs, values: &[f64], binomials: &[f64]) -> Self {
         let n = binomials.len() - 1;
         let count = n + 1;
         let zero = l.splat(0.0);
         let mut prepared = Prepared {
             n,
             binomials: [zero; W],
-            values: [[zero; W]; CH],
+            values: values.iter().map(|&v| l.splat(v)).collect(),
             lo: [zero; CH],
             hi: [zero; CH],
         };
         for i in 0..count {
             prepared.binomials[i] = l.splat(binomials[i]);
         }
+        debug_assert_eq!(prepared.values.len(), CH * count);
         for c in 0..CH {
-            for i in 0..count {
-                prepared.values[c][i] = l.splat(coeffs.values[c * count + i]);
-            }
             prepared.lo[c] = l.splat(coeffs.lo[c]);
             prepared.hi[c] = l.splat(coeffs.hi[c]);
         }
@@ -346,9 +377,9 @@ fn points<L: Lanes, const CH: usize, const W: usize, const U: usize>(
         for c in 0..CH {
             for u in 0..U {
                 acc[u][c] = if i == 0 {
-                    l.mul(w[u], p.values[c][i])
+                    l.mul(w[u], p.values[c * count + i])
                 } else {
-                    l.mul_add(w[u], p.values[c][i], acc[u][c])
+                    l.mul_add(w[u], p.values[c * count + i], acc[u][c])
                 };
             }
         }
@@ -410,10 +441,8 @@ mod tests {
     #[test]
     fn kernel_binomials_exact() {
         assert_eq!(binomial_row(4), [1.0, 4.0, 6.0, 4.0, 1.0]);
-        assert_eq!(binomial_row_const::<5>(), [1.0, 4.0, 6.0, 4.0, 1.0]);
         let row = binomial_row(64);
         assert_eq!(row[32], 1_832_624_140_942_590_534u64 as f64);
-        let c16 = binomial_row_const::<17>();
-        assert_eq!(c16[..], binomial_row(16)[..]);
+        assert_eq!(binomial_row(0), [1.0]);
     }
 }

@@ -44,6 +44,9 @@ pub(crate) trait Lanes: Copy {
     fn store(self, dst: &mut [f64], v: Self::V);
     /// Stores the first `dst.len()` (fewer than `LANES`) lanes.
     fn store_partial(self, dst: &mut [f64], v: Self::V);
+    /// `dst` (a multiple of `LANES` long) as a slice of vectors, where the lane type allows
+    /// it without copying; `None` otherwise.
+    fn as_vectors_mut(self, dst: &mut [f64]) -> Option<&mut [Self::V]>;
 }
 
 /// Four lanes as an array; the portable path, vectorised by the compiler for the baseline
@@ -125,6 +128,11 @@ impl Lanes for Portable {
         let len = dst.len();
         dst.copy_from_slice(&v[..len]);
     }
+    #[inline(always)]
+    fn as_vectors_mut(self, _dst: &mut [f64]) -> Option<&mut [Self::V]> {
+        // `<[f64]>::as_chunks_mut` would do, but is newer than the crate's minimum Rust.
+        None
+    }
 }
 
 /// The vectors of a `pulp` instruction set (AVX2 + FMA, AVX-512, or pulp's scalar fallback).
@@ -191,6 +199,10 @@ impl<S: pulp::Simd> Lanes for Pulp<S> {
     #[inline(always)]
     fn store_partial(self, dst: &mut [f64], v: Self::V) {
         self.0.partial_store_f64s(dst, v);
+    }
+    #[inline(always)]
+    fn as_vectors_mut(self, dst: &mut [f64]) -> Option<&mut [Self::V]> {
+        Some(S::as_mut_simd_f64s(dst).0)
     }
 }
 
