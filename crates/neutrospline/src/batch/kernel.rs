@@ -1,8 +1,16 @@
 //! The batch kernels: one Bézier polynomial with `CH` channels evaluated at a run of
 //! parameters, [`Lanes::LANES`] parameters at a time (one per lane), channel-major output.
 //!
-//! Two formulations, chosen by degree:
+//! Three formulations, chosen by degree:
 //!
+//! - **Taylor about the nearer end** (degree `1 ..= TAYLOR_MAX_DEGREE`): per channel the
+//!   coefficients `a_k = C(n, k) Δ^k c_0` of `p(t) = sum_k a_k t^k`, and `b_k` likewise from
+//!   the reversed control values, `p = sum_k b_k s^k` with `s = 1 - t`, computed once per
+//!   curve; lanes with `t <= 1/2` run Horner's rule in `t` on `a`, the others in `s` (exact
+//!   there) on `b`: `n` multiply-adds per channel, no weights. With `|Δ^k c| <= 2^k max |c|`
+//!   and `t, s <= 1/2` on their side, `sum_k |a_k| t^k <= 2^n max |c|`, so the error is at
+//!   most about `(2n + 1) 2^n u max |c|` (56 u for a cubic, below 1e-14); `a_0 = c_0` and
+//!   `b_0 = c_n`, so the ends come out exactly. The same projection as below follows.
 //! - **Bernstein weights** (degree `1 ..= DIRECT_MAX_DEGREE`): per lane,
 //!   `w_i = C(n, i) t^i s^(n-i)` with `s = 1 - t` (the powers by repeated multiplication, the
 //!   binomial coefficients exact integers rounded once; up to degree 15 they are folded into
@@ -32,6 +40,13 @@ pub(crate) const DIRECT_MAX_DEGREE: usize = super::BATCH_DIRECT_MAX_DEGREE;
 /// Highest degree with a kernel compiled for it (unrolled, binomials folded in).
 const FIXED_MAX_DEGREE: usize = 15;
 
+/// Highest degree evaluated with the Taylor kernel (its error bound, `(n + 1) 2^n u` from
+/// the coefficients plus `n 2^n u` from Horner's rule, is below `1e-14` up to here).
+const TAYLOR_MAX_DEGREE: usize = 3;
+
+/// Parameter vectors per step of the Taylor kernel.
+const TAYLOR_STEP: usize = 4;
+
 /// Largest number of channels (3-D positions and three degrees).
 pub(crate) const MAX_CHANNELS: usize = 6;
 
@@ -49,6 +64,10 @@ pub(crate) struct Coeffs {
     /// `C(n, i) c_{c,i}`, channel-major, for the fixed-degree kernels (degree
     /// `1 ..= FIXED_MAX_DEGREE`); empty otherwise, or if a product overflows.
     pub(crate) scaled: Vec<f64>,
+    /// Taylor coefficients about the nearer end (degree `1 ..= TAYLOR_MAX_DEGREE`; empty
+    /// otherwise, or if one is not finite): channel-major, `n + 1` per channel, first about
+    /// `t = 0` (all channels), then about `t = 1` in `s = 1 - t`. See [`taylor_row`].
+    pub(crate) taylor: Vec<f64>,
     /// Smallest control value of each channel.
     pub(crate) lo: [f64; MAX_CHANNELS],
     /// Largest control value of each channel.
@@ -87,12 +106,22 @@ impl Coeffs {
                 scaled.clear();
             }
         }
+        let mut taylor = Vec::new();
+        if (1..=TAYLOR_MAX_DEGREE).contains(&degree) {
+            let rows = values.chunks_exact(count);
+            taylor.extend(rows.clone().flat_map(|row| taylor_row(row.iter().copied())));
+            taylor.extend(rows.flat_map(|row| taylor_row(row.iter().rev().copied())));
+            if taylor.iter().any(|v| !v.is_finite()) {
+                taylor.clear();
+            }
+        }
         Coeffs {
             degree,
             channels,
             values,
             binomials,
             scaled,
+            taylor,
             lo,
             hi,
         }
@@ -102,6 +131,25 @@ impl Coeffs {
     pub(crate) fn work(&self, points: usize) -> usize {
         points.saturating_mul(self.degree + 1)
     }
+}
+
+/// The Taylor coefficients about `t = 0` of the Bézier polynomial with control values `row`
+/// (`c_0, ..., c_n`): `p(t) = sum_k a_k t^k` with `a_k = C(n, k) Δ^k c_0`, the forward
+/// differences taken by repeated subtraction. Fed the reversed row, the coefficients about
+/// `t = 1` in powers of `s = 1 - t`. `a_0 = c_0` exactly.
+fn taylor_row(row: impl Iterator<Item = f64>) -> Vec<f64> {
+    let mut differences: Vec<f64> = row.collect();
+    let n = differences.len() - 1;
+    let binomials = binomial_row(n);
+    let mut coefficients = Vec::with_capacity(n + 1);
+    coefficients.push(differences[0]);
+    for k in 1..=n {
+        for i in 0..=n - k {
+            differences[i] = differences[i + 1] - differences[i];
+        }
+        coefficients.push(binomials[k] * differences[0]);
+    }
+    coefficients
 }
 
 /// `C(n, i)`, `i = 0 ..= n`, by Pascal's rule in exact integers, each rounded once to `f64`.
@@ -122,6 +170,22 @@ pub(crate) trait Params: Sync {
     /// The parameters at positions `offset .. offset + LANES` of the run. Lanes past the end
     /// of the run hold arbitrary finite values (their results are discarded).
     fn vector<L: Lanes>(&self, lanes: L, offset: usize) -> L::V;
+
+    /// Where the parameters at positions `offset .. offset + len` lie with respect to 1/2,
+    /// decided exactly as the lane test `t <= 0.5` would (`len` a multiple of `LANES`; lanes
+    /// past the end of the run included).
+    fn side<L: Lanes>(&self, offset: usize, len: usize) -> Side;
+}
+
+/// Where a vector of parameters lies with respect to 1/2.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Side {
+    /// Every lane `t <= 1/2`.
+    Low,
+    /// Every lane `t > 1/2`.
+    High,
+    /// Some of each.
+    Mixed,
 }
 
 /// `t_k = k / denominator` for `k = first, first + 1, ...`: the evenly spaced parameters,
@@ -141,6 +205,22 @@ impl Params for Uniform {
         let k = l.add(l.splat((self.first + offset) as i64 as f64), l.iota());
         l.div(k, l.splat(self.denominator))
     }
+
+    #[inline(always)]
+    fn side<L: Lanes>(&self, offset: usize, len: usize) -> Side {
+        // `k / d` rounded is `<= 1/2` exactly when `2 k <= d`: if `2 k > d`, the exact
+        // quotient exceeds 1/2 by at least `1 / (2 d)`, more than half an ulp of 1/2 (2^-54)
+        // for any `d < 2^53`. Integers below 2^53 and their doubles are exact in f64.
+        let first = (self.first + offset) as f64;
+        let last = first + (len - 1) as f64;
+        if 2.0 * last <= self.denominator {
+            Side::Low
+        } else if 2.0 * first > self.denominator {
+            Side::High
+        } else {
+            Side::Mixed
+        }
+    }
 }
 
 /// Given parameters.
@@ -155,6 +235,21 @@ impl Params for Values<'_> {
             l.load(rest)
         } else {
             l.load_partial(rest)
+        }
+    }
+
+    #[inline(always)]
+    fn side<L: Lanes>(&self, offset: usize, len: usize) -> Side {
+        let rest = &self.0[offset..];
+        let lanes = &rest[..rest.len().min(len)];
+        let low = lanes.iter().filter(|&&t| t <= 0.5).count();
+        // Lanes past the end are zero: low.
+        if low == lanes.len() {
+            Side::Low
+        } else if low == 0 && lanes.len() == len {
+            Side::High
+        } else {
+            Side::Mixed
         }
     }
 }
@@ -174,6 +269,9 @@ pub(crate) fn evaluate<L: Lanes, P: Params, const CH: usize>(
         ($($w:literal)*) => {
             match coeffs.degree {
                 0 => constant(coeffs, out),
+                1 if !coeffs.taylor.is_empty() => taylor::<L, P, CH, 2>(l, coeffs, params, out),
+                2 if !coeffs.taylor.is_empty() => taylor::<L, P, CH, 3>(l, coeffs, params, out),
+                3 if !coeffs.taylor.is_empty() => taylor::<L, P, CH, 4>(l, coeffs, params, out),
                 // The binomial coefficients folded into the control values (`scaled`): the
                 // weights are then plain products of powers, two multiplications fewer per
                 // weight. (`scaled` is empty in the rare case a product overflows.)
@@ -203,49 +301,30 @@ fn constant<const CH: usize>(coeffs: &Coeffs, out: &mut [&mut [f64]; CH]) {
 /// Upper bound on the powers kept on the stack: `DIRECT_MAX_DEGREE + 1`.
 const MAX_WEIGHTS: usize = DIRECT_MAX_DEGREE + 1;
 
-/// The Bernstein-weight kernel for degree `binomials.len() - 1 < W`.
-///
-/// No closures here: a closure is a function of its own that the compiler may leave out of
-/// line, compiled without the dispatcher's target features.
+/// Runs `kernel` over the whole output: `U` vectors of parameters per step, then the rest one
+/// vector at a time (the last one partial).
 #[inline(always)]
-fn run<L: Lanes, P: Params, const CH: usize, const W: usize>(
+fn drive<L: Lanes, P: Params, K: Kernel<L, CH>, const CH: usize, const U: usize>(
     l: L,
-    coeffs: &Coeffs,
-    values: &[f64],
-    binomials: &[f64],
+    kernel: &K,
     params: &P,
     out: &mut [&mut [f64]; CH],
 ) {
-    let prepared = Prepared::<L, CH, W>::new(l, coeffs, values, binomials);
-    // Up to degree 7 one vector of parameters per step: the out-of-order core overlaps
-    // consecutive steps. Above, the dot products are long chains of multiply-adds, and two
-    // vectors per step (two independent chains per channel, sharing each coefficient load)
-    // measured 1.5x faster at degree 15; at low degree the extra registers only spill.
-    let done = if W <= 8 {
-        run_steps::<L, P, CH, W, 1>(l, &prepared, params, out)
-    } else {
-        run_steps::<L, P, CH, W, 2>(l, &prepared, params, out)
-    };
+    let done = run_steps::<L, P, K, CH, U>(l, kernel, params, out);
     let len = out[0].len();
     let mut k = done;
     while k < len {
-        let [v] = points::<L, CH, W, 1>(l, &prepared, [params.vector(l, k)]);
-        for c in 0..CH {
-            if k + L::LANES <= len {
-                l.store(&mut out[c][k..], v[c]);
-            } else {
-                l.store_partial(&mut out[c][k..], v[c]);
-            }
-        }
+        let mut sink = Tail { out: &mut *out, k };
+        kernel.step::<P, _, 1>(l, params, k, &mut sink);
         k += L::LANES;
     }
 }
 
 /// The main loop, `U` vectors of parameters per step; returns how many parameters it did.
 #[inline(always)]
-fn run_steps<L: Lanes, P: Params, const CH: usize, const W: usize, const U: usize>(
+fn run_steps<L: Lanes, P: Params, K: Kernel<L, CH>, const CH: usize, const U: usize>(
     l: L,
-    prepared: &Prepared<L, CH, W>,
+    kernel: &K,
     params: &P,
     out: &mut [&mut [f64]; CH],
 ) -> usize {
@@ -261,19 +340,10 @@ fn run_steps<L: Lanes, P: Params, const CH: usize, const W: usize, const U: usiz
         for head in &heads {
             assert_eq!(head.len(), vectors);
         }
-        let mut j = 0;
-        while j < vectors {
-            let mut ts = [l.splat(0.0); U];
-            for (u, t) in ts.iter_mut().enumerate() {
-                *t = params.vector(l, (j + u) * L::LANES);
-            }
-            let v = points::<L, CH, W, U>(l, prepared, ts);
-            for c in 0..CH {
-                for u in 0..U {
-                    heads[c][j + u] = v[u][c];
-                }
-            }
-            j += U;
+        let mut sink = Vectors { heads, j: 0 };
+        while sink.j < vectors {
+            kernel.step::<P, _, U>(l, params, sink.j * L::LANES, &mut sink);
+            sink.j += U;
         }
         return full;
     }
@@ -282,22 +352,102 @@ fn run_steps<L: Lanes, P: Params, const CH: usize, const W: usize, const U: usiz
     let mut chunks = out.each_mut().map(|s| s[..full].chunks_exact_mut(step));
     let mut k = 0;
     while k < full {
-        let mut ts = [l.splat(0.0); U];
-        for (u, t) in ts.iter_mut().enumerate() {
-            *t = params.vector(l, k + u * L::LANES);
-        }
-        let v = points::<L, CH, W, U>(l, prepared, ts);
-        for c in 0..CH {
-            let Some(chunk) = chunks[c].next() else {
-                unreachable!("each channel has full / step chunks")
-            };
-            for u in 0..U {
-                l.store(&mut chunk[u * L::LANES..], v[u][c]);
-            }
-        }
+        let chunk = chunks.each_mut().map(|c| match c.next() {
+            Some(chunk) => chunk,
+            None => unreachable!("each channel has full / step chunks"),
+        });
+        kernel.step::<P, _, U>(l, params, k, &mut Chunks(chunk));
         k += step;
     }
     full
+}
+
+/// Where a kernel puts its results: vector `u` of the current step, channel `c`.
+///
+/// A kernel hands over each channel as soon as it is done (rather than returning them all),
+/// so that the compiler need not keep `CH * U` vectors alive at once, which spills.
+trait Sink<L: Lanes> {
+    fn put(&mut self, l: L, c: usize, u: usize, v: L::V);
+}
+
+/// The outputs as slices of vectors; the step starts at vector `j`.
+struct Vectors<'a, V, const CH: usize> {
+    heads: [&'a mut [V]; CH],
+    j: usize,
+}
+
+impl<L: Lanes, const CH: usize> Sink<L> for Vectors<'_, L::V, CH> {
+    #[inline(always)]
+    fn put(&mut self, _: L, c: usize, u: usize, v: L::V) {
+        self.heads[c][self.j + u] = v;
+    }
+}
+
+/// The current step's piece of every channel.
+struct Chunks<'a, const CH: usize>([&'a mut [f64]; CH]);
+
+impl<L: Lanes, const CH: usize> Sink<L> for Chunks<'_, CH> {
+    #[inline(always)]
+    fn put(&mut self, l: L, c: usize, u: usize, v: L::V) {
+        l.store(&mut self.0[c][u * L::LANES..], v);
+    }
+}
+
+/// One vector at position `k` of the outputs, possibly past their end (partial store).
+struct Tail<'a, 'b, const CH: usize> {
+    out: &'a mut [&'b mut [f64]; CH],
+    k: usize,
+}
+
+impl<L: Lanes, const CH: usize> Sink<L> for Tail<'_, '_, CH> {
+    #[inline(always)]
+    fn put(&mut self, l: L, c: usize, u: usize, v: L::V) {
+        debug_assert_eq!(u, 0);
+        let dst = &mut self.out[c][self.k..];
+        if dst.len() >= L::LANES {
+            l.store(dst, v);
+        } else {
+            l.store_partial(dst, v);
+        }
+    }
+}
+
+/// A kernel: every channel at `U` consecutive vectors of parameters.
+///
+/// No closures here: a closure is a function of its own that the compiler may leave out of
+/// line, compiled without the dispatcher's target features.
+trait Kernel<L: Lanes, const CH: usize> {
+    /// The channels at the parameters `offset .. offset + U * LANES`, vector by vector, into
+    /// `sink`.
+    fn step<P: Params, S: Sink<L>, const U: usize>(
+        &self,
+        l: L,
+        params: &P,
+        offset: usize,
+        sink: &mut S,
+    );
+}
+
+/// The Bernstein-weight kernel for degree `binomials.len() - 1 < W`.
+#[inline(always)]
+fn run<L: Lanes, P: Params, const CH: usize, const W: usize>(
+    l: L,
+    coeffs: &Coeffs,
+    values: &[f64],
+    binomials: &[f64],
+    params: &P,
+    out: &mut [&mut [f64]; CH],
+) {
+    let prepared = Prepared::<L, CH, W>::new(l, coeffs, values, binomials);
+    // Up to degree 7 one vector of parameters per step: the out-of-order core overlaps
+    // consecutive steps. Above, the dot products are long chains of multiply-adds, and two
+    // vectors per step (two independent chains per channel, sharing each coefficient load)
+    // measured 1.5x faster at degree 15; at low degree the extra registers only spill.
+    if W <= 8 {
+        drive::<L, P, _, CH, 1>(l, &prepared, params, out);
+    } else {
+        drive::<L, P, _, CH, 2>(l, &prepared, params, out);
+    }
 }
 
 /// The broadcast coefficients of a Bernstein-weight kernel, built once per run: kept in
@@ -339,57 +489,161 @@ impl<L: Lanes, const CH: usize, const W: usize> Prepared<L, CH, W> {
     }
 }
 
-/// Every channel at the lanes of `U` parameter vectors: per parameter the weights
-/// `w_i = (C(n, i) t^i) s^(n-i)`, a dot product per channel, then the projection onto the
-/// channel's control range (which contains the exact value: convex combination).
-#[inline(always)]
-fn points<L: Lanes, const CH: usize, const W: usize, const U: usize>(
-    l: L,
-    p: &Prepared<L, CH, W>,
-    ts: [L::V; U],
-) -> [[L::V; CH]; U] {
-    let n = p.n;
-    let count = n + 1;
-    let one = l.splat(1.0);
-    let zero = l.splat(0.0);
-    // C(n, i) t^i and s^j for i, j = 0 ..= n, per parameter vector, computed before the dot
-    // products so that their only loop-carried dependencies are the accumulators.
-    let mut tp = [[one; W]; U];
-    let mut sp = [[one; W]; U];
-    for u in 0..U {
-        let s = l.sub(one, ts[u]);
-        let (mut power_t, mut power_s) = (one, one);
-        for j in 0..count {
-            tp[u][j] = l.mul(p.binomials[j], power_t);
-            sp[u][j] = power_s;
-            power_t = l.mul(power_t, ts[u]);
-            power_s = l.mul(power_s, s);
+impl<L: Lanes, const CH: usize, const W: usize> Kernel<L, CH> for Prepared<L, CH, W> {
+    /// Per parameter the weights `w_i = (C(n, i) t^i) s^(n-i)`, a dot product per channel,
+    /// then the projection onto the channel's control range (which contains the exact value:
+    /// convex combination).
+    #[inline(always)]
+    fn step<P: Params, S: Sink<L>, const U: usize>(
+        &self,
+        l: L,
+        params: &P,
+        offset: usize,
+        sink: &mut S,
+    ) {
+        let p = self;
+        let n = p.n;
+        let count = n + 1;
+        let one = l.splat(1.0);
+        let zero = l.splat(0.0);
+        let mut ts = [zero; U];
+        for (u, t) in ts.iter_mut().enumerate() {
+            *t = params.vector(l, offset + u * L::LANES);
         }
-    }
-    // (Two partial sums per channel, to halve the chain of dependent multiply-adds, measured
-    // no faster at degree 3 and 15 and 10% slower at degree 7.)
-    let mut acc = [[zero; CH]; U];
-    for i in 0..count {
-        let mut w = [zero; U];
+        // C(n, i) t^i and s^j for i, j = 0 ..= n, per parameter vector, computed before the
+        // dot products so that their only loop-carried dependencies are the accumulators.
+        let mut tp = [[one; W]; U];
+        let mut sp = [[one; W]; U];
         for u in 0..U {
-            w[u] = l.mul(tp[u][i], sp[u][n - i]);
+            let s = l.sub(one, ts[u]);
+            let (mut power_t, mut power_s) = (one, one);
+            for j in 0..count {
+                tp[u][j] = l.mul(p.binomials[j], power_t);
+                sp[u][j] = power_s;
+                power_t = l.mul(power_t, ts[u]);
+                power_s = l.mul(power_s, s);
+            }
+        }
+        // (Two partial sums per channel, to halve the chain of dependent multiply-adds,
+        // measured no faster at degree 3 and 15 and 10% slower at degree 7.)
+        let mut acc = [[zero; CH]; U];
+        for i in 0..count {
+            let mut w = [zero; U];
+            for u in 0..U {
+                w[u] = l.mul(tp[u][i], sp[u][n - i]);
+            }
+            for c in 0..CH {
+                for u in 0..U {
+                    acc[u][c] = if i == 0 {
+                        l.mul(w[u], p.values[c * count + i])
+                    } else {
+                        l.mul_add(w[u], p.values[c * count + i], acc[u][c])
+                    };
+                }
+            }
         }
         for c in 0..CH {
             for u in 0..U {
-                acc[u][c] = if i == 0 {
-                    l.mul(w[u], p.values[c * count + i])
-                } else {
-                    l.mul_add(w[u], p.values[c * count + i], acc[u][c])
-                };
+                sink.put(l, c, u, l.min(l.max(acc[u][c], p.lo[c]), p.hi[c]));
             }
         }
     }
-    for u in 0..U {
-        for c in 0..CH {
-            acc[u][c] = l.min(l.max(acc[u][c], p.lo[c]), p.hi[c]);
+}
+
+/// Runs the Taylor kernel for degree `N1 - 1`.
+#[inline(always)]
+fn taylor<L: Lanes, P: Params, const CH: usize, const N1: usize>(
+    l: L,
+    coeffs: &Coeffs,
+    params: &P,
+    out: &mut [&mut [f64]; CH],
+) {
+    const { assert!(N1 - 1 <= TAYLOR_MAX_DEGREE) };
+    drive::<L, P, _, CH, TAYLOR_STEP>(l, &Taylor::<L, CH, N1>::new(l, coeffs), params, out);
+}
+
+/// The Taylor kernel for degree `N1 - 1` (see the module docs): Horner's rule in `t` about
+/// `t = 0` for the lanes with `t <= 1/2`, in `s = 1 - t` about `t = 1` for the others.
+struct Taylor<L: Lanes, const CH: usize, const N1: usize> {
+    /// Coefficients about `t = 0`, per channel.
+    low: [[L::V; N1]; CH],
+    /// Coefficients about `t = 1` (in powers of `s`), per channel.
+    high: [[L::V; N1]; CH],
+    lo: [L::V; CH],
+    hi: [L::V; CH],
+}
+
+impl<L: Lanes, const CH: usize, const N1: usize> Taylor<L, CH, N1> {
+    #[inline(always)]
+    fn new(l: L, coeffs: &Coeffs) -> Self {
+        debug_assert_eq!(coeffs.taylor.len(), 2 * CH * N1);
+        let at = |half: usize, c: usize, k: usize| l.splat(coeffs.taylor[(half * CH + c) * N1 + k]);
+        Taylor {
+            low: core::array::from_fn(|c| core::array::from_fn(|k| at(0, c, k))),
+            high: core::array::from_fn(|c| core::array::from_fn(|k| at(1, c, k))),
+            lo: core::array::from_fn(|c| l.splat(coeffs.lo[c])),
+            hi: core::array::from_fn(|c| l.splat(coeffs.hi[c])),
         }
     }
-    acc
+}
+
+/// Channel `c` of `sum_k a[k] x^k` by Horner's rule (a multiply-add per coefficient) at the
+/// `U` vectors `x`, interleaved so that each coefficient is loaded once per step: with the
+/// coefficients operands in memory, loads are what limits this kernel.
+#[inline(always)]
+fn horner<L: Lanes, const CH: usize, const N1: usize, const U: usize>(
+    l: L,
+    a: &[[L::V; N1]; CH],
+    c: usize,
+    x: &[L::V; U],
+) -> [L::V; U] {
+    let mut v = [a[c][N1 - 1]; U];
+    for k in (0..N1 - 1).rev() {
+        for u in 0..U {
+            v[u] = l.mul_add(v[u], x[u], a[c][k]);
+        }
+    }
+    v
+}
+
+impl<L: Lanes, const CH: usize, const N1: usize> Kernel<L, CH> for Taylor<L, CH, N1> {
+    #[inline(always)]
+    fn step<P: Params, S: Sink<L>, const U: usize>(
+        &self,
+        l: L,
+        params: &P,
+        offset: usize,
+        sink: &mut S,
+    ) {
+        let one = l.splat(1.0);
+        let ts: [L::V; U] = core::array::from_fn(|u| params.vector(l, offset + u * L::LANES));
+        // `1 - t` is exact for `t` in [1/2, 1] (Sterbenz).
+        let ss = ts.map(|t| l.sub(one, t));
+        let side = params.side::<L>(offset, U * L::LANES);
+        if side != Side::Mixed {
+            let (a, x) = if side == Side::Low {
+                (&self.low, &ts)
+            } else {
+                (&self.high, &ss)
+            };
+            for c in 0..CH {
+                let v = horner(l, a, c, x);
+                for u in 0..U {
+                    sink.put(l, c, u, l.min(l.max(v[u], self.lo[c]), self.hi[c]));
+                }
+            }
+        } else {
+            let half = l.splat(0.5);
+            for c in 0..CH {
+                let below = horner(l, &self.low, c, &ts);
+                let above = horner(l, &self.high, c, &ss);
+                for u in 0..U {
+                    let v = l.select_le(ts[u], half, below[u], above[u]);
+                    sink.put(l, c, u, l.min(l.max(v, self.lo[c]), self.hi[c]));
+                }
+            }
+        }
+    }
 }
 
 /// Lane-parallel de Casteljau, channel by channel, in the operation order of

@@ -34,6 +34,8 @@ pub(crate) trait Lanes: Copy {
     fn min(self, a: Self::V, b: Self::V) -> Self::V;
     /// Lane-wise maximum (inputs are never NaN in the kernels).
     fn max(self, a: Self::V, b: Self::V) -> Self::V;
+    /// Per lane: `if_le` where `t <= bound`, `otherwise` elsewhere.
+    fn select_le(self, t: Self::V, bound: Self::V, if_le: Self::V, otherwise: Self::V) -> Self::V;
     /// The lanes `0, 1, ..., LANES - 1`.
     fn iota(self) -> Self::V;
     /// Loads `src[..LANES]`.
@@ -102,6 +104,16 @@ impl Lanes for Portable {
     #[inline(always)]
     fn max(self, a: Self::V, b: Self::V) -> Self::V {
         zip!(a, b, |x, y| if x > y { x } else { y })
+    }
+    #[inline(always)]
+    fn select_le(self, t: Self::V, bound: Self::V, if_le: Self::V, otherwise: Self::V) -> Self::V {
+        let mut r = otherwise;
+        for i in 0..P {
+            if t[i] <= bound[i] {
+                r[i] = if_le[i];
+            }
+        }
+        r
     }
     #[inline(always)]
     fn iota(self) -> Self::V {
@@ -176,6 +188,11 @@ impl<S: pulp::Simd> Lanes for Pulp<S> {
     #[inline(always)]
     fn max(self, a: Self::V, b: Self::V) -> Self::V {
         self.0.max_f64s(a, b)
+    }
+    #[inline(always)]
+    fn select_le(self, t: Self::V, bound: Self::V, if_le: Self::V, otherwise: Self::V) -> Self::V {
+        let mask = self.0.less_than_or_equal_f64s(t, bound);
+        self.0.select_f64s(mask, if_le, otherwise)
     }
     #[inline(always)]
     fn iota(self) -> Self::V {
@@ -295,7 +312,7 @@ mod tests {
         fn run<L: Lanes>(self, l: L) -> Vec<f64> {
             let a = l.iota();
             let b = l.splat(2.0);
-            let mut out = vec![0.0; 8 * L::LANES];
+            let mut out = vec![0.0; 9 * L::LANES];
             let results = [
                 l.add(a, b),
                 l.sub(a, b),
@@ -305,6 +322,7 @@ mod tests {
                 l.min(a, b),
                 l.max(a, b),
                 l.load(&[5.0; 16]),
+                l.select_le(a, b, a, l.splat(-1.0)),
             ];
             for (chunk, v) in out.chunks_exact_mut(L::LANES).zip(results) {
                 l.store(chunk, v);
@@ -320,9 +338,9 @@ mod tests {
     fn lanes_operations_agree_between_paths() {
         let fast = dispatch(Ops);
         let portable = dispatch_portable(Ops);
-        let lanes = (fast.len() - 1) / 8;
+        let lanes = (fast.len() - 1) / 9;
         // Compare lane by lane, the first four lanes of each result.
-        for r in 0..8 {
+        for r in 0..9 {
             for i in 0..4.min(lanes) {
                 assert_eq!(fast[r * lanes + i], portable[r * 4 + i], "op {r} lane {i}");
             }
@@ -330,6 +348,7 @@ mod tests {
         assert_eq!(portable[..4], [2.0, 3.0, 4.0, 5.0]);
         assert_eq!(portable[4 * 5..4 * 6], [0.0, 1.0, 2.0, 2.0]);
         assert_eq!(portable[4 * 6..4 * 7], [2.0, 2.0, 2.0, 3.0]);
+        assert_eq!(portable[4 * 8..4 * 9], [0.0, 1.0, 2.0, -1.0]);
         assert_eq!(*portable.last().unwrap(), 7.0);
         assert_eq!(*fast.last().unwrap(), 7.0);
     }
