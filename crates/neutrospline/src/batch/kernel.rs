@@ -429,7 +429,10 @@ trait Kernel<L: Lanes, const CH: usize> {
 }
 
 /// The Bernstein-weight kernel for degree `binomials.len() - 1 < W`.
-#[inline(always)]
+// Inlined into the dispatcher's target-feature function in optimised builds; a function of
+// its own in unoptimised ones, whose frames are not merged: inlining every kernel there made
+// one frame large enough to overflow a test thread's stack.
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn run<L: Lanes, P: Params, const CH: usize, const W: usize>(
     l: L,
     coeffs: &Coeffs,
@@ -551,7 +554,8 @@ impl<L: Lanes, const CH: usize, const W: usize> Kernel<L, CH> for Prepared<L, CH
 }
 
 /// Runs the Taylor kernel for degree `N1 - 1`.
-#[inline(always)]
+// Inlining: as for `run`.
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn taylor<L: Lanes, P: Params, const CH: usize, const N1: usize>(
     l: L,
     coeffs: &Coeffs,
@@ -648,7 +652,8 @@ impl<L: Lanes, const CH: usize, const N1: usize> Kernel<L, CH> for Taylor<L, CH,
 
 /// Lane-parallel de Casteljau, channel by channel, in the operation order of
 /// [`crate::bernstein::lerp`]: `s a + t b` projected onto `[min(a, b), max(a, b)]`.
-#[inline(always)]
+// Inlining: as for `run`.
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn casteljau<L: Lanes, P: Params, const CH: usize>(
     l: L,
     coeffs: &Coeffs,
