@@ -463,8 +463,7 @@ struct Prepared<L: Lanes, const CH: usize, const W: usize> {
     /// Channel-major, `count` per channel. On the heap: an array of `CH * W` vectors (25 KiB
     /// for AVX-512 at `W = 65`) overflowed test threads' stacks in unoptimised builds.
     values: Vec<L::V>,
-    lo: [L::V; CH],
-    hi: [L::V; CH],
+    range: Range<L, CH>,
 }
 
 impl<L: Lanes, const CH: usize, const W: usize> Prepared<L, CH, W> {
@@ -477,17 +476,12 @@ impl<L: Lanes, const CH: usize, const W: usize> Prepared<L, CH, W> {
             n,
             binomials: [zero; W],
             values: values.iter().map(|&v| l.splat(v)).collect(),
-            lo: [zero; CH],
-            hi: [zero; CH],
+            range: Range::new(l, coeffs),
         };
         for i in 0..count {
             prepared.binomials[i] = l.splat(binomials[i]);
         }
         debug_assert_eq!(prepared.values.len(), CH * count);
-        for c in 0..CH {
-            prepared.lo[c] = l.splat(coeffs.lo[c]);
-            prepared.hi[c] = l.splat(coeffs.hi[c]);
-        }
         prepared
     }
 }
@@ -547,9 +541,31 @@ impl<L: Lanes, const CH: usize, const W: usize> Kernel<L, CH> for Prepared<L, CH
         }
         for c in 0..CH {
             for u in 0..U {
-                sink.put(l, c, u, l.min(l.max(acc[u][c], p.lo[c]), p.hi[c]));
+                sink.put(l, c, u, p.range.project(l, c, acc[u][c]));
             }
         }
+    }
+}
+
+/// The control range of every channel, broadcast: `[min_i c_{c,i}, max_i c_{c,i}]`.
+struct Range<L: Lanes, const CH: usize> {
+    lo: [L::V; CH],
+    hi: [L::V; CH],
+}
+
+impl<L: Lanes, const CH: usize> Range<L, CH> {
+    #[inline(always)]
+    fn new(l: L, coeffs: &Coeffs) -> Self {
+        Range {
+            lo: core::array::from_fn(|c| l.splat(coeffs.lo[c])),
+            hi: core::array::from_fn(|c| l.splat(coeffs.hi[c])),
+        }
+    }
+
+    /// `v` projected onto channel `c`'s range.
+    #[inline(always)]
+    fn project(&self, l: L, c: usize, v: L::V) -> L::V {
+        l.min(l.max(v, self.lo[c]), self.hi[c])
     }
 }
 
@@ -573,8 +589,7 @@ struct Taylor<L: Lanes, const CH: usize, const N1: usize> {
     low: [[L::V; N1]; CH],
     /// Coefficients about `t = 1` (in powers of `s`), per channel.
     high: [[L::V; N1]; CH],
-    lo: [L::V; CH],
-    hi: [L::V; CH],
+    range: Range<L, CH>,
 }
 
 impl<L: Lanes, const CH: usize, const N1: usize> Taylor<L, CH, N1> {
@@ -585,8 +600,7 @@ impl<L: Lanes, const CH: usize, const N1: usize> Taylor<L, CH, N1> {
         Taylor {
             low: core::array::from_fn(|c| core::array::from_fn(|k| at(0, c, k))),
             high: core::array::from_fn(|c| core::array::from_fn(|k| at(1, c, k))),
-            lo: core::array::from_fn(|c| l.splat(coeffs.lo[c])),
-            hi: core::array::from_fn(|c| l.splat(coeffs.hi[c])),
+            range: Range::new(l, coeffs),
         }
     }
 }
@@ -622,28 +636,30 @@ impl<L: Lanes, const CH: usize, const N1: usize> Kernel<L, CH> for Taylor<L, CH,
         let one = l.splat(1.0);
         let ts: [L::V; U] = core::array::from_fn(|u| params.vector(l, offset + u * L::LANES));
         // `1 - t` is exact for `t` in [1/2, 1] (Sterbenz).
-        let ss = ts.map(|t| l.sub(one, t));
+        let ss = || ts.map(|t| l.sub(one, t));
         let side = params.side::<L>(offset, U * L::LANES);
         if side != Side::Mixed {
             let (a, x) = if side == Side::Low {
-                (&self.low, &ts)
+                (&self.low, ts)
             } else {
-                (&self.high, &ss)
+                (&self.high, ss())
             };
+            let x = &x;
             for c in 0..CH {
                 let v = horner(l, a, c, x);
                 for u in 0..U {
-                    sink.put(l, c, u, l.min(l.max(v[u], self.lo[c]), self.hi[c]));
+                    sink.put(l, c, u, self.range.project(l, c, v[u]));
                 }
             }
         } else {
             let half = l.splat(0.5);
+            let ss = ss();
             for c in 0..CH {
                 let below = horner(l, &self.low, c, &ts);
                 let above = horner(l, &self.high, c, &ss);
                 for u in 0..U {
                     let v = l.select_le(ts[u], half, below[u], above[u]);
-                    sink.put(l, c, u, l.min(l.max(v, self.lo[c]), self.hi[c]));
+                    sink.put(l, c, u, self.range.project(l, c, v));
                 }
             }
         }
