@@ -10,6 +10,7 @@ pub mod fuzzing;
 pub mod input;
 pub mod limits;
 pub mod output;
+pub mod progress;
 pub mod shape;
 pub mod signals;
 

@@ -695,3 +695,99 @@ fn closed_stdout_ends_quietly() {
     assert_eq!(out.status.code(), Some(0), "{stderr}");
     assert!(stderr.is_empty(), "{stderr}");
 }
+
+/// A long `eval` shows a progress bar on a terminal's standard error (a pseudo-terminal from
+/// util-linux `script`), counting to the row total, and clears it; the table is complete.
+#[test]
+fn progress_bar_on_a_terminal_only() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let model = examples_dir().join("example1.csv");
+    let table = dir.path().join("table.csv");
+    let rows = 1_000_000;
+    let command = format!(
+        "'{BIN}' eval '{}' --samples {rows} -o '{}'",
+        model.display(),
+        table.display()
+    );
+    let out = Command::new("script")
+        .args(["--quiet", "--return", "--command", &command, "/dev/null"])
+        .stdin(Stdio::null())
+        .output()
+        .expect("util-linux `script` runs");
+    let terminal = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{terminal}");
+    assert!(
+        terminal.contains("/1,000,000 rows, ") && terminal.contains(" M rows/s, "),
+        "no progress bar in {terminal:?}"
+    );
+    // Cleared at the end: the last thing drawn erases the line.
+    assert!(
+        terminal
+            .trim_end_matches(['\r', '\n'])
+            .ends_with("\u{1b}[2K"),
+        "bar not cleared: {:?}",
+        &terminal[terminal.len().saturating_sub(200)..]
+    );
+    let written = std::fs::read_to_string(&table).expect("table written");
+    assert_eq!(written.lines().count(), rows + 1);
+    assert_eq!(written.lines().last(), Some("1,9,5,0.2,0.4,0.4"));
+
+    // Standard error not a terminal: nothing on it.
+    let out = run_in(
+        &examples_dir(),
+        &[
+            "eval",
+            "example1.csv",
+            "--samples",
+            "1000000",
+            "-o",
+            table.to_str().expect("UTF-8 path"),
+        ],
+        None,
+    );
+    assert_eq!((out.code, out.stderr.as_str()), (0, ""));
+}
+
+/// `eval` streams: its peak resident memory (VmHWM, polled from /proc while it runs) stays
+/// far below the size of the table it writes (2,000,000 rows, about 190 MB of CSV).
+#[test]
+fn eval_memory_stays_flat() {
+    let mut child = Command::new(BIN)
+        .args([
+            "eval",
+            "example1.csv",
+            "--samples",
+            "2000000",
+            "-o",
+            "/dev/null",
+        ])
+        .current_dir(examples_dir())
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    let status = format!("/proc/{}/status", child.id());
+    let mut peak_kib = 0u64;
+    let mut readings = 0;
+    while child.try_wait().expect("child state").is_none() {
+        let hwm = std::fs::read_to_string(&status).ok().and_then(|s| {
+            s.lines()
+                .find_map(|l| l.strip_prefix("VmHWM:"))
+                .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<u64>().ok())
+        });
+        if let Some(kib) = hwm {
+            peak_kib = peak_kib.max(kib);
+            readings += 1;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    let out = child.wait_with_output().expect("binary finishes");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(readings > 10, "only {readings} readings");
+    assert!(peak_kib < 32 * 1024, "peak resident memory {peak_kib} KiB");
+}

@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use crate::commands::options::ModelArgs;
 use crate::input::{self, UsageError};
 use crate::output::{self, TableFormat};
+use crate::progress::Progress;
 use crate::shape::{Extras, Param, Shape};
 
 /// Arguments of `eval`.
@@ -21,7 +22,10 @@ The domain of a curve is [knot_p, knot_{m-p}] ([0, 1] for Bezier curves and for 
 clamped-uniform knots); `neutrospline check FILE` prints it.\n\
 Model options: a CSV file lists control points only, so these give its kind, degree, knots and\n\
 grid; with a TOML/JSON file an option fills in a key the file leaves out, and must agree with\n\
-the file where it declares the key.")]
+the file where it declares the key.\n\
+Progress: a job of 100,000 rows or more that runs longer than 0.4 s shows a progress bar on\n\
+standard error when that is a terminal (and the table is not printed on it); it is cleared at\n\
+the end.")]
 pub struct EvalArgs {
     /// The model file: .csv, .toml or .json; `-` reads CSV from standard input
     #[arg(value_name = "FILE")]
@@ -206,7 +210,9 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         ))
         .into());
     }
+    let mut progress = Progress::new(count, args.output.is_none());
     let rows = parameters(args, &shape).map(|param| {
+        progress.tick();
         let cannot =
             |e: &dyn std::fmt::Display| anyhow::anyhow!("{file}: cannot evaluate at {param}: {e}");
         let row = sampler.row(param).map_err(|e| cannot(&e))?;
