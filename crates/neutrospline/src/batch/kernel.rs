@@ -17,9 +17,13 @@
 //!   the control values once per curve, `C(n, i) c_{c,i}`, unless a product overflows), then
 //!   one dot product per channel, `v_c = sum_i w_i c_{c,i}`. O(n) per parameter and channel
 //!   instead of de Casteljau's O(n^2), with no binomial coefficient near overflow
-//!   (`C(64, 32) < 2^61`) and no cancellation: every weight is a product of non-negative
-//!   factors, each with a relative error of at most `(n + 3) u` (`u = 2^-53`), so
-//!   `|computed - exact| <= (2n + 4) u max_i |c_{c,i}|` per channel. De Casteljau's error is
+//!   (`C(1000, 500) < 2^995`; a power `t^i` that underflows belongs to a weight below
+//!   `2^-1022 C(n, i)`, negligible) and no cancellation: every weight is a product of
+//!   non-negative factors, the powers with a relative error of at most `(n + 3) u`
+//!   (`u = 2^-53`) and the binomial coefficients exact up to degree 67 and within
+//!   `(n - 66) u` above, so `|computed - exact| <= 3n u max_i |c_{c,i}|` per channel
+//!   (`(2n + 4) u` up to degree 67). Up to degree 64 the weights are kept in arrays on the
+//!   stack, above in a scratch buffer. De Casteljau's error is
 //!   of the same order, so the two agree to a few `n u max |c|` (tested to 1e-14 up to degree
 //!   15, 1e-12 up to 400; the worst measured is about `1.5 n u`). At `t = 0` and `t = 1` the
 //!   weights are exactly `(1, 0, ..., 0)` and `(0, ..., 0, 1)` (and `C(n, 0) = C(n, n) = 1`),
@@ -28,7 +32,7 @@
 //!   non-negative with unit sum, so that interval contains the exact value: the projection
 //!   only removes rounding excursions (it can only move a value closer to the exact one) and
 //!   it is what keeps every degree within its control range, inside \[0, 1\].
-//! - **de Casteljau** (higher degrees): the recurrence of [`crate::bernstein`], lane-parallel,
+//! - **de Casteljau** (above degree 1000): the recurrence of [`crate::bernstein`], lane-parallel,
 //!   with the same operation order and the same projection of every convex combination, so
 //!   its results are bit-identical to the scalar evaluation.
 
@@ -36,6 +40,10 @@ use super::lanes::Lanes;
 
 /// Highest degree evaluated with Bernstein weights; de Casteljau above it.
 pub(crate) const DIRECT_MAX_DEGREE: usize = super::BATCH_DIRECT_MAX_DEGREE;
+
+/// Highest degree whose Bernstein weights are kept in arrays on the stack ([`Prepared`]);
+/// above, up to [`DIRECT_MAX_DEGREE`], in a scratch buffer ([`weights_long`]).
+const STACK_MAX_DEGREE: usize = 64;
 
 /// Highest degree with a kernel compiled for it (unrolled, binomials folded in).
 const FIXED_MAX_DEGREE: usize = 15;
@@ -152,17 +160,26 @@ fn taylor_row(row: impl Iterator<Item = f64>) -> Vec<f64> {
     coefficients
 }
 
-/// `C(n, i)`, `i = 0 ..= n`, by Pascal's rule in exact integers, each rounded once to `f64`.
-/// Exact in `u64` for `n <= 67`.
+/// `C(n, i)`, `i = 0 ..= n`, by Pascal's rule: in exact integers up to row 67 (the last
+/// that fits in `u64`), each rounded once to `f64`, then in `f64`. Sums of positive terms, so
+/// row `n > 67` has a relative error of at most `(n - 66) u`; finite up to `n = 1029`.
 fn binomial_row(n: usize) -> Vec<f64> {
-    let mut row = vec![0u64; n + 1];
-    row[0] = 1;
-    for k in 1..=n {
+    const EXACT_ROWS: usize = 67;
+    let mut exact = vec![0u64; n.min(EXACT_ROWS) + 1];
+    exact[0] = 1;
+    for k in 1..exact.len() {
+        for i in (1..=k).rev() {
+            exact[i] += exact[i - 1];
+        }
+    }
+    let mut row: Vec<f64> = exact.into_iter().map(|c| c as f64).collect();
+    for k in EXACT_ROWS + 1..=n {
+        row.push(0.0);
         for i in (1..=k).rev() {
             row[i] += row[i - 1];
         }
     }
-    row.into_iter().map(|c| c as f64).collect()
+    row
 }
 
 /// A run of parameters, read one vector at a time.
@@ -280,10 +297,11 @@ pub(crate) fn evaluate<L: Lanes, P: Params, const CH: usize>(
                     let ones = [1.0; $w + 1];
                     run::<L, P, CH, { $w + 1 }>(l, coeffs, &coeffs.scaled, &ones, params, out)
                 })*
-                n if n <= DIRECT_MAX_DEGREE => {
+                n if n <= STACK_MAX_DEGREE => {
                     let (values, binomials) = (&coeffs.values, &coeffs.binomials);
                     run::<L, P, CH, MAX_WEIGHTS>(l, coeffs, values, binomials, params, out)
                 }
+                n if n <= DIRECT_MAX_DEGREE => weights_long(l, coeffs, params, out, scratch),
                 _ => casteljau(l, coeffs, params, out, scratch),
             }
         };
@@ -298,8 +316,8 @@ fn constant<const CH: usize>(coeffs: &Coeffs, out: &mut [&mut [f64]; CH]) {
     }
 }
 
-/// Upper bound on the powers kept on the stack: `DIRECT_MAX_DEGREE + 1`.
-const MAX_WEIGHTS: usize = DIRECT_MAX_DEGREE + 1;
+/// Upper bound on the powers kept on the stack: `STACK_MAX_DEGREE + 1`.
+const MAX_WEIGHTS: usize = STACK_MAX_DEGREE + 1;
 
 /// Runs `kernel` over the whole output: `U` vectors of parameters per step, then the rest one
 /// vector at a time (the last one partial).
@@ -666,6 +684,65 @@ impl<L: Lanes, const CH: usize, const N1: usize> Kernel<L, CH> for Taylor<L, CH,
     }
 }
 
+/// The Bernstein-weight kernel above [`STACK_MAX_DEGREE`]: the weights and dot products of
+/// [`Prepared`], in the same order (so with the same results), one vector of parameters at a
+/// time, the weights in `scratch`; the channels' dot products run side by side, `CH`
+/// independent chains of multiply-adds.
+// Inlining: as for `run`.
+#[cfg_attr(not(debug_assertions), inline(always))]
+fn weights_long<L: Lanes, P: Params, const CH: usize>(
+    l: L,
+    coeffs: &Coeffs,
+    params: &P,
+    out: &mut [&mut [f64]; CH],
+    scratch: &mut Vec<L::V>,
+) {
+    let n = coeffs.degree;
+    let count = n + 1;
+    let len = out[0].len();
+    let range = Range::<L, CH>::new(l, coeffs);
+    let one = l.splat(1.0);
+    scratch.clear();
+    scratch.resize(2 * count, one);
+    let (weights, powers_s) = scratch.split_at_mut(count);
+    let mut k = 0;
+    while k < len {
+        let t = params.vector(l, k);
+        let s = l.sub(one, t);
+        // C(n, i) t^i and s^j, then w_i = (C(n, i) t^i) s^(n-i).
+        let (mut power_t, mut power_s) = (one, one);
+        for ((w, p), &binomial) in weights
+            .iter_mut()
+            .zip(powers_s.iter_mut())
+            .zip(&coeffs.binomials)
+        {
+            *w = l.mul(l.splat(binomial), power_t);
+            *p = power_s;
+            power_t = l.mul(power_t, t);
+            power_s = l.mul(power_s, s);
+        }
+        for (w, &p) in weights.iter_mut().zip(powers_s.iter().rev()) {
+            *w = l.mul(*w, p);
+        }
+        let mut acc: [L::V; CH] =
+            core::array::from_fn(|c| l.mul(weights[0], l.splat(coeffs.values[c * count])));
+        for (i, &w) in weights.iter().enumerate().skip(1) {
+            for (c, a) in acc.iter_mut().enumerate() {
+                *a = l.mul_add(w, l.splat(coeffs.values[c * count + i]), *a);
+            }
+        }
+        for (c, a) in acc.into_iter().enumerate() {
+            let v = range.project(l, c, a);
+            if k + L::LANES <= len {
+                l.store(&mut out[c][k..], v);
+            } else {
+                l.store_partial(&mut out[c][k..], v);
+            }
+        }
+        k += L::LANES;
+    }
+}
+
 /// Lane-parallel de Casteljau, channel by channel, in the operation order of
 /// [`crate::bernstein::lerp`]: `s a + t b` projected onto `[min(a, b), max(a, b)]`.
 // Inlining: as for `run`.
@@ -719,5 +796,21 @@ mod tests {
         let row = binomial_row(64);
         assert_eq!(row[32], 1_832_624_140_942_590_534u64 as f64);
         assert_eq!(binomial_row(0), [1.0]);
+        // Above row 67 in `f64`: within `(n - 66) u` of the exact value (Python's
+        // `float(math.comb(n, k))`, the nearest `f64`).
+        let u = f64::EPSILON / 2.0;
+        for (n, k, exact) in [
+            (68, 34, 2.845_304_147_524_057_5e19),
+            (100, 50, 1.008913445455642e29),
+            (1000, 3, 166167000.0),
+            (1000, 500, 2.7028824094543655e299),
+        ] {
+            let row = binomial_row(n);
+            assert_eq!(row.len(), n + 1);
+            assert_eq!((row[0], row[n], row[1]), (1.0, 1.0, n as f64));
+            let error = (row[k] - exact).abs() / exact;
+            assert!(error <= (n - 66) as f64 * u, "C({n}, {k}): {error:e}");
+            assert_eq!(row[k], row[n - k]);
+        }
     }
 }
