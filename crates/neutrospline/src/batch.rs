@@ -526,7 +526,7 @@ mod tests {
 
     #[test]
     fn batch_every_kernel_matches_scalar() {
-        // Degrees through each fixed kernel, the stack and scratch weight kernels and
+        // Degrees through the Taylor and fixed kernels, the scratch-buffer weight kernel and
         // de Casteljau; odd counts exercise the partial last vector.
         for n in [0, 1, 2, 3, 5, 7, 15, 16, 40, 64, 65, 90, 1000, 1001] {
             let curve = curve_of_degree(n);

@@ -22,9 +22,9 @@
 //!   non-negative factors, the powers with a relative error of at most `(n + 3) u`
 //!   (`u = 2^-53`) and the binomial coefficients exact up to degree 67 and within
 //!   `(n - 66) u` above, so `|computed - exact| <= 3n u max_i |c_{c,i}|` per channel
-//!   (`(2n + 4) u` up to degree 67). Up to degree 64 the weights are kept in arrays on the
-//!   stack, above in a scratch buffer. De Casteljau's error is
-//!   of the same order, so the two agree to a few `n u max |c|` (tested to 1e-14 up to degree
+//!   (`(2n + 4) u` up to degree 67). Up to degree [`FIXED_MAX_DEGREE`] a kernel compiled per
+//!   degree keeps everything in registers; above, [`weights_long`] keeps the weights in a
+//!   scratch buffer. De Casteljau's error is of the same order, so the two agree to a few `n u max |c|` (tested to 1e-14 up to degree
 //!   15, 1e-12 up to 400; the worst measured is about `1.5 n u`). At `t = 0` and `t = 1` the
 //!   weights are exactly `(1, 0, ..., 0)` and `(0, ..., 0, 1)` (and `C(n, 0) = C(n, n) = 1`),
 //!   so the end control values come out exactly.
@@ -40,10 +40,6 @@ use super::lanes::Lanes;
 
 /// Highest degree evaluated with Bernstein weights; de Casteljau above it.
 pub(crate) const DIRECT_MAX_DEGREE: usize = super::BATCH_DIRECT_MAX_DEGREE;
-
-/// Highest degree whose Bernstein weights are kept in arrays on the stack ([`Prepared`]);
-/// above, up to [`DIRECT_MAX_DEGREE`], in a scratch buffer ([`weights_long`]).
-const STACK_MAX_DEGREE: usize = 64;
 
 /// Highest degree with a kernel compiled for it (unrolled, binomials folded in).
 const FIXED_MAX_DEGREE: usize = 15;
@@ -297,10 +293,6 @@ pub(crate) fn evaluate<L: Lanes, P: Params, const CH: usize>(
                     let ones = [1.0; $w + 1];
                     run::<L, P, CH, { $w + 1 }>(l, coeffs, &coeffs.scaled, &ones, params, out)
                 })*
-                n if n <= STACK_MAX_DEGREE => {
-                    let (values, binomials) = (&coeffs.values, &coeffs.binomials);
-                    run::<L, P, CH, MAX_WEIGHTS>(l, coeffs, values, binomials, params, out)
-                }
                 n if n <= DIRECT_MAX_DEGREE => weights_long(l, coeffs, params, out, scratch),
                 _ => casteljau(l, coeffs, params, out, scratch),
             }
@@ -315,9 +307,6 @@ fn constant<const CH: usize>(coeffs: &Coeffs, out: &mut [&mut [f64]; CH]) {
         channel.fill(coeffs.values[c]);
     }
 }
-
-/// Upper bound on the powers kept on the stack: `STACK_MAX_DEGREE + 1`.
-const MAX_WEIGHTS: usize = STACK_MAX_DEGREE + 1;
 
 /// Runs `kernel` over the whole output: `U` vectors of parameters per step, then the rest one
 /// vector at a time (the last one partial).
@@ -478,8 +467,8 @@ struct Prepared<L: Lanes, const CH: usize, const W: usize> {
     /// Polynomial degree.
     n: usize,
     binomials: [L::V; W],
-    /// Channel-major, `count` per channel. On the heap: an array of `CH * W` vectors (25 KiB
-    /// for AVX-512 at `W = 65`) overflowed test threads' stacks in unoptimised builds.
+    /// Channel-major, `count` per channel. On the heap: arrays of `CH * W` vectors overflowed
+    /// test threads' stacks in unoptimised builds (when `W` went up to 65).
     values: Vec<L::V>,
     range: Range<L, CH>,
 }
@@ -684,10 +673,11 @@ impl<L: Lanes, const CH: usize, const N1: usize> Kernel<L, CH> for Taylor<L, CH,
     }
 }
 
-/// The Bernstein-weight kernel above [`STACK_MAX_DEGREE`]: the weights and dot products of
-/// [`Prepared`], in the same order (so with the same results), one vector of parameters at a
-/// time, the weights in `scratch`; the channels' dot products run side by side, `CH`
-/// independent chains of multiply-adds.
+/// The Bernstein-weight kernel above [`FIXED_MAX_DEGREE`] (and wherever the binomials cannot
+/// be folded into the control values): the weights and dot products of [`Prepared`], in the
+/// same order, one vector of parameters at a time, the weights in `scratch`; the channels' dot
+/// products run side by side, `CH` independent chains of multiply-adds. (It replaced
+/// `Prepared` with 65-vector arrays for degrees 16 to 64: 1.2x to 2.1x faster there.)
 // Inlining: as for `run`.
 #[cfg_attr(not(debug_assertions), inline(always))]
 fn weights_long<L: Lanes, P: Params, const CH: usize>(
