@@ -17,8 +17,8 @@ pub enum TableFormat {
     Json,
 }
 
-/// A number in the shortest form that reads back to the same `f64` (Rust's `Display`: never an
-/// exponent, so every CSV or JSON reader parses it).
+/// A number in the shortest form that reads back to the same `f64`, in the form of Rust's
+/// `Display` (never an exponent, so every CSV or JSON reader parses it); see [`push_number`].
 pub fn number(v: f64) -> String {
     let mut text = Vec::with_capacity(24);
     push_number(&mut text, v);

@@ -290,8 +290,7 @@ pub(crate) fn evaluate<L: Lanes, P: Params, const CH: usize>(
                 // weight. (`scaled` is empty in the rare case a product overflows.)
                 $($w if !coeffs.scaled.is_empty() => {
                     const { assert!($w <= FIXED_MAX_DEGREE) };
-                    let ones = [1.0; $w + 1];
-                    run::<L, P, CH, { $w + 1 }>(l, coeffs, &coeffs.scaled, &ones, params, out)
+                    run::<L, P, CH, { $w + 1 }>(l, coeffs, params, out)
                 })*
                 n if n <= DIRECT_MAX_DEGREE => weights_long(l, coeffs, params, out, scratch),
                 _ => casteljau(l, coeffs, params, out, scratch),
@@ -435,7 +434,8 @@ trait Kernel<L: Lanes, const CH: usize> {
     );
 }
 
-/// The Bernstein-weight kernel for degree `binomials.len() - 1 < W`.
+/// The Bernstein-weight kernel for degree `W - 1`, the binomial coefficients folded into the
+/// control values (`coeffs.scaled`).
 // Inlined into the dispatcher's target-feature function in optimised builds; a function of
 // its own in unoptimised ones, whose frames are not merged: inlining every kernel there made
 // one frame large enough to overflow a test thread's stack.
@@ -443,12 +443,10 @@ trait Kernel<L: Lanes, const CH: usize> {
 fn run<L: Lanes, P: Params, const CH: usize, const W: usize>(
     l: L,
     coeffs: &Coeffs,
-    values: &[f64],
-    binomials: &[f64],
     params: &P,
     out: &mut [&mut [f64]; CH],
 ) {
-    let prepared = Prepared::<L, CH, W>::new(l, coeffs, values, binomials);
+    let prepared = Prepared::<L, CH, W>::new(l, coeffs);
     // Up to degree 7 one vector of parameters per step: the out-of-order core overlaps
     // consecutive steps. Above, the dot products are long chains of multiply-adds, and two
     // vectors per step (two independent chains per channel, sharing each coefficient load)
@@ -464,10 +462,7 @@ fn run<L: Lanes, P: Params, const CH: usize, const W: usize>(
 /// locals, they are not reloaded after every store to the output (which the compiler cannot
 /// prove does not alias them).
 struct Prepared<L: Lanes, const CH: usize, const W: usize> {
-    /// Polynomial degree.
-    n: usize,
-    binomials: [L::V; W],
-    /// Channel-major, `count` per channel. On the heap: arrays of `CH * W` vectors overflowed
+    /// `C(n, i) c_{c,i}`, channel-major, `W = n + 1` per channel. On the heap: arrays of `CH * W` vectors overflowed
     /// test threads' stacks in unoptimised builds (when `W` went up to 65).
     values: Vec<L::V>,
     range: Range<L, CH>,
@@ -475,26 +470,18 @@ struct Prepared<L: Lanes, const CH: usize, const W: usize> {
 
 impl<L: Lanes, const CH: usize, const W: usize> Prepared<L, CH, W> {
     #[inline(always)]
-    fn new(l: L, coeffs: &Coeffs, values: &[f64], binomials: &[f64]) -> Self {
-        let n = binomials.len() - 1;
-        let count = n + 1;
-        let zero = l.splat(0.0);
-        let mut prepared = Prepared {
-            n,
-            binomials: [zero; W],
-            values: values.iter().map(|&v| l.splat(v)).collect(),
+    fn new(l: L, coeffs: &Coeffs) -> Self {
+        debug_assert_eq!((coeffs.degree + 1, coeffs.scaled.len()), (W, CH * W));
+        Prepared {
+            values: coeffs.scaled.iter().map(|&v| l.splat(v)).collect(),
             range: Range::new(l, coeffs),
-        };
-        for i in 0..count {
-            prepared.binomials[i] = l.splat(binomials[i]);
         }
-        debug_assert_eq!(prepared.values.len(), CH * count);
-        prepared
     }
 }
 
 impl<L: Lanes, const CH: usize, const W: usize> Kernel<L, CH> for Prepared<L, CH, W> {
-    /// Per parameter the weights `w_i = (C(n, i) t^i) s^(n-i)`, a dot product per channel,
+    /// Per parameter the products `t^i s^(n-i)`, a dot product per channel with the scaled
+    /// control values `C(n, i) c_{c,i}`,
     /// then the projection onto the channel's control range (which contains the exact value:
     /// convex combination).
     #[inline(always)]
@@ -506,15 +493,14 @@ impl<L: Lanes, const CH: usize, const W: usize> Kernel<L, CH> for Prepared<L, CH
         sink: &mut S,
     ) {
         let p = self;
-        let n = p.n;
-        let count = n + 1;
+        let (n, count) = (W - 1, W);
         let one = l.splat(1.0);
         let zero = l.splat(0.0);
         let mut ts = [zero; U];
         for (u, t) in ts.iter_mut().enumerate() {
             *t = params.vector(l, offset + u * L::LANES);
         }
-        // C(n, i) t^i and s^j for i, j = 0 ..= n, per parameter vector, computed before the
+        // t^i and s^j for i, j = 0 ..= n, per parameter vector, computed before the
         // dot products so that their only loop-carried dependencies are the accumulators.
         let mut tp = [[one; W]; U];
         let mut sp = [[one; W]; U];
@@ -522,7 +508,7 @@ impl<L: Lanes, const CH: usize, const W: usize> Kernel<L, CH> for Prepared<L, CH
             let s = l.sub(one, ts[u]);
             let (mut power_t, mut power_s) = (one, one);
             for j in 0..count {
-                tp[u][j] = l.mul(p.binomials[j], power_t);
+                tp[u][j] = power_t;
                 sp[u][j] = power_s;
                 power_t = l.mul(power_t, ts[u]);
                 power_s = l.mul(power_s, s);
@@ -674,10 +660,10 @@ impl<L: Lanes, const CH: usize, const N1: usize> Kernel<L, CH> for Taylor<L, CH,
 }
 
 /// The Bernstein-weight kernel above [`FIXED_MAX_DEGREE`] (and wherever the binomials cannot
-/// be folded into the control values): the weights and dot products of [`Prepared`], in the
-/// same order, one vector of parameters at a time, the weights in `scratch`; the channels' dot
-/// products run side by side, `CH` independent chains of multiply-adds. (It replaced
-/// `Prepared` with 65-vector arrays for degrees 16 to 64: 1.2x to 2.1x faster there.)
+/// be folded into the control values): the weights `w_i = (C(n, i) t^i) s^(n-i)` in `scratch`,
+/// one vector of parameters at a time, then the channels' dot products side by side, `CH`
+/// independent chains of multiply-adds. (It replaced a [`Prepared`]-style kernel with
+/// 65-vector arrays for degrees 16 to 64: 1.2x to 2.1x faster there.)
 // Inlining: as for `run`.
 #[cfg_attr(not(debug_assertions), inline(always))]
 fn weights_long<L: Lanes, P: Params, const CH: usize>(
@@ -721,13 +707,9 @@ fn weights_long<L: Lanes, P: Params, const CH: usize>(
                 *a = l.mul_add(w, l.splat(coeffs.values[c * count + i]), *a);
             }
         }
+        let mut sink = Tail { out: &mut *out, k };
         for (c, a) in acc.into_iter().enumerate() {
-            let v = range.project(l, c, a);
-            if k + L::LANES <= len {
-                l.store(&mut out[c][k..], v);
-            } else {
-                l.store_partial(&mut out[c][k..], v);
-            }
+            sink.put(l, c, 0, range.project(l, c, a));
         }
         k += L::LANES;
     }
@@ -766,11 +748,7 @@ fn casteljau<L: Lanes, P: Params, const CH: usize>(
                     scratch[i] = l.min(l.max(v, l.min(a, b)), l.max(a, b));
                 }
             }
-            if k + L::LANES <= len {
-                l.store(&mut out[c][k..], scratch[0]);
-            } else {
-                l.store_partial(&mut out[c][k..], scratch[0]);
-            }
+            Tail { out: &mut *out, k }.put(l, c, 0, scratch[0]);
         }
         k += L::LANES;
     }
