@@ -13,6 +13,12 @@ busy moment of the machine does not favour one of them.
 Also measured by `neutrospline bench`: the memory-bandwidth reference (a tight loop writing
 the same five output arrays) and 1 versus 2 threads at 10,000,000 points.
 
+Splines: a seeded random clamped uniform B-spline of degree 3, 7 and 15 with 64 pieces (the
+curve of `neutrospline bench --kind bspline`), against scipy's `BSpline` on the same five
+channels; and the NURBS curve of `neutrospline bench --kind nurbs` (the same control points,
+weights in [0.5, 2]) against scipy's `BSpline` on the homogeneous channels (w x, w y, w T,
+w I, w F, w) followed by the division, the way a scipy user evaluates a NURBS curve.
+
 Usage:  python3 bench/compare.py [--points N] [--rounds R] [--out bench/results]
 
 The script installs its Python packages into a virtual environment (default
@@ -34,6 +40,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 PACKAGES = ["bezier", "numpy", "scipy", "threadpoolctl"]
 DEGREES = [3, 7, 15]
+PIECES = 64
 # The paper's Example 1 (Table 1): x, y, truth, indeterminacy, falsity per control point.
 EXAMPLE1 = [
     [1.0, 3.0, 0.3, 0.6, 0.1],
@@ -79,8 +86,8 @@ def ensure_venv(args):
     return subprocess.run(argv, env=env).returncode
 
 
-def random_curve(n, seed=1):
-    """The control points of `neutrospline bench --degree n --seed seed` (same xorshift)."""
+def generator(seed):
+    """The xorshift generator of `neutrospline bench` (uniform numbers in [0, 1))."""
     state = ((seed * 0x9E3779B97F4A7C15) & MASK) | 1
 
     def nxt():
@@ -90,11 +97,30 @@ def random_curve(n, seed=1):
         state ^= (state << 17) & MASK
         return (state >> 11) / float(1 << 53)
 
+    return nxt
+
+
+def random_rows(count, nxt):
     rows = []
-    for _ in range(n + 1):
+    for _ in range(count):
         x, y = 10.0 * nxt(), 10.0 * nxt()
         rows.append([x, y, nxt(), nxt(), nxt()])
     return rows
+
+
+def random_curve(n, seed=1):
+    """The control points of `neutrospline bench --degree n --seed seed` (same xorshift)."""
+    return random_rows(n + 1, generator(seed))
+
+
+def random_spline(p, pieces, seed=1):
+    """Knots, control rows and NURBS weights of `neutrospline bench --kind bspline|nurbs
+    --degree p --pieces pieces --seed seed` (clamped uniform knots on [0, 1])."""
+    nxt = generator(seed)
+    rows = random_rows(p + pieces, nxt)
+    weights = [2.0 ** (2.0 * nxt() - 1.0) for _ in rows]
+    knots = [0.0] * (p + 1) + [j / pieces for j in range(1, pieces)] + [1.0] * (p + 1)
+    return knots, rows, weights
 
 
 def machine():
@@ -152,11 +178,31 @@ def python_tools(np, nodes, points):
     }
 
 
-def neutrospline_bench(binary, degree, points, threads, runs):
+def spline_tools(np, p, points):
+    """The scipy evaluations of the bench B-spline and NURBS curves of degree p."""
+    from scipy.interpolate import BSpline
+
+    knots, rows, weights = random_spline(p, PIECES)
+    c = np.array(rows)
+    w = np.array(weights)
+    s = np.arange(points, dtype=float) / (points - 1)
+    plain = BSpline(np.array(knots), c, p)
+    homogeneous = BSpline(np.array(knots), np.c_[c * w[:, None], w], p)
+
+    def rational():
+        h = homogeneous(s)
+        return h[:, :5] / h[:, 5:6]
+
+    return {"scipy BSpline": lambda: plain(s),
+            "scipy BSpline, homogeneous + division": rational}
+
+
+def neutrospline_bench(binary, degree, points, threads, runs, kind="bezier"):
     out = subprocess.run(
         [
             str(binary), "bench", "--points", str(points), "--degree", str(degree),
             "--threads", str(threads), "--runs", str(runs), "--format", "json",
+            "--kind", kind, "--pieces", str(PIECES),
         ],
         capture_output=True, text=True, check=True,
     ).stdout
@@ -181,6 +227,7 @@ def main_inside(args):
         "numpy": np.__version__, "scipy": scipy.__version__,
     }
     rows = {}
+    splines = {}
     with threadpool_limits(limits=1):
         for degree in DEGREES:
             nodes = np.array(EXAMPLE1 if degree == 3 else random_curve(degree)).T.copy()
@@ -203,6 +250,18 @@ def main_inside(args):
                 if r["mpts_per_s"] > prev[0]:
                     best["neutrospline"] = (r["mpts_per_s"], r)
             rows[degree] = best
+        # Splines: neutrospline's B-spline and NURBS batches against scipy.
+        for degree in DEGREES:
+            tools = spline_tools(np, degree, points)
+            best = {}
+            for _ in range(args.rounds):
+                for name, fn in tools.items():
+                    best[name] = max(best.get(name, 0.0), best_rate(fn, points, args.runs))
+                for kind in ("bspline", "nurbs"):
+                    r = neutrospline_bench(binary, degree, points, 1, 2 * args.runs + 1, kind)
+                    if r["mpts_per_s"] > best.get(kind, (0.0, None))[0]:
+                        best[kind] = (r["mpts_per_s"], r)
+            splines[degree] = best
     # Threads: 1 vs 2 at 10,000,000 points, degree 3 (memory-bound) and 15 (compute-bound).
     scaling = {}
     for degree in (3, 15):
@@ -214,10 +273,10 @@ def main_inside(args):
                     res[threads] = r
         scaling[degree] = res
     info["load average at end"] = " ".join(f"{x:.2f}" for x in os.getloadavg())
-    report(args, info, blas, versions, rows, scaling, points)
+    report(args, info, blas, versions, rows, splines, scaling, points)
 
 
-def report(args, info, blas, versions, rows, scaling, points):
+def report(args, info, blas, versions, rows, splines, scaling, points):
     isa = rows[3]["neutrospline"][1]["instruction_set"]
     lines = []
     when = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
@@ -246,6 +305,27 @@ def report(args, info, blas, versions, rows, scaling, points):
             ours = rows[d]["neutrospline"][0]
             v = rows[d][name][0] if name == "neutrospline" else rows[d][name]
             ratio = "" if name == "neutrospline" else f"{ours / v:.1f}x"
+            cells.append(f" {v:.1f} | {ratio} |")
+        lines.append(f"| {name} |" + "".join(cells))
+    lines.append("")
+    lines.append(f"Splines: random clamped uniform curves with {PIECES} pieces, the same "
+                 f"{points:,} parameters and channels, one thread, Mpts/s; ratio = neutrospline / "
+                 "scipy.")
+    lines.append("")
+    lines.append(header)
+    lines.append("|---|" + "---:|---:|" * len(DEGREES))
+    for name, ours_key, theirs in [
+        ("neutrospline B-spline", "bspline", None),
+        ("scipy BSpline", "bspline", "scipy BSpline"),
+        ("neutrospline NURBS", "nurbs", None),
+        ("scipy BSpline, homogeneous + division", "nurbs",
+         "scipy BSpline, homogeneous + division"),
+    ]:
+        cells = []
+        for d in DEGREES:
+            ours = splines[d][ours_key][0]
+            v = ours if theirs is None else splines[d][theirs]
+            ratio = "" if theirs is None else f"{ours / v:.1f}x"
             cells.append(f" {v:.1f} | {ratio} |")
         lines.append(f"| {name} |" + "".join(cells))
     lines.append("")
@@ -278,6 +358,8 @@ def report(args, info, blas, versions, rows, scaling, points):
         "machine": info, "blas": blas, "versions": versions, "points": points,
         "tools": {str(d): {k: (v[1] if k == "neutrospline" else v) for k, v in r.items()}
                   for d, r in rows.items()},
+        "splines": {str(d): {k: (v[1] if k in ("bspline", "nurbs") else v) for k, v in r.items()}
+                    for d, r in splines.items()},
         "threads": {str(d): {str(t): v for t, v in r.items()} for d, r in scaling.items()},
     }
     (out / "latest.json").write_text(json.dumps(raw, indent=1) + "\n")

@@ -13,15 +13,12 @@ use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use neutrospline::{
-    batch_instruction_set, example1, BatchOptions, BatchParams, Bezier, BezierBatch, ControlPoint,
-    Degrees,
+    batch_instruction_set, example1, AnyCurve, BSpline, BatchOptions, BatchParams, Bezier,
+    BezierBatch, ControlPoint, CurveBatch, Degrees, KnotVector, Nurbs,
 };
 
-/// Example 1 for degree 3, else a seeded pseudo-random curve of degree `n`.
-fn curve(n: usize) -> Bezier<2> {
-    if n == 3 {
-        return example1();
-    }
+/// `count` seeded pseudo-random control points.
+fn points(count: usize) -> Vec<ControlPoint<2>> {
     let mut state = 0x9e37_79b9_7f4a_7c15_u64;
     let mut next = move || {
         state ^= state << 13;
@@ -29,13 +26,31 @@ fn curve(n: usize) -> Bezier<2> {
         state ^= state << 17;
         (state >> 11) as f64 / (1u64 << 53) as f64
     };
-    let points = (0..=n)
+    (0..count)
         .map(|_| {
             let degrees = Degrees::new(next(), next(), next()).expect("in [0, 1]");
             ControlPoint::new([10.0 * next(), 10.0 * next()], degrees)
         })
-        .collect();
-    Bezier::new(points).expect("finite control points")
+        .collect()
+}
+
+/// Example 1 for degree 3, else a seeded pseudo-random curve of degree `n`.
+fn curve(n: usize) -> Bezier<2> {
+    if n == 3 {
+        return example1();
+    }
+    Bezier::new(points(n + 1)).expect("finite control points")
+}
+
+/// A clamped uniform cubic B-spline with 64 pieces, and the NURBS curve with the same points
+/// and weights cycling through 0.5, 1, 2.
+fn splines() -> [(&'static str, AnyCurve<2>); 2] {
+    let count = 3 + 64;
+    let knots = KnotVector::clamped_uniform(3, count).expect("count > degree");
+    let bspline = BSpline::new(points(count), knots.clone()).expect("valid");
+    let weights = (0..count).map(|i| [0.5, 1.0, 2.0][i % 3]).collect();
+    let nurbs = Nurbs::new(points(count), weights, knots).expect("valid");
+    [("bspline", bspline.into()), ("nurbs", nurbs.into())]
 }
 
 const DEGREES: [usize; 3] = [3, 7, 15];
@@ -80,6 +95,33 @@ fn batch(c: &mut Criterion) {
     group.bench_function(BenchmarkId::new("scalar_degree3", points), |b| {
         b.iter(|| bezier.evaluate_channels(&ts, &mut out).expect("valid"))
     });
+    group.finish();
+}
+
+/// Splines (degree 3, 64 pieces): the batch evaluator against the scalar de Boor path.
+fn batch_spline(c: &mut Criterion) {
+    let name = format!("batch_spline_{}_1thread", batch_instruction_set());
+    let mut group = c.benchmark_group(name);
+    let options = BatchOptions::default().with_threads(1);
+    let points = 100_000;
+    let mut out = vec![0.0; 5 * points];
+    let ts: Vec<f64> = (0..points)
+        .map(|k| k as f64 / (points - 1) as f64)
+        .collect();
+    group.throughput(Throughput::Elements(points as u64));
+    for (kind, spline) in splines() {
+        let prepared = CurveBatch::new(&spline);
+        group.bench_function(BenchmarkId::new(kind, points), |b| {
+            b.iter(|| {
+                prepared
+                    .evaluate(BatchParams::Uniform(points), &mut out, &options)
+                    .expect("valid parameters")
+            })
+        });
+        group.bench_function(BenchmarkId::new(format!("scalar_{kind}"), points), |b| {
+            b.iter(|| spline.evaluate_channels(&ts, &mut out).expect("valid"))
+        });
+    }
     group.finish();
 }
 
@@ -131,6 +173,7 @@ criterion_group!(
     benches,
     single,
     batch,
+    batch_spline,
     write_reference,
     split_and_derivative
 );

@@ -6,6 +6,11 @@
 //! per point. The parameters are [`BatchParams::Uniform`] (evenly spaced, generated on the
 //! fly) or [`BatchParams::Values`].
 //!
+//! A [`CurveBatch`] does the same for a curve of any kind: a B-spline or NURBS curve is
+//! evaluated as its Bézier pieces (one per non-empty knot span), each parameter on its piece
+//! at the local parameter `(t - a) / (b - a)`, rational pieces in homogeneous form followed by
+//! one division; the same kernels, threads and accuracy (see [`CurveBatch`]).
+//!
 //! ## Method and accuracy
 //! The kernels run several parameters at once, one per SIMD lane. Up to degree 3 they run
 //! Horner's rule on the Taylor expansion about the nearer end of \[0, 1\] (in `t` below 1/2,
@@ -31,6 +36,9 @@
 
 mod kernel;
 mod lanes;
+mod piecewise;
+
+pub use piecewise::CurveBatch;
 
 use kernel::{Coeffs, Params, Uniform, Values};
 use lanes::{LaneJob, Lanes};
@@ -84,10 +92,35 @@ impl BatchParams<'_> {
         match *self {
             BatchParams::Uniform(count) => {
                 assert!(k < count, "parameter index {k} out of range ({count})");
-                k as f64 / count.saturating_sub(1).max(1) as f64
+                uniform_parameter(k, count, (0.0, 1.0))
             }
             BatchParams::Values(ts) => ts[k],
         }
+    }
+}
+
+/// Parameter `k` of `count` evenly spaced over `[a, b]`: `a + (b - a) (k / (count - 1))`,
+/// with both ends exact and never outside `[a, b]` (a single parameter is `a`). On \[0, 1\]
+/// it is exactly `k as f64 / (count - 1) as f64`, the parameters of
+/// [`BatchParams::Uniform`].
+///
+/// ```
+/// use neutrospline::uniform_parameter;
+/// assert_eq!(uniform_parameter(0, 5, (2.0, 3.0)), 2.0);
+/// assert_eq!(uniform_parameter(2, 5, (2.0, 3.0)), 2.5);
+/// assert_eq!(uniform_parameter(4, 5, (0.1, 0.7)), 0.7);
+/// assert_eq!(uniform_parameter(3, 10, (0.0, 1.0)), 3.0 / 9.0);
+/// ```
+pub fn uniform_parameter(k: usize, count: usize, (a, b): (f64, f64)) -> f64 {
+    if k == 0 || count <= 1 {
+        a
+    } else if k + 1 >= count {
+        b
+    } else {
+        // (max then min rather than clamp: no panic on a reversed interval.)
+        (a + (b - a) * (k as f64 / (count - 1) as f64))
+            .max(a)
+            .min(b)
     }
 }
 
@@ -287,11 +320,12 @@ pub fn evaluate_curves<const D: usize>(
     }
 }
 
-/// One thread's share: a run of parameters `[start, end)` for some curves.
-struct Task<'a, const CH: usize> {
+/// One thread's share: a run of parameters `[start, end)` for some curves (`T`: a reference
+/// to a prepared curve), each with its `CH` output channels.
+struct Task<'a, T, const CH: usize> {
     start: usize,
     end: usize,
-    items: Vec<(&'a Coeffs, [&'a mut [f64]; CH])>,
+    items: Vec<(T, [&'a mut [f64]; CH])>,
 }
 
 fn evaluate_all<const CH: usize>(
@@ -315,7 +349,7 @@ fn evaluate_all<const CH: usize>(
     } else {
         1
     };
-    let tasks = partition::<CH>(curves, count, out, threads);
+    let tasks = partition::<_, CH>(curves, count, out, threads);
     let first_bad = run_tasks(tasks, threads, |task| run_task(task, params));
     match first_bad {
         None => Ok(()),
@@ -326,14 +360,14 @@ fn evaluate_all<const CH: usize>(
 
 /// Splits the work in `threads` tasks: by curves when there are at least as many curves as
 /// threads, else by runs of parameters (multiples of 8 long, so runs start on whole vectors).
-fn partition<'a, const CH: usize>(
-    curves: &[&'a Coeffs],
+fn partition<'a, T: Copy, const CH: usize>(
+    curves: &[T],
     count: usize,
     out: &'a mut [f64],
     threads: usize,
-) -> Vec<Task<'a, CH>> {
+) -> Vec<Task<'a, T, CH>> {
     let mut channels = out.chunks_exact_mut(count);
-    let mut curve_outputs: Vec<(&'a Coeffs, [&'a mut [f64]; CH])> = curves
+    let mut curve_outputs: Vec<(T, [&'a mut [f64]; CH])> = curves
         .iter()
         .map(|&c| {
             let outs: [&'a mut [f64]; CH] =
@@ -385,13 +419,13 @@ fn partition<'a, const CH: usize>(
     tasks
 }
 
-/// Runs the tasks, each on its own thread when there are several; returns the smallest index
-/// of an invalid parameter, if any.
-fn run_tasks<'a, const CH: usize>(
-    tasks: Vec<Task<'a, CH>>,
+/// Runs the tasks, each on its own thread when there are several; returns the smallest
+/// failure (for the evaluators: the index of an invalid parameter), if any.
+fn run_tasks<'a, T: Send, R: Ord + Send, const CH: usize>(
+    tasks: Vec<Task<'a, T, CH>>,
     threads: usize,
-    run: impl Fn(Task<'a, CH>) -> Option<usize> + Sync + Send,
-) -> Option<usize> {
+    run: impl Fn(Task<'a, T, CH>) -> Option<R> + Sync + Send,
+) -> Option<R> {
     #[cfg(feature = "parallel")]
     if tasks.len() > 1 {
         use rayon::prelude::*;
@@ -409,9 +443,12 @@ fn run_tasks<'a, const CH: usize>(
 
 /// Evaluates one task block by block; stops at the first invalid parameter and returns its
 /// index.
-fn run_task<const CH: usize>(task: Task<'_, CH>, params: BatchParams<'_>) -> Option<usize> {
+fn run_task<const CH: usize>(
+    task: Task<'_, &Coeffs, CH>,
+    params: BatchParams<'_>,
+) -> Option<usize> {
     struct Job<'a, 'p, const CH: usize> {
-        task: Task<'a, CH>,
+        task: Task<'a, &'a Coeffs, CH>,
         params: BatchParams<'p>,
     }
     impl<const CH: usize> LaneJob for Job<'_, '_, CH> {
@@ -434,7 +471,7 @@ fn run_task<const CH: usize>(task: Task<'_, CH>, params: BatchParams<'_>) -> Opt
                     }
                     BatchParams::Values(ts) => {
                         let run = &ts[block..end];
-                        if let Some(bad) = first_invalid(run) {
+                        if let Some(bad) = first_outside(run, (0.0, 1.0)) {
                             return Some(block + bad);
                         }
                         evaluate_block(l, &Values(run), &mut task.items, lo, hi, &mut scratch);
@@ -464,15 +501,16 @@ fn evaluate_block<L: Lanes, P: Params, const CH: usize>(
     }
 }
 
-/// Index of the first parameter not in \[0, 1\] (NaN included).
+/// Index of the first parameter not in `[start, end]` (NaN included).
 #[inline(always)]
-fn first_invalid(ts: &[f64]) -> Option<usize> {
+fn first_outside(ts: &[f64], (start, end): (f64, f64)) -> Option<usize> {
     // Branch-free test first (vectorised); the search only when something is wrong.
-    let all_valid = ts.iter().fold(true, |ok, t| ok & (0.0..=1.0).contains(t));
+    let inside = |t: &f64| start <= *t && *t <= end;
+    let all_valid = ts.iter().fold(true, |ok, t| ok & inside(t));
     if all_valid {
         None
     } else {
-        ts.iter().position(|t| !(0.0..=1.0).contains(t))
+        ts.iter().position(|t| !inside(t))
     }
 }
 

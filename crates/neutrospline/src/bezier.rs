@@ -66,6 +66,10 @@ impl<const D: usize> Bezier<D> {
         Bezier { packed }
     }
 
+    pub(crate) fn packed(&self) -> &Packed {
+        &self.packed
+    }
+
     /// The polynomial degree `n` (one less than the number of control points).
     pub fn degree(&self) -> usize {
         self.packed.degree()

@@ -70,8 +70,8 @@ mod surface;
 
 pub use any_curve::{AnyCurve, AnyDerivative, CurveKind};
 pub use batch::{
-    batch_instruction_set, evaluate_curves, BatchOptions, BatchParams, BezierBatch,
-    BATCH_DIRECT_MAX_DEGREE, PARALLEL_THRESHOLD,
+    batch_instruction_set, evaluate_curves, uniform_parameter, BatchOptions, BatchParams,
+    BezierBatch, CurveBatch, BATCH_DIRECT_MAX_DEGREE, PARALLEL_THRESHOLD,
 };
 pub use bezier::{Bezier, BezierDerivative};
 pub use bspline::{BSpline, BSplineDerivative, BezierSegment};

@@ -93,6 +93,10 @@ impl<const D: usize> Nurbs<D> {
         Nurbs { spline }
     }
 
+    pub(crate) fn spline(&self) -> &Spline {
+        &self.spline
+    }
+
     /// The polynomial degree p.
     pub fn degree(&self) -> usize {
         self.spline.degree()

@@ -1,8 +1,10 @@
 //! `neutrospline bench`: times the library's batch evaluator in-process.
 //!
-//! The curve is the paper's Example 1 for degree 3, else a seeded pseudo-random 2-D curve of
-//! the given degree; it is evaluated at `points` evenly spaced parameters into one buffer,
-//! best of several runs. Every run of the evaluator alternates with a run of the memory
+//! The curve is, for `--kind bezier`, the paper's Example 1 for degree 3, else a seeded
+//! pseudo-random 2-D curve of the given degree; for `--kind bspline` and `--kind nurbs`, a
+//! seeded pseudo-random clamped uniform 2-D spline of the given degree with `--pieces`
+//! polynomial pieces (NURBS weights in \[0.5, 2\]). It is evaluated at `points` evenly
+//! spaced parameters over its domain into one buffer, best of several runs. Every run of the evaluator alternates with a run of the memory
 //! bandwidth reference: the same threads writing the same five output arrays (five f64 per
 //! point) in a tight loop with no arithmetic, the most any evaluator could do. The ratio of the
 //! two is what fraction of that limit the evaluator reaches, on the same machine at the same
@@ -13,8 +15,8 @@ use std::time::Instant;
 
 use anyhow::Context;
 use neutrospline::{
-    batch_instruction_set, example1, BatchOptions, BatchParams, Bezier, BezierBatch, ControlPoint,
-    Degrees,
+    batch_instruction_set, example1, BSpline, BatchOptions, BatchParams, Bezier, BezierBatch,
+    ControlPoint, CurveBatch, Degrees, KnotVector, Nurbs,
 };
 
 /// Arguments of `bench`.
@@ -23,9 +25,16 @@ pub struct BenchArgs {
     /// Number of evenly spaced parameters t = k / (N - 1)
     #[arg(long, value_name = "N", default_value_t = 1_000_000)]
     pub points: usize,
-    /// Curve degree: 3 is the paper's Example 1, any other a seeded random 2-D curve
+    /// Curve degree: for a Bézier curve, 3 is the paper's Example 1, any other a seeded
+    /// random 2-D curve
     #[arg(long, value_name = "D", default_value_t = 3)]
     pub degree: usize,
+    /// Curve kind: a Bézier curve, or a seeded random clamped uniform B-spline or NURBS curve
+    #[arg(long, value_enum, default_value_t = BenchKind::Bezier)]
+    pub kind: BenchKind,
+    /// Polynomial pieces (knot spans) of a B-spline or NURBS curve
+    #[arg(long, value_name = "M", default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
+    pub pieces: u32,
     /// Threads (0: one per core)
     #[arg(long, value_name = "K", default_value_t = 1)]
     pub threads: usize,
@@ -40,6 +49,18 @@ pub struct BenchArgs {
     pub format: BenchFormat,
 }
 
+/// Curve kinds of `bench`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum BenchKind {
+    /// A Bézier curve (Example 1 at degree 3)
+    Bezier,
+    /// A clamped uniform B-spline curve
+    Bspline,
+    /// A clamped uniform NURBS curve
+    Nurbs,
+}
+
 /// Output formats of `bench`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum BenchFormat {
@@ -52,8 +73,12 @@ pub enum BenchFormat {
 /// What one benchmark measured.
 #[derive(Debug, Clone, serde::Serialize)]
 pub struct BenchResult {
+    /// Curve kind.
+    pub kind: BenchKind,
     /// Curve degree.
     pub degree: usize,
+    /// Polynomial pieces of the curve (1 for a Bézier curve).
+    pub pieces: usize,
     /// Parameters per run.
     pub points: usize,
     /// Threads used.
@@ -64,7 +89,7 @@ pub struct BenchResult {
     pub best_seconds: f64,
     /// Timed runs.
     pub runs: u32,
-    /// `example1` or `random(seed=S)`.
+    /// `example1`, `random(seed=S)` (Bézier), `random(seed=S, pieces=M)` (splines).
     pub curve: String,
     /// The kernels' instruction set (`avx512`, `avx2+fma` or `portable`).
     pub instruction_set: String,
@@ -94,7 +119,12 @@ pub fn run(args: &BenchArgs, out: &mut dyn Write) -> anyhow::Result<()> {
 fn write_text(r: &BenchResult, out: &mut dyn Write) -> anyhow::Result<()> {
     writeln!(
         out,
-        "batch evaluation: {} (degree {}), {} points, {} thread{}, {}",
+        "batch evaluation: {} {} (degree {}), {} points, {} thread{}, {}",
+        match r.kind {
+            BenchKind::Bezier => "Bézier",
+            BenchKind::Bspline => "B-spline",
+            BenchKind::Nurbs => "NURBS",
+        },
         r.curve,
         r.degree,
         r.points,
@@ -124,21 +154,42 @@ evaluator at {:.0}% of it",
 /// # Errors
 /// Never in practice (the parameters are valid by construction).
 pub fn measure(args: &BenchArgs) -> anyhow::Result<BenchResult> {
-    let (curve, name) = if args.degree == 3 {
-        (example1(), "example1".to_string())
-    } else {
-        (
-            random_curve(args.degree, args.seed),
+    let pieces = args.pieces as usize;
+    let spline_name = format!("random(seed={}, pieces={pieces})", args.seed);
+    let (batch, name) = match args.kind {
+        BenchKind::Bezier if args.degree == 3 => (
+            Batch::Bezier(BezierBatch::new(&example1())),
+            "example1".to_string(),
+        ),
+        BenchKind::Bezier => (
+            Batch::Bezier(BezierBatch::new(&random_curve(args.degree, args.seed))),
             format!("random(seed={})", args.seed),
-        )
+        ),
+        BenchKind::Bspline => (
+            Batch::Pieces(CurveBatch::from(&random_bspline(
+                args.degree,
+                pieces,
+                args.seed,
+            ))),
+            spline_name,
+        ),
+        BenchKind::Nurbs => (
+            Batch::Pieces(CurveBatch::from(&random_nurbs(
+                args.degree,
+                pieces,
+                args.seed,
+            ))),
+            spline_name,
+        ),
     };
     let options = BatchOptions::default().with_threads(args.threads);
     let threads = options.effective_threads();
-    let batch = BezierBatch::new(&curve);
     let points = args.points;
     let mut buffer = vec![0.0; 5 * points];
-    let evaluate =
-        |buffer: &mut [f64]| batch.evaluate(BatchParams::Uniform(points), buffer, &options);
+    let evaluate = |buffer: &mut [f64]| match &batch {
+        Batch::Bezier(b) => b.evaluate(BatchParams::Uniform(points), buffer, &options),
+        Batch::Pieces(b) => b.evaluate(BatchParams::Uniform(points), buffer, &options),
+    };
     // One untimed run of each: pages mapped, code and caches warm.
     evaluate(&mut buffer).context("evaluating the benchmark curve")?;
     write_reference(&mut buffer, points, threads);
@@ -161,8 +212,14 @@ pub fn measure(args: &BenchArgs) -> anyhow::Result<BenchResult> {
         }
     };
     let (mpts, reference) = (rate(best), rate(best_reference));
+    let (degree, pieces) = match &batch {
+        Batch::Bezier(b) => (b.degree(), 1),
+        Batch::Pieces(b) => (b.degree(), b.pieces()),
+    };
     Ok(BenchResult {
-        degree: curve.degree(),
+        kind: args.kind,
+        degree,
+        pieces,
         points,
         threads,
         mpts_per_s: mpts,
@@ -214,24 +271,58 @@ fn write_reference(buffer: &mut [f64], points: usize, threads: usize) {
     });
 }
 
-/// A 2-D curve of degree `n` with coordinates in \[0, 10\] and degrees in \[0, 1\] from a
-/// xorshift generator seeded with `seed`.
-pub fn random_curve(n: usize, seed: u64) -> Bezier<2> {
+/// The curve being timed.
+enum Batch {
+    Bezier(BezierBatch<2>),
+    Pieces(CurveBatch<2>),
+}
+
+/// Uniform numbers in \[0, 1) from a xorshift generator seeded with `seed`.
+fn generator(seed: u64) -> impl FnMut() -> f64 {
     let mut state = seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1;
-    let mut next = move || {
+    move || {
         state ^= state << 13;
         state ^= state >> 7;
         state ^= state << 17;
         (state >> 11) as f64 / (1u64 << 53) as f64
-    };
-    let points = (0..=n)
+    }
+}
+
+/// `count` 2-D control points with coordinates in \[0, 10\] and degrees in \[0, 1\]: per
+/// point x, y, truth, indeterminacy, falsity, in this order, from `next`.
+fn random_points(count: usize, next: &mut impl FnMut() -> f64) -> Vec<ControlPoint<2>> {
+    (0..count)
         .map(|_| {
             let (x, y) = (10.0 * next(), 10.0 * next());
             let degrees = Degrees::new_unchecked(next(), next(), next());
             ControlPoint::new([x, y], degrees)
         })
-        .collect();
-    Bezier::new(points).expect("finite coordinates")
+        .collect()
+}
+
+/// A 2-D curve of degree `n` with coordinates in \[0, 10\] and degrees in \[0, 1\] from a
+/// xorshift generator seeded with `seed`.
+pub fn random_curve(n: usize, seed: u64) -> Bezier<2> {
+    Bezier::new(random_points(n + 1, &mut generator(seed))).expect("finite coordinates")
+}
+
+/// A clamped uniform 2-D B-spline of degree `p` with `pieces` pieces (`p + pieces` control
+/// points from the generator of [`random_curve`]) on \[0, 1\].
+pub fn random_bspline(p: usize, pieces: usize, seed: u64) -> BSpline<2> {
+    let count = p + pieces;
+    let points = random_points(count, &mut generator(seed));
+    let knots = KnotVector::clamped_uniform(p, count).expect("count > degree");
+    BSpline::new(points, knots).expect("valid random B-spline")
+}
+
+/// [`random_bspline`] with weights `2^(2r - 1)` in \[0.5, 2\], `r` drawn after the points.
+pub fn random_nurbs(p: usize, pieces: usize, seed: u64) -> Nurbs<2> {
+    let count = p + pieces;
+    let mut next = generator(seed);
+    let points = random_points(count, &mut next);
+    let weights = (0..count).map(|_| (2.0 * next() - 1.0).exp2()).collect();
+    let knots = KnotVector::clamped_uniform(p, count).expect("count > degree");
+    Nurbs::new(points, weights, knots).expect("valid random NURBS")
 }
 
 #[cfg(test)]
@@ -242,6 +333,8 @@ mod tests {
         BenchArgs {
             points,
             degree,
+            kind: BenchKind::Bezier,
+            pieces: 64,
             threads: 1,
             runs: 1,
             seed: 1,
@@ -270,7 +363,36 @@ mod tests {
         let mut out = Vec::new();
         run(&args(100, 15, BenchFormat::Text), &mut out).unwrap();
         let text = String::from_utf8(out).unwrap();
-        assert!(text.starts_with("batch evaluation: random(seed=1) (degree 15), 100 points"));
+        assert!(text.starts_with("batch evaluation: Bézier random(seed=1) (degree 15), 100 points"));
+    }
+
+    #[test]
+    fn bench_spline_kinds() {
+        for kind in [BenchKind::Bspline, BenchKind::Nurbs] {
+            let mut a = args(1000, 5, BenchFormat::Json);
+            (a.kind, a.pieces) = (kind, 12);
+            let mut out = Vec::new();
+            run(&a, &mut out).unwrap();
+            let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+            assert_eq!(
+                v["kind"],
+                if kind == BenchKind::Bspline {
+                    "bspline"
+                } else {
+                    "nurbs"
+                }
+            );
+            assert_eq!(
+                (v["degree"].as_u64(), v["pieces"].as_u64()),
+                (Some(5), Some(12))
+            );
+            assert_eq!(v["curve"], "random(seed=1, pieces=12)");
+        }
+        let b = random_bspline(3, 10, 4);
+        assert_eq!((b.degree(), b.len(), b.domain()), (3, 13, (0.0, 1.0)));
+        let n = random_nurbs(3, 10, 4);
+        assert_eq!(n.control_points(), b.control_points());
+        assert!(n.weights().iter().all(|w| (0.5..=2.0).contains(w)));
     }
 
     #[test]

@@ -3,6 +3,8 @@
 
 use std::path::PathBuf;
 
+use neutrospline::uniform_parameter;
+
 use crate::commands::options::ModelArgs;
 use crate::input::{self, UsageError};
 use crate::output::{self, TableFormat};
@@ -122,16 +124,12 @@ fn parse_at(text: &str) -> Result<AtList, String> {
     Ok(AtList(items))
 }
 
-/// Sample `k` of `n` evenly spaced over `[a, b]`: `a + (b - a) k / (n - 1)`, with both ends
-/// exact and never beyond `b` (for `n = 1`, `a`).
-fn sample(k: u64, n: u64, (a, b): (f64, f64)) -> f64 {
-    if k == 0 || n <= 1 {
-        a
-    } else if k + 1 >= n {
-        b
-    } else {
-        (a + (b - a) * (k as f64 / (n - 1) as f64)).clamp(a, b)
-    }
+/// Sample `k` of `n` evenly spaced over `[a, b]` (the library's [`uniform_parameter`]: both
+/// ends exact, never beyond `b`; for `n = 1`, `a`).
+fn sample(k: u64, n: u64, domain: (f64, f64)) -> f64 {
+    // Sample counts are limited far below `usize::MAX` (`--max-samples`).
+    let index = |v: u64| usize::try_from(v).unwrap_or(usize::MAX);
+    uniform_parameter(index(k), index(n), domain)
 }
 
 /// The parameters to evaluate at, lazily.

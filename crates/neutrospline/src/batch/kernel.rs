@@ -51,8 +51,9 @@ const TAYLOR_MAX_DEGREE: usize = 3;
 /// Parameter vectors per step of the Taylor kernel.
 const TAYLOR_STEP: usize = 4;
 
-/// Largest number of channels (3-D positions and three degrees).
-pub(crate) const MAX_CHANNELS: usize = 6;
+/// Largest number of channels (3-D positions, three degrees and, for rational curves, the
+/// weight).
+pub(crate) const MAX_CHANNELS: usize = 7;
 
 /// A Bézier polynomial prepared for the kernels.
 #[derive(Clone, Debug, PartialEq)]
