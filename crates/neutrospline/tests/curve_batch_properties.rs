@@ -161,6 +161,25 @@ proptest! {
     }
 
     #[test]
+    fn uniform_parameters_are_uniform_parameter(
+        curve in prop_oneof![bsplines::<2>(0..=7), nurbses::<2>(0..=7)],
+        count in 1usize..=9000,
+        threads in 1usize..=3,
+    ) {
+        // Evenly spaced parameters (generated block by block, split between threads) are
+        // exactly `uniform_parameter`'s, and give exactly the values of those parameters.
+        let domain = curve.domain();
+        let ts: Vec<f64> = (0..count).map(|k| uniform_parameter(k, count, domain)).collect();
+        let batch = CurveBatch::new(&curve);
+        let options = BatchOptions::default().with_threads(threads).with_parallel_threshold(0);
+        let mut uniform = vec![0.0; 5 * count];
+        batch.evaluate(BatchParams::Uniform(count), &mut uniform, &options).unwrap();
+        let mut values = vec![0.0; 5 * count];
+        batch.evaluate(BatchParams::Values(&ts), &mut values, &options).unwrap();
+        prop_assert_eq!(uniform, values);
+    }
+
+    #[test]
     fn threads_and_curves_change_nothing(
         curves in prop::collection::vec(prop_oneof![bsplines::<2>(0..=9), nurbses::<2>(0..=9)], 1..=4),
         count in 1usize..=3000,
@@ -184,7 +203,7 @@ proptest! {
 
 proptest! {
     // High degrees are slow in the scalar reference (O(n^2) per point): fewer cases.
-    #![proptest_config(ProptestConfig::with_cases(16))]
+    #![proptest_config(ProptestConfig::with_cases(10))]
 
     #[test]
     fn bspline_within_1e12_up_to_degree_400(

@@ -30,9 +30,7 @@
 
 use super::kernel::{self, Coeffs, Values, MAX_CHANNELS};
 use super::lanes::{self, LaneJob, Lanes};
-use super::{
-    first_outside, partition, run_tasks, uniform_parameter, BatchOptions, BatchParams, Task, BLOCK,
-};
+use super::{first_outside, partition, run_tasks, BatchOptions, BatchParams, Task, BLOCK};
 use crate::any_curve::AnyCurve;
 use crate::bezier::Bezier;
 use crate::bspline::BSpline;
@@ -201,7 +199,7 @@ impl<const D: usize> CurveBatch<D> {
     /// parameter `k` is `out[c * params.len() + k]`, channels x, y, \[z,\] truth,
     /// indeterminacy, falsity (the layout of [`BSpline::evaluate_channels`]).
     /// [`BatchParams::Uniform`] parameters are evenly spaced over the domain (see
-    /// [`uniform_parameter`]); [`BatchParams::Values`] must lie in the domain.
+    /// [`uniform_parameter`](super::uniform_parameter)); [`BatchParams::Values`] must lie in the domain.
     ///
     /// # Errors
     /// The first parameter (lowest index) not finite or outside the domain; `out` is then
@@ -308,6 +306,30 @@ fn evaluate_all<const D: usize, const CH: usize>(
     }
 }
 
+/// The evenly spaced parameters `block` of `count` over `domain` into `ts`: exactly
+/// [`uniform_parameter`](super::uniform_parameter), in a loop the compiler vectorises (the last parameter, which the
+/// formula may round beside `b`, set apart).
+#[inline(always)]
+fn uniform_block(
+    count: usize,
+    block: core::ops::Range<usize>,
+    (a, b): (f64, f64),
+    ts: &mut Vec<f64>,
+) {
+    let denominator = count.saturating_sub(1).max(1) as f64;
+    let width = b - a;
+    let (start, end) = (block.start, block.end);
+    ts.clear();
+    // (Through i64: one conversion instruction; the indices are far below 2^53.)
+    ts.extend(block.map(|k| (a + width * (k as i64 as f64 / denominator)).max(a).min(b)));
+    if let (true, Some(first)) = (start == 0, ts.first_mut()) {
+        *first = a;
+    }
+    if let (true, Some(last)) = (end == count && count > 1, ts.last_mut()) {
+        *last = b;
+    }
+}
+
 /// Buffers reused from block to block by one task.
 struct Workspace<V> {
     /// Local parameters (in piece order when the block is sorted by piece).
@@ -361,10 +383,7 @@ fn run_task<const D: usize, const CH: usize>(
                 for ((index, curve), outs) in task.items.iter_mut() {
                     let ts: &[f64] = match params {
                         BatchParams::Uniform(count) => {
-                            generated.clear();
-                            generated.extend(
-                                (block..end).map(|k| uniform_parameter(k, count, curve.domain)),
-                            );
+                            uniform_block(count, block..end, curve.domain, &mut generated);
                             &generated
                         }
                         BatchParams::Values(ts) => {
@@ -378,7 +397,9 @@ fn run_task<const D: usize, const CH: usize>(
                         }
                     };
                     let mut outs: [&mut [f64]; CH] = outs.each_mut().map(|s| &mut s[lo..hi]);
-                    evaluate_block(l, curve, ts, &mut outs, &mut ws);
+                    let in_order = matches!(params, BatchParams::Uniform(_))
+                        || ts.windows(2).all(|w| w[0] <= w[1]);
+                    evaluate_block(l, curve, ts, in_order, &mut outs, &mut ws);
                 }
                 if first_bad.is_some() {
                     return first_bad;
@@ -391,21 +412,22 @@ fn run_task<const D: usize, const CH: usize>(
     lanes::dispatch(Job { task, params })
 }
 
-/// Evaluates `curve` at the parameters `ts` (in its domain) into `outs` (one slice per
-/// channel, as long as `ts`): the kernels for the channel count, with the weight for a
-/// rational curve.
+/// Evaluates `curve` at the parameters `ts` (in its domain; non-decreasing if `in_order`)
+/// into `outs` (one slice per channel, as long as `ts`): the kernels for the channel count,
+/// with the weight for a rational curve.
 #[inline(always)]
 fn evaluate_block<L: Lanes, const D: usize, const CH: usize>(
     l: L,
     curve: &CurveBatch<D>,
     ts: &[f64],
+    in_order: bool,
     outs: &mut [&mut [f64]; CH],
     ws: &mut Workspace<L::V>,
 ) {
     match (CH, curve.rational) {
-        (5, false) => block::<L, D, 5>(l, curve, ts, outs, ws),
-        (6, false) | (5, true) => block::<L, D, 6>(l, curve, ts, outs, ws),
-        (6, true) => block::<L, D, 7>(l, curve, ts, outs, ws),
+        (5, false) => block::<L, D, 5>(l, curve, ts, in_order, outs, ws),
+        (6, false) | (5, true) => block::<L, D, 6>(l, curve, ts, in_order, outs, ws),
+        (6, true) => block::<L, D, 7>(l, curve, ts, in_order, outs, ws),
         _ => unreachable!("CurveBatch accepts D = 2 or 3 only"),
     }
 }
@@ -421,6 +443,7 @@ fn block<L: Lanes, const D: usize, const H: usize>(
     l: L,
     curve: &CurveBatch<D>,
     ts: &[f64],
+    in_order: bool,
     outs: &mut [&mut [f64]],
     ws: &mut Workspace<L::V>,
 ) {
@@ -429,7 +452,6 @@ fn block<L: Lanes, const D: usize, const H: usize>(
     ws.local.resize(n, 0.0);
     ws.weight.resize(n, 0.0);
     ws.runs.clear();
-    let in_order = ts.windows(2).all(|w| w[0] <= w[1]);
     if in_order {
         // (Evenly spaced parameters always are.) Each piece's run is contiguous, found by
         // binary search, and evaluated in place.
