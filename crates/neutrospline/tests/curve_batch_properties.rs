@@ -326,3 +326,30 @@ fn parameters_outside_the_domain() {
     assert_eq!((both[1].pieces(), both[1].degree()), (2, 3));
     assert!(!both[1].is_rational());
 }
+
+/// Weights far apart (some below the normal range once scaled, where the batch divides
+/// instead of multiplying by the reciprocal) and very large: the values stay de Boor's.
+#[test]
+fn nurbs_with_extreme_weights() {
+    let spline = long_spline(12);
+    for weights in [
+        [1e-310, 1.0, 3e-320, 2.0, 1e-300, 1.0],
+        [1e300, 1.0, 1e-8, 1e308, 5.0, 1e-300],
+        [0.1, 10.0, 0.1, 10.0, 0.1, 10.0],
+    ] {
+        let weights: Vec<f64> = weights.iter().cycle().take(12).copied().collect();
+        let curve = AnyCurve::from(
+            Nurbs::new(spline.control_points(), weights, spline.knots().clone()).unwrap(),
+        );
+        let count = 2001;
+        let domain = curve.domain();
+        let mut ts: Vec<f64> = (0..count)
+            .map(|k| uniform_parameter(k, count, domain))
+            .collect();
+        let got = batch(&curve, BatchParams::Uniform(count));
+        check(&curve, &ts, &got, 1e-13).unwrap();
+        ts.reverse();
+        let got = batch(&curve, BatchParams::Values(&ts));
+        check(&curve, &ts, &got, 1e-13).unwrap();
+    }
+}
