@@ -102,7 +102,7 @@ struct Piece {
 /// `w c` approach the subnormal range, where their absolute error (up to `2^-1074` per
 /// operation) divided by the weight no longer stays below `n u max |c|`; such a piece (a
 /// weight ratio beyond 1e289 within one piece) is evaluated in Euclidean form.
-const HOMOGENEOUS_MIN: f64 = 1e-289; // about 2^-960: 2^114 times the smallest normal number
+const HOMOGENEOUS_MIN: f64 = 1e-289; // about 2^-960, 2^62 times the smallest normal number
 
 impl Piece {
     /// The piece on `[start, end]` with point-major control rows `rows` (`stride` values each)
@@ -232,7 +232,8 @@ impl<const D: usize> CurveBatch<D> {
     /// parameter `k` is `out[c * params.len() + k]`, channels x, y, \[z,\] truth,
     /// indeterminacy, falsity (the layout of [`BSpline::evaluate_channels`]).
     /// [`BatchParams::Uniform`] parameters are evenly spaced over the domain (see
-    /// [`uniform_parameter`](super::uniform_parameter)); [`BatchParams::Values`] must lie in the domain.
+    /// [`uniform_parameter`](crate::uniform_parameter)); [`BatchParams::Values`] must lie in
+    /// the domain.
     ///
     /// # Errors
     /// The first parameter (lowest index) not finite or outside the domain; `out` is then
@@ -340,8 +341,8 @@ fn evaluate_all<const D: usize, const CH: usize>(
 }
 
 /// The evenly spaced parameters `block` of `count` over `domain` into `ts`: exactly
-/// [`uniform_parameter`](super::uniform_parameter), in a loop the compiler vectorises (the last parameter, which the
-/// formula may round beside `b`, set apart).
+/// [`uniform_parameter`](crate::uniform_parameter), in a loop the compiler vectorises (the
+/// ends set apart: the formula may round the last beside `b`).
 #[inline(always)]
 fn uniform_block(
     count: usize,
