@@ -62,7 +62,9 @@ pub(crate) struct Coeffs {
     pub(crate) degree: usize,
     /// Number of channels.
     pub(crate) channels: usize,
-    /// Channel-major control values: channel `c`, index `i` at `c * (n + 1) + i`.
+    /// Channel-major control values: channel `c`, index `i` at `c * (n + 1) + i`. (This and
+    /// `binomials` are dropped when `scaled` or `taylor` serves the degree: only the data the
+    /// degree's kernel reads is kept, which matters for a spline's many pieces.)
     pub(crate) values: Vec<f64>,
     /// `C(n, i)` for `i = 0 ..= n` (empty above [`DIRECT_MAX_DEGREE`]).
     pub(crate) binomials: Vec<f64>,
@@ -95,7 +97,7 @@ impl Coeffs {
             lo[c] = column.iter().copied().fold(f64::INFINITY, f64::min);
             hi[c] = column.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         }
-        let binomials = if degree <= DIRECT_MAX_DEGREE {
+        let mut binomials = if degree <= DIRECT_MAX_DEGREE {
             binomial_row(degree)
         } else {
             Vec::new()
@@ -119,6 +121,13 @@ impl Coeffs {
             if taylor.iter().any(|v| !v.is_finite()) {
                 taylor.clear();
             }
+        }
+        if !taylor.is_empty() {
+            scaled = Vec::new();
+        }
+        if !taylor.is_empty() || !scaled.is_empty() {
+            values = Vec::new();
+            binomials = Vec::new();
         }
         Coeffs {
             degree,
