@@ -483,7 +483,14 @@ impl<L: Lanes, const CH: usize, const W: usize> Prepared<L, CH, W> {
     fn new(l: L, coeffs: &Coeffs) -> Self {
         debug_assert_eq!((coeffs.degree + 1, coeffs.scaled.len()), (W, CH * W));
         Prepared {
-            values: coeffs.scaled.iter().map(|&v| l.splat(v)).collect(),
+            values: {
+                // (A loop, not a closure: see `Range::new`.)
+                let mut values = Vec::with_capacity(coeffs.scaled.len());
+                for &v in &coeffs.scaled {
+                    values.push(l.splat(v));
+                }
+                values
+            },
             range: Range::new(l, coeffs),
         }
     }
@@ -559,10 +566,18 @@ struct Range<L: Lanes, const CH: usize> {
 impl<L: Lanes, const CH: usize> Range<L, CH> {
     #[inline(always)]
     fn new(l: L, coeffs: &Coeffs) -> Self {
-        Range {
-            lo: core::array::from_fn(|c| l.splat(coeffs.lo[c])),
-            hi: core::array::from_fn(|c| l.splat(coeffs.hi[c])),
+        // Loops, not `array::from_fn` closures: a closure is compiled without the
+        // dispatcher's target features, so the vector operations inside it become calls
+        // (measured: most of the time of a spline with thousands of short pieces).
+        let mut range = Range {
+            lo: [l.splat(0.0); CH],
+            hi: [l.splat(0.0); CH],
+        };
+        for c in 0..CH {
+            range.lo[c] = l.splat(coeffs.lo[c]);
+            range.hi[c] = l.splat(coeffs.hi[c]);
         }
+        range
     }
 
     /// `v` projected onto channel `c`'s range.
@@ -599,12 +614,20 @@ impl<L: Lanes, const CH: usize, const N1: usize> Taylor<L, CH, N1> {
     #[inline(always)]
     fn new(l: L, coeffs: &Coeffs) -> Self {
         debug_assert_eq!(coeffs.taylor.len(), 2 * CH * N1);
-        let at = |half: usize, c: usize, k: usize| l.splat(coeffs.taylor[(half * CH + c) * N1 + k]);
-        Taylor {
-            low: core::array::from_fn(|c| core::array::from_fn(|k| at(0, c, k))),
-            high: core::array::from_fn(|c| core::array::from_fn(|k| at(1, c, k))),
+        // (Loops, not closures: see `Range::new`.)
+        let zero = l.splat(0.0);
+        let mut taylor = Taylor {
+            low: [[zero; N1]; CH],
+            high: [[zero; N1]; CH],
             range: Range::new(l, coeffs),
+        };
+        for c in 0..CH {
+            for k in 0..N1 {
+                taylor.low[c][k] = l.splat(coeffs.taylor[c * N1 + k]);
+                taylor.high[c][k] = l.splat(coeffs.taylor[(CH + c) * N1 + k]);
+            }
         }
+        taylor
     }
 }
 
@@ -637,15 +660,17 @@ impl<L: Lanes, const CH: usize, const N1: usize> Kernel<L, CH> for Taylor<L, CH,
         sink: &mut S,
     ) {
         let one = l.splat(1.0);
-        let ts: [L::V; U] = core::array::from_fn(|u| params.vector(l, offset + u * L::LANES));
-        // `1 - t` is exact for `t` in [1/2, 1] (Sterbenz).
-        let ss = || ts.map(|t| l.sub(one, t));
+        let mut ts = [one; U];
+        for (u, t) in ts.iter_mut().enumerate() {
+            *t = params.vector(l, offset + u * L::LANES);
+        }
+        // (`1 - t` is exact for `t` in [1/2, 1], Sterbenz.)
         let side = params.side::<L>(offset, U * L::LANES);
         if side != Side::Mixed {
             let (a, x) = if side == Side::Low {
                 (&self.low, ts)
             } else {
-                (&self.high, ss())
+                (&self.high, complement(l, ts))
             };
             let x = &x;
             for c in 0..CH {
@@ -656,7 +681,7 @@ impl<L: Lanes, const CH: usize, const N1: usize> Kernel<L, CH> for Taylor<L, CH,
             }
         } else {
             let half = l.splat(0.5);
-            let ss = ss();
+            let ss = complement(l, ts);
             for c in 0..CH {
                 let below = horner(l, &self.low, c, &ts);
                 let above = horner(l, &self.high, c, &ss);
@@ -667,6 +692,18 @@ impl<L: Lanes, const CH: usize, const N1: usize> Kernel<L, CH> for Taylor<L, CH,
             }
         }
     }
+}
+
+/// `1 - t` per lane. (A function, not a closure, so that it is inlined with the caller's
+/// target features: see `Range::new`.)
+#[inline(always)]
+fn complement<L: Lanes, const U: usize>(l: L, ts: [L::V; U]) -> [L::V; U] {
+    let one = l.splat(1.0);
+    let mut ss = ts;
+    for s in &mut ss {
+        *s = l.sub(one, *s);
+    }
+    ss
 }
 
 /// The Bernstein-weight kernel above [`FIXED_MAX_DEGREE`] (and wherever the binomials cannot
@@ -710,8 +747,10 @@ fn weights_long<L: Lanes, P: Params, const CH: usize>(
         for (w, &p) in weights.iter_mut().zip(powers_s.iter().rev()) {
             *w = l.mul(*w, p);
         }
-        let mut acc: [L::V; CH] =
-            core::array::from_fn(|c| l.mul(weights[0], l.splat(coeffs.values[c * count])));
+        let mut acc = [one; CH];
+        for (c, a) in acc.iter_mut().enumerate() {
+            *a = l.mul(weights[0], l.splat(coeffs.values[c * count]));
+        }
         for (i, &w) in weights.iter().enumerate().skip(1) {
             for (c, a) in acc.iter_mut().enumerate() {
                 *a = l.mul_add(w, l.splat(coeffs.values[c * count + i]), *a);
