@@ -44,7 +44,8 @@
 //!   [`NeutrosophicPoint`]. Deserialization checks exactly like the constructors.
 //! - `proptest`: the module `strategies`, proptest generators of valid degrees, control points
 //!   and curves, for property tests of code built on this crate.
-//! - `simd`, `avx512`, `parallel`: faster batch evaluation ([`BezierBatch`], [`evaluate_curves`]):
+//! - `simd`, `avx512`, `parallel`: faster batch evaluation ([`BezierBatch`], [`evaluate_curves`],
+//!   [`CurveBatch`]):
 //!   SIMD kernels chosen at run time (AVX2 + FMA; AVX-512 with `avx512`) and threads (rayon).
 //!   Without them the same results come from a portable kernel on the calling thread.
 #![deny(missing_docs)]
