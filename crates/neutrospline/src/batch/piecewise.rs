@@ -15,9 +15,9 @@
 //! reciprocal of the weight) and one product per channel. The rational basis functions are non-negative with unit sum, so every value is
 //! then projected onto the range of its channel's Euclidean control values: degrees stay
 //! within their control range, inside \[0, 1\]. (A piece whose weights, or weights times
-//! control values, span so wide a range that the homogeneous products near the subnormal
-//! numbers, beyond a ratio of 1e289, is evaluated point by point in Euclidean form instead:
-//! de Boor's rational steps, as the scalar evaluation.)
+//! control values, span so wide a range that the homogeneous products come near the
+//! subnormal numbers, beyond a ratio of 1e289, is evaluated point by point in Euclidean form
+//! instead: de Boor's rational steps, as the scalar evaluation.)
 //!
 //! Accuracy: the piece's control values are exact up to a few rounding errors of blossoming
 //! (de Boor's own operations), and `u` carries at most one rounding more than de Boor's
