@@ -335,19 +335,9 @@ fn evaluate_all<const CH: usize>(
     options: &BatchOptions,
 ) -> Result<(), EvalError> {
     let count = params.len();
-    assert_eq!(
-        out.len(),
-        curves.len() * CH * count,
-        "batch evaluation: out must hold curves * (D + 3) * params.len() values"
-    );
-    if count == 0 || curves.is_empty() {
+    let degrees = curves.iter().map(|c| c.degree);
+    let Some(threads) = plan(out.len(), CH, count, degrees, options) else {
         return Ok(());
-    }
-    let work: usize = curves.iter().map(|c| c.work(count)).sum();
-    let threads = if work >= options.parallel_threshold {
-        options.effective_threads().max(1)
-    } else {
-        1
     };
     let tasks = partition::<_, CH>(curves, count, out, threads);
     let first_bad = run_tasks(tasks, threads, |task| run_task(task, params));
@@ -356,6 +346,37 @@ fn evaluate_all<const CH: usize>(
         Some(k) => Err(check_parameter(params.get(k), (0.0, 1.0))
             .expect_err("an invalid parameter was reported")),
     }
+}
+
+/// Checks that `out` holds `channels` values per curve and parameter and chooses the number of
+/// threads: several when the work, `count * (degree + 1)` summed over the curves (of the
+/// given `degrees`), reaches [`BatchOptions::parallel_threshold`]. `None` when there is
+/// nothing to evaluate.
+///
+/// # Panics
+/// If `out_len` is not `curves * channels * count`.
+fn plan(
+    out_len: usize,
+    channels: usize,
+    count: usize,
+    degrees: impl ExactSizeIterator<Item = usize>,
+    options: &BatchOptions,
+) -> Option<usize> {
+    let curves = degrees.len();
+    assert_eq!(
+        out_len,
+        curves * channels * count,
+        "batch evaluation: out must hold curves * (D + 3) * params.len() values"
+    );
+    if count == 0 || curves == 0 {
+        return None;
+    }
+    let work: usize = degrees.map(|n| count.saturating_mul(n + 1)).sum();
+    Some(if work >= options.parallel_threshold {
+        options.effective_threads().max(1)
+    } else {
+        1
+    })
 }
 
 /// Splits the work in `threads` tasks: by curves when there are at least as many curves as

@@ -140,11 +140,6 @@ impl Coeffs {
             hi,
         }
     }
-
-    /// Work estimate for the threading threshold: `points * (degree + 1)`.
-    pub(crate) fn work(&self, points: usize) -> usize {
-        points.saturating_mul(self.degree + 1)
-    }
 }
 
 /// The Taylor coefficients about `t = 0` of the Bézier polynomial with control values `row`

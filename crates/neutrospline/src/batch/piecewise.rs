@@ -33,7 +33,7 @@
 
 use super::kernel::{self, Coeffs, Values, MAX_CHANNELS};
 use super::lanes::{self, LaneJob, Lanes};
-use super::{first_outside, partition, run_tasks, BatchOptions, BatchParams, Task, BLOCK};
+use super::{first_outside, partition, plan, run_tasks, BatchOptions, BatchParams, Task, BLOCK};
 use crate::any_curve::AnyCurve;
 use crate::bezier::Bezier;
 use crate::bspline::BSpline;
@@ -314,22 +314,9 @@ fn evaluate_all<const D: usize, const CH: usize>(
     options: &BatchOptions,
 ) -> Result<(), EvalError> {
     let count = params.len();
-    assert_eq!(
-        out.len(),
-        curves.len() * CH * count,
-        "batch evaluation: out must hold curves * (D + 3) * params.len() values"
-    );
-    if count == 0 || curves.is_empty() {
+    let degrees = curves.iter().map(|c| c.degree);
+    let Some(threads) = plan(out.len(), CH, count, degrees, options) else {
         return Ok(());
-    }
-    let work: usize = curves
-        .iter()
-        .map(|c| count.saturating_mul(c.degree + 1))
-        .sum();
-    let threads = if work >= options.parallel_threshold {
-        options.effective_threads().max(1)
-    } else {
-        1
     };
     let refs: Vec<(usize, &CurveBatch<D>)> = curves.iter().enumerate().collect();
     let tasks = partition::<_, CH>(&refs, count, out, threads);
