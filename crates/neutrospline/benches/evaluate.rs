@@ -13,8 +13,8 @@ use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use neutrospline::{
-    batch_instruction_set, example1, AnyCurve, BSpline, BatchOptions, BatchParams, Bezier,
-    BezierBatch, ControlPoint, CurveBatch, Degrees, KnotVector, Nurbs,
+    batch, example1, AnyCurve, BSpline, BatchOptions, BatchParams, Bezier, ControlPoint,
+    CurveBatch, CurvePoint, Degrees, Derivative, Evaluate, KnotVector, Nurbs, Split,
 };
 
 /// `count` seeded pseudo-random control points.
@@ -66,12 +66,12 @@ fn single(c: &mut Criterion) {
     group.finish();
 }
 
-fn batch(c: &mut Criterion) {
-    let name = format!("batch_uniform_{}_1thread", batch_instruction_set());
+fn batch_bezier(c: &mut Criterion) {
+    let name = format!("batch_uniform_{}_1thread", batch::instruction_set());
     let mut group = c.benchmark_group(name);
     let options = BatchOptions::default().with_threads(1);
     for n in DEGREES {
-        let prepared = BezierBatch::new(&curve(n));
+        let prepared = CurveBatch::from(&curve(n));
         for points in [1_000usize, 100_000] {
             let mut out = vec![0.0; 5 * points];
             group.throughput(Throughput::Elements(points as u64));
@@ -90,21 +90,23 @@ fn batch(c: &mut Criterion) {
     let ts: Vec<f64> = (0..points)
         .map(|k| k as f64 / (points - 1) as f64)
         .collect();
-    let mut out = vec![0.0; 5 * points];
+    let mut out = vec![bezier.control_point(0); points];
     group.throughput(Throughput::Elements(points as u64));
     group.bench_function(BenchmarkId::new("scalar_degree3", points), |b| {
-        b.iter(|| bezier.evaluate_channels(&ts, &mut out).expect("valid"))
+        b.iter(|| bezier.evaluate_many(&ts, &mut out).expect("valid"))
     });
     group.finish();
 }
 
 /// Splines (degree 3, 64 pieces): the batch evaluator against the scalar de Boor path.
 fn batch_spline(c: &mut Criterion) {
-    let name = format!("batch_spline_{}_1thread", batch_instruction_set());
+    let name = format!("batch_spline_{}_1thread", batch::instruction_set());
     let mut group = c.benchmark_group(name);
     let options = BatchOptions::default().with_threads(1);
     let points = 100_000;
     let mut out = vec![0.0; 5 * points];
+    let mut scalar_out =
+        vec![CurvePoint::new([0.0; 2], Degrees::new_unchecked(0.0, 0.0, 0.0)); points];
     let ts: Vec<f64> = (0..points)
         .map(|k| k as f64 / (points - 1) as f64)
         .collect();
@@ -119,7 +121,7 @@ fn batch_spline(c: &mut Criterion) {
             })
         });
         group.bench_function(BenchmarkId::new(format!("scalar_{kind}"), points), |b| {
-            b.iter(|| spline.evaluate_channels(&ts, &mut out).expect("valid"))
+            b.iter(|| spline.evaluate_many(&ts, &mut scalar_out).expect("valid"))
         });
     }
     group.finish();
@@ -172,7 +174,7 @@ fn split_and_derivative(c: &mut Criterion) {
 criterion_group!(
     benches,
     single,
-    batch,
+    batch_bezier,
     batch_spline,
     write_reference,
     split_and_derivative

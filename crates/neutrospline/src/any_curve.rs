@@ -1,14 +1,15 @@
 //! A curve of any kind, for code that handles Bézier, B-spline and NURBS curves alike.
 
 use core::fmt;
+use core::ops::Range;
 
-use crate::bezier::{Bezier, BezierDerivative};
-use crate::bspline::{BSpline, BSplineDerivative};
-use crate::curve::{Bounded, CurveError, EvalError, Evaluate};
+use crate::bezier::Bezier;
+use crate::curve::{Bounded, CurveError, Derivative, Elevate, EvalError, Evaluate, Split};
 use crate::degrees::DegreeKind;
+use crate::derivative::CurveDerivative;
 use crate::knots::KnotVector;
-use crate::nurbs::{Nurbs, NurbsDerivative};
-use crate::point::{Affine, BoundingBox, ControlPoint, CurvePoint, DerivativeValue};
+use crate::point::{Affine, BoundingBox, ControlPoint, CurvePoint};
+use crate::spline_curve::{BSpline, Nurbs};
 
 /// The kinds of curve the library models.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -41,7 +42,7 @@ impl fmt::Display for CurveKind {
 /// A curve of any kind; each method forwards to the kind's own.
 ///
 /// ```
-/// use neutrospline::{AnyCurve, CurveKind};
+/// use neutrospline::{AnyCurve, CurveKind, Evaluate};
 /// let curve = AnyCurve::from(neutrospline::example1());
 /// assert_eq!(curve.kind(), CurveKind::Bezier);
 /// assert_eq!(curve.evaluate(0.5)?.position, [4.625, 4.0]);
@@ -82,11 +83,6 @@ impl<const D: usize> AnyCurve<D> {
         forward!(self, c => c.degree())
     }
 
-    /// The parameter domain.
-    pub fn domain(&self) -> (f64, f64) {
-        forward!(self, c => Evaluate::domain(c))
-    }
-
     /// Number of control points.
     pub fn len(&self) -> usize {
         forward!(self, c => c.len())
@@ -114,65 +110,15 @@ impl<const D: usize> AnyCurve<D> {
     /// The weights (NURBS curves).
     pub fn weights(&self) -> Option<&[f64]> {
         match self {
-            AnyCurve::Nurbs(c) => Some(c.weights()),
-            _ => None,
+            AnyCurve::Bezier(_) => None,
+            AnyCurve::BSpline(c) => c.weights(),
+            AnyCurve::Nurbs(c) => c.weights(),
         }
     }
 
-    /// The point at `t` in the domain.
-    ///
-    /// # Errors
-    /// `t` not finite or outside the domain.
-    pub fn evaluate(&self, t: f64) -> Result<CurvePoint<D>, EvalError> {
-        forward!(self, c => c.evaluate(t))
-    }
-
-    /// Evaluates at every parameter into channel-major `out` (layout of
-    /// [`Bezier::evaluate_channels`]).
-    ///
-    /// # Errors
-    /// The first parameter not finite or outside the domain.
-    ///
-    /// # Panics
-    /// If `out.len() != (D + 3) * ts.len()`.
-    pub fn evaluate_channels(&self, ts: &[f64], out: &mut [f64]) -> Result<(), EvalError> {
-        forward!(self, c => c.evaluate_channels(ts, out))
-    }
-
-    /// The first derivative, as an object to evaluate at many parameters.
-    pub fn derivative(&self) -> AnyDerivative<D> {
-        match self {
-            AnyCurve::Bezier(c) => AnyDerivative::Bezier(c.derivative()),
-            AnyCurve::BSpline(c) => AnyDerivative::BSpline(c.derivative()),
-            AnyCurve::Nurbs(c) => AnyDerivative::Nurbs(c.derivative()),
-        }
-    }
-
-    /// The first derivative at `t`. For many parameters, build [`AnyCurve::derivative`] once.
-    ///
-    /// # Errors
-    /// `t` not finite or outside the domain; [`EvalError::Overflow`].
-    pub fn derivative_at(&self, t: f64) -> Result<DerivativeValue<D>, EvalError> {
-        self.derivative().evaluate(t)
-    }
-
-    /// Tight bounds of positions and degrees.
-    pub fn bounding_box(&self) -> BoundingBox<D> {
-        forward!(self, c => c.bounding_box())
-    }
-
-    /// Bounds of the control values.
-    pub fn control_bounding_box(&self) -> BoundingBox<D> {
-        forward!(self, c => c.control_bounding_box())
-    }
-
-    /// Degree elevation (same curve, degree + 1).
-    pub fn elevate(&self) -> Self {
-        match self {
-            AnyCurve::Bezier(c) => AnyCurve::Bezier(c.elevate()),
-            AnyCurve::BSpline(c) => AnyCurve::BSpline(c.elevate()),
-            AnyCurve::Nurbs(c) => AnyCurve::Nurbs(c.elevate()),
-        }
+    /// The same curve traversed backwards (see each kind's `reversed`).
+    pub fn reversed(&self) -> Self {
+        forward!(self, c => c.reversed().into())
     }
 
     /// The curve with an affine map applied to its positions.
@@ -180,74 +126,61 @@ impl<const D: usize> AnyCurve<D> {
     /// # Errors
     /// A mapped position overflows.
     pub fn transform(&self, map: &Affine<D>) -> Result<Self, CurveError> {
-        Ok(match self {
-            AnyCurve::Bezier(c) => AnyCurve::Bezier(c.transform(map)?),
-            AnyCurve::BSpline(c) => AnyCurve::BSpline(c.transform(map)?),
-            AnyCurve::Nurbs(c) => AnyCurve::Nurbs(c.transform(map)?),
-        })
+        forward!(self, c => Ok(c.transform(map)?.into()))
     }
 }
 
 impl AnyCurve<2> {
     /// The paper's space curve `(C(t), degree(t))` for one degree, of the same kind.
     pub fn degree_curve(&self, kind: DegreeKind) -> AnyCurve<3> {
-        match self {
-            AnyCurve::Bezier(c) => AnyCurve::Bezier(c.degree_curve(kind)),
-            AnyCurve::BSpline(c) => AnyCurve::BSpline(c.degree_curve(kind)),
-            AnyCurve::Nurbs(c) => AnyCurve::Nurbs(c.degree_curve(kind)),
-        }
+        forward!(self, c => c.degree_curve(kind).into())
     }
 }
 
-/// The first derivative of an [`AnyCurve`], of the matching kind.
-#[derive(Clone, Debug, PartialEq)]
-pub enum AnyDerivative<const D: usize> {
-    /// Of a Bézier curve.
-    Bezier(BezierDerivative<D>),
-    /// Of a B-spline curve.
-    BSpline(BSplineDerivative<D>),
-    /// Of a NURBS curve.
-    Nurbs(NurbsDerivative<D>),
-}
+impl<const D: usize> Evaluate for AnyCurve<D> {
+    type Point = CurvePoint<D>;
 
-impl<const D: usize> AnyDerivative<D> {
-    /// The derivative at `t` in the curve's domain.
-    ///
-    /// # Errors
-    /// `t` not finite or outside the domain; [`EvalError::Overflow`].
-    pub fn evaluate(&self, t: f64) -> Result<DerivativeValue<D>, EvalError> {
-        match self {
-            AnyDerivative::Bezier(d) => d.evaluate(t),
-            AnyDerivative::BSpline(d) => d.evaluate(t),
-            AnyDerivative::Nurbs(d) => d.evaluate(t),
-        }
+    fn domain(&self) -> Range<f64> {
+        forward!(self, c => c.domain())
     }
-}
 
-impl<const D: usize> Evaluate<D> for AnyCurve<D> {
-    fn domain(&self) -> (f64, f64) {
-        AnyCurve::domain(self)
-    }
     fn evaluate(&self, t: f64) -> Result<CurvePoint<D>, EvalError> {
-        AnyCurve::evaluate(self, t)
+        forward!(self, c => c.evaluate(t))
     }
-    fn start(&self) -> CurvePoint<D> {
-        forward!(self, c => Evaluate::start(c))
+}
+
+impl<const D: usize> Derivative for AnyCurve<D> {
+    type Output = CurveDerivative<D>;
+
+    /// The derivative, of the same type for every kind.
+    fn derivative(&self) -> CurveDerivative<D> {
+        forward!(self, c => c.derivative())
     }
-    fn end(&self) -> CurvePoint<D> {
-        forward!(self, c => Evaluate::end(c))
+}
+
+impl<const D: usize> Split for AnyCurve<D> {
+    fn split(&self, t: f64) -> Result<(Self, Self), EvalError> {
+        forward!(self, c => c.split(t).map(|(a, b)| (a.into(), b.into())))
     }
-    fn evaluate_many(&self, ts: &[f64], out: &mut [CurvePoint<D>]) -> Result<(), EvalError> {
-        forward!(self, c => Evaluate::evaluate_many(c, ts, out))
+
+    fn subsegment(&self, t0: f64, t1: f64) -> Result<Self, EvalError> {
+        forward!(self, c => c.subsegment(t0, t1).map(Into::into))
+    }
+}
+
+impl<const D: usize> Elevate for AnyCurve<D> {
+    fn elevate(&self) -> Self {
+        forward!(self, c => c.elevate().into())
     }
 }
 
 impl<const D: usize> Bounded<D> for AnyCurve<D> {
     fn bounding_box(&self) -> BoundingBox<D> {
-        AnyCurve::bounding_box(self)
+        forward!(self, c => c.bounding_box())
     }
+
     fn control_bounding_box(&self) -> BoundingBox<D> {
-        AnyCurve::control_bounding_box(self)
+        forward!(self, c => c.control_bounding_box())
     }
 }
 

@@ -1,31 +1,33 @@
 //! Batch evaluation: many parameters, and many curves, into flat caller-owned buffers.
 //!
-//! A [`BezierBatch`] is a Bézier curve prepared for batch evaluation (its control values
-//! stored channel by channel). [`BezierBatch::evaluate`] and [`evaluate_curves`] write positions
-//! and the three degrees channel-major, one contiguous array per channel, allocating nothing
-//! per point. The parameters are [`BatchParams::Uniform`] (evenly spaced, generated on the
-//! fly) or [`BatchParams::Values`].
+//! A [`CurveBatch`] is a curve of any kind prepared for batch evaluation: its Bézier pieces
+//! (one for a Bézier curve, one per non-empty knot span of a B-spline or NURBS curve) with
+//! their control values stored channel by channel. [`CurveBatch::evaluate`] and
+//! [`CurveBatch::evaluate_all`] write positions and the three degrees channel-major, one
+//! contiguous array per channel, allocating nothing per point. The parameters are
+//! [`BatchParams::Uniform`] (evenly spaced over the domain, generated on the fly) or
+//! [`BatchParams::Values`]. Each parameter is evaluated on its piece at the local parameter
+//! `(t - a) / (b - a)`, rational pieces in homogeneous form followed by one division.
 //!
-//! A [`CurveBatch`] does the same for a curve of any kind: a B-spline or NURBS curve is
-//! evaluated as its Bézier pieces (one per non-empty knot span), each parameter on its piece
-//! at the local parameter `(t - a) / (b - a)`, rational pieces in homogeneous form followed by
-//! one division; the same kernels, threads and accuracy (see [`CurveBatch`]).
+//! This module also holds the tuning constants and the instruction-set query
+//! ([`DIRECT_MAX_DEGREE`], [`PARALLEL_THRESHOLD`], [`instruction_set`]), which most users
+//! never need; the crate root re-exports the rest.
 //!
 //! ## Method and accuracy
 //! The kernels run several parameters at once, one per SIMD lane. Up to degree 3 they run
 //! Horner's rule on the Taylor expansion about the nearer end of \[0, 1\] (in `t` below 1/2,
 //! in `1 - t` above, so the variable never exceeds 1/2 and the error stays below
 //! `(2n + 1) 2^n 2^-53` times the largest control value). From degree 4 to
-//! [`BATCH_DIRECT_MAX_DEGREE`] (1000) they compute the Bernstein weights
+//! [`DIRECT_MAX_DEGREE`] (1000) they compute the Bernstein weights
 //! `C(n, i) t^i (1 - t)^(n - i)` of each parameter and take one dot product per channel (O(n)
 //! per channel instead of de Casteljau's O(n^2)); above (where `C(n, n/2)` nears the end of
 //! the `f64` range), they run de Casteljau's algorithm lane-parallel. Accuracy is not traded for speed: the result
-//! agrees with [`Bezier::evaluate`] within a few `n * 2^-53` times the channel's largest
+//! agrees with [`Evaluate::evaluate`](crate::Evaluate::evaluate) within a few `n * 2^-53` times the channel's largest
 //! absolute control value (tested: 1e-14 up to degree 15, 1e-12 up to degree 400, parameters
 //! near 0 and 1 included), the end parameters give the end control points exactly, and every
 //! channel is projected onto the range of its control values, which provably contains the
 //! exact value (the weights are non-negative and sum to 1), so degrees stay inside \[0, 1\].
-//! Above degree 1000 the results are bit-identical to [`Bezier::evaluate`].
+//! Above degree 1000 the results are bit-identical to scalar evaluation.
 //!
 //! ## Instruction sets and threads
 //! With the `simd` feature the widest instruction set of the processor is chosen at run time
@@ -40,16 +42,11 @@ mod piecewise;
 
 pub use piecewise::CurveBatch;
 
-use kernel::{Coeffs, Params, Uniform, Values};
-use lanes::{LaneJob, Lanes};
-
-use crate::bezier::Bezier;
-use crate::curve::{check_parameter, EvalError};
-use crate::layout::stride;
+use core::ops::Range;
 
 /// Highest degree evaluated through Bernstein weights; above it the batch kernels run
-/// de Casteljau's algorithm and give results bit-identical to [`Bezier::evaluate`].
-pub const BATCH_DIRECT_MAX_DEGREE: usize = 1000;
+/// de Casteljau's algorithm and give results bit-identical to scalar evaluation.
+pub const DIRECT_MAX_DEGREE: usize = 1000;
 
 /// Default of [`BatchOptions::parallel_threshold`]: `2^18` units of work, i.e. 65,536
 /// parameters of a cubic. Below it, splitting costs more than it saves.
@@ -62,11 +59,11 @@ const BLOCK: usize = 4096;
 /// The parameters of a batch.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum BatchParams<'a> {
-    /// `count` evenly spaced parameters over \[0, 1\]: `t_k = k / (count - 1)` for
-    /// `k = 0 .. count`, computed exactly as `k as f64 / (count - 1) as f64` (so `t_0 = 0` and
-    /// `t_{count-1} = 1` exactly); a single parameter is `t = 0`.
+    /// `count` evenly spaced parameters over the curve's domain `[a, b]`: `t_k =`
+    /// [`uniform_parameter`]`(k, count, a..b)`, so `t_0 = a` and `t_{count-1} = b` exactly
+    /// (on \[0, 1\] exactly `k as f64 / (count - 1) as f64`); a single parameter is `t = a`.
     Uniform(usize),
-    /// The given parameters, each finite and in \[0, 1\].
+    /// The given parameters, each finite and in the curve's domain.
     Values(&'a [f64]),
 }
 
@@ -84,34 +81,34 @@ impl BatchParams<'_> {
         self.len() == 0
     }
 
-    /// Parameter `k`.
+    /// Parameter `k` for a curve with the given domain.
     ///
     /// # Panics
     /// If `k >= len()`.
-    pub fn get(&self, k: usize) -> f64 {
+    pub fn get(&self, k: usize, domain: Range<f64>) -> f64 {
         match *self {
             BatchParams::Uniform(count) => {
                 assert!(k < count, "parameter index {k} out of range ({count})");
-                uniform_parameter(k, count, (0.0, 1.0))
+                uniform_parameter(k, count, domain)
             }
             BatchParams::Values(ts) => ts[k],
         }
     }
 }
 
-/// Parameter `k` of `count` evenly spaced over `[a, b]`: `a + (b - a) (k / (count - 1))`,
-/// with both ends exact and never outside `[a, b]` (a single parameter is `a`). On \[0, 1\]
-/// it is exactly `k as f64 / (count - 1) as f64`, the parameters of
-/// [`BatchParams::Uniform`].
+/// Parameter `k` of `count` evenly spaced over `[a, b]` (the domain `a..b`):
+/// `a + (b - a) (k / (count - 1))`, with both ends exact and never outside `[a, b]` (a single
+/// parameter is `a`). On \[0, 1\] it is exactly `k as f64 / (count - 1) as f64`. Every front
+/// end samples curves with it, and so does [`BatchParams::Uniform`].
 ///
 /// ```
 /// use neutrospline::uniform_parameter;
-/// assert_eq!(uniform_parameter(0, 5, (2.0, 3.0)), 2.0);
-/// assert_eq!(uniform_parameter(2, 5, (2.0, 3.0)), 2.5);
-/// assert_eq!(uniform_parameter(4, 5, (0.1, 0.7)), 0.7);
-/// assert_eq!(uniform_parameter(3, 10, (0.0, 1.0)), 3.0 / 9.0);
+/// assert_eq!(uniform_parameter(0, 5, 2.0..3.0), 2.0);
+/// assert_eq!(uniform_parameter(2, 5, 2.0..3.0), 2.5);
+/// assert_eq!(uniform_parameter(4, 5, 0.1..0.7), 0.7);
+/// assert_eq!(uniform_parameter(3, 10, 0.0..1.0), 3.0 / 9.0);
 /// ```
-pub fn uniform_parameter(k: usize, count: usize, (a, b): (f64, f64)) -> f64 {
+pub fn uniform_parameter(k: usize, count: usize, Range { start: a, end: b }: Range<f64>) -> f64 {
     if k == 0 || count <= 1 {
         a
     } else if k + 1 >= count {
@@ -197,126 +194,11 @@ impl BatchOptions {
 
 /// The instruction set the batch kernels use on this processor: `"avx512"`, `"avx2+fma"` or
 /// `"portable"` (see the module documentation and the `simd` / `avx512` features).
-pub fn batch_instruction_set() -> &'static str {
+pub fn instruction_set() -> &'static str {
     match lanes::isa() {
         lanes::Isa::Avx512 => "avx512",
         lanes::Isa::Avx2Fma => "avx2+fma",
         lanes::Isa::Portable | lanes::Isa::Other => "portable",
-    }
-}
-
-/// A Bézier curve prepared for batch evaluation.
-///
-/// Built once from a [`Bezier`] (its control values copied channel by channel), then
-/// evaluated at any number of parameters with [`BezierBatch::evaluate`], or together with
-/// other curves with [`evaluate_curves`].
-///
-/// ```
-/// use neutrospline::{BatchOptions, BatchParams, BezierBatch};
-/// let batch = BezierBatch::new(&neutrospline::example1());
-/// let count = 5;
-/// let mut out = vec![0.0; 5 * count]; // x, y, truth, indeterminacy, falsity
-/// batch.evaluate(BatchParams::Uniform(count), &mut out, &BatchOptions::default())?;
-/// let (x, rest) = out.split_at(count);
-/// let (y, degrees) = rest.split_at(count);
-/// assert_eq!(x[2], 4.625); // t = 0.5
-/// assert_eq!(y[2], 4.0);
-/// assert!((degrees[2] - 0.625).abs() < 1e-15); // truth
-/// assert_eq!([x[0], y[0], x[4], y[4]], [1.0, 3.0, 9.0, 5.0]); // end points, exactly
-/// # Ok::<(), neutrospline::EvalError>(())
-/// ```
-#[derive(Clone, Debug, PartialEq)]
-pub struct BezierBatch<const D: usize> {
-    coeffs: Coeffs,
-}
-
-impl<const D: usize> BezierBatch<D> {
-    /// Prepares `curve`.
-    ///
-    /// # Panics
-    /// If `D` is not 2 or 3.
-    pub fn new(curve: &Bezier<D>) -> Self {
-        assert!(
-            D == 2 || D == 3,
-            "batch evaluation supports 2-D and 3-D curves"
-        );
-        let data: Vec<f64> = curve
-            .control_points()
-            .iter()
-            .flat_map(|p| p.position.into_iter().chain(p.degrees.to_array()))
-            .collect();
-        BezierBatch {
-            coeffs: Coeffs::from_packed(stride(D), &data),
-        }
-    }
-
-    /// The polynomial degree `n`.
-    pub fn degree(&self) -> usize {
-        self.coeffs.degree
-    }
-
-    /// Evaluates at every parameter of `params` into `out`, channel-major: channel `c` at
-    /// parameter `k` is `out[c * params.len() + k]`, channels x, y, \[z,\] truth,
-    /// indeterminacy, falsity (the layout of [`Bezier::evaluate_channels`]).
-    ///
-    /// # Errors
-    /// The first parameter (lowest index) not finite or outside \[0, 1\]; `out` is then
-    /// partly written.
-    ///
-    /// # Panics
-    /// If `out.len() != (D + 3) * params.len()`.
-    pub fn evaluate(
-        &self,
-        params: BatchParams<'_>,
-        out: &mut [f64],
-        options: &BatchOptions,
-    ) -> Result<(), EvalError> {
-        evaluate_curves(core::slice::from_ref(self), params, out, options)
-    }
-}
-
-impl<const D: usize> From<&Bezier<D>> for BezierBatch<D> {
-    fn from(curve: &Bezier<D>) -> Self {
-        BezierBatch::new(curve)
-    }
-}
-
-/// Evaluates every curve at the same parameters: curve `j`, channel `c`, parameter `k` at
-/// `out[(j * (D + 3) + c) * params.len() + k]` (each curve's block laid out as in
-/// [`BezierBatch::evaluate`]). The curves may have different degrees.
-///
-/// ```
-/// use neutrospline::{evaluate_curves, BatchOptions, BatchParams, BezierBatch};
-/// let a = neutrospline::example1();
-/// let b = a.elevate();
-/// let curves = [BezierBatch::new(&a), BezierBatch::new(&b)];
-/// let ts = [0.25, 0.5];
-/// let mut out = vec![0.0; 2 * 5 * ts.len()];
-/// evaluate_curves(&curves, BatchParams::Values(&ts), &mut out, &BatchOptions::default())?;
-/// // The elevated curve is the same curve.
-/// for (x, y) in out[..10].iter().zip(&out[10..]) {
-///     assert!((x - y).abs() < 1e-14);
-/// }
-/// # Ok::<(), neutrospline::EvalError>(())
-/// ```
-///
-/// # Errors
-/// The first parameter (lowest index) not finite or outside \[0, 1\]; `out` is then partly
-/// written.
-///
-/// # Panics
-/// If `out.len() != curves.len() * (D + 3) * params.len()`.
-pub fn evaluate_curves<const D: usize>(
-    curves: &[BezierBatch<D>],
-    params: BatchParams<'_>,
-    out: &mut [f64],
-    options: &BatchOptions,
-) -> Result<(), EvalError> {
-    let coeffs: Vec<&Coeffs> = curves.iter().map(|c| &c.coeffs).collect();
-    match stride(D) {
-        5 => evaluate_all::<5>(&coeffs, params, out, options),
-        6 => evaluate_all::<6>(&coeffs, params, out, options),
-        _ => unreachable!("BezierBatch::new accepts D = 2 or 3 only"),
     }
 }
 
@@ -326,26 +208,6 @@ struct Task<'a, T, const CH: usize> {
     start: usize,
     end: usize,
     items: Vec<(T, [&'a mut [f64]; CH])>,
-}
-
-fn evaluate_all<const CH: usize>(
-    curves: &[&Coeffs],
-    params: BatchParams<'_>,
-    out: &mut [f64],
-    options: &BatchOptions,
-) -> Result<(), EvalError> {
-    let count = params.len();
-    let degrees = curves.iter().map(|c| c.degree);
-    let Some(threads) = plan(out.len(), CH, count, degrees, options) else {
-        return Ok(());
-    };
-    let tasks = partition::<_, CH>(curves, count, out, threads);
-    let first_bad = run_tasks(tasks, threads, |task| run_task(task, params));
-    match first_bad {
-        None => Ok(()),
-        Some(k) => Err(check_parameter(params.get(k), (0.0, 1.0))
-            .expect_err("an invalid parameter was reported")),
-    }
 }
 
 /// Checks that `out` holds `channels` values per curve and parameter and chooses the number of
@@ -462,69 +324,10 @@ fn run_tasks<'a, T: Send, R: Ord + Send, const CH: usize>(
     tasks.into_iter().filter_map(run).min()
 }
 
-/// Evaluates one task block by block; stops at the first invalid parameter and returns its
-/// index.
-fn run_task<const CH: usize>(
-    task: Task<'_, &Coeffs, CH>,
-    params: BatchParams<'_>,
-) -> Option<usize> {
-    struct Job<'a, 'p, const CH: usize> {
-        task: Task<'a, &'a Coeffs, CH>,
-        params: BatchParams<'p>,
-    }
-    impl<const CH: usize> LaneJob for Job<'_, '_, CH> {
-        type Output = Option<usize>;
-        #[inline(always)]
-        fn run<L: Lanes>(self, l: L) -> Option<usize> {
-            let Job { mut task, params } = self;
-            let mut scratch = Vec::new();
-            let mut block = task.start;
-            while block < task.end {
-                let end = (block + BLOCK).min(task.end);
-                let (lo, hi) = (block - task.start, end - task.start);
-                match params {
-                    BatchParams::Uniform(count) => {
-                        let run = Uniform {
-                            first: block,
-                            denominator: count.saturating_sub(1).max(1) as f64,
-                        };
-                        evaluate_block(l, &run, &mut task.items, lo, hi, &mut scratch);
-                    }
-                    BatchParams::Values(ts) => {
-                        let run = &ts[block..end];
-                        if let Some(bad) = first_outside(run, (0.0, 1.0)) {
-                            return Some(block + bad);
-                        }
-                        evaluate_block(l, &Values(run), &mut task.items, lo, hi, &mut scratch);
-                    }
-                }
-                block = end;
-            }
-            None
-        }
-    }
-    lanes::dispatch(Job { task, params })
-}
-
-/// The block `[lo, hi)` of the task's outputs, for every curve of the task.
-#[inline(always)]
-fn evaluate_block<L: Lanes, P: Params, const CH: usize>(
-    l: L,
-    run: &P,
-    items: &mut [(&Coeffs, [&mut [f64]; CH])],
-    lo: usize,
-    hi: usize,
-    scratch: &mut Vec<L::V>,
-) {
-    for (coeffs, outs) in items.iter_mut() {
-        let mut block: [&mut [f64]; CH] = outs.each_mut().map(|s| &mut s[lo..hi]);
-        kernel::evaluate(l, coeffs, run, &mut block, scratch);
-    }
-}
-
 /// Index of the first parameter not in `[start, end]` (NaN included).
 #[inline(always)]
-fn first_outside(ts: &[f64], (start, end): (f64, f64)) -> Option<usize> {
+fn first_outside(ts: &[f64], Range { start, end }: &Range<f64>) -> Option<usize> {
+    let (start, end) = (*start, *end);
     // Branch-free test first (vectorised); the search only when something is wrong.
     let inside = |t: &f64| start <= *t && *t <= end;
     let all_valid = ts.iter().fold(true, |ok, t| ok & inside(t));
@@ -537,14 +340,26 @@ fn first_outside(ts: &[f64], (start, end): (f64, f64)) -> Option<usize> {
 
 #[cfg(test)]
 mod tests {
+    use super::kernel::Values;
+    use super::lanes::{LaneJob, Lanes};
     use super::*;
+    use crate::bezier::Bezier;
+    use crate::curve::Evaluate;
     use crate::example::example1;
+    use crate::layout::stride;
     use crate::point::ControlPoint;
     use crate::Degrees;
 
+    /// Channel-major values from scalar evaluation.
     fn reference<const D: usize>(curve: &Bezier<D>, ts: &[f64]) -> Vec<f64> {
         let mut out = vec![0.0; stride(D) * ts.len()];
-        curve.evaluate_channels(ts, &mut out).unwrap();
+        for (k, &t) in ts.iter().enumerate() {
+            let p = curve.evaluate(t).unwrap();
+            let channels = p.position.into_iter().chain(p.degrees.to_array());
+            for (c, v) in channels.enumerate() {
+                out[c * ts.len() + k] = v;
+            }
+        }
         out
     }
 
@@ -566,7 +381,7 @@ mod tests {
         let count = 1001;
         let ts: Vec<f64> = (0..count).map(|k| k as f64 / (count - 1) as f64).collect();
         let mut out = vec![0.0; 5 * count];
-        BezierBatch::new(&curve)
+        CurveBatch::from(&curve)
             .evaluate(
                 BatchParams::Uniform(count),
                 &mut out,
@@ -589,7 +404,7 @@ mod tests {
         // de Casteljau; odd counts exercise the partial last vector.
         for n in [0, 1, 2, 3, 5, 7, 15, 16, 40, 64, 65, 90, 1000, 1001] {
             let curve = curve_of_degree(n);
-            let batch = BezierBatch::new(&curve);
+            let batch = CurveBatch::from(&curve);
             let counts: &[usize] = if n > 100 { &[3, 9] } else { &[1, 3, 9, 37] };
             for &count in counts {
                 let ts: Vec<f64> = (0..count)
@@ -601,7 +416,7 @@ mod tests {
                     .unwrap();
                 let expected = reference(&curve, &ts);
                 for (a, b) in out.iter().zip(&expected) {
-                    if n > BATCH_DIRECT_MAX_DEGREE {
+                    if n > DIRECT_MAX_DEGREE {
                         assert_eq!(a, b, "degree {n}");
                     } else {
                         // 1e-13, and 1e-12 times the largest control value (10) up high.
@@ -615,7 +430,7 @@ mod tests {
 
     #[test]
     fn batch_portable_path_agrees() {
-        struct Both<'a>(&'a Coeffs, &'a [f64]);
+        struct Both<'a>(&'a kernel::Coeffs, &'a [f64]);
         impl LaneJob for Both<'_> {
             type Output = Vec<f64>;
             fn run<L: Lanes>(self, l: L) -> Vec<f64> {
@@ -628,10 +443,11 @@ mod tests {
             }
         }
         for n in [3, 7, 15, 30, 70] {
-            let batch = BezierBatch::new(&curve_of_degree(n));
+            let batch = CurveBatch::from(&curve_of_degree(n));
             let ts: Vec<f64> = (0..29).map(|k| k as f64 / 28.0).collect();
-            let fast = lanes::dispatch(Both(&batch.coeffs, &ts));
-            let portable = lanes::dispatch_portable(Both(&batch.coeffs, &ts));
+            let coeffs = batch.piece_coeffs(0);
+            let fast = lanes::dispatch(Both(coeffs, &ts));
+            let portable = lanes::dispatch_portable(Both(coeffs, &ts));
             for (a, b) in fast.iter().zip(&portable) {
                 assert!((a - b).abs() <= 1e-13, "degree {n}: {a} vs {b}");
             }
@@ -640,7 +456,7 @@ mod tests {
 
     #[test]
     fn batch_rejects_bad_parameters_with_lowest_index() {
-        let batch = BezierBatch::new(&example1());
+        let batch = CurveBatch::from(&example1());
         let mut ts = vec![0.5; 10_000];
         ts[9000] = f64::NAN;
         ts[7000] = 1.5;
@@ -669,12 +485,12 @@ mod tests {
 
     #[test]
     fn batch_threads_and_curves_partition() {
-        let curves: Vec<BezierBatch<2>> = (0..7)
-            .map(|n| BezierBatch::new(&curve_of_degree(n)))
+        let curves: Vec<CurveBatch<2>> = (0..7)
+            .map(|n| CurveBatch::from(&curve_of_degree(n)))
             .collect();
         let count = 1000;
         let mut one = vec![0.0; curves.len() * 5 * count];
-        evaluate_curves(
+        CurveBatch::evaluate_all(
             &curves,
             BatchParams::Uniform(count),
             &mut one,
@@ -684,7 +500,7 @@ mod tests {
         for threads in [2, 3, 4, 16] {
             for subset in [1, 2, 7] {
                 let mut many = vec![0.0; subset * 5 * count];
-                evaluate_curves(
+                CurveBatch::evaluate_all(
                     &curves[..subset],
                     BatchParams::Uniform(count),
                     &mut many,
@@ -704,7 +520,7 @@ mod tests {
 
     #[test]
     fn batch_uniform_edge_counts() {
-        let batch = BezierBatch::new(&example1());
+        let batch = CurveBatch::from(&example1());
         let mut none: [f64; 0] = [];
         batch
             .evaluate(BatchParams::Uniform(0), &mut none, &BatchOptions::default())
@@ -718,8 +534,9 @@ mod tests {
             )
             .unwrap();
         assert_eq!(single, [1.0, 3.0, 0.3, 0.6, 0.1]);
-        assert_eq!(BatchParams::Uniform(1).get(0), 0.0);
-        assert_eq!(BatchParams::Uniform(3).get(1), 0.5);
+        assert_eq!(BatchParams::Uniform(1).get(0, 0.0..1.0), 0.0);
+        assert_eq!(BatchParams::Uniform(3).get(1, 0.0..1.0), 0.5);
+        assert_eq!(BatchParams::Uniform(3).get(1, 2.0..4.0), 3.0);
         assert!(BatchParams::Values(&[]).is_empty());
     }
 
@@ -728,7 +545,7 @@ mod tests {
         let c = example1().degree_curve(crate::DegreeKind::Truth);
         let ts = [0.0, 0.3, 1.0];
         let mut out = vec![0.0; 6 * 3];
-        BezierBatch::new(&c)
+        CurveBatch::from(&c)
             .evaluate(BatchParams::Values(&ts), &mut out, &BatchOptions::default())
             .unwrap();
         let expected = reference(&c, &ts);

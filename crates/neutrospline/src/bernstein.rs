@@ -51,6 +51,11 @@ impl Packed {
         self.count() - 1
     }
 
+    /// Channels per control value.
+    pub(crate) fn stride(&self) -> usize {
+        self.stride
+    }
+
     pub(crate) fn data(&self) -> &[f64] {
         &self.data
     }
@@ -174,23 +179,6 @@ impl Packed {
             }
         }
         data.extend_from_slice(self.row(n));
-        Packed::new(stride, data)
-    }
-
-    /// Hodograph: `n (P_{i+1} - P_i)`, a polynomial of degree `n - 1` (degree 0 gives zero).
-    pub(crate) fn hodograph(&self) -> Packed {
-        let stride = self.stride;
-        let n = self.degree();
-        if n == 0 {
-            return Packed::new(stride, vec![0.0; stride]);
-        }
-        let scale = n as f64;
-        let data = self
-            .data
-            .windows(stride + 1)
-            .take(n * stride)
-            .map(|w| scale * (w[stride] - w[0]))
-            .collect();
         Packed::new(stride, data)
     }
 
@@ -346,16 +334,12 @@ mod tests {
     }
 
     #[test]
-    fn packed_elevate_and_hodograph() {
+    fn packed_elevate() {
         let p = cubic();
         let e = p.elevate();
         assert_eq!(e.degree(), 4);
         // Q_i = i/4 P_{i-1} + (1 - i/4) P_i.
         assert_eq!(e.data(), &[1.0, -1.25, 0.5, 2.375, 0.5]);
-        let h = p.hodograph();
-        assert_eq!(h.data(), &[-9.0, 15.0, -7.5]);
-        let zero = Packed::new(2, vec![4.0, 5.0]).hodograph();
-        assert_eq!(zero.data(), &[0.0, 0.0]);
     }
 
     #[test]

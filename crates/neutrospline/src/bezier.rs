@@ -1,13 +1,18 @@
 //! Neutrosophic Bézier curves (paper Eq. 6-8, SPEC section 4).
 
+use core::ops::Range;
+
 use crate::bernstein::Packed;
 use crate::curve::{
     check_parameter, Bounded, CurveError, Derivative, Elevate, EvalError, Evaluate, Split,
     BOUNDS_TOLERANCE,
 };
 use crate::degrees::DegreeKind;
-use crate::layout::{derivative_from_row, lift_degree, pack_points, point_from_row, stride};
-use crate::point::{Affine, BoundingBox, ControlPoint, CurvePoint, DerivativeValue};
+use crate::derivative::CurveDerivative;
+use crate::layout::{lift_degree, pack_points, point_from_row, stride};
+use crate::point::{Affine, BoundingBox, ControlPoint, CurvePoint};
+use crate::spline::Spline;
+use crate::spline_curve::BSpline;
 
 /// A neutrosophic Bézier curve of degree `n` in `D` dimensions (`D` = 2 or 3).
 ///
@@ -32,7 +37,7 @@ use crate::point::{Affine, BoundingBox, ControlPoint, CurvePoint, DerivativeValu
 /// # Examples
 /// The paper's Example 1 at t = 0.5:
 /// ```
-/// use neutrospline::{Bezier, ControlPoint, Degrees};
+/// use neutrospline::{Bezier, ControlPoint, Degrees, Evaluate};
 /// let p = |x, y, t, i, f| ControlPoint::new([x, y], Degrees::new(t, i, f).unwrap());
 /// let curve = Bezier::new(vec![
 ///     p(1.0, 3.0, 0.3, 0.6, 0.1),
@@ -55,7 +60,8 @@ impl<const D: usize> Bezier<D> {
     ///
     /// # Errors
     /// [`CurveError::NoControlPoints`] for an empty list; [`CurveError::PositionNotFinite`]
-    /// naming the first control point with a NaN or infinite coordinate.
+    /// naming the first control point with a NaN or infinite coordinate;
+    /// [`CurveError::UnsupportedDimension`] unless `D` is 2 or 3.
     pub fn new(control_points: Vec<ControlPoint<D>>) -> Result<Self, CurveError> {
         Ok(Bezier {
             packed: Packed::new(stride(D), pack_points(&control_points)?),
@@ -98,144 +104,11 @@ impl<const D: usize> Bezier<D> {
         (0..self.len()).map(|i| self.control_point(i)).collect()
     }
 
-    /// The point at `t` in \[0, 1\], by de Casteljau's algorithm.
-    ///
-    /// # Errors
-    /// `t` not finite or outside \[0, 1\].
-    pub fn evaluate(&self, t: f64) -> Result<CurvePoint<D>, EvalError> {
-        check_parameter(t, (0.0, 1.0))?;
-        let mut row = [0.0; 6];
-        self.packed.evaluate(t, &mut row);
-        Ok(point_from_row(&row))
-    }
-
-    /// Evaluates at each parameter of `ts` into `out`, with one scratch buffer for the whole
-    /// batch (no allocation per point).
-    ///
-    /// # Errors
-    /// The first parameter not finite or outside \[0, 1\]; `out` is then partly written.
-    ///
-    /// # Panics
-    /// If `out.len() != ts.len()`.
-    pub fn evaluate_many(&self, ts: &[f64], out: &mut [CurvePoint<D>]) -> Result<(), EvalError> {
-        assert_eq!(
-            ts.len(),
-            out.len(),
-            "evaluate_many: ts and out differ in length"
-        );
-        let mut scratch = vec![0.0; self.packed.data().len()];
-        let mut row = [0.0; 6];
-        for (&t, slot) in ts.iter().zip(out.iter_mut()) {
-            check_parameter(t, (0.0, 1.0))?;
-            self.packed.evaluate_with(t, &mut scratch, &mut row);
-            *slot = point_from_row(&row);
-        }
-        Ok(())
-    }
-
-    /// Evaluates at each parameter of `ts` into one contiguous array per channel.
-    ///
-    /// `out` is channel-major with `out.len() == (D + 3) * ts.len()`: channel `c` at parameter
-    /// `k` is `out[c * ts.len() + k]`, channels in the order x, y, \[z,\] truth,
-    /// indeterminacy, falsity.
-    ///
-    /// ```
-    /// let curve = neutrospline::example1();
-    /// let ts = [0.0, 0.5, 1.0];
-    /// let mut out = vec![0.0; 5 * ts.len()];
-    /// curve.evaluate_channels(&ts, &mut out)?;
-    /// assert_eq!(&out[0..3], &[1.0, 4.625, 9.0]); // x
-    /// assert_eq!(&out[3..6], &[3.0, 4.0, 5.0]); // y
-    /// # Ok::<(), neutrospline::EvalError>(())
-    /// ```
-    ///
-    /// # Errors
-    /// The first parameter not finite or outside \[0, 1\]; `out` is then partly written.
-    ///
-    /// # Panics
-    /// If `out.len() != (D + 3) * ts.len()`.
-    pub fn evaluate_channels(&self, ts: &[f64], out: &mut [f64]) -> Result<(), EvalError> {
-        let count = ts.len();
-        assert_eq!(
-            out.len(),
-            stride(D) * count,
-            "evaluate_channels: out must hold (D + 3) * ts.len() values"
-        );
-        let mut scratch = vec![0.0; self.packed.data().len()];
-        let mut row = [0.0; 6];
-        for (k, &t) in ts.iter().enumerate() {
-            check_parameter(t, (0.0, 1.0))?;
-            self.packed.evaluate_with(t, &mut scratch, &mut row);
-            for (c, &v) in row[..stride(D)].iter().enumerate() {
-                out[c * count + k] = v;
-            }
-        }
-        Ok(())
-    }
-
-    /// The derivative `d/dt` of positions and degrees: the hodograph, a Bézier polynomial of
-    /// degree `n - 1` with control vectors `n (P_{i+1} - P_i)` (zero for a degree-0 curve).
-    ///
-    /// ```
-    /// let d = neutrospline::example1().derivative();
-    /// let v = d.evaluate(0.0)?;
-    /// assert_eq!(v.position, [6.0, 9.0]); // 3 (P_1 - P_0)
-    /// # Ok::<(), neutrospline::EvalError>(())
-    /// ```
-    pub fn derivative(&self) -> BezierDerivative<D> {
-        BezierDerivative {
-            packed: self.packed.hodograph(),
-        }
-    }
-
-    /// Splits at `t` (de Casteljau) into the curves on \[0, t\] and \[t, 1\], each
-    /// reparametrised to \[0, 1\]. Together they reproduce the curve exactly (up to rounding).
-    ///
-    /// # Errors
-    /// `t` not finite or outside \[0, 1\].
-    pub fn split(&self, t: f64) -> Result<(Bezier<D>, Bezier<D>), EvalError> {
-        check_parameter(t, (0.0, 1.0))?;
-        let (left, right) = self.packed.split(t);
-        Ok((Bezier { packed: left }, Bezier { packed: right }))
-    }
-
-    /// The piece of the curve on \[t0, t1\], reparametrised to \[0, 1\]; reversed if `t0 > t1`.
-    ///
-    /// # Errors
-    /// A parameter not finite or outside \[0, 1\].
-    pub fn subsegment(&self, t0: f64, t1: f64) -> Result<Bezier<D>, EvalError> {
-        check_parameter(t0, (0.0, 1.0))?;
-        check_parameter(t1, (0.0, 1.0))?;
-        Ok(Bezier {
-            packed: self.packed.subsegment(t0, t1),
-        })
-    }
-
     /// The same curve traversed backwards: control points in reverse order.
     pub fn reversed(&self) -> Bezier<D> {
         Bezier {
             packed: self.packed.reversed(),
         }
-    }
-
-    /// Degree elevation: the same curve as a Bézier curve of degree `n + 1`, with
-    /// `Q_i = (i / (n+1)) P_{i-1} + (1 - i / (n+1)) P_i` for `i = 0 ..= n + 1`.
-    pub fn elevate(&self) -> Bezier<D> {
-        Bezier {
-            packed: self.packed.elevate(),
-        }
-    }
-
-    /// Bounds of positions and degrees over the whole curve: they contain every point, and
-    /// each side is within [`BOUNDS_TOLERANCE`] times the channel's largest absolute control
-    /// value of the true extremum (branch and bound on the convex hull property).
-    pub fn bounding_box(&self) -> BoundingBox<D> {
-        BoundingBox::from_channel_ranges(|c| self.packed.channel_range(c, None, BOUNDS_TOLERANCE))
-    }
-
-    /// Bounds of the control values: contain the curve (convex hull property); loose.
-    pub fn control_bounding_box(&self) -> BoundingBox<D> {
-        BoundingBox::from_channel_ranges(|c| self.packed.control_range(c))
     }
 
     /// The curve with an affine map applied to its control positions; degrees unchanged.
@@ -244,12 +117,21 @@ impl<const D: usize> Bezier<D> {
     /// # Errors
     /// [`CurveError::PositionNotFinite`] if a mapped position overflows.
     pub fn transform(&self, map: &Affine<D>) -> Result<Bezier<D>, CurveError> {
-        Bezier::new(
-            self.control_points()
-                .into_iter()
-                .map(|p| ControlPoint::new(map.apply(p.position), p.degrees))
-                .collect(),
-        )
+        Bezier::new(map.apply_to_points(self.control_points()))
+    }
+
+    /// The same curve as a clamped B-spline: the same control points over `n + 1` knots 0
+    /// then `n + 1` knots 1 (one span on \[0, 1\]).
+    ///
+    /// ```
+    /// use neutrospline::Evaluate;
+    /// let spline = neutrospline::example1().to_bspline();
+    /// assert_eq!(spline.knots().knots(), &[0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0]);
+    /// assert_eq!(spline.evaluate(0.5)?.position, [4.625, 4.0]);
+    /// # Ok::<(), neutrospline::EvalError>(())
+    /// ```
+    pub fn to_bspline(&self) -> BSpline<D> {
+        BSpline::from_spline(Spline::from_bezier(&self.packed, None))
     }
 }
 
@@ -259,7 +141,7 @@ impl Bezier<2> {
     /// crisp curve. The control points keep all three of their degrees.
     ///
     /// ```
-    /// use neutrospline::DegreeKind;
+    /// use neutrospline::{DegreeKind, Evaluate};
     /// let truth_curve = neutrospline::example1().degree_curve(DegreeKind::Truth);
     /// let p = truth_curve.evaluate(0.5)?;
     /// assert_eq!(p.position[..2], [4.625, 4.0]);
@@ -273,99 +155,75 @@ impl Bezier<2> {
     }
 }
 
-/// The derivative of a [`Bezier`] curve: a polynomial in Bernstein form whose values are rates
-/// of change, so its "degrees" may be any real number.
-#[derive(Clone, Debug, PartialEq)]
-pub struct BezierDerivative<const D: usize> {
-    packed: Packed,
-}
+impl<const D: usize> Evaluate for Bezier<D> {
+    type Point = CurvePoint<D>;
 
-impl<const D: usize> BezierDerivative<D> {
-    /// Polynomial degree of the derivative (`n - 1`, or 0 for a degree-0 curve).
-    pub fn degree(&self) -> usize {
-        self.packed.degree()
+    /// Always \[0, 1\].
+    fn domain(&self) -> Range<f64> {
+        0.0..1.0
     }
 
-    /// The control vectors `n (P_{i+1} - P_i)` with the same differences of the degrees.
-    pub fn coefficients(&self) -> Vec<DerivativeValue<D>> {
-        self.packed
-            .data()
-            .chunks_exact(stride(D))
-            .map(derivative_from_row)
-            .collect()
-    }
-
-    /// The derivative at `t` in \[0, 1\].
+    /// The point at `t` in \[0, 1\], by de Casteljau's algorithm (exactly the first and last
+    /// control points at 0 and 1).
     ///
     /// # Errors
-    /// `t` not finite or outside \[0, 1\]; [`EvalError::Overflow`] when a value is not
-    /// representable (control positions near the largest float).
-    pub fn evaluate(&self, t: f64) -> Result<DerivativeValue<D>, EvalError> {
-        check_parameter(t, (0.0, 1.0))?;
+    /// `t` not finite or outside \[0, 1\].
+    fn evaluate(&self, t: f64) -> Result<CurvePoint<D>, EvalError> {
+        check_parameter(t, &(0.0..1.0))?;
         let mut row = [0.0; 6];
         self.packed.evaluate(t, &mut row);
-        if row[..stride(D)].iter().any(|v| !v.is_finite()) {
-            return Err(EvalError::Overflow { t });
-        }
-        Ok(derivative_from_row(&row))
-    }
-
-    /// The next derivative.
-    pub fn derivative(&self) -> BezierDerivative<D> {
-        BezierDerivative {
-            packed: self.packed.hodograph(),
-        }
-    }
-}
-
-impl<const D: usize> Evaluate<D> for Bezier<D> {
-    fn domain(&self) -> (f64, f64) {
-        (0.0, 1.0)
-    }
-    fn evaluate(&self, t: f64) -> Result<CurvePoint<D>, EvalError> {
-        Bezier::evaluate(self, t)
-    }
-    /// The first control point, exactly.
-    fn start(&self) -> CurvePoint<D> {
-        self.control_point(0)
-    }
-    /// The last control point, exactly.
-    fn end(&self) -> CurvePoint<D> {
-        self.control_point(self.degree())
-    }
-    fn evaluate_many(&self, ts: &[f64], out: &mut [CurvePoint<D>]) -> Result<(), EvalError> {
-        Bezier::evaluate_many(self, ts, out)
+        Ok(point_from_row(&row))
     }
 }
 
 impl<const D: usize> Derivative for Bezier<D> {
-    type Output = BezierDerivative<D>;
-    fn derivative(&self) -> BezierDerivative<D> {
-        Bezier::derivative(self)
+    type Output = CurveDerivative<D>;
+
+    /// The derivative `d/dt` of positions and degrees: the hodograph, a Bézier polynomial of
+    /// degree `n - 1` with control vectors `n (P_{i+1} - P_i)` (zero for a degree-0 curve).
+    fn derivative(&self) -> CurveDerivative<D> {
+        CurveDerivative::of_spline(&Spline::from_bezier(&self.packed, None), 0.0..1.0)
     }
 }
 
 impl<const D: usize> Split for Bezier<D> {
+    /// Splits at `t` (de Casteljau) into the curves on \[0, t\] and \[t, 1\], each
+    /// reparametrised to \[0, 1\].
     fn split(&self, t: f64) -> Result<(Self, Self), EvalError> {
-        Bezier::split(self, t)
+        check_parameter(t, &(0.0..1.0))?;
+        let (left, right) = self.packed.split(t);
+        Ok((Bezier { packed: left }, Bezier { packed: right }))
     }
+
+    /// The piece on \[t0, t1\], reparametrised to \[0, 1\]; reversed if `t0 > t1`; every
+    /// control point the same point when `t0 == t1`.
     fn subsegment(&self, t0: f64, t1: f64) -> Result<Self, EvalError> {
-        Bezier::subsegment(self, t0, t1)
+        check_parameter(t0, &(0.0..1.0))?;
+        check_parameter(t1, &(0.0..1.0))?;
+        Ok(Bezier {
+            packed: self.packed.subsegment(t0, t1),
+        })
     }
 }
 
 impl<const D: usize> Elevate for Bezier<D> {
+    /// Degree elevation: the same curve as a Bézier curve of degree `n + 1`, with
+    /// `Q_i = (i / (n+1)) P_{i-1} + (1 - i / (n+1)) P_i` for `i = 0 ..= n + 1`.
     fn elevate(&self) -> Self {
-        Bezier::elevate(self)
+        Bezier {
+            packed: self.packed.elevate(),
+        }
     }
 }
 
 impl<const D: usize> Bounded<D> for Bezier<D> {
+    /// Branch and bound on the convex hull property.
     fn bounding_box(&self) -> BoundingBox<D> {
-        Bezier::bounding_box(self)
+        BoundingBox::from_channel_ranges(|c| self.packed.channel_range(c, None, BOUNDS_TOLERANCE))
     }
+
     fn control_bounding_box(&self) -> BoundingBox<D> {
-        Bezier::control_bounding_box(self)
+        BoundingBox::from_channel_ranges(|c| self.packed.control_range(c))
     }
 }
 
@@ -391,6 +249,20 @@ mod tests {
         assert_eq!(
             e.to_string(),
             "control point 1: y = inf is not a finite number (positions must be finite)"
+        );
+    }
+
+    #[test]
+    fn bezier_new_rejects_other_dimensions() {
+        let d = Degrees::new(0.1, 0.2, 0.3).unwrap();
+        assert_eq!(
+            Bezier::new(vec![ControlPoint::new([0.0; 4], d)]).unwrap_err(),
+            CurveError::UnsupportedDimension { dimension: 4 }
+        );
+        let e = crate::BSpline::clamped_uniform(vec![ControlPoint::new([0.0], d); 2], 1);
+        assert_eq!(
+            e.unwrap_err().to_string(),
+            "1-D positions are not supported (curves are 2-D or 3-D, surfaces 3-D)"
         );
     }
 
@@ -425,8 +297,8 @@ mod tests {
         let c = example1();
         assert_eq!(c.evaluate(0.0).unwrap(), c.control_point(0));
         assert_eq!(c.evaluate(1.0).unwrap(), c.control_point(3));
-        assert_eq!(Evaluate::start(&c), c.control_point(0));
-        assert_eq!(Evaluate::end(&c), c.control_point(3));
+        assert_eq!(c.start().unwrap(), c.control_point(0));
+        assert_eq!(c.end().unwrap(), c.control_point(3));
     }
 
     #[test]
@@ -481,23 +353,15 @@ mod tests {
     }
 
     #[test]
-    fn bezier_many_and_channels_agree_with_single() {
+    fn bezier_many_agrees_with_single() {
         let c = example1();
         let ts: Vec<f64> = (0..=10).map(|k| k as f64 / 10.0).collect();
         let mut pts = vec![c.control_point(0); ts.len()];
         c.evaluate_many(&ts, &mut pts).unwrap();
-        let mut flat = vec![0.0; 5 * ts.len()];
-        c.evaluate_channels(&ts, &mut flat).unwrap();
         for (k, &t) in ts.iter().enumerate() {
-            let p = c.evaluate(t).unwrap();
-            assert_eq!(pts[k], p);
-            assert_eq!(flat[k], p.position[0]);
-            assert_eq!(flat[11 + k], p.position[1]);
-            assert_eq!(flat[22 + k], p.degrees.truth());
-            assert_eq!(flat[33 + k], p.degrees.indeterminacy());
-            assert_eq!(flat[44 + k], p.degrees.falsity());
+            assert_eq!(pts[k], c.evaluate(t).unwrap());
         }
-        assert!(c.evaluate_channels(&[0.5, 2.0], &mut [0.0; 10]).is_err());
+        assert!(c.evaluate_many(&[0.5, 2.0], &mut pts[..2]).is_err());
     }
 
     #[test]

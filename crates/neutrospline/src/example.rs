@@ -22,6 +22,7 @@ pub const EXAMPLE1_TABLE: [[f64; 5]; 4] = [
 /// The paper's Example 1: the cubic neutrosophic Bézier curve of [`EXAMPLE1_TABLE`].
 ///
 /// ```
+/// use neutrospline::Evaluate;
 /// let curve = neutrospline::example1();
 /// assert_eq!(curve.degree(), 3);
 /// assert_eq!(curve.evaluate(0.5)?.position, [4.625, 4.0]);

@@ -79,7 +79,7 @@ pub enum KnotError {
 /// use neutrospline::KnotVector;
 /// let k = KnotVector::clamped_uniform(2, 5)?;
 /// assert_eq!(k.knots(), &[0.0, 0.0, 0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0, 1.0, 1.0]);
-/// assert_eq!(k.domain(), (0.0, 1.0));
+/// assert_eq!(k.domain(), 0.0..1.0);
 /// # Ok::<(), neutrospline::KnotError>(())
 /// ```
 #[derive(Clone, Debug, PartialEq)]
@@ -263,12 +263,10 @@ impl KnotVector {
         self.knots.len() - self.degree - 1
     }
 
-    /// The parameter domain `(u_p, u_{m-p})`.
-    pub fn domain(&self) -> (f64, f64) {
-        (
-            self.knots[self.degree],
-            self.knots[self.knots.len() - 1 - self.degree],
-        )
+    /// The parameter domain `u_p..u_{m-p}` (the curve is defined on the closed interval
+    /// `[u_p, u_{m-p}]`).
+    pub fn domain(&self) -> core::ops::Range<f64> {
+        self.knots[self.degree]..self.knots[self.knots.len() - 1 - self.degree]
     }
 
     /// Whether the first and last `degree + 1` knots are equal (the curve then interpolates
@@ -302,7 +300,7 @@ impl KnotVector {
 
     /// The distinct knot values strictly inside the domain.
     pub fn interior_breakpoints(&self) -> Vec<f64> {
-        let (a, b) = self.domain();
+        let core::ops::Range { start: a, end: b } = self.domain();
         let mut out: Vec<f64> = Vec::new();
         for &k in &self.knots {
             if k > a && k < b && out.last() != Some(&k) {
@@ -379,7 +377,7 @@ mod tests {
         assert!(k.is_clamped());
         // Unclamped: domain [u_2, u_5] = [2, 5].
         let u = KnotVector::new((0..8).map(f64::from).collect(), 2, 5).unwrap();
-        assert_eq!(u.domain(), (2.0, 5.0));
+        assert_eq!(u.domain(), 2.0..5.0);
         assert_eq!(u.span(2.0), 2);
         assert_eq!(u.span(4.999), 4);
         assert_eq!(u.span(5.0), 4);

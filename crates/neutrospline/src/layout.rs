@@ -11,10 +11,21 @@ pub(crate) const fn stride(d: usize) -> usize {
     d + 3
 }
 
-/// Checks control points (non-empty, finite positions) and packs them point-major.
+/// Checks that `D` is a dimension the library models (2 or 3).
+pub(crate) fn check_dimension<const D: usize>() -> Result<(), CurveError> {
+    if D == 2 || D == 3 {
+        Ok(())
+    } else {
+        Err(CurveError::UnsupportedDimension { dimension: D })
+    }
+}
+
+/// Checks control points (2-D or 3-D, non-empty, finite positions) and packs them
+/// point-major.
 pub(crate) fn pack_points<const D: usize>(
     points: &[ControlPoint<D>],
 ) -> Result<Vec<f64>, CurveError> {
+    check_dimension::<D>()?;
     if points.is_empty() {
         return Err(CurveError::NoControlPoints);
     }

@@ -1,21 +1,28 @@
 //! # neutrospline
 //!
-//! Neutrosophic curve modeling: Bézier curves whose control points carry three uncertainty
-//! degrees, **truth**, **indeterminacy** and **falsity**, each in \[0, 1\].
+//! Neutrosophic curve and surface modeling: Bézier, B-spline and NURBS curves (2-D and 3-D)
+//! and tensor-product surfaces whose control points carry three uncertainty degrees,
+//! **truth**, **indeterminacy** and **falsity**, each in \[0, 1\].
 //!
 //! The model (Mahmud, Wahab, Zulkifly and Broumi, "A Neutrosophic Bézier Curve Model using
-//! Control Points") blends every degree with the same Bernstein basis as the positions:
+//! Control Points", extended to the kinds the paper names as its next steps) blends every
+//! degree with the same basis as the positions. For a Bézier curve of degree `n`:
 //!
 //! ```text
 //! C(t) = sum_i B_{n,i}(t) P_i      T(t) = sum_i B_{n,i}(t) T_i
 //! I(t) = sum_i B_{n,i}(t) I_i      F(t) = sum_i B_{n,i}(t) F_i,     t in [0, 1]
 //! ```
 //!
-//! so every point of the curve is again a valid neutrosophic point, the curve interpolates its
-//! end control points, and it lies in the convex hull of its control points, degrees included.
+//! and likewise with the B-spline basis `N_{i,p}`, the rational basis
+//! `R_i = w_i N_{i,p} / sum_j w_j N_{j,p}` of NURBS, or their tensor products on surfaces.
+//! Every such basis is non-negative with unit sum, so every point of a curve or surface is
+//! again a valid neutrosophic point (its degrees within the range of the control degrees), the
+//! curve lies in the convex hull of its control points, degrees included, and affine maps of
+//! the positions commute with evaluation. `docs/model.md` in the repository states the model
+//! and the project's decisions; `docs/architecture.md` the crates around this one.
 //!
 //! ```
-//! use neutrospline::{Bezier, ControlPoint, DegreeKind, Degrees};
+//! use neutrospline::{Bezier, ControlPoint, DegreeKind, Degrees, Derivative, Evaluate, Split};
 //!
 //! let p = |x, y, t, i, f| Ok::<_, neutrospline::DegreeError>(ControlPoint::new([x, y], Degrees::new(t, i, f)?));
 //! let curve = Bezier::new(vec![
@@ -27,67 +34,87 @@
 //! let point = curve.evaluate(0.5)?;
 //! assert_eq!(point.position, [4.625, 4.0]);
 //! assert!((point.degree(DegreeKind::Falsity) - 0.175).abs() < 1e-15);
+//! let (left, _right) = curve.split(0.5)?;          // de Casteljau
+//! assert_eq!(left.evaluate(1.0)?, point);
+//! let tangent = curve.derivative().evaluate(0.5)?; // a derivative is a curve too
+//! assert_eq!(tangent.position, [8.25, -1.5]);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!
-//! ## Modules of the model
-//! - [`Degrees`], [`Membership`]: the degrees and their three validity rules (neutrosophic,
-//!   intuitionistic fuzzy, fuzzy).
-//! - [`NeutrosophicPoint`] (alias [`ControlPoint`], [`CurvePoint`]): a position with degrees.
-//! - [`AxisSet`], [`PointRelation`]: the paper's Def. 4 point relations and their checker.
-//! - [`Bezier`]: the curve, with evaluation, derivative, split, elevation and bounds; the
-//!   capabilities are also the traits [`Evaluate`], [`Derivative`], [`Split`], [`Elevate`],
-//!   [`Bounded`], shared by every curve kind.
+//! ## The pieces
+//! - Values: [`Degrees`] with its validity rules [`Membership`] (neutrosophic, intuitionistic
+//!   fuzzy, fuzzy), [`DegreeKind`]; [`NeutrosophicPoint`] (alias [`ControlPoint`],
+//!   [`CurvePoint`]), [`DerivativeValue`], [`Interval`], [`BoundingBox`], [`Affine`].
+//! - Relations: [`AxisSet`] and [`PointRelation`], the paper's Def. 4 (the largest admissible
+//!   relation and a checker that names the violating pair and degree).
+//! - Curves: [`Bezier`], [`BSpline`] and [`Nurbs`] (one generic type [`SplineCurve`] with a
+//!   [`Weighting`], [`Polynomial`] or [`Rational`]), [`AnyCurve`] for any of them,
+//!   [`KnotVector`], and the derivative of any of them, [`CurveDerivative`].
+//! - Capabilities, one small trait each, implemented by every kind where the math allows:
+//!   [`Evaluate`] (domain, point, start and end), [`Derivative`] (the derivative is again
+//!   evaluable and differentiable), [`Split`] (split and subsegment), [`Elevate`],
+//!   [`Bounded`] (tight and control bounding boxes).
+//! - Surfaces: [`Surface`] (Bézier, B-spline, NURBS), [`EvaluateSurface`], partial
+//!   derivatives, normals and iso-parameter curves.
+//! - Batch evaluation into flat arrays, SIMD with run-time dispatch and threads:
+//!   [`CurveBatch`] with [`BatchParams`] and [`BatchOptions`]; [`uniform_parameter`] is the
+//!   evenly spaced sampling every front end uses. The tuning constants are in [`batch`].
+//! - The paper's Example 1: [`example1`], [`EXAMPLE1_TABLE`], [`EXAMPLE1_NAMES`].
+//!
+//! Geometry operations are infallible or return a typed error at the input boundary
+//! ([`CurveError`], [`EvalError`], [`KnotError`], [`SurfaceError`], [`DegreeError`],
+//! [`RelationError`]); nothing here reads or writes files (the `neutrospline-io` crate does).
 //!
 //! ## Feature flags
 //! - `serde`: `Serialize`/`Deserialize` for [`Degrees`], [`DegreeKind`], [`Membership`] and
-//!   [`NeutrosophicPoint`]. Deserialization checks exactly like the constructors.
-//! - `proptest`: the module `strategies`, proptest generators of valid degrees, control points
-//!   and curves, for property tests of code built on this crate.
-//! - `simd`, `avx512`, `parallel`: faster batch evaluation ([`BezierBatch`], [`evaluate_curves`],
-//!   [`CurveBatch`]):
-//!   SIMD kernels chosen at run time (AVX2 + FMA; AVX-512 with `avx512`) and threads (rayon).
-//!   Without them the same results come from a portable kernel on the calling thread.
+//!   [`NeutrosophicPoint`] (a point is the control point of the model files: keys `x`, `y`,
+//!   `z` for 3-D, `truth`, `indeterminacy`, `falsity`). Deserialization checks exactly like
+//!   the constructors.
+//! - `proptest`: the module `strategies`, proptest generators of valid degrees, control points,
+//!   curves of every kind and surfaces, for property tests of code built on this crate.
+//! - `simd`, `avx512`, `parallel`: faster batch evaluation ([`CurveBatch`]): SIMD kernels
+//!   chosen at run time (AVX2 + FMA; AVX-512 with `avx512`) and threads (rayon). Without them
+//!   the same results come from a portable kernel on the calling thread.
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
 mod any_curve;
-mod batch;
+pub mod batch;
 mod bernstein;
 mod bezier;
-mod bspline;
 mod curve;
 mod degrees;
+mod derivative;
 mod example;
 mod knots;
 mod layout;
-mod nurbs;
 mod point;
 mod relation;
 mod spline;
+mod spline_curve;
 #[cfg(feature = "proptest")]
 pub mod strategies;
 mod surface;
 
-pub use any_curve::{AnyCurve, AnyDerivative, CurveKind};
-pub use batch::{
-    batch_instruction_set, evaluate_curves, uniform_parameter, BatchOptions, BatchParams,
-    BezierBatch, CurveBatch, BATCH_DIRECT_MAX_DEGREE, PARALLEL_THRESHOLD,
-};
-pub use bezier::{Bezier, BezierDerivative};
-pub use bspline::{BSpline, BSplineDerivative, BezierSegment};
+pub use any_curve::{AnyCurve, CurveKind};
+pub use batch::{uniform_parameter, BatchOptions, BatchParams, CurveBatch};
+pub use bezier::Bezier;
 pub use curve::{
-    axis_name, Bounded, CurveError, Derivative, Elevate, EvalError, Evaluate, Split,
-    BOUNDS_TOLERANCE,
+    Bounded, CurveError, Derivative, Elevate, EvalError, Evaluate, Split, BOUNDS_TOLERANCE,
 };
 pub use degrees::{
     DegreeError, DegreeKind, Degrees, Membership, ParseNameError, HESITATION_TOLERANCE,
 };
+pub use derivative::CurveDerivative;
 pub use example::{example1, EXAMPLE1_NAMES, EXAMPLE1_TABLE};
 pub use knots::{KnotError, KnotVector};
-pub use nurbs::{Nurbs, NurbsDerivative};
 pub use point::{
-    Affine, BoundingBox, ControlPoint, CurvePoint, DerivativeValue, NeutrosophicPoint, Range,
+    Affine, BoundingBox, ControlPoint, CurvePoint, DerivativeValue, Interval, NeutrosophicPoint,
 };
 pub use relation::{AxisSet, AxisSetName, PointRelation, RelationError};
-pub use surface::{Direction, Surface, SurfaceDerivatives, SurfaceError, SurfaceKind};
+pub use spline_curve::{
+    BSpline, BezierSegment, Nurbs, Polynomial, Rational, SplineCurve, Weighting,
+};
+pub use surface::{
+    Direction, EvaluateSurface, Surface, SurfaceDerivatives, SurfaceError, SurfaceKind,
+};

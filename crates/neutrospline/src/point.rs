@@ -1,4 +1,4 @@
-//! Neutrosophic points, derivative values, ranges and bounding boxes.
+//! Neutrosophic points, derivative values, intervals and bounding boxes.
 
 use crate::degrees::{DegreeKind, Degrees};
 
@@ -40,14 +40,22 @@ impl<const D: usize> NeutrosophicPoint<D> {
 
 #[cfg(feature = "serde")]
 mod serde_impl {
+    //! The serde form of a point is the control point of the model files (see `docs/model.md`):
+    //! flat keys `x`, `y`, `z` (3-D only), `truth`, `indeterminacy`, `falsity`, in that order.
     use super::NeutrosophicPoint;
     use crate::degrees::Degrees;
-    use serde::{de::Error, Deserialize, Deserializer, Serialize, Serializer};
+    use serde::{
+        de::Error, ser::SerializeStruct, Deserialize, Deserializer, Serialize, Serializer,
+    };
 
-    #[derive(Serialize, Deserialize)]
+    const AXES: [&str; 3] = ["x", "y", "z"];
+
+    #[derive(Deserialize)]
     #[serde(deny_unknown_fields)]
     struct RawPoint {
-        position: Vec<f64>,
+        x: f64,
+        y: f64,
+        z: Option<f64>,
         truth: f64,
         indeterminacy: f64,
         falsity: f64,
@@ -55,24 +63,27 @@ mod serde_impl {
 
     impl<const D: usize> Serialize for NeutrosophicPoint<D> {
         fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-            RawPoint {
-                position: self.position.to_vec(),
-                truth: self.degrees.truth(),
-                indeterminacy: self.degrees.indeterminacy(),
-                falsity: self.degrees.falsity(),
+            let mut s = serializer.serialize_struct("ControlPoint", D + 3)?;
+            for (axis, value) in self.position.iter().enumerate() {
+                s.serialize_field(AXES.get(axis).copied().unwrap_or("coordinate"), value)?;
             }
-            .serialize(serializer)
+            s.serialize_field("truth", &self.degrees.truth())?;
+            s.serialize_field("indeterminacy", &self.degrees.indeterminacy())?;
+            s.serialize_field("falsity", &self.degrees.falsity())?;
+            s.end()
         }
     }
 
     impl<'de, const D: usize> Deserialize<'de> for NeutrosophicPoint<D> {
-        /// Checks the position length and the degrees exactly as [`Degrees::new`] does.
+        /// Checks the dimension (`z` present exactly for 3-D points) and the degrees exactly
+        /// as [`Degrees::new`] does.
         fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
             let raw = RawPoint::deserialize(deserializer)?;
-            let position: [f64; D] = raw.position.as_slice().try_into().map_err(|_| {
+            let coordinates: Vec<f64> = [raw.x, raw.y].into_iter().chain(raw.z).collect();
+            let position: [f64; D] = coordinates.as_slice().try_into().map_err(|_| {
                 De::Error::custom(format!(
-                    "position has {} coordinates, expected {D}",
-                    raw.position.len()
+                    "the point has {} coordinates, expected {D}",
+                    coordinates.len()
                 ))
             })?;
             let degrees = Degrees::new(raw.truth, raw.indeterminacy, raw.falsity)
@@ -108,19 +119,20 @@ impl<const D: usize> DerivativeValue<D> {
     }
 }
 
-/// A closed interval `[min, max]`.
+/// A closed interval `[min, max]` of values (the extent of a channel in a
+/// [`BoundingBox`]); parameter domains are `core::ops::Range<f64>` instead.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Range {
+pub struct Interval {
     /// Lower end.
     pub min: f64,
     /// Upper end.
     pub max: f64,
 }
 
-impl Range {
+impl Interval {
     /// `[min, max]`.
     pub const fn new(min: f64, max: f64) -> Self {
-        Range { min, max }
+        Interval { min, max }
     }
 
     /// `max - min`.
@@ -138,18 +150,18 @@ impl Range {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BoundingBox<const D: usize> {
     /// Range of each coordinate.
-    pub position: [Range; D],
+    pub position: [Interval; D],
     /// Range of the truth degree.
-    pub truth: Range,
+    pub truth: Interval,
     /// Range of the indeterminacy degree.
-    pub indeterminacy: Range,
+    pub indeterminacy: Interval,
     /// Range of the falsity degree.
-    pub falsity: Range,
+    pub falsity: Interval,
 }
 
 impl<const D: usize> BoundingBox<D> {
     /// The range of the given degree.
-    pub const fn degree(&self, kind: DegreeKind) -> Range {
+    pub const fn degree(&self, kind: DegreeKind) -> Interval {
         match kind {
             DegreeKind::Truth => self.truth,
             DegreeKind::Indeterminacy => self.indeterminacy,
@@ -162,7 +174,7 @@ impl<const D: usize> BoundingBox<D> {
     pub(crate) fn from_channel_ranges(range: impl Fn(usize) -> (f64, f64)) -> Self {
         let r = |c| {
             let (lo, hi) = range(c);
-            Range::new(lo, hi)
+            Interval::new(lo, hi)
         };
         BoundingBox {
             position: core::array::from_fn(r),
@@ -174,7 +186,7 @@ impl<const D: usize> BoundingBox<D> {
 
     /// The smallest box containing both boxes.
     pub fn union(&self, other: &BoundingBox<D>) -> BoundingBox<D> {
-        let u = |a: Range, b: Range| Range::new(a.min.min(b.min), a.max.max(b.max));
+        let u = |a: Interval, b: Interval| Interval::new(a.min.min(b.min), a.max.max(b.max));
         BoundingBox {
             position: core::array::from_fn(|i| u(self.position[i], other.position[i])),
             truth: u(self.truth, other.truth),
@@ -219,6 +231,17 @@ impl<const D: usize> Affine<D> {
         }
     }
 
+    /// The control points with their positions mapped; degrees unchanged.
+    pub(crate) fn apply_to_points(
+        &self,
+        points: Vec<NeutrosophicPoint<D>>,
+    ) -> Vec<NeutrosophicPoint<D>> {
+        points
+            .into_iter()
+            .map(|p| NeutrosophicPoint::new(self.apply(p.position), p.degrees))
+            .collect()
+    }
+
     /// The map applied to a position.
     pub fn apply(&self, p: [f64; D]) -> [f64; D] {
         let mut out = self.translation;
@@ -238,17 +261,54 @@ mod tests {
     #[test]
     fn bounding_box_contains() {
         let d = Degrees::new(0.5, 0.5, 0.5).unwrap();
-        let r = Range::new(0.0, 1.0);
+        let r = Interval::new(0.0, 1.0);
         let b = BoundingBox {
-            position: [Range::new(0.0, 2.0), Range::new(-1.0, 1.0)],
+            position: [Interval::new(0.0, 2.0), Interval::new(-1.0, 1.0)],
             truth: r,
             indeterminacy: r,
-            falsity: Range::new(0.0, 0.4),
+            falsity: Interval::new(0.0, 0.4),
         };
         assert!(!b.contains(&NeutrosophicPoint::new([1.0, 0.0], d)));
         let d = Degrees::new(0.5, 0.5, 0.25).unwrap();
         assert!(b.contains(&NeutrosophicPoint::new([1.0, 0.0], d)));
         assert!(!b.contains(&NeutrosophicPoint::new([3.0, 0.0], d)));
+    }
+
+    #[cfg(feature = "serde")]
+    #[test]
+    fn neutrosophic_point_serde_is_the_file_schema() {
+        let p = NeutrosophicPoint::new([1.0, 3.0], Degrees::new(0.3, 0.6, 0.1).unwrap());
+        let json = serde_json::to_string(&p).unwrap();
+        assert_eq!(
+            json,
+            r#"{"x":1.0,"y":3.0,"truth":0.3,"indeterminacy":0.6,"falsity":0.1}"#
+        );
+        assert_eq!(
+            serde_json::from_str::<NeutrosophicPoint<2>>(&json).unwrap(),
+            p
+        );
+        let q: NeutrosophicPoint<3> =
+            serde_json::from_str(r#"{"x":1,"y":2,"z":3,"truth":0,"indeterminacy":0,"falsity":1}"#)
+                .unwrap();
+        assert_eq!(q.position, [1.0, 2.0, 3.0]);
+        let e = serde_json::from_str::<NeutrosophicPoint<3>>(&json).unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("the point has 2 coordinates, expected 3"),
+            "{e}"
+        );
+        let e = serde_json::from_str::<NeutrosophicPoint<2>>(
+            r#"{"x":1,"y":2,"truth":1.2,"indeterminacy":0,"falsity":0}"#,
+        )
+        .unwrap_err();
+        assert!(
+            e.to_string().contains("truth = 1.2 is outside [0, 1]"),
+            "{e}"
+        );
+        assert!(serde_json::from_str::<NeutrosophicPoint<2>>(
+            r#"{"x":1,"y":2,"w":0,"truth":0,"indeterminacy":0,"falsity":0}"#
+        )
+        .is_err());
     }
 
     #[test]

@@ -7,6 +7,8 @@
 //! step combines two weighted points into a new weight and a *convex* combination of the
 //! points, so the degrees of every computed point stay between their inputs.
 
+use core::ops::Range;
+
 use crate::bernstein::{lerp, Packed};
 use crate::knots::{KnotError, KnotVector};
 
@@ -39,15 +41,20 @@ fn combine(
     w
 }
 
+/// Largest `(p + 1) * stride` blossomed with scratch space on the stack.
+const STACK_SCRATCH: usize = 192;
+/// Largest `p + 1` whose weights are kept on the stack.
+const STACK_WEIGHTS: usize = 32;
+
 /// The blossom `f(t_1, ..., t_p)` of the polynomial piece on span `k` of the spline with
 /// control rows `data` (stride `stride`) and optional `weights` over `knots`, where level `r`
 /// of de Boor's triangle uses `param(r)`. With every `t_r = t` this is the value at `t`.
 /// Writes the row into `out` and returns its weight. Only rows `k - p ..= k` are read.
+/// Allocates nothing unless the piece is large (`(p + 1) * stride` above 192 values).
 ///
 /// Level r replaces `d_j` (j = p down to r) by the combination of `d_{j-1}` and `d_j`
 /// with `alpha = (t_r - u_{j+k-p}) / (u_{j+1+k-r} - u_{j+k-p})`, which lies in \[0, 1\]
 /// when `t_r` is in the span.
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn blossom(
     knots: &KnotVector,
     stride: usize,
@@ -55,22 +62,29 @@ pub(crate) fn blossom(
     weights: Option<&[f64]>,
     k: usize,
     param: impl Fn(usize) -> f64,
-    scratch: &mut Vec<f64>,
     out: &mut [f64],
 ) -> f64 {
     let p = knots.degree();
+    let rows = (p + 1) * stride;
+    let mut stack_rows = [0.0; STACK_SCRATCH];
+    let mut heap_rows;
+    let scratch: &mut [f64] = if rows <= STACK_SCRATCH {
+        &mut stack_rows[..rows]
+    } else {
+        heap_rows = vec![0.0; rows];
+        &mut heap_rows
+    };
+    let mut stack_weights = [1.0; STACK_WEIGHTS];
+    let mut heap_weights;
+    let w: &mut [f64] = if p < STACK_WEIGHTS {
+        &mut stack_weights[..=p]
+    } else {
+        heap_weights = vec![1.0; p + 1];
+        &mut heap_weights
+    };
     let u = knots.knots();
     let first = k - p;
-    scratch.clear();
-    scratch.extend_from_slice(&data[first * stride..(k + 1) * stride]);
-    let mut w = [1.0; 32];
-    let mut w_heap;
-    let w: &mut [f64] = if p < 32 {
-        &mut w[..=p]
-    } else {
-        w_heap = vec![1.0; p + 1];
-        &mut w_heap
-    };
+    scratch.copy_from_slice(&data[first * stride..(k + 1) * stride]);
     if let Some(ws) = weights {
         w.copy_from_slice(&ws[first..=k]);
     }
@@ -129,13 +143,7 @@ impl Spline {
     /// Level r replaces `d_j` (j = p down to r) by the combination of `d_{j-1}` and `d_j`
     /// with `alpha = (t_r - u_{j+k-p}) / (u_{j+1+k-r} - u_{j+k-p})`, which lies in \[0, 1\]
     /// when `t_r` is in the span.
-    pub(crate) fn blossom(
-        &self,
-        k: usize,
-        param: impl Fn(usize) -> f64,
-        scratch: &mut Vec<f64>,
-        out: &mut [f64],
-    ) -> f64 {
+    pub(crate) fn blossom(&self, k: usize, param: impl Fn(usize) -> f64, out: &mut [f64]) -> f64 {
         blossom(
             &self.knots,
             self.stride,
@@ -143,15 +151,14 @@ impl Spline {
             self.weights.as_deref(),
             k,
             param,
-            scratch,
             out,
         )
     }
 
     /// The value at `t` (in the domain) into `out`; returns the weight.
-    pub(crate) fn evaluate(&self, t: f64, scratch: &mut Vec<f64>, out: &mut [f64]) -> f64 {
+    pub(crate) fn evaluate(&self, t: f64, out: &mut [f64]) -> f64 {
         let k = self.knots.span(t);
-        self.blossom(k, |_| t, scratch, out)
+        self.blossom(k, |_| t, out)
     }
 
     /// Boehm's knot insertion of `u` once: for `k - p + 1 <= i <= k`,
@@ -160,7 +167,7 @@ impl Spline {
     /// # Errors
     /// `u` outside the domain, or already of multiplicity `p + 1`.
     pub(crate) fn insert_knot(&self, u: f64) -> Result<Spline, KnotError> {
-        let (start, end) = self.knots.domain();
+        let Range { start, end } = self.knots.domain();
         if !(start..=end).contains(&u) {
             return Err(KnotError::OutsideDomain {
                 value: u,
@@ -231,7 +238,6 @@ impl Spline {
         let p = self.degree();
         let u = self.knots.knots();
         let last = u.len() - 2 - p;
-        let mut scratch = Vec::new();
         let mut out = vec![0.0; self.stride];
         let mut segments = Vec::new();
         for k in p..=last {
@@ -243,12 +249,7 @@ impl Spline {
             let mut weights = Vec::with_capacity(p + 1);
             for i in 0..=p {
                 // Levels 1..=p-i use a, the remaining i levels use b.
-                let w = self.blossom(
-                    k,
-                    |r| if r <= p - i { a } else { b },
-                    &mut scratch,
-                    &mut out,
-                );
+                let w = self.blossom(k, |r| if r <= p - i { a } else { b }, &mut out);
                 data.extend_from_slice(&out);
                 weights.push(w);
             }
@@ -311,6 +312,113 @@ impl Spline {
         }
     }
 
+    /// The single-span spline of a Bézier polynomial: `n + 1` knots 0 then `n + 1` knots 1,
+    /// so de Boor's algorithm on it performs exactly de Casteljau's operations.
+    pub(crate) fn from_bezier(packed: &Packed, weights: Option<Vec<f64>>) -> Spline {
+        let p = packed.degree();
+        Spline {
+            knots: bezier_knots(p),
+            stride: packed.stride(),
+            data: packed.data().to_vec(),
+            weights,
+        }
+    }
+
+    /// The derivatives of orders `0 ..= order` of the non-rational spline (the spline itself
+    /// first), each from the previous by [`Spline::derivative`].
+    pub(crate) fn derivatives(&self, order: usize) -> Vec<Spline> {
+        let mut chain = Vec::with_capacity(order + 1);
+        chain.push(self.clone());
+        for _ in 0..order {
+            let next = chain[chain.len() - 1].derivative();
+            chain.push(next);
+        }
+        chain
+    }
+
+    /// The two pieces on `[start, t]` and `[t, end]` for `t` strictly inside the domain, each
+    /// keeping the parameters: `t` is inserted until its multiplicity is `p + 1`, then the
+    /// knots and control rows are cut there (the left piece ends with the `p + 1` copies of
+    /// `t`, the right one starts with them).
+    pub(crate) fn split(&self, t: f64) -> (Spline, Spline) {
+        let p = self.degree();
+        let mut full = self.clone();
+        while full.knots.multiplicity(t) < p + 1 {
+            full = match full.insert_knot(t) {
+                Ok(s) => s,
+                Err(e) => unreachable!("t is inside the domain, below multiplicity p + 1: {e}"),
+            };
+        }
+        let u = full.knots.knots();
+        let a = u.partition_point(|&x| x < t);
+        let stride = full.stride;
+        let left = Spline {
+            knots: KnotVector::from_parts_unchecked(p, u[..a + p + 1].to_vec()),
+            stride,
+            data: full.data[..a * stride].to_vec(),
+            weights: full.weights.as_ref().map(|w| w[..a].to_vec()),
+        };
+        let right = Spline {
+            knots: KnotVector::from_parts_unchecked(p, u[a..].to_vec()),
+            stride,
+            data: full.data[a * stride..].to_vec(),
+            weights: full.weights.as_ref().map(|w| w[a..].to_vec()),
+        };
+        (left, right)
+    }
+
+    /// The same curve traversed backwards on the same domain `[s, e]`: control rows (and
+    /// weights) in reverse order, knots `u -> s + (e - u)` in reverse order, the domain ends
+    /// mapped exactly onto each other, so the result at `x` is the curve at `s + e - x`.
+    pub(crate) fn reversed(&self) -> Spline {
+        let Range { start, end } = self.knots.domain();
+        let knots = self
+            .knots
+            .knots()
+            .iter()
+            .rev()
+            .map(|&u| {
+                if u == start {
+                    end
+                } else if u == end {
+                    start
+                } else if u > start && u < end {
+                    (start + (end - u)).clamp(start, end)
+                } else {
+                    start + (end - u)
+                }
+            })
+            .collect();
+        let mut data = Vec::with_capacity(self.data.len());
+        for row in self.data.chunks_exact(self.stride).rev() {
+            data.extend_from_slice(row);
+        }
+        Spline {
+            knots: KnotVector::from_parts_unchecked(self.degree(), knots),
+            stride: self.stride,
+            data,
+            weights: self
+                .weights
+                .as_ref()
+                .map(|w| w.iter().rev().copied().collect()),
+        }
+    }
+
+    /// The piece on `[t0, t1]` (`t0 < t1`, both in the domain), keeping the parameters.
+    pub(crate) fn restricted(&self, t0: f64, t1: f64) -> Spline {
+        let Range { start, end } = self.knots.domain();
+        let upper = if t0 > start {
+            self.split(t0).1
+        } else {
+            self.clone()
+        };
+        if t1 < end {
+            upper.split(t1).0
+        } else {
+            upper
+        }
+    }
+
     /// Degree elevation by one, clamped on the domain: the same curve as a spline of degree
     /// `q = p + 1` on the knots `U'` that repeat the domain ends `q + 1` times and each
     /// interior breakpoint once more than before (at most `q + 1` times).
@@ -333,7 +441,7 @@ impl Spline {
         let q = p + 1;
         let stride = self.stride;
         let rational = self.weights.is_some();
-        let (start, end) = self.knots.domain();
+        let Range { start, end } = self.knots.domain();
         // The new knots.
         let mut knots: Vec<f64> = core::iter::repeat_n(start, q + 1).collect();
         for b in self.knots.interior_breakpoints() {
@@ -418,7 +526,7 @@ impl Spline {
     }
 
     /// Smallest and largest control value of channel `c`.
-    fn channel_range(&self, c: usize) -> (f64, f64) {
+    pub(crate) fn channel_range(&self, c: usize) -> (f64, f64) {
         (0..self.count()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), i| {
             let v = self.row(i)[c];
             (lo.min(v), hi.max(v))
@@ -456,4 +564,14 @@ fn blossom_extrapolating(
         }
     }
     out.copy_from_slice(&scratch[p * stride..(p + 1) * stride]);
+}
+
+/// `p + 1` knots 0 then `p + 1` knots 1: the knots of a single Bézier span on \[0, 1\].
+pub(crate) fn bezier_knots(p: usize) -> KnotVector {
+    KnotVector::from_parts_unchecked(
+        p,
+        core::iter::repeat_n(0.0, p + 1)
+            .chain(core::iter::repeat_n(1.0, p + 1))
+            .collect(),
+    )
 }

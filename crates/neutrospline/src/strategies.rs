@@ -3,7 +3,7 @@
 //! Reusable by any crate that tests code built on neutrospline:
 //!
 //! ```
-//! use neutrospline::strategies;
+//! use neutrospline::{strategies, Evaluate};
 //! use proptest::prelude::*;
 //!
 //! proptest!(|(curve in strategies::bezier::<2>(0..=8), t in strategies::parameter())| {
@@ -17,11 +17,10 @@ use core::ops::RangeInclusive;
 use proptest::prelude::*;
 
 use crate::bezier::Bezier;
-use crate::bspline::BSpline;
 use crate::degrees::Degrees;
 use crate::knots::KnotVector;
-use crate::nurbs::Nurbs;
 use crate::point::ControlPoint;
+use crate::spline_curve::{BSpline, Nurbs};
 use crate::surface::{Surface, SurfaceKind};
 
 /// One degree in \[0, 1\], with the end values 0 and 1 and a few classic decimals weighted in.
@@ -244,7 +243,7 @@ pub fn nurbs<const D: usize>(degree: RangeInclusive<usize>) -> impl Strategy<Val
 /// A parameter in the domain of `knots`: the domain ends, the knots inside it, values just
 /// beside a knot, and uniform values.
 pub fn domain_parameter(knots: &KnotVector) -> impl Strategy<Value = f64> {
-    let (a, b) = knots.domain();
+    let core::ops::Range { start: a, end: b } = knots.domain();
     let inside: Vec<f64> = knots
         .knots()
         .iter()

@@ -1,17 +1,62 @@
 //! Tensor-product neutrosophic surfaces: Bézier, B-spline and NURBS (Topal and Tas 2018).
 
 use core::fmt;
+use core::ops::Range;
 
 use crate::any_curve::AnyCurve;
-use crate::bernstein::Packed;
 use crate::bezier::Bezier;
-use crate::bspline::BSpline;
-use crate::curve::{CurveError, EvalError};
+use crate::curve::{check_parameter, CurveError, EvalError};
 use crate::knots::{KnotError, KnotVector};
 use crate::layout::{derivative_from_row, pack_points, point_from_row, stride};
-use crate::nurbs::Nurbs;
 use crate::point::{BoundingBox, ControlPoint, CurvePoint, DerivativeValue};
-use crate::spline::{blossom, Spline};
+use crate::spline::{bezier_knots, blossom, Spline};
+use crate::spline_curve::{check_weights, BSpline, Nurbs};
+
+/// Evaluation of a parametric surface: a neutrosophic surface (whose points are
+/// [`CurvePoint`]s), in the style of the curve trait [`Evaluate`](crate::Evaluate).
+///
+/// ```
+/// use neutrospline::{ControlPoint, Degrees, EvaluateSurface, Surface};
+/// let d = Degrees::new(0.5, 0.25, 0.0)?;
+/// let grid = [[0.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 1.0]]
+///     .map(|p| ControlPoint::new(p, d));
+/// let s = Surface::bezier(2, 2, grid.to_vec())?;
+/// assert_eq!(s.domain(), [0.0..1.0, 0.0..1.0]);
+/// assert_eq!(s.evaluate(1.0, 1.0)?.position, [1.0, 1.0, 1.0]);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub trait EvaluateSurface {
+    /// What the surface yields at a parameter pair.
+    type Point: Copy;
+
+    /// The parameter domains `[u, v]` (each closed at both ends).
+    fn domain(&self) -> [Range<f64>; 2];
+
+    /// The point at `(u, v)`.
+    ///
+    /// # Errors
+    /// A parameter not finite or outside its domain.
+    fn evaluate(&self, u: f64, v: f64) -> Result<Self::Point, EvalError>;
+
+    /// Evaluates at every `[u, v]` pair of `params` into `out` (same length).
+    ///
+    /// # Errors
+    /// The first pair that fails; `out` is then partly written.
+    ///
+    /// # Panics
+    /// If `out.len() != params.len()`.
+    fn evaluate_many(&self, params: &[[f64; 2]], out: &mut [Self::Point]) -> Result<(), EvalError> {
+        assert_eq!(
+            params.len(),
+            out.len(),
+            "evaluate_many: params and out differ in length"
+        );
+        for (&[u, v], slot) in params.iter().zip(out.iter_mut()) {
+            *slot = self.evaluate(u, v)?;
+        }
+        Ok(())
+    }
+}
 
 /// The kinds of tensor-product surface.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -98,7 +143,7 @@ pub struct SurfaceDerivatives {
 /// every step is a convex combination, so the degrees stay in the control range.
 ///
 /// ```
-/// use neutrospline::{ControlPoint, Degrees, Surface};
+/// use neutrospline::{ControlPoint, Degrees, EvaluateSurface, Surface};
 /// let d = |t| Degrees::new(t, 0.0, 1.0 - t).unwrap();
 /// let grid = vec![
 ///     ControlPoint::new([0.0, 0.0, 0.0], d(0.0)),
@@ -209,20 +254,7 @@ impl Surface {
         check_grid(rows, cols, control_points.len())?;
         let data = pack_points(&control_points)?;
         if let Some(w) = &weights {
-            if w.len() != control_points.len() {
-                return Err(CurveError::WeightCount {
-                    weights: w.len(),
-                    points: control_points.len(),
-                }
-                .into());
-            }
-            if let Some((index, &value)) = w
-                .iter()
-                .enumerate()
-                .find(|(_, w)| !(w.is_finite() && **w > 0.0))
-            {
-                return Err(CurveError::WeightNotPositive { index, value }.into());
-            }
+            check_weights(w, control_points.len())?;
         }
         for (direction, knots, count) in [
             (Direction::U, &knots_u, rows),
@@ -286,16 +318,6 @@ impl Surface {
         &self.knots_v
     }
 
-    /// Domain in u.
-    pub fn domain_u(&self) -> (f64, f64) {
-        self.knots_u.domain()
-    }
-
-    /// Domain in v.
-    pub fn domain_v(&self) -> (f64, f64) {
-        self.knots_v.domain()
-    }
-
     /// Control point in row `i` (u index) and column `j` (v index).
     ///
     /// # Panics
@@ -320,8 +342,8 @@ impl Surface {
     }
 
     fn check(&self, u: f64, v: f64) -> Result<(), EvalError> {
-        crate::curve::check_parameter(u, self.domain_u())?;
-        crate::curve::check_parameter(v, self.domain_v())
+        check_parameter(u, &self.knots_u.domain())?;
+        check_parameter(v, &self.knots_v.domain())
     }
 
     /// Evaluates the row curves (along v at `v`) for the rows that matter at `u`, then the
@@ -334,7 +356,6 @@ impl Surface {
         let pu = self.knots_u.degree();
         let mut column = vec![0.0; self.rows * stride];
         let mut column_w = vec![1.0; self.rows];
-        let mut scratch = Vec::new();
         for i in ku - pu..=ku {
             let row = &self.data[i * cols * stride..(i + 1) * cols * stride];
             let row_w = weights.map(|w| &w[i * cols..(i + 1) * cols]);
@@ -345,7 +366,6 @@ impl Surface {
                 row_w,
                 kv,
                 |_| v,
-                &mut scratch,
                 &mut column[i * stride..(i + 1) * stride],
             );
         }
@@ -357,20 +377,8 @@ impl Surface {
             column_weights,
             ku,
             |_| u,
-            &mut scratch,
             out,
         );
-    }
-
-    /// The point at `(u, v)`.
-    ///
-    /// # Errors
-    /// A parameter not finite or outside its domain.
-    pub fn evaluate(&self, u: f64, v: f64) -> Result<CurvePoint<3>, EvalError> {
-        self.check(u, v)?;
-        let mut out = [0.0; S];
-        self.evaluate_into(u, v, &mut out);
-        Ok(point_from_row(&out))
     }
 
     /// The partial derivatives `dS/du` and `dS/dv` of position and degrees, by the quotient
@@ -421,7 +429,6 @@ impl Surface {
         let k_along = along.span(t);
         let first_along = k_along - along.degree();
         let first_fixed = k - fixed_knots.degree();
-        let mut scratch = Vec::new();
         let mut iso = vec![0.0; count_along * hs];
         let mut line = vec![0.0; count_fixed * hs];
         for a in first_along..=k_along {
@@ -436,7 +443,6 @@ impl Surface {
                 None,
                 k,
                 |_| fixed,
-                &mut scratch,
                 &mut iso[a * hs..(a + 1) * hs],
             );
         }
@@ -448,8 +454,8 @@ impl Surface {
         };
         let mut value = [0.0; S + 1];
         let mut rate = [0.0; S + 1];
-        curve.evaluate(t, &mut scratch, &mut value);
-        curve.derivative().evaluate(t, &mut scratch, &mut rate);
+        curve.evaluate(t, &mut value);
+        curve.derivative().evaluate(t, &mut rate);
         let (w, dw) = (value[S], rate[S]);
         let mut row = [0.0; S];
         for c in 0..S {
@@ -492,13 +498,12 @@ impl Surface {
             Direction::U => (&self.knots_u, self.rows, &self.knots_v, self.cols),
             Direction::V => (&self.knots_v, self.cols, &self.knots_u, self.rows),
         };
-        crate::curve::check_parameter(value, fixed_knots.domain())?;
+        check_parameter(value, &fixed_knots.domain())?;
         let index = |a: usize, f: usize| match fixed {
             Direction::U => f * self.cols + a,
             Direction::V => a * self.cols + f,
         };
         let k = fixed_knots.span(value);
-        let mut scratch = Vec::new();
         let mut line = vec![0.0; count_fixed * S];
         let mut line_w = vec![1.0; count_fixed];
         let mut points = Vec::with_capacity(count_along);
@@ -511,16 +516,7 @@ impl Surface {
                 line_w[f] = self.weights.as_ref().map_or(1.0, |w| w[src]);
             }
             let lw = self.weights.as_ref().map(|_| line_w.as_slice());
-            weights.push(blossom(
-                fixed_knots,
-                S,
-                &line,
-                lw,
-                k,
-                |_| value,
-                &mut scratch,
-                &mut out,
-            ));
+            weights.push(blossom(fixed_knots, S, &line, lw, k, |_| value, &mut out));
             points.push(point_from_row::<3>(&out));
         }
         let built = match self.kind {
@@ -538,8 +534,34 @@ impl Surface {
 
     /// Bounds of the control values (they contain the surface, by the convex hull property).
     pub fn control_bounding_box(&self) -> BoundingBox<3> {
-        let packed = Packed::new(S, self.data.clone());
-        BoundingBox::from_channel_ranges(|c| packed.control_range(c))
+        BoundingBox::from_channel_ranges(|c| {
+            self.data
+                .iter()
+                .skip(c)
+                .step_by(S)
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
+                    (lo.min(v), hi.max(v))
+                })
+        })
+    }
+}
+
+impl EvaluateSurface for Surface {
+    type Point = CurvePoint<3>;
+
+    fn domain(&self) -> [Range<f64>; 2] {
+        [self.knots_u.domain(), self.knots_v.domain()]
+    }
+
+    /// The point at `(u, v)`: the curve algorithm along `v` in each row, then along `u`.
+    ///
+    /// # Errors
+    /// A parameter not finite or outside its domain.
+    fn evaluate(&self, u: f64, v: f64) -> Result<CurvePoint<3>, EvalError> {
+        self.check(u, v)?;
+        let mut out = [0.0; S];
+        self.evaluate_into(u, v, &mut out);
+        Ok(point_from_row(&out))
     }
 }
 
@@ -561,18 +583,10 @@ fn check_grid(rows: usize, cols: usize, points: usize) -> Result<(), CurveError>
     Ok(())
 }
 
-fn bezier_knots(degree: usize) -> KnotVector {
-    KnotVector::from_parts_unchecked(
-        degree,
-        core::iter::repeat_n(0.0, degree + 1)
-            .chain(core::iter::repeat_n(1.0, degree + 1))
-            .collect(),
-    )
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::curve::Evaluate;
     use crate::degrees::Degrees;
 
     fn grid(rows: usize, cols: usize) -> Vec<ControlPoint<3>> {

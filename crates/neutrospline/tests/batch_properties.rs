@@ -6,14 +6,20 @@
 
 use neutrospline::strategies::{bezier, parameter};
 use neutrospline::{
-    evaluate_curves, BatchOptions, BatchParams, Bezier, BezierBatch, ControlPoint, Degrees,
+    BatchOptions, BatchParams, Bezier, ControlPoint, CurveBatch, Degrees, Evaluate,
 };
 use proptest::prelude::*;
 
 /// Channel-major reference values from the scalar path.
 fn scalar(curve: &Bezier<2>, ts: &[f64]) -> Vec<f64> {
     let mut out = vec![0.0; 5 * ts.len()];
-    curve.evaluate_channels(ts, &mut out).unwrap();
+    for (k, &t) in ts.iter().enumerate() {
+        let p = curve.evaluate(t).unwrap();
+        let channels = p.position.into_iter().chain(p.degrees.to_array());
+        for (c, v) in channels.enumerate() {
+            out[c * ts.len() + k] = v;
+        }
+    }
     out
 }
 
@@ -102,7 +108,7 @@ proptest! {
         ts in parameters(1..=40),
     ) {
         let mut got = vec![0.0; 5 * ts.len()];
-        BezierBatch::new(&curve)
+        CurveBatch::from(&curve)
             .evaluate(BatchParams::Values(&ts), &mut got, &BatchOptions::default())
             .unwrap();
         check(&curve, &ts, &got, 1e-14)?;
@@ -117,7 +123,7 @@ proptest! {
             .map(|k| if count == 1 { 0.0 } else { k as f64 / (count - 1) as f64 })
             .collect();
         let mut got = vec![0.0; 5 * count];
-        BezierBatch::new(&curve)
+        CurveBatch::from(&curve)
             .evaluate(BatchParams::Uniform(count), &mut got, &BatchOptions::default())
             .unwrap();
         check(&curve, &ts, &got, 1e-14)?;
@@ -129,7 +135,7 @@ proptest! {
         count in 1usize..=2000,
         threads in 1usize..=4,
     ) {
-        let batches: Vec<_> = curves.iter().map(BezierBatch::new).collect();
+        let batches: Vec<CurveBatch<2>> = curves.iter().map(CurveBatch::from).collect();
         let mut alone = Vec::new();
         for b in &batches {
             let mut out = vec![0.0; 5 * count];
@@ -139,7 +145,7 @@ proptest! {
         }
         let mut together = vec![0.0; batches.len() * 5 * count];
         let options = BatchOptions::default().with_threads(threads).with_parallel_threshold(0);
-        evaluate_curves(&batches, BatchParams::Uniform(count), &mut together, &options).unwrap();
+        CurveBatch::evaluate_all(&batches, BatchParams::Uniform(count), &mut together, &options).unwrap();
         prop_assert_eq!(alone, together);
     }
 }
@@ -154,7 +160,7 @@ proptest! {
         ts in parameters(1..=9),
     ) {
         let mut got = vec![0.0; 5 * ts.len()];
-        BezierBatch::new(&curve)
+        CurveBatch::from(&curve)
             .evaluate(BatchParams::Values(&ts), &mut got, &BatchOptions::default())
             .unwrap();
         check(&curve, &ts, &got, 1e-12)?;
@@ -189,7 +195,7 @@ fn batch_degree_64_and_65_near_the_ends() {
             })
             .collect();
         let mut got = vec![0.0; 5 * ts.len()];
-        BezierBatch::new(&curve)
+        CurveBatch::from(&curve)
             .evaluate(BatchParams::Values(&ts), &mut got, &BatchOptions::default())
             .unwrap();
         check(&curve, &ts, &got, 1e-12).unwrap();

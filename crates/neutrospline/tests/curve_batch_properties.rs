@@ -11,14 +11,20 @@
 use neutrospline::strategies::{bspline, domain_parameter, nurbs};
 use neutrospline::{
     uniform_parameter, AnyCurve, BSpline, BatchOptions, BatchParams, ControlPoint, CurveBatch,
-    Degrees, KnotVector, Nurbs,
+    Degrees, Evaluate, KnotVector, Nurbs,
 };
 use proptest::prelude::*;
 
 /// Channel-major reference values from the scalar path.
 fn scalar<const D: usize>(curve: &AnyCurve<D>, ts: &[f64]) -> Vec<f64> {
     let mut out = vec![0.0; (D + 3) * ts.len()];
-    curve.evaluate_channels(ts, &mut out).unwrap();
+    for (k, &t) in ts.iter().enumerate() {
+        let p = curve.evaluate(t).unwrap();
+        let channels = p.position.into_iter().chain(p.degrees.to_array());
+        for (c, v) in channels.enumerate() {
+            out[c * ts.len() + k] = v;
+        }
+    }
     out
 }
 
@@ -136,7 +142,7 @@ proptest! {
         count in 1usize..=500,
     ) {
         let domain = curve.domain();
-        let ts: Vec<f64> = (0..count).map(|k| uniform_parameter(k, count, domain)).collect();
+        let ts: Vec<f64> = (0..count).map(|k| uniform_parameter(k, count, domain.clone())).collect();
         let got = batch(&curve, BatchParams::Uniform(count));
         check(&curve, &ts, &got, 1e-14)?;
     }
@@ -155,7 +161,7 @@ proptest! {
         count in 1usize..=300,
     ) {
         let domain = curve.domain();
-        let ts: Vec<f64> = (0..count).map(|k| uniform_parameter(k, count, domain)).collect();
+        let ts: Vec<f64> = (0..count).map(|k| uniform_parameter(k, count, domain.clone())).collect();
         let got = batch(&curve, BatchParams::Uniform(count));
         check(&curve, &ts, &got, 1e-13)?;
     }
@@ -169,7 +175,7 @@ proptest! {
         // Evenly spaced parameters (generated block by block, split between threads) are
         // exactly `uniform_parameter`'s, and give exactly the values of those parameters.
         let domain = curve.domain();
-        let ts: Vec<f64> = (0..count).map(|k| uniform_parameter(k, count, domain)).collect();
+        let ts: Vec<f64> = (0..count).map(|k| uniform_parameter(k, count, domain.clone())).collect();
         let batch = CurveBatch::new(&curve);
         let options = BatchOptions::default().with_threads(threads).with_parallel_threshold(0);
         let mut uniform = vec![0.0; 5 * count];
@@ -237,7 +243,7 @@ fn long_spline(count: usize) -> BSpline<2> {
 fn parameters_out_of_order_many_pieces() {
     for (count, points) in [(300, 7), (300, 9000), (20, 5000)] {
         let curve = AnyCurve::from(long_spline(count));
-        let (a, b) = curve.domain();
+        let (a, b) = (curve.domain().start, curve.domain().end);
         let ts: Vec<f64> = (0..points)
             .map(|k| {
                 let j = (k * 7919) % points;
@@ -252,21 +258,34 @@ fn parameters_out_of_order_many_pieces() {
     }
 }
 
-/// A Bézier curve through `CurveBatch` is the Bézier batch: same kernels, `u = t` exactly.
+/// A Bézier curve's evenly spaced parameters are generated inside the kernels (its one piece
+/// is on \[0, 1\], `u = t`): exactly the values at the parameters `k / (count - 1)`, on one
+/// thread or several.
 #[test]
-fn bezier_through_curve_batch_is_the_bezier_batch() {
-    let curve = neutrospline::example1();
-    let count = 1001;
-    let mut direct = vec![0.0; 5 * count];
-    neutrospline::BezierBatch::new(&curve)
-        .evaluate(
-            BatchParams::Uniform(count),
-            &mut direct,
-            &BatchOptions::default(),
-        )
-        .unwrap();
-    let got = batch(&AnyCurve::from(curve), BatchParams::Uniform(count));
-    assert_eq!(got, direct);
+fn bezier_uniform_parameters_are_generated_exactly() {
+    let curve = AnyCurve::from(neutrospline::example1());
+    for count in [1, 2, 7, 1001, 70_001] {
+        let ts: Vec<f64> = (0..count)
+            .map(|k| uniform_parameter(k, count, 0.0..1.0))
+            .collect();
+        for threads in [1, 2] {
+            let batch = CurveBatch::new(&curve);
+            let options = BatchOptions::default()
+                .with_threads(threads)
+                .with_parallel_threshold(0);
+            let mut uniform = vec![0.0; 5 * count];
+            batch
+                .evaluate(BatchParams::Uniform(count), &mut uniform, &options)
+                .unwrap();
+            let mut values = vec![0.0; 5 * count];
+            batch
+                .evaluate(BatchParams::Values(&ts), &mut values, &options)
+                .unwrap();
+            assert_eq!(uniform, values, "{count} parameters, {threads} threads");
+        }
+        let got = batch(&curve, BatchParams::Uniform(count));
+        check(&curve, &ts, &got, 1e-14).unwrap();
+    }
 }
 
 /// Equal weights: the NURBS curve is its B-spline, and the ends of each piece come out as the
@@ -322,7 +341,7 @@ fn parameters_outside_the_domain() {
         err.to_string(),
         "parameter t = 5 is outside the domain [0, 2]"
     );
-    assert_eq!(both[0].domain(), (0.0, 7.0));
+    assert_eq!(both[0].domain(), 0.0..7.0);
     assert_eq!((both[1].pieces(), both[1].degree()), (2, 3));
     assert!(!both[1].is_rational());
 }
@@ -344,7 +363,7 @@ fn nurbs_with_extreme_weights() {
         let count = 2001;
         let domain = curve.domain();
         let mut ts: Vec<f64> = (0..count)
-            .map(|k| uniform_parameter(k, count, domain))
+            .map(|k| uniform_parameter(k, count, domain.clone()))
             .collect();
         let got = batch(&curve, BatchParams::Uniform(count));
         check(&curve, &ts, &got, 1e-13).unwrap();

@@ -13,7 +13,9 @@
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
-use neutrospline::{Bezier, ControlPoint, CurvePoint, Degrees, NeutrosophicPoint};
+use neutrospline::{
+    Bezier, ControlPoint, CurvePoint, Degrees, Derivative, Evaluate, NeutrosophicPoint,
+};
 use serde::Deserialize;
 
 // ------------------------------------------------------------------------ data files
@@ -229,8 +231,8 @@ fn expected_channels(e: &EvaluationJson) -> (Vec<f64>, Vec<f64>) {
     (value, deriv)
 }
 
-/// Evaluates `curve` with `evaluate`, `evaluate_many`, `evaluate_channels` and the
-/// derivative, checks the three evaluators agree bitwise and match the reference.
+/// Evaluates `curve` with `evaluate`, `evaluate_many` and the derivative, checks the two
+/// evaluators agree bitwise and match the reference.
 fn check_curve<const D: usize>(
     checker: &mut Checker,
     band: &str,
@@ -240,7 +242,6 @@ fn check_curve<const D: usize>(
     tol: Tolerance,
 ) {
     let ts: Vec<f64> = evaluations.iter().map(|e| e.t).collect();
-    let m = ts.len();
     let channels = D + 3;
 
     let single: Vec<CurvePoint<D>> = ts
@@ -256,11 +257,6 @@ fn check_curve<const D: usize>(
     curve
         .evaluate_many(&ts, &mut many)
         .unwrap_or_else(|e| panic!("{case}: evaluate_many failed: {e}"));
-
-    let mut flat = vec![f64::NAN; channels * m];
-    curve
-        .evaluate_channels(&ts, &mut flat)
-        .unwrap_or_else(|e| panic!("{case}: evaluate_channels failed: {e}"));
 
     let derivative = curve.derivative();
 
@@ -288,14 +284,6 @@ fn check_curve<const D: usize>(
                 "evaluate_many != evaluate",
                 name,
                 got_many[c],
-                got[c],
-            );
-            checker.same_bits(
-                case,
-                t,
-                "evaluate_channels != evaluate",
-                name,
-                flat[c * m + k],
                 got[c],
             );
             checker.close(

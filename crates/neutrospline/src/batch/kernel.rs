@@ -39,7 +39,7 @@
 use super::lanes::Lanes;
 
 /// Highest degree evaluated with Bernstein weights; de Casteljau above it.
-pub(crate) const DIRECT_MAX_DEGREE: usize = super::BATCH_DIRECT_MAX_DEGREE;
+pub(crate) const DIRECT_MAX_DEGREE: usize = super::DIRECT_MAX_DEGREE;
 
 /// Highest degree with a kernel compiled for it (unrolled, binomials folded in).
 const FIXED_MAX_DEGREE: usize = 15;

@@ -2,7 +2,7 @@
 //!
 //! A [`CurveBatch`] holds one prepared Bézier polynomial per non-empty knot span of the
 //! domain (for a Bézier curve, one on \[0, 1\]), found once by blossoming (the pieces of
-//! [`BSpline::to_bezier_segments`]). A parameter `t` in the piece on `[a, b]` is evaluated as
+//! [`BSpline::to_bezier_segments`](crate::BSpline::to_bezier_segments)). A parameter `t` in the piece on `[a, b]` is evaluated as
 //! that piece at the local parameter `u = (t - a) / (b - a)` by the kernels of
 //! [`super::kernel`]. Runs of parameters in one piece go to the kernels together: for
 //! non-decreasing parameters (evenly spaced ones included) each run is found by a binary
@@ -23,7 +23,7 @@
 //! (de Boor's own operations), and `u` carries at most one rounding more than de Boor's
 //! ratios `(t - u_i) / (u_j - u_i)`; a Bézier piece of degree `n` moves by at most
 //! `2n max |c|` per unit of `u`, so the result agrees with de Boor's algorithm within a small
-//! multiple of `n u max |c|` (property tests against [`BSpline::evaluate`]: within 1e-14
+//! multiple of `n u max |c|` (property tests against scalar de Boor evaluation: within 1e-14
 //! times the channel's largest absolute control value up to degree 15, 1e-12 up to 400; the
 //! worst measured over 3,000 random curves is 3.4e-15 up to degree 15 and 2.2e-14 at degree
 //! 300). NURBS curves: within 1e-13 up to degree 15 with weights in \[0.1, 10\] (worst
@@ -31,27 +31,28 @@
 //! largest to the smallest weight of a piece times `n u`. At a knot, `u` is exactly 0 or 1
 //! and a non-rational piece gives exactly de Boor's value there.
 
-use super::kernel::{self, Coeffs, Values, MAX_CHANNELS};
+use core::ops::Range;
+
+use super::kernel::{self, Coeffs, Uniform, Values, MAX_CHANNELS};
 use super::lanes::{self, LaneJob, Lanes};
 use super::{first_outside, partition, plan, run_tasks, BatchOptions, BatchParams, Task, BLOCK};
 use crate::any_curve::AnyCurve;
 use crate::bezier::Bezier;
-use crate::bspline::BSpline;
-use crate::curve::{check_parameter, EvalError};
-use crate::knots::KnotVector;
+use crate::curve::{check_parameter, EvalError, Evaluate};
 use crate::layout::stride;
-use crate::nurbs::Nurbs;
-use crate::spline::Spline;
+use crate::spline::{bezier_knots, Spline};
+use crate::spline_curve::{SplineCurve, Weighting};
 
 /// A curve of any kind (Bézier, B-spline, NURBS) prepared for batch evaluation: its
 /// polynomial or rational Bézier pieces, one per non-empty knot span of the domain.
 ///
 /// Built once, then evaluated at any number of parameters in its domain with
 /// [`CurveBatch::evaluate`] (or with other curves with [`CurveBatch::evaluate_all`]), through
-/// the SIMD kernels and threads of [`BezierBatch`](crate::BezierBatch). See the module
-/// documentation of [`BezierBatch`](crate::BezierBatch) for the method and its accuracy; a
-/// parameter `t` in the piece on `[a, b]` is evaluated at `u = (t - a) / (b - a)` on that
-/// piece, rational pieces in homogeneous form followed by one division.
+/// SIMD kernels chosen at run time and threads. See the [`batch`](crate::batch) module
+/// documentation for the method and its accuracy; a parameter `t` in the piece on `[a, b]`
+/// is evaluated at `u = (t - a) / (b - a)` on that piece, rational pieces in homogeneous form
+/// followed by one division. Evenly spaced parameters on a single piece over \[0, 1\] (a
+/// Bézier curve) are generated inside the kernels.
 ///
 /// ```
 /// use neutrospline::{BSpline, BatchOptions, BatchParams, ControlPoint, CurveBatch, Degrees, KnotVector};
@@ -62,7 +63,7 @@ use crate::spline::Spline;
 ///     .collect();
 /// let spline = BSpline::new(pts, KnotVector::clamped_uniform(2, 4)?)?;
 /// let batch = CurveBatch::from(&spline);
-/// assert_eq!((batch.pieces(), batch.domain()), (2, (0.0, 1.0)));
+/// assert_eq!((batch.pieces(), batch.domain()), (2, 0.0..1.0));
 /// let count = 3; // t = 0, 0.5, 1
 /// let mut out = vec![0.0; 5 * count]; // x, y, truth, indeterminacy, falsity
 /// batch.evaluate(BatchParams::Uniform(count), &mut out, &BatchOptions::default())?;
@@ -72,7 +73,7 @@ use crate::spline::Spline;
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct CurveBatch<const D: usize> {
-    domain: (f64, f64),
+    domain: Range<f64>,
     degree: usize,
     rational: bool,
     /// Where each piece starts, increasing (a copy of the pieces' `start`, searched).
@@ -133,11 +134,8 @@ impl Piece {
                 }
                 if !homogeneous_ok {
                     let p = rows.len() / stride - 1;
-                    let bezier_knots = core::iter::repeat_n(0.0, p + 1)
-                        .chain(core::iter::repeat_n(1.0, p + 1))
-                        .collect();
                     euclidean = Some(Spline {
-                        knots: KnotVector::from_parts_unchecked(p, bezier_knots),
+                        knots: bezier_knots(p),
                         stride,
                         data: rows.to_vec(),
                         weights: Some(weights.to_vec()),
@@ -165,10 +163,7 @@ impl Piece {
 }
 
 impl<const D: usize> CurveBatch<D> {
-    /// Prepares `curve`.
-    ///
-    /// # Panics
-    /// If `D` is not 2 or 3.
+    /// Prepares `curve` (also `CurveBatch::from(&curve)` for each kind).
     pub fn new(curve: &AnyCurve<D>) -> Self {
         match curve {
             AnyCurve::Bezier(c) => Self::from(c),
@@ -177,11 +172,9 @@ impl<const D: usize> CurveBatch<D> {
         }
     }
 
-    fn from_pieces(domain: (f64, f64), degree: usize, rational: bool, pieces: Vec<Piece>) -> Self {
-        assert!(
-            D == 2 || D == 3,
-            "batch evaluation supports 2-D and 3-D curves"
-        );
+    /// Every curve of the library is 2-D or 3-D (their constructors check it), so `D + 3`
+    /// channels are 5 or 6.
+    fn from_pieces(domain: Range<f64>, degree: usize, rational: bool, pieces: Vec<Piece>) -> Self {
         CurveBatch {
             domain,
             degree,
@@ -191,7 +184,7 @@ impl<const D: usize> CurveBatch<D> {
         }
     }
 
-    fn from_spline(spline: &Spline, domain: (f64, f64)) -> Self {
+    fn from_spline(spline: &Spline, domain: Range<f64>) -> Self {
         let pieces = spline
             .bezier_segments()
             .into_iter()
@@ -208,9 +201,24 @@ impl<const D: usize> CurveBatch<D> {
         Self::from_pieces(domain, spline.degree(), spline.weights.is_some(), pieces)
     }
 
-    /// The parameter domain `(start, end)` (\[0, 1\] for a Bézier curve).
-    pub fn domain(&self) -> (f64, f64) {
-        self.domain
+    /// The parameter domain `start..end` (\[0, 1\] for a Bézier curve).
+    pub fn domain(&self) -> Range<f64> {
+        self.domain.clone()
+    }
+
+    /// The prepared control values of piece `j` (for tests of the kernels).
+    #[cfg(test)]
+    pub(crate) fn piece_coeffs(&self, j: usize) -> &Coeffs {
+        &self.pieces[j].coeffs
+    }
+
+    /// A single non-rational piece on exactly \[0, 1\] (a Bézier curve): its local parameter
+    /// is the parameter itself, so evenly spaced parameters go to the kernels as they are.
+    fn is_unit_polynomial(&self) -> bool {
+        !self.rational
+            && self.pieces.len() == 1
+            && self.pieces[0].start == 0.0
+            && self.pieces[0].end == 1.0
     }
 
     /// The polynomial degree.
@@ -230,7 +238,7 @@ impl<const D: usize> CurveBatch<D> {
 
     /// Evaluates at every parameter of `params` into `out`, channel-major: channel `c` at
     /// parameter `k` is `out[c * params.len() + k]`, channels x, y, \[z,\] truth,
-    /// indeterminacy, falsity (the layout of [`BSpline::evaluate_channels`]).
+    /// indeterminacy, falsity.
     /// [`BatchParams::Uniform`] parameters are evenly spaced over the domain (see
     /// [`uniform_parameter`](crate::uniform_parameter)); [`BatchParams::Values`] must lie in
     /// the domain.
@@ -285,18 +293,12 @@ impl<const D: usize> CurveBatch<D> {
 impl<const D: usize> From<&Bezier<D>> for CurveBatch<D> {
     fn from(curve: &Bezier<D>) -> Self {
         let piece = Piece::new(0.0, 1.0, stride(D), curve.packed().data(), None);
-        Self::from_pieces((0.0, 1.0), curve.degree(), false, vec![piece])
+        Self::from_pieces(0.0..1.0, curve.degree(), false, vec![piece])
     }
 }
 
-impl<const D: usize> From<&BSpline<D>> for CurveBatch<D> {
-    fn from(curve: &BSpline<D>) -> Self {
-        Self::from_spline(curve.spline(), curve.domain())
-    }
-}
-
-impl<const D: usize> From<&Nurbs<D>> for CurveBatch<D> {
-    fn from(curve: &Nurbs<D>) -> Self {
+impl<const D: usize, W: Weighting> From<&SplineCurve<D, W>> for CurveBatch<D> {
+    fn from(curve: &SplineCurve<D, W>) -> Self {
         Self::from_spline(curve.spline(), curve.domain())
     }
 }
@@ -322,8 +324,10 @@ fn evaluate_all<const D: usize, const CH: usize>(
     let tasks = partition::<_, CH>(&refs, count, out, threads);
     match run_tasks(tasks, threads, |task| run_task(task, params)) {
         None => Ok(()),
-        Some((k, j)) => Err(check_parameter(params.get(k), curves[j].domain)
-            .expect_err("an invalid parameter was reported")),
+        Some((k, j)) => Err(
+            check_parameter(params.get(k, curves[j].domain()), &curves[j].domain)
+                .expect_err("an invalid parameter was reported"),
+        ),
     }
 }
 
@@ -331,12 +335,8 @@ fn evaluate_all<const D: usize, const CH: usize>(
 /// [`uniform_parameter`](crate::uniform_parameter), in a loop the compiler vectorises (the
 /// ends set apart: the formula may round the last beside `b`).
 #[inline(always)]
-fn uniform_block(
-    count: usize,
-    block: core::ops::Range<usize>,
-    (a, b): (f64, f64),
-    ts: &mut Vec<f64>,
-) {
+fn uniform_block(count: usize, block: Range<usize>, domain: &Range<f64>, ts: &mut Vec<f64>) {
+    let (a, b) = (domain.start, domain.end);
     let denominator = count.saturating_sub(1).max(1) as f64;
     let width = b - a;
     let (start, end) = (block.start, block.end);
@@ -368,8 +368,6 @@ struct Workspace<V> {
     runs: Vec<(usize, usize)>,
     /// The kernels' scratch buffer.
     kernel: Vec<V>,
-    /// The scratch buffer of pieces evaluated in Euclidean form.
-    row: Vec<f64>,
 }
 
 /// Evaluates one task block by block; stops at the first invalid parameter and returns its
@@ -396,7 +394,6 @@ fn run_task<const D: usize, const CH: usize>(
                 values: Vec::new(),
                 runs: Vec::new(),
                 kernel: Vec::new(),
-                row: Vec::new(),
             };
             let mut generated = Vec::new();
             let mut first_bad: Option<(usize, usize)> = None;
@@ -406,13 +403,23 @@ fn run_task<const D: usize, const CH: usize>(
                 let (lo, hi) = (block - task.start, end - task.start);
                 for ((index, curve), outs) in task.items.iter_mut() {
                     let ts: &[f64] = match params {
+                        BatchParams::Uniform(count) if curve.is_unit_polynomial() => {
+                            let run = Uniform {
+                                first: block,
+                                denominator: count.saturating_sub(1).max(1) as f64,
+                            };
+                            let mut outs: [&mut [f64]; CH] =
+                                outs.each_mut().map(|s| &mut s[lo..hi]);
+                            unit_block(l, curve, &run, &mut outs, &mut ws.kernel);
+                            continue;
+                        }
                         BatchParams::Uniform(count) => {
-                            uniform_block(count, block..end, curve.domain, &mut generated);
+                            uniform_block(count, block..end, &curve.domain, &mut generated);
                             &generated
                         }
                         BatchParams::Values(ts) => {
                             let ts = &ts[block..end];
-                            if let Some(bad) = first_outside(ts, curve.domain) {
+                            if let Some(bad) = first_outside(ts, &curve.domain) {
                                 let found = (block + bad, *index);
                                 first_bad = Some(first_bad.map_or(found, |f| f.min(found)));
                                 continue;
@@ -434,6 +441,19 @@ fn run_task<const D: usize, const CH: usize>(
         }
     }
     lanes::dispatch(Job { task, params })
+}
+
+/// Evaluates a single non-rational piece on \[0, 1\] at the evenly spaced parameters `run`
+/// into `outs`, with the parameters generated inside the kernels.
+#[inline(always)]
+fn unit_block<L: Lanes, const D: usize, const CH: usize>(
+    l: L,
+    curve: &CurveBatch<D>,
+    run: &Uniform,
+    outs: &mut [&mut [f64]; CH],
+    scratch: &mut Vec<L::V>,
+) {
+    kernel::evaluate(l, &curve.pieces[0].coeffs, run, outs, scratch);
 }
 
 /// Evaluates `curve` at the parameters `ts` (in its domain; non-decreasing if `in_order`)
@@ -516,7 +536,7 @@ fn block<L: Lanes, const D: usize, const H: usize>(
                 None => {
                     kernel::evaluate(l, &piece.coeffs, &Values(run), &mut target, &mut ws.kernel)
                 }
-                Some(spline) => euclidean_run(spline, run, &mut target, &mut ws.row),
+                Some(spline) => euclidean_run(spline, run, &mut target),
             }
         }
         if in_order && rational {
@@ -555,15 +575,10 @@ fn block<L: Lanes, const D: usize, const H: usize>(
 
 /// A rational piece evaluated point by point in Euclidean form (de Boor's rational steps on
 /// the piece): the values into the first channels of `target`, 1 into the weight channel.
-fn euclidean_run<const H: usize>(
-    spline: &Spline,
-    us: &[f64],
-    target: &mut [&mut [f64]; H],
-    scratch: &mut Vec<f64>,
-) {
+fn euclidean_run<const H: usize>(spline: &Spline, us: &[f64], target: &mut [&mut [f64]; H]) {
     let mut row = [0.0; MAX_CHANNELS];
     for (k, &u) in us.iter().enumerate() {
-        spline.evaluate(u, scratch, &mut row);
+        spline.evaluate(u, &mut row);
         for (c, channel) in target.iter_mut().enumerate() {
             channel[k] = if c + 1 < H { row[c] } else { 1.0 };
         }
