@@ -18,8 +18,9 @@ use neutrospline::{
     Surface,
 };
 
-use crate::input::{self, Format, Kind, KnotRule, KnotSpec, Overrides};
-use crate::shape::{Extras, Param, Shape};
+use neutrospline_io::{Format, Kind, KnotRule, KnotSpec, ReadError, ReadOptions};
+
+use crate::shape::{Extras, Param, Shape, Table};
 
 /// The name the fuzzed file is given in messages.
 const FILE: &str = "fuzz-input";
@@ -30,77 +31,69 @@ const MAX_EVAL_POINTS: usize = 4096;
 /// Fuzzes the CSV reader under several command-line settings (every kind, every rule).
 pub fn csv_model(data: &[u8]) {
     use neutrospline::{CurveKind, SurfaceKind};
+    // `ReadOptions` is non-exhaustive: built by assignment.
+    let options = |set: &dyn Fn(&mut ReadOptions)| {
+        let mut options = ReadOptions::default();
+        set(&mut options);
+        options
+    };
     let settings = [
-        Overrides::default(),
-        Overrides {
-            membership: Some(Membership::Intuitionistic),
-            ..Overrides::default()
-        },
-        Overrides {
-            membership: Some(Membership::Fuzzy),
-            ..Overrides::default()
-        },
-        Overrides {
-            kind: Some(Kind::Curve(CurveKind::BSpline)),
-            degree: Some(2),
-            ..Overrides::default()
-        },
-        Overrides {
-            kind: Some(Kind::Curve(CurveKind::BSpline)),
-            degree: Some(2),
-            knots: Some(KnotSpec::Rule(KnotRule::ChordLength)),
-            ..Overrides::default()
-        },
-        Overrides {
-            kind: Some(Kind::Curve(CurveKind::Nurbs)),
-            degree: Some(2),
-            ..Overrides::default()
-        },
-        Overrides {
-            kind: Some(Kind::Surface(SurfaceKind::Bezier)),
-            rows: Some(2),
-            cols: Some(2),
-            ..Overrides::default()
-        },
-        Overrides {
-            kind: Some(Kind::Surface(SurfaceKind::Nurbs)),
-            rows: Some(3),
-            cols: Some(3),
-            degree_u: Some(1),
-            degree_v: Some(2),
-            ..Overrides::default()
-        },
+        ReadOptions::default(),
+        options(&|o| o.membership = Some(Membership::Intuitionistic)),
+        options(&|o| o.membership = Some(Membership::Fuzzy)),
+        options(&|o| {
+            o.kind = Some(Kind::Curve(CurveKind::BSpline));
+            o.degree = Some(2);
+        }),
+        options(&|o| {
+            o.kind = Some(Kind::Curve(CurveKind::BSpline));
+            o.degree = Some(2);
+            o.knots = Some(KnotSpec::Rule(KnotRule::ChordLength));
+        }),
+        options(&|o| {
+            o.kind = Some(Kind::Curve(CurveKind::Nurbs));
+            o.degree = Some(2);
+        }),
+        options(&|o| {
+            o.kind = Some(Kind::Surface(SurfaceKind::Bezier));
+            o.rows = Some(2);
+            o.cols = Some(2);
+        }),
+        options(&|o| {
+            o.kind = Some(Kind::Surface(SurfaceKind::Nurbs));
+            o.rows = Some(3);
+            o.cols = Some(3);
+            o.degree_u = Some(1);
+            o.degree_v = Some(2);
+        }),
     ];
-    for overrides in &settings {
-        model(Format::Csv, data, overrides);
+    for options in &settings {
+        model(Format::Csv, data, options);
     }
 }
 
 /// Fuzzes the TOML reader.
 pub fn toml_model(data: &[u8]) {
-    model(Format::Toml, data, &Overrides::default());
+    model(Format::Toml, data, &ReadOptions::default());
 }
 
 /// Fuzzes the JSON reader.
 pub fn json_model(data: &[u8]) {
-    model(Format::Json, data, &Overrides::default());
+    model(Format::Json, data, &ReadOptions::default());
 }
 
-fn model(format: Format, data: &[u8], overrides: &Overrides) {
-    match input::parse(FILE, format, data, overrides) {
+fn model(format: Format, data: &[u8], options: &ReadOptions) {
+    match neutrospline_io::parse(FILE, format, data, options) {
         Ok(model) => {
-            assert!(!model.points.is_empty());
-            match model.into_shape() {
-                Ok(shape) => check_shape(&shape),
-                Err(e) => assert_eq!(e.file, FILE),
-            }
+            check_shape(model.shape());
         }
-        Err(e) => {
+        Err(ReadError::Input(e)) => {
             assert_eq!(e.file, FILE);
             assert!(!e.message.is_empty());
             // One line on stderr, whatever the file holds.
             assert!(!e.to_string().contains(['\n', '\r']), "{e}");
         }
+        Err(e) => panic!("not an input error: {e}"),
     }
 }
 
