@@ -1,5 +1,6 @@
-//! The errors of reading: [`InputError`] (an invalid file, located), [`ReadError`] (everything
-//! [`crate::load`] and [`crate::parse`] can fail with) and [`UnsupportedFormat`].
+//! The errors of reading and writing: [`InputError`] (an invalid file, located), [`ReadError`]
+//! (everything [`crate::load`] and [`crate::parse`] can fail with), [`WriteError`] and
+//! [`UnsupportedFormat`].
 
 use std::fmt;
 use std::io;
@@ -153,6 +154,41 @@ impl ReadError {
     }
 }
 
+/// Why a model could not be written.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum WriteError {
+    /// The file name's extension names no format ([`crate::save`]).
+    #[error(transparent)]
+    Format(#[from] UnsupportedFormat),
+    /// The model holds something the format cannot (a control point name that a CSV cell
+    /// would lose). Displays as `[PATH: ]cannot write FORMAT: MESSAGE`.
+    #[error("{}cannot write {format}: {message}", prefix(path.as_deref()))]
+    Unrepresentable {
+        /// The file, when writing one.
+        path: Option<String>,
+        /// The format.
+        format: Format,
+        /// What cannot be written, and why.
+        message: String,
+    },
+    /// The file could not be written; it was left as it was. Displays as
+    /// `PATH: cannot write: ERROR` (the cause included, as for [`ReadError::Io`]).
+    #[error("{path}: cannot write: {error}")]
+    Io {
+        /// The path as given.
+        path: String,
+        /// The cause.
+        #[source]
+        error: io::Error,
+    },
+}
+
+/// `PATH: ` or nothing.
+fn prefix(path: Option<&str>) -> String {
+    path.map(|p| format!("{p}: ")).unwrap_or_default()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -205,5 +241,21 @@ mod tests {
             e.to_string(),
             "a.txt: unsupported file extension `.txt` (accepted: .csv, .toml, .json)"
         );
+    }
+
+    #[test]
+    fn write_error_display() {
+        let e = WriteError::Unrepresentable {
+            path: Some("a.csv".into()),
+            format: Format::Csv,
+            message: "m".into(),
+        };
+        assert_eq!(e.to_string(), "a.csv: cannot write CSV: m");
+        let e = WriteError::Unrepresentable {
+            path: None,
+            format: Format::Csv,
+            message: "m".into(),
+        };
+        assert_eq!(e.to_string(), "cannot write CSV: m");
     }
 }

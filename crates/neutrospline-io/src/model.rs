@@ -2,8 +2,8 @@
 
 use neutrospline::{DegreeError, Degrees, Membership};
 
-use crate::settings::{Kind, KnotRule};
-use crate::Shape;
+use crate::settings::{Kind, KnotRule, KnotSpec};
+use crate::{ReadOptions, Shape};
 
 /// How the knots of one direction were given; see [`Model::knot_sources`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -47,17 +47,21 @@ pub enum ModelError {
 /// the membership rule of the degrees, and optional names of the control points.
 ///
 /// Readers ([`crate::load`], [`crate::parse`], [`crate::read_csv`]) produce one; a program
-/// builds one from a core curve or surface with [`Model::new`] and the `with_` methods.
+/// builds one from a core curve or surface with [`Model::new`] and the `with_` methods, and
+/// writes it with [`crate::save`] or [`crate::to_toml_string`] and the like. Every `Model`
+/// writes to a file that reads back to an equal `Model` (CSV: see [`crate::to_csv_string`]).
 ///
 /// ```
 /// use neutrospline::{example1, AnyCurve, Membership};
-/// use neutrospline_io::Model;
+/// use neutrospline_io::{parse, to_toml_string, Format, Model, ReadOptions};
 ///
 /// let model = Model::new(AnyCurve::Bezier(example1()))
 ///     .with_name("Example 1")
 ///     .with_point_names(["C0", "C1", "C2", "C3"].map(Some))?;
-/// assert_eq!(model.point_names()[3].as_deref(), Some("C3"));
-/// assert_eq!(model.membership(), Membership::Neutrosophic);
+/// let text = to_toml_string(&model);
+/// let back = parse("example1.toml", Format::Toml, text.as_bytes(), &ReadOptions::default())?;
+/// assert_eq!(back, model);
+/// assert_eq!(back.membership(), Membership::Neutrosophic);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone)]
@@ -228,9 +232,41 @@ impl Model {
     /// B-spline or NURBS curve, two (u, then v) for a B-spline or NURBS surface.
     ///
     /// This is provenance, for reports such as `neutrospline check`'s `knots: ...
-    /// (chord-length)`: it is not part of the model's value (ignored by `==`).
+    /// (chord-length)`: it is not part of the model's value (ignored by `==`), and the writers
+    /// always write the knots as values ([`KnotSource::Explicit`] once read back).
     pub fn knot_sources(&self) -> &[KnotSource] {
         &self.knot_sources
+    }
+
+    /// The options that read [`crate::to_csv_string`]`(self)` back into this model (without its
+    /// name and description, which a CSV file cannot hold): the kind, the membership rule, the
+    /// degree(s), explicit knots and the grid.
+    pub fn csv_read_options(&self) -> ReadOptions {
+        let mut options = ReadOptions {
+            kind: Some(self.kind()),
+            membership: Some(self.membership),
+            ..ReadOptions::default()
+        };
+        let explicit = |k: &neutrospline::KnotVector| Some(KnotSpec::Explicit(k.knots().to_vec()));
+        match &self.shape {
+            Shape::Planar(_) | Shape::Spatial(_) => {
+                if let Some(knots) = self.shape.curve_knots() {
+                    options.degree = self.shape.curve_degree();
+                    options.knots = explicit(knots);
+                }
+            }
+            Shape::Surface(s) => {
+                options.rows = Some(s.rows());
+                options.cols = Some(s.cols());
+                if self.kind().has_knots() {
+                    options.degree_u = Some(s.degree_u());
+                    options.degree_v = Some(s.degree_v());
+                    options.knots_u = explicit(s.knots_u());
+                    options.knots_v = explicit(s.knots_v());
+                }
+            }
+        }
+        options
     }
 }
 

@@ -1,7 +1,10 @@
 //! Numbers as text: the shortest form that reads back to the same `f64`.
 //!
 //! [`format_number`] and [`push_number`] write the form of Rust's `Display` (never an
-//! exponent, so that every CSV or JSON reader parses it), for messages and numeric tables.
+//! exponent, so that every CSV or JSON reader parses it), for messages and numeric tables. The
+//! model writers use [`file_number`], Ryu's form, which switches to an exponent for very large
+//! and very small magnitudes (`1e-300` rather than three hundred zeros) and always reads as a
+//! float in TOML and JSON (`1.0`, not `1`).
 
 /// A number in the shortest form that reads back to the same `f64`, in the form of Rust's
 /// `Display` (never an exponent, so every CSV or JSON reader parses it); see [`push_number`].
@@ -95,6 +98,15 @@ fn parse_exponent(text: &[u8]) -> i32 {
         .fold(0i32, |acc, &d| acc * 10 + i32::from(d - b'0'))
 }
 
+/// A number in a written model file: Ryu's shortest round-trip form, always with a fraction or
+/// an exponent (`1.0`, `0.1`, `-0.0`, `1e-300`, `1.7976931348623157e308`), so that TOML and
+/// JSON readers see a float, and every reader gets the same `f64` back.
+pub(crate) fn file_number(out: &mut String, v: f64) {
+    debug_assert!(v.is_finite(), "models hold finite numbers only");
+    let mut buffer = ryu::Buffer::new();
+    out.push_str(buffer.format(v));
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -182,5 +194,54 @@ mod tests {
         assert_eq!(format_number(1.0), "1");
         assert_eq!(format_number(0.5), "0.5");
         assert_eq!(format_number(1e-20), "0.00000000000000000001");
+    }
+
+    /// Random bit patterns (every exponent, subnormals included): at most 17 significant
+    /// digits, a fraction or an exponent, and the same bits back.
+    #[test]
+    fn file_number_is_short_and_exact() {
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut out = String::new();
+        for _ in 0..200_000 {
+            state ^= state >> 12;
+            state ^= state << 25;
+            state ^= state >> 27;
+            let v = f64::from_bits(state.wrapping_mul(0x9E37_79B9_7F4A_7C15));
+            if !v.is_finite() {
+                continue;
+            }
+            out.clear();
+            file_number(&mut out, v);
+            assert_eq!(out.parse::<f64>().unwrap().to_bits(), v.to_bits(), "{out}");
+            let mantissa = out.split('e').next().unwrap_or_default();
+            let digits = mantissa
+                .trim_start_matches(['-', '0', '.'])
+                .replace('.', "");
+            assert!(digits.trim_end_matches('0').len() <= 17, "{out}");
+            assert!(
+                out.contains(['.', 'e']),
+                "{out} would read as a TOML integer"
+            );
+        }
+    }
+
+    #[test]
+    fn file_number_round_trips_and_reads_as_float() {
+        let cases = [
+            (1.0, "1.0"),
+            (-0.0, "-0.0"),
+            (0.1, "0.1"),
+            (0.1 + 0.2, "0.30000000000000004"),
+            (1e-300, "1e-300"),
+            (f64::MAX, "1.7976931348623157e308"),
+            (5e-324, "5e-324"),
+            (123456.0, "123456.0"),
+        ];
+        for (v, text) in cases {
+            let mut out = String::new();
+            file_number(&mut out, v);
+            assert_eq!(out, text);
+            assert_eq!(out.parse::<f64>().unwrap().to_bits(), v.to_bits());
+        }
     }
 }

@@ -1,6 +1,6 @@
 //! [`Shape`]: the core's curve (planar or spatial) or surface that a model file describes.
 
-use neutrospline::{AnyCurve, KnotVector, Range, Surface};
+use neutrospline::{AnyCurve, ControlPoint, KnotVector, Range, Surface};
 
 use crate::Kind;
 
@@ -31,6 +31,28 @@ impl From<Surface> for Shape {
     fn from(surface: Surface) -> Shape {
         Shape::Surface(surface)
     }
+}
+
+/// One control point in any dimension: position (2 or 3 coordinates), degrees and weight.
+pub(crate) struct PointData {
+    pub(crate) position: Vec<f64>,
+    pub(crate) degrees: neutrospline::Degrees,
+    pub(crate) weight: Option<f64>,
+}
+
+fn point_data<const D: usize>(
+    points: Vec<ControlPoint<D>>,
+    weights: Option<&[f64]>,
+) -> Vec<PointData> {
+    points
+        .into_iter()
+        .enumerate()
+        .map(|(i, p)| PointData {
+            position: p.position.to_vec(),
+            degrees: p.degrees,
+            weight: weights.and_then(|w| w.get(i).copied()),
+        })
+        .collect()
 }
 
 impl Shape {
@@ -127,12 +149,21 @@ impl Shape {
             Shape::Surface(s) => s.control_points().iter().map(|p| p.degrees).collect(),
         }
     }
+
+    /// Every control point with its weight, for the writers.
+    pub(crate) fn point_data(&self) -> Vec<PointData> {
+        match self {
+            Shape::Planar(c) => point_data(c.control_points(), c.weights()),
+            Shape::Spatial(c) => point_data(c.control_points(), c.weights()),
+            Shape::Surface(s) => point_data(s.control_points(), s.weights()),
+        }
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use neutrospline::{BSpline, ControlPoint, CurveKind, Degrees, SurfaceKind};
+    use neutrospline::{BSpline, CurveKind, Degrees, SurfaceKind};
 
     #[test]
     fn shape_accessors() {
