@@ -3,7 +3,8 @@
 //!
 //! Each function takes arbitrary bytes and panics only when a property is broken:
 //! - [`csv_model`], [`toml_model`], [`json_model`]: parsing never panics; an error names the
-//!   file; a model that parses and builds is evaluated and must satisfy [`check_shape`].
+//!   file; a model that parses and builds is evaluated and must satisfy [`check_shape`], and
+//!   written in every format it reads back to an equal model (`neutrospline-io`'s writers).
 //! - [`evaluate`]: control points, knots, weights and parameters decoded from the bytes are
 //!   given to the core directly; whatever the core accepts must satisfy SPEC section 4.
 //!
@@ -18,8 +19,9 @@ use neutrospline::{
     Surface,
 };
 
-use crate::input::{self, Format, Kind, KnotRule, KnotSpec, Overrides};
-use crate::shape::{Extras, Param, Shape};
+use neutrospline_io::{Format, Kind, KnotRule, KnotSpec, Model, ReadError, ReadOptions};
+
+use crate::shape::{Extras, Param, Shape, Table};
 
 /// The name the fuzzed file is given in messages.
 const FILE: &str = "fuzz-input";
@@ -30,77 +32,105 @@ const MAX_EVAL_POINTS: usize = 4096;
 /// Fuzzes the CSV reader under several command-line settings (every kind, every rule).
 pub fn csv_model(data: &[u8]) {
     use neutrospline::{CurveKind, SurfaceKind};
+    // `ReadOptions` is non-exhaustive: built by assignment.
+    let options = |set: &dyn Fn(&mut ReadOptions)| {
+        let mut options = ReadOptions::default();
+        set(&mut options);
+        options
+    };
     let settings = [
-        Overrides::default(),
-        Overrides {
-            membership: Some(Membership::Intuitionistic),
-            ..Overrides::default()
-        },
-        Overrides {
-            membership: Some(Membership::Fuzzy),
-            ..Overrides::default()
-        },
-        Overrides {
-            kind: Some(Kind::Curve(CurveKind::BSpline)),
-            degree: Some(2),
-            ..Overrides::default()
-        },
-        Overrides {
-            kind: Some(Kind::Curve(CurveKind::BSpline)),
-            degree: Some(2),
-            knots: Some(KnotSpec::Rule(KnotRule::ChordLength)),
-            ..Overrides::default()
-        },
-        Overrides {
-            kind: Some(Kind::Curve(CurveKind::Nurbs)),
-            degree: Some(2),
-            ..Overrides::default()
-        },
-        Overrides {
-            kind: Some(Kind::Surface(SurfaceKind::Bezier)),
-            rows: Some(2),
-            cols: Some(2),
-            ..Overrides::default()
-        },
-        Overrides {
-            kind: Some(Kind::Surface(SurfaceKind::Nurbs)),
-            rows: Some(3),
-            cols: Some(3),
-            degree_u: Some(1),
-            degree_v: Some(2),
-            ..Overrides::default()
-        },
+        ReadOptions::default(),
+        options(&|o| o.membership = Some(Membership::Intuitionistic)),
+        options(&|o| o.membership = Some(Membership::Fuzzy)),
+        options(&|o| {
+            o.kind = Some(Kind::Curve(CurveKind::BSpline));
+            o.degree = Some(2);
+        }),
+        options(&|o| {
+            o.kind = Some(Kind::Curve(CurveKind::BSpline));
+            o.degree = Some(2);
+            o.knots = Some(KnotSpec::Rule(KnotRule::ChordLength));
+        }),
+        options(&|o| {
+            o.kind = Some(Kind::Curve(CurveKind::Nurbs));
+            o.degree = Some(2);
+        }),
+        options(&|o| {
+            o.kind = Some(Kind::Surface(SurfaceKind::Bezier));
+            o.rows = Some(2);
+            o.cols = Some(2);
+        }),
+        options(&|o| {
+            o.kind = Some(Kind::Surface(SurfaceKind::Nurbs));
+            o.rows = Some(3);
+            o.cols = Some(3);
+            o.degree_u = Some(1);
+            o.degree_v = Some(2);
+        }),
     ];
-    for overrides in &settings {
-        model(Format::Csv, data, overrides);
+    for options in &settings {
+        model(Format::Csv, data, options);
     }
 }
 
 /// Fuzzes the TOML reader.
 pub fn toml_model(data: &[u8]) {
-    model(Format::Toml, data, &Overrides::default());
+    model(Format::Toml, data, &ReadOptions::default());
 }
 
 /// Fuzzes the JSON reader.
 pub fn json_model(data: &[u8]) {
-    model(Format::Json, data, &Overrides::default());
+    model(Format::Json, data, &ReadOptions::default());
 }
 
-fn model(format: Format, data: &[u8], overrides: &Overrides) {
-    match input::parse(FILE, format, data, overrides) {
+fn model(format: Format, data: &[u8], options: &ReadOptions) {
+    match neutrospline_io::parse(FILE, format, data, options) {
         Ok(model) => {
-            assert!(!model.points.is_empty());
-            match model.into_shape() {
-                Ok(shape) => check_shape(&shape),
-                Err(e) => assert_eq!(e.file, FILE),
-            }
+            check_shape(model.shape());
+            check_round_trip(&model, format);
         }
-        Err(e) => {
+        Err(ReadError::Input(e)) => {
             assert_eq!(e.file, FILE);
             assert!(!e.message.is_empty());
             // One line on stderr, whatever the file holds.
             assert!(!e.to_string().contains(['\n', '\r']), "{e}");
         }
+        Err(e) => panic!("not an input error: {e}"),
+    }
+}
+
+/// A model that was read writes in every format to a file that reads back to the same model
+/// (CSV: with the options [`Model::csv_read_options`] gives, without the name
+/// and description; control point names that a CSV cell cannot hold are refused).
+fn check_round_trip(model: &Model, read_as: Format) {
+    if model.shape().control_count() > MAX_EVAL_POINTS {
+        return;
+    }
+    for format in Format::ALL {
+        let text = match neutrospline_io::to_string(model, format) {
+            Ok(text) => text,
+            Err(e) => {
+                assert_eq!(format, Format::Csv, "{e}");
+                continue;
+            }
+        };
+        let options = if format == Format::Csv {
+            model.csv_read_options()
+        } else {
+            ReadOptions::default()
+        };
+        let back = neutrospline_io::parse(FILE, format, text.as_bytes(), &options)
+            .unwrap_or_else(|e| panic!("{read_as} read, {format} written, read back: {e}\n{text}"));
+        let expected = if format == Format::Csv {
+            // A CSV file holds no name or description.
+            Model::new(model.shape().clone())
+                .with_membership(model.membership())
+                .and_then(|m| m.with_point_names(model.point_names().to_vec()))
+                .unwrap_or_else(|e| panic!("{e}"))
+        } else {
+            model.clone()
+        };
+        assert_eq!(back, expected, "{read_as} read, {format} written:\n{text}");
     }
 }
 

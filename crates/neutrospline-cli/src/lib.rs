@@ -1,18 +1,19 @@
 //! The `neutrospline` command: evaluate, check and demonstrate neutrosophic curves (Bézier,
 //! B-spline, NURBS) and tensor-product surfaces.
 //!
-//! A thin layer over the `neutrospline` library: it parses arguments and files, calls the
-//! library, writes tables and maps errors to exit codes (0 success, 1 invalid input or failure,
-//! 2 usage error).
+//! A thin layer over the `neutrospline` library: it parses arguments, reads files through
+//! `neutrospline-io`, calls the library, writes tables and maps errors to exit codes (0
+//! success, 1 invalid input or failure, 2 usage error). Only [`main_with_args`] and the fuzz
+//! target bodies ([`fuzzing`]) are public.
 
-pub mod commands;
+mod commands;
 pub mod fuzzing;
-pub mod input;
-pub mod limits;
-pub mod output;
-pub mod progress;
-pub mod shape;
-pub mod signals;
+mod input;
+mod limits;
+mod output;
+mod progress;
+mod shape;
+mod signals;
 
 use std::io::Write;
 use std::process::ExitCode;

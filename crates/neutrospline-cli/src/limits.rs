@@ -4,7 +4,8 @@
 //!
 //! The limits are global options (`--max-control-points`, `--max-samples`, `--max-file-size`),
 //! also read from the environment (`NEUTROSPLINE_MAX_CONTROL_POINTS`, ...). `main` installs
-//! them once for the process ([`install`]); the readers consult [`current`].
+//! them once for the process ([`install`]); the commands consult [`current`] and pass the file
+//! limits to the readers of `neutrospline-io` ([`Limits::file_limits`]).
 //!
 //! CSV files are read as a stream, line by line, so their size is not limited: a CSV file is
 //! refused at the first bad line, or at the line that exceeds the control-point limit, without
@@ -13,14 +14,10 @@
 
 use std::sync::OnceLock;
 
-/// Default of `--max-control-points`.
-pub const DEFAULT_MAX_CONTROL_POINTS: u64 = 1_000_000;
+pub use neutrospline_io::{DEFAULT_MAX_CONTROL_POINTS, DEFAULT_MAX_FILE_SIZE};
+
 /// Default of `--max-samples` (rows of an `eval` table; a surface's N x N grid counts N²).
 pub const DEFAULT_MAX_SAMPLES: u64 = 10_000_000_000;
-/// Default of `--max-file-size` (TOML and JSON files), 256 MiB.
-pub const DEFAULT_MAX_FILE_SIZE: u64 = 256 * 1024 * 1024;
-/// The longest line a CSV file may have (a control point row is a few dozen bytes).
-pub const MAX_CSV_LINE: usize = 1024 * 1024;
 
 /// The limits in force.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -31,6 +28,16 @@ pub struct Limits {
     pub max_samples: u64,
     /// The largest TOML or JSON file, in bytes.
     pub max_file_size: u64,
+}
+
+impl Limits {
+    /// The limits of reading a file, for `neutrospline-io`.
+    pub fn file_limits(&self) -> neutrospline_io::Limits {
+        let mut limits = neutrospline_io::Limits::default();
+        limits.max_control_points = self.max_control_points;
+        limits.max_file_size = self.max_file_size;
+        limits
+    }
 }
 
 impl Default for Limits {
@@ -105,12 +112,4 @@ pub fn install(limits: Limits) {
 /// The limits in force: those installed, else the defaults.
 pub fn current() -> Limits {
     LIMITS.get().copied().unwrap_or_default()
-}
-
-/// The message for a model with too many control points.
-pub(crate) fn too_many_points(limit: u64) -> String {
-    format!(
-        "more than {limit} control points (the limit; raise it with --max-control-points or \
-         NEUTROSPLINE_MAX_CONTROL_POINTS)"
-    )
 }

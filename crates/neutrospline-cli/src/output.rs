@@ -1,12 +1,12 @@
 //! Writing results: numeric tables as CSV or JSON, aligned text tables, and the choice between
 //! standard output and an atomically replaced file.
 
-use std::ffi::OsString;
-use std::fs::{self, File, OpenOptions};
+use std::fs::{self, OpenOptions};
 use std::io::{self, BufWriter, Write};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use anyhow::Context as _;
+use neutrospline_io::AtomicFile;
 
 /// The formats of `eval`'s table.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -17,97 +17,7 @@ pub enum TableFormat {
     Json,
 }
 
-/// A number in the shortest form that reads back to the same `f64`, in the form of Rust's
-/// `Display` (never an exponent, so every CSV or JSON reader parses it); see [`push_number`].
-pub fn number(v: f64) -> String {
-    let mut text = Vec::with_capacity(24);
-    push_number(&mut text, v);
-    // `push_number` writes ASCII only.
-    String::from_utf8(text).unwrap_or_default()
-}
-
-/// Appends [`number`]`(v)` to `out`: the form of `format!("{v}")` (no exponent, no trailing
-/// `.0`, `-0` for negative zero) from Ryu's shortest round-trip digits, several times as fast.
-/// The digits are `Display`'s except in an exact tie between two shortest candidates (such as
-/// `2^-25 = 0.0000000298023223876953125`), which Ryu rounds to even where `Display` rounds up;
-/// both read back to the same `f64`.
-pub fn push_number(out: &mut Vec<u8>, v: f64) {
-    if !v.is_finite() {
-        out.extend_from_slice(format!("{v}").as_bytes());
-        return;
-    }
-    let mut buffer = ryu::Buffer::new();
-    // Ryu writes `[-]DIGITS[.DIGITS][eEXP]`: split it into the significant digits and the
-    // position of the decimal point relative to their start.
-    let text = buffer.format_finite(v).as_bytes();
-    let (negative, text) = match text.split_first() {
-        Some((b'-', rest)) => (true, rest),
-        _ => (false, text),
-    };
-    let (mantissa, exponent) = match text.iter().position(|&b| b == b'e') {
-        Some(e) => (&text[..e], parse_exponent(&text[e + 1..])),
-        // Without an exponent (1e-5 <= |v| < 1e16) Ryu's form is `Display`'s, but for the
-        // `.0` of a whole number.
-        None => {
-            if negative {
-                out.push(b'-');
-            }
-            out.extend_from_slice(text.strip_suffix(b".0").unwrap_or(text));
-            return;
-        }
-    };
-    let mut digits = [0u8; 24];
-    let mut count = 0usize;
-    let mut point = None;
-    for &b in mantissa {
-        if b == b'.' {
-            point = Some(count);
-        } else {
-            digits[count] = b;
-            count += 1;
-        }
-    }
-    let mut point = point.unwrap_or(count) as i32 + exponent;
-    let mut digits = &digits[..count];
-    while let Some((b'0', rest)) = digits.split_first() {
-        digits = rest;
-        point -= 1;
-    }
-    while let Some((b'0', rest)) = digits.split_last() {
-        digits = rest;
-    }
-    if negative {
-        out.push(b'-');
-    }
-    if digits.is_empty() {
-        out.push(b'0');
-    } else if point <= 0 {
-        out.extend_from_slice(b"0.");
-        out.extend(std::iter::repeat_n(b'0', point.unsigned_abs() as usize));
-        out.extend_from_slice(digits);
-    } else {
-        let point = point as usize;
-        if point >= digits.len() {
-            out.extend_from_slice(digits);
-            out.extend(std::iter::repeat_n(b'0', point - digits.len()));
-        } else {
-            out.extend_from_slice(&digits[..point]);
-            out.push(b'.');
-            out.extend_from_slice(&digits[point..]);
-        }
-    }
-}
-
-/// The decimal exponent after Ryu's `e` (at most three digits, optionally negative).
-fn parse_exponent(text: &[u8]) -> i32 {
-    let (sign, digits) = match text.split_first() {
-        Some((b'-', rest)) => (-1, rest),
-        _ => (1, text),
-    };
-    sign * digits
-        .iter()
-        .fold(0i32, |acc, &d| acc * 10 + i32::from(d - b'0'))
-}
+pub use neutrospline_io::{format_number as number, push_number};
 
 /// A number rounded to `decimals` places for reading, without trailing zeros (`-0` prints `0`).
 pub fn rounded(v: f64, decimals: usize) -> String {
@@ -299,7 +209,8 @@ fn write_directly(
     w.flush().with_context(cannot)
 }
 
-/// Writes `target` (the resolved `path`, named in messages as given) through a temporary file.
+/// Writes `target` (the resolved `path`, named in messages as given) through an
+/// [`AtomicFile`]: a temporary file in the same directory, renamed over `target` at the end.
 fn write_atomically(
     path: &Path,
     target: &Path,
@@ -307,69 +218,22 @@ fn write_atomically(
 ) -> anyhow::Result<()> {
     let shown = path.display();
     let cannot = || format!("{shown}: cannot write");
-    let file_name = target
-        .file_name()
-        .with_context(|| format!("{shown}: not a file name"))?;
-    let dir = match target.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p,
-        _ => Path::new("."),
-    };
+    if target.file_name().is_none() {
+        anyhow::bail!("{shown}: not a file name");
+    }
     // From here on SIGINT and SIGTERM only set a flag (checked between rows and before the
     // rename), so that an interruption removes the temporary file.
     crate::signals::install();
-    let (temp, file) = create_temp(dir, file_name).with_context(cannot)?;
-    let mut guard = RemoveOnDrop(Some(temp.clone()));
-    let mut w = BufWriter::new(file);
+    let mut file = AtomicFile::create(target).with_context(cannot)?;
     let not_written = || format!("{shown}: not written");
-    write(&mut w).map_err(|e| match e.downcast_ref::<crate::signals::Interrupted>() {
+    write(&mut file).map_err(|e| match e.downcast_ref::<crate::signals::Interrupted>() {
         Some(_) => e.context(not_written()),
         None => e,
     })?;
-    let file = w
-        .into_inner()
-        .map_err(|e| e.into_error())
-        .with_context(cannot)?;
     file.sync_all().with_context(cannot)?;
-    drop(file);
-    if let Ok(old) = fs::metadata(target) {
-        // Best effort: a new file keeps the mode of the one it replaces.
-        let _ = fs::set_permissions(&temp, old.permissions());
-    }
     crate::signals::check().with_context(not_written)?;
-    fs::rename(&temp, target).with_context(cannot)?;
-    guard.0 = None;
-    Ok(())
-}
-
-/// Creates `.NAME.PID-N.tmp` in `dir`, a name no other file has.
-fn create_temp(dir: &Path, file_name: &std::ffi::OsStr) -> io::Result<(PathBuf, File)> {
-    let mut attempt = 0u32;
-    loop {
-        let mut name = OsString::from(".");
-        name.push(file_name);
-        name.push(format!(".{}-{attempt}.tmp", std::process::id()));
-        let candidate = dir.join(name);
-        match OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .open(&candidate)
-        {
-            Ok(file) => return Ok((candidate, file)),
-            Err(e) if e.kind() == io::ErrorKind::AlreadyExists && attempt < 1000 => attempt += 1,
-            Err(e) => return Err(e),
-        }
-    }
-}
-
-/// Removes the temporary file unless the rename succeeded.
-struct RemoveOnDrop(Option<PathBuf>);
-
-impl Drop for RemoveOnDrop {
-    fn drop(&mut self) {
-        if let Some(path) = self.0.take() {
-            let _ = fs::remove_file(path);
-        }
-    }
+    // Dropped on an error: the temporary file is removed and the old file left as it was.
+    file.commit().with_context(cannot)
 }
 
 /// Whether `error` is (caused by) a closed pipe on the reading side, such as `| head -1`.
@@ -399,88 +263,6 @@ mod tests {
         let mut out = Vec::new();
         write_table(&mut out, format, &columns, rows.into_iter().map(Ok)).unwrap();
         String::from_utf8(out).unwrap()
-    }
-
-    /// `push_number` against the standard library's `Display`, the independent reference: the
-    /// special values, every power of ten and of two, and a million seeded random bit patterns
-    /// (all exponents, subnormals included).
-    #[test]
-    fn push_number_is_display() {
-        let mut values = vec![
-            0.0,
-            -0.0,
-            1.0,
-            -1.0,
-            0.1,
-            0.3,
-            f64::MAX,
-            f64::MIN,
-            f64::MIN_POSITIVE,
-            f64::EPSILON,
-            5e-324,
-            -5e-324,
-            // The largest subnormal.
-            f64::from_bits(0x000F_FFFF_FFFF_FFFF),
-            9007199254740993.0,
-            123456789012345680000.0,
-            1e15,
-            1e16,
-            1e17,
-            1e-5,
-            1e-6,
-            1e-7,
-        ];
-        values.extend((-324..=308).map(|e| format!("1e{e}").parse::<f64>().unwrap()));
-        values.extend((-1074..=1023).map(|e| 2f64.powi(e)));
-        let mut state = 0x9E37_79B9_7F4A_7C15u64;
-        for _ in 0..1_000_000 {
-            // xorshift64*
-            state ^= state >> 12;
-            state ^= state << 25;
-            state ^= state >> 27;
-            let bits = state.wrapping_mul(0x2545_F491_4F6C_DD1D);
-            values.push(f64::from_bits(bits));
-        }
-        let mut text = Vec::new();
-        for v in values.into_iter().filter(|v| v.is_finite()) {
-            text.clear();
-            push_number(&mut text, v);
-            let ours = std::str::from_utf8(&text).unwrap();
-            let display = format!("{v}");
-            if ours != display {
-                assert_tie(v, ours, &display);
-            }
-        }
-    }
-
-    /// `ours` and `display` are the two shortest decimals nearest `v`, equally near: they differ
-    /// by one unit in the last digit, ours ends in an even digit, and `v`'s exact decimal
-    /// expansion is the lower one with a 5 appended.
-    fn assert_tie(v: f64, ours: &str, display: &str) {
-        assert_eq!(ours.parse::<f64>().unwrap().to_bits(), v.to_bits(), "{v:e}");
-        assert_eq!(ours.len(), display.len(), "{v:e}: {ours} vs {display}");
-        let (o, d) = (ours.as_bytes(), display.as_bytes());
-        let last = o.len() - 1;
-        assert_eq!(o[..last], d[..last], "{v:e}: {ours} vs {display}");
-        assert_eq!(
-            (o[last] - b'0') % 2,
-            0,
-            "{v:e}: {ours} does not end in an even digit"
-        );
-        assert_eq!(d[last] - o[last], 1, "{v:e}: {ours} vs {display}");
-        assert!(ours.contains('.'), "{v:e}: {ours}");
-        let exact = format!("{v:.1100}");
-        assert_eq!(exact.trim_end_matches('0'), format!("{ours}5"), "{v:e}");
-    }
-
-    #[test]
-    fn number_round_trips() {
-        for v in [0.1, 1.0 / 3.0, 1e-20, 1e300, -0.0, 4.625, f64::MIN_POSITIVE] {
-            assert_eq!(number(v).parse::<f64>().unwrap().to_bits(), v.to_bits());
-        }
-        assert_eq!(number(1.0), "1");
-        assert_eq!(number(0.5), "0.5");
-        assert_eq!(number(1e-20), "0.00000000000000000001");
     }
 
     #[test]

@@ -1,26 +1,16 @@
-//! The shapes the command works with: the core's curves of any kind (planar or spatial) and
-//! its surfaces, with the table columns and row-by-row evaluation that `eval` writes.
+//! The tables the command makes of a shape (`neutrospline-io`'s [`Shape`]: the core's curves
+//! of any kind, planar or spatial, and its surfaces): the columns, the parameter checks of
+//! `--at` and the row-by-row evaluation that `eval` writes ([`Table`]).
 
 use std::fmt;
 
 use neutrospline::{
     AnyCurve, BSplineDerivative, BezierDerivative, DerivativeValue, EvalError, KnotVector,
-    NurbsDerivative, Range, Surface,
+    NurbsDerivative, Surface,
 };
+pub use neutrospline_io::Shape;
 
-use crate::input::Kind;
 use crate::output::number;
-
-/// A curve or surface read from a file.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Shape {
-    /// A curve in the plane (x, y).
-    Planar(AnyCurve<2>),
-    /// A curve in space (x, y, z).
-    Spatial(AnyCurve<3>),
-    /// A tensor-product surface in space.
-    Surface(Surface),
-}
 
 /// A parameter of a shape: `t` on a curve, `(u, v)` on a surface.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -81,104 +71,37 @@ fn contains(domain: (f64, f64), t: f64) -> bool {
     domain.0 <= t && t <= domain.1
 }
 
-impl Shape {
-    /// The kind, as named in files.
-    pub fn kind(&self) -> Kind {
-        match self {
-            Shape::Planar(c) => Kind::Curve(c.kind()),
-            Shape::Spatial(c) => Kind::Curve(c.kind()),
-            Shape::Surface(s) => Kind::Surface(s.kind()),
-        }
-    }
-
-    /// 2 or 3.
-    pub fn dimension(&self) -> usize {
-        match self {
-            Shape::Planar(_) => 2,
-            Shape::Spatial(_) | Shape::Surface(_) => 3,
-        }
-    }
-
-    /// Whether this is a surface.
-    pub fn is_surface(&self) -> bool {
-        matches!(self, Shape::Surface(_))
-    }
-
-    /// Number of control points (never 0).
-    pub fn control_count(&self) -> usize {
-        match self {
-            Shape::Planar(c) => c.len(),
-            Shape::Spatial(c) => c.len(),
-            Shape::Surface(s) => s.rows() * s.cols(),
-        }
-    }
-
-    /// The polynomial degree of a curve.
-    pub fn curve_degree(&self) -> Option<usize> {
-        match self {
-            Shape::Planar(c) => Some(c.degree()),
-            Shape::Spatial(c) => Some(c.degree()),
-            Shape::Surface(_) => None,
-        }
-    }
-
-    /// The knot vector of a B-spline or NURBS curve.
-    pub fn curve_knots(&self) -> Option<&KnotVector> {
-        match self {
-            Shape::Planar(c) => c.knots(),
-            Shape::Spatial(c) => c.knots(),
-            Shape::Surface(_) => None,
-        }
-    }
-
-    /// The domain of a curve.
-    pub fn curve_domain(&self) -> Option<(f64, f64)> {
-        match self {
-            Shape::Planar(c) => Some(c.domain()),
-            Shape::Spatial(c) => Some(c.domain()),
-            Shape::Surface(_) => None,
-        }
-    }
-
-    /// The weights of a NURBS curve or surface.
-    pub fn weights(&self) -> Option<&[f64]> {
-        match self {
-            Shape::Planar(c) => c.weights(),
-            Shape::Spatial(c) => c.weights(),
-            Shape::Surface(s) => s.weights(),
-        }
-    }
-
-    /// Range (min, max) of truth, indeterminacy and falsity over the control points.
-    pub fn degree_ranges(&self) -> [Range; 3] {
-        match self {
-            Shape::Planar(c) => {
-                let b = c.control_bounding_box();
-                [b.truth, b.indeterminacy, b.falsity]
-            }
-            Shape::Spatial(c) => {
-                let b = c.control_bounding_box();
-                [b.truth, b.indeterminacy, b.falsity]
-            }
-            Shape::Surface(s) => {
-                let b = s.control_bounding_box();
-                [b.truth, b.indeterminacy, b.falsity]
-            }
-        }
-    }
-
+/// What the command computes from a shape: table columns, `--at` checks and rows.
+pub trait Table {
     /// The domain of a curve as text, with its knot indices for splines.
-    pub fn curve_domain_text(&self) -> Option<String> {
-        self.curve_domain()
-            .map(|d| domain_text(d, self.curve_knots(), "knot "))
-    }
+    fn curve_domain_text(&self) -> Option<String>;
 
     /// Checks that `param` has the right form (`T` for curves, `U:V` for surfaces) and lies in
     /// the domain; the message names the domain.
     ///
     /// # Errors
     /// A message for `--at`.
-    pub fn check_param(&self, param: Param, text: &str) -> Result<(), String> {
+    fn check_param(&self, param: Param, text: &str) -> Result<(), String>;
+
+    /// Column names of a table of samples.
+    ///
+    /// Curves: `t`, then `x, y[, z], truth, indeterminacy, falsity`, and with `derivative`
+    /// the same names prefixed by `d` (`dx, ..., dfalsity`). Surfaces: `u, v, x, y, z, truth,
+    /// indeterminacy, falsity`; with `derivative` each channel's `d<name>_du` then
+    /// `d<name>_dv`; with `normal` `nx, ny, nz`.
+    fn columns(&self, extras: Extras) -> Vec<String>;
+
+    /// A sampler producing one row per parameter, in the order of [`Table::columns`].
+    fn sampler(&self, extras: Extras) -> Sampler<'_>;
+}
+
+impl Table for Shape {
+    fn curve_domain_text(&self) -> Option<String> {
+        self.curve_domain()
+            .map(|d| domain_text(d, self.curve_knots(), "knot "))
+    }
+
+    fn check_param(&self, param: Param, text: &str) -> Result<(), String> {
         match (self, param) {
             (Shape::Surface(_), Param::T(_)) => Err(format!(
                 "`{text}` is not a pair U:V (a surface is evaluated at --at U:V,U:V,...)"
@@ -218,13 +141,7 @@ impl Shape {
         }
     }
 
-    /// Column names of a table of samples.
-    ///
-    /// Curves: `t`, then `x, y[, z], truth, indeterminacy, falsity`, and with `derivative`
-    /// the same names prefixed by `d` (`dx, ..., dfalsity`). Surfaces: `u, v, x, y, z, truth,
-    /// indeterminacy, falsity`; with `derivative` each channel's `d<name>_du` then
-    /// `d<name>_dv`; with `normal` `nx, ny, nz`.
-    pub fn columns(&self, extras: Extras) -> Vec<String> {
+    fn columns(&self, extras: Extras) -> Vec<String> {
         let names: Vec<&str> = channel_names(self.dimension()).collect();
         let mut columns: Vec<String> = if self.is_surface() {
             vec!["u".to_owned(), "v".to_owned()]
@@ -247,8 +164,7 @@ impl Shape {
         columns
     }
 
-    /// A sampler producing one row per parameter, in the order of [`Shape::columns`].
-    pub fn sampler(&self, extras: Extras) -> Sampler<'_> {
+    fn sampler(&self, extras: Extras) -> Sampler<'_> {
         match self {
             Shape::Planar(c) => Sampler::Planar(CurveSampler::new(c, extras.derivative)),
             Shape::Spatial(c) => Sampler::Spatial(CurveSampler::new(c, extras.derivative)),
@@ -273,7 +189,7 @@ impl Sampler<'_> {
     ///
     /// # Errors
     /// The core's [`EvalError`] (parameter outside the domain, overflow), or a parameter of the
-    /// wrong form (a pair for a curve, a single value for a surface; [`Shape::check_param`]
+    /// wrong form (a pair for a curve, a single value for a surface; [`Table::check_param`]
     /// rules those out beforehand).
     pub fn row(&self, param: Param) -> anyhow::Result<Row> {
         Ok(match (self, param) {

@@ -1,9 +1,10 @@
 //! `neutrospline check FILE`: validate a file and summarise the curve or surface.
 
 use neutrospline::KnotVector;
+use neutrospline_io::{KnotRule, KnotSource};
 
 use crate::commands::options::ModelArgs;
-use crate::input::{self, KnotRule, KnotSpec, KnotsSetting, Structure};
+use crate::input;
 use crate::output::{self, number};
 use crate::shape::Shape;
 
@@ -36,7 +37,7 @@ const KNOTS_SHOWN: usize = 6;
 
 /// `0, 0, 0, 0.5, 1, 1, 1 (7 knots, clamped-uniform)` or `... (9 knots, given, unclamped)`;
 /// long lists show their ends only.
-fn knots_line(knots: &KnotVector, setting: Option<&KnotsSetting>) -> String {
+fn knots_line(knots: &KnotVector, source: Option<KnotSource>) -> String {
     let values = knots.knots();
     let shown: Vec<String> = if values.len() > KNOTS_IN_FULL {
         let head = values[..KNOTS_SHOWN].iter().map(|&k| number(k));
@@ -47,11 +48,11 @@ fn knots_line(knots: &KnotVector, setting: Option<&KnotsSetting>) -> String {
     } else {
         values.iter().map(|&k| number(k)).collect()
     };
-    let source = match setting.map(|s| &s.spec) {
-        None => KnotRule::ClampedUniform.name(),
-        Some(KnotSpec::Rule(rule)) => rule.name(),
-        Some(KnotSpec::Explicit(_)) if knots.is_clamped() => "given, clamped",
-        Some(KnotSpec::Explicit(_)) => "given, unclamped",
+    let source = match source {
+        Some(KnotSource::Rule(rule)) => rule.name(),
+        Some(KnotSource::Explicit) if knots.is_clamped() => "given, clamped",
+        Some(KnotSource::Explicit) => "given, unclamped",
+        _ => KnotRule::ClampedUniform.name(),
     };
     format!("{} ({} knots, {source})", shown.join(", "), values.len())
 }
@@ -65,25 +66,22 @@ fn domain_line((a, b): (f64, f64)) -> String {
 /// # Errors
 /// An invalid file, or a write error.
 pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
-    let model = input::load(&args.file, &args.model.overrides())?;
-    let file = model.file.clone();
-    let name = model.name.clone();
-    let membership = model.membership;
-    let structure = model.structure.clone();
-    let shape = model.into_shape()?;
+    let model = input::read_model(&args.file, &args.model)?;
+    let file = input::label(&args.file);
+    let name = model.name().map(str::to_owned);
+    let membership = model.membership();
+    // How the knots were given: one source per knot direction (u, then v for surfaces).
+    let sources = model.knot_sources().to_vec();
+    let source = |i: usize| sources.get(i).copied();
+    let shape = model.into_shape();
     output::emit(None, |w| {
         writeln!(w, "{file}: valid")?;
         writeln!(w, "kind: {}", shape.kind())?;
         if let Some(name) = &name {
             writeln!(w, "name: {name}")?;
         }
-        match (&shape, &structure) {
-            (
-                Shape::Surface(s),
-                Structure::Surface {
-                    knots_u, knots_v, ..
-                },
-            ) => {
+        match &shape {
+            Shape::Surface(s) => {
                 writeln!(w, "degree_u: {}", s.degree_u())?;
                 writeln!(w, "degree_v: {}", s.degree_v())?;
                 writeln!(w, "dimension: 3")?;
@@ -98,17 +96,13 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
                 )?;
                 writeln!(w, "membership: {membership}")?;
                 if shape.kind().has_knots() {
-                    writeln!(w, "knots_u: {}", knots_line(s.knots_u(), knots_u.as_ref()))?;
-                    writeln!(w, "knots_v: {}", knots_line(s.knots_v(), knots_v.as_ref()))?;
+                    writeln!(w, "knots_u: {}", knots_line(s.knots_u(), source(0)))?;
+                    writeln!(w, "knots_v: {}", knots_line(s.knots_v(), source(1)))?;
                 }
                 writeln!(w, "domain_u: {}", domain_line(s.domain_u()))?;
                 writeln!(w, "domain_v: {}", domain_line(s.domain_v()))?;
             }
             _ => {
-                let setting = match &structure {
-                    Structure::Curve { knots, .. } => knots.as_ref(),
-                    Structure::Surface { .. } => None,
-                };
                 if let Some(degree) = shape.curve_degree() {
                     writeln!(w, "degree: {degree}")?;
                 }
@@ -116,7 +110,7 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
                 writeln!(w, "control points: {}", shape.control_count())?;
                 writeln!(w, "membership: {membership}")?;
                 if let Some(knots) = shape.curve_knots() {
-                    writeln!(w, "knots: {}", knots_line(knots, setting))?;
+                    writeln!(w, "knots: {}", knots_line(knots, source(0)))?;
                 }
                 if let Some(domain) = shape.curve_domain() {
                     writeln!(w, "domain: {}", domain_line(domain))?;

@@ -9,7 +9,7 @@ use crate::commands::options::ModelArgs;
 use crate::input::{self, UsageError};
 use crate::output::{self, TableFormat};
 use crate::progress::Progress;
-use crate::shape::{Extras, Param, Shape};
+use crate::shape::{Extras, Param, Shape, Table};
 
 /// Arguments of `eval`.
 #[derive(Debug, clap::Args)]
@@ -168,9 +168,8 @@ fn row_count(args: &EvalArgs, shape: &Shape) -> u64 {
 /// An invalid file, a usage error (`--at` outside the domain, `--normal` for a curve), an
 /// evaluation error, or a write error.
 pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
-    let model = input::load(&args.file, &args.model.overrides())?;
-    let file = model.file.clone();
-    let shape = model.into_shape()?;
+    let shape = input::read_model(&args.file, &args.model)?.into_shape();
+    let file = input::label(&args.file);
     if args.normal && !shape.is_surface() {
         return Err(UsageError(format!(
             "--normal applies only to surfaces ({file} holds a {} curve)",

@@ -9,7 +9,7 @@ use neutrospline_plot::{PlotModel, PlotOptions, View};
 
 use crate::commands::plot::{write_figure, FigureFormat};
 use crate::output::{self, number, rounded, Align, TableFormat};
-use crate::shape::{Extras, Param, Shape};
+use crate::shape::{Extras, Param, Shape, Table};
 
 /// Arguments of `example`.
 #[derive(Debug, clap::Args)]

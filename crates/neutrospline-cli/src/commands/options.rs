@@ -4,7 +4,7 @@
 use neutrospline::{CurveKind, SurfaceKind};
 
 use crate::commands::MembershipArg;
-use crate::input::{Kind, KnotSpec, Overrides};
+use neutrospline_io::{Kind, KnotSpec, ReadOptions};
 
 /// The `--kind` values, mirroring [`Kind`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -38,7 +38,7 @@ impl From<KindArg> for Kind {
 
 /// The largest degree or count accepted on the command line (as in files: larger values are
 /// surely mistakes, and the core's `degree + 1` must not overflow).
-const MAX: u64 = crate::input::MAX_INTEGER;
+const MAX: u64 = neutrospline_io::MAX_INTEGER;
 
 /// Parses a `--knots` value.
 fn parse_knots(text: &str) -> Result<KnotSpec, String> {
@@ -94,20 +94,21 @@ pub struct ModelArgs {
 }
 
 impl ModelArgs {
-    /// The options as the input layer takes them.
-    pub fn overrides(&self) -> Overrides {
+    /// The options as the readers take them (with the default limits; see
+    /// [`crate::input::read_options`]).
+    pub fn read_options(&self) -> ReadOptions {
         let count = |v: Option<u64>| v.map(|v| usize::try_from(v).unwrap_or(usize::MAX));
-        Overrides {
-            membership: self.membership.map(Into::into),
-            kind: self.kind.map(Into::into),
-            degree: count(self.degree),
-            knots: self.knots.clone(),
-            rows: count(self.rows),
-            cols: count(self.cols),
-            degree_u: count(self.degree_u),
-            degree_v: count(self.degree_v),
-            knots_u: self.knots_u.clone(),
-            knots_v: self.knots_v.clone(),
-        }
+        let mut options = ReadOptions::default();
+        options.membership = self.membership.map(Into::into);
+        options.kind = self.kind.map(Into::into);
+        options.degree = count(self.degree);
+        options.knots = self.knots.clone();
+        options.rows = count(self.rows);
+        options.cols = count(self.cols);
+        options.degree_u = count(self.degree_u);
+        options.degree_v = count(self.degree_v);
+        options.knots_u = self.knots_u.clone();
+        options.knots_v = self.knots_v.clone();
+        options
     }
 }

@@ -156,10 +156,10 @@ pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
         options = options.with_samples(n);
     }
     options.validate().map_err(|e| UsageError(e.to_string()))?;
-    let model = input::load(&args.file, &args.model.overrides())?;
-    let names: Vec<Option<String>> = model.points.iter().map(|p| p.name.clone()).collect();
-    let description = model.description.clone();
-    let shape = model.into_shape()?;
+    let model = input::read_model(&args.file, &args.model)?;
+    let names = model.point_names().to_vec();
+    let description = model.description().map(str::to_owned);
+    let shape = model.into_shape();
     if shape.is_surface() && args.samples.is_some() {
         options
             .validate_surface()

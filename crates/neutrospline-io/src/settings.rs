@@ -3,14 +3,14 @@
 
 use std::fmt;
 
-use neutrospline::{CurveKind, Membership, SurfaceKind};
+use neutrospline::{CurveKind, SurfaceKind};
 
-use super::{join, Origin};
-use crate::output::number;
+use crate::number::format_number as number;
+use crate::parsed::{join, parse_number, Origin};
 
 /// The kinds of shape a file may declare with `kind = "..."` (or `--kind`): the core's curve
 /// and surface kinds.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Kind {
     /// A curve: `bezier`, `bspline` or `nurbs`.
     Curve(CurveKind),
@@ -89,7 +89,7 @@ impl fmt::Display for Kind {
 }
 
 /// The named ways of choosing knots, mapping to the core's `KnotVector` constructors.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum KnotRule {
     /// `KnotVector::clamped_uniform`: clamped, evenly spaced on \[0, 1\].
     ClampedUniform,
@@ -170,7 +170,7 @@ impl KnotSpec {
         text.split(',')
             .map(|item| {
                 let item = item.trim();
-                super::parse_number(item).map_err(|m| format!("knot {m}"))
+                parse_number(item).map_err(|m| format!("knot {m}"))
             })
             .collect::<Result<_, _>>()
             .map(KnotSpec::Explicit)
@@ -179,7 +179,7 @@ impl KnotSpec {
 
 /// A value with where it was declared: a key of the file, or a command-line option.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Setting<T> {
+pub(crate) struct Setting<T> {
     /// The value.
     pub value: T,
     /// Its line and field (`degree`, `--degree`, ...).
@@ -188,7 +188,7 @@ pub struct Setting<T> {
 
 /// Knots with where they were declared, and the line of each explicit knot when known.
 #[derive(Debug, Clone, PartialEq)]
-pub struct KnotsSetting {
+pub(crate) struct KnotsSetting {
     /// The knots or their rule.
     pub spec: KnotSpec,
     /// Where they were declared.
@@ -212,7 +212,7 @@ impl KnotsSetting {
 // One per model: boxing the larger variant would buy nothing.
 #[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, PartialEq)]
-pub enum Structure {
+pub(crate) enum Structure {
     /// A curve: its degree (required for `bspline` and `nurbs`; for `bezier` it must equal
     /// n if given) and knots (default clamped uniform).
     Curve {
@@ -240,7 +240,7 @@ pub enum Structure {
 
 /// The structure keys of a model file, each with its command-line option.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Key {
+pub(crate) enum Key {
     /// `degree` / `--degree`.
     Degree,
     /// `knots` / `--knots`.
@@ -355,35 +355,9 @@ impl Key {
     }
 }
 
-/// The shape settings given on the command line. For CSV files they are the only source; for
-/// TOML / JSON they fill in what the file leaves out and must agree with what it declares.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct Overrides {
-    /// `--membership`.
-    pub membership: Option<Membership>,
-    /// `--kind`.
-    pub kind: Option<Kind>,
-    /// `--degree`.
-    pub degree: Option<usize>,
-    /// `--knots`.
-    pub knots: Option<KnotSpec>,
-    /// `--rows`.
-    pub rows: Option<usize>,
-    /// `--cols`.
-    pub cols: Option<usize>,
-    /// `--degree-u`.
-    pub degree_u: Option<usize>,
-    /// `--degree-v`.
-    pub degree_v: Option<usize>,
-    /// `--knots-u`.
-    pub knots_u: Option<KnotSpec>,
-    /// `--knots-v`.
-    pub knots_v: Option<KnotSpec>,
-}
-
 /// A value of a structure key: a number, or knots.
 #[derive(Debug, Clone, PartialEq)]
-pub enum KeyValue {
+pub(crate) enum KeyValue {
     /// A degree or a count.
     Number(usize),
     /// Knots.
@@ -399,42 +373,9 @@ impl fmt::Display for KeyValue {
     }
 }
 
-impl Overrides {
-    /// The command-line value of `key`, if given.
-    pub fn get(&self, key: Key) -> Option<KeyValue> {
-        let number = |v: Option<usize>| v.map(KeyValue::Number);
-        let knots = |v: &Option<KnotSpec>| v.clone().map(KeyValue::Knots);
-        match key {
-            Key::Degree => number(self.degree),
-            Key::Knots => knots(&self.knots),
-            Key::Rows => number(self.rows),
-            Key::Cols => number(self.cols),
-            Key::DegreeU => number(self.degree_u),
-            Key::DegreeV => number(self.degree_v),
-            Key::KnotsU => knots(&self.knots_u),
-            Key::KnotsV => knots(&self.knots_v),
-        }
-    }
-
-    /// The first option given that does not apply to `kind`, as a message.
-    pub fn inapplicable(&self, kind: Kind) -> Option<String> {
-        Key::ALL
-            .into_iter()
-            .find(|&key| self.get(key).is_some() && !key.applies_to(kind))
-            .map(|key| {
-                format!(
-                    "{} does not apply to kind `{kind}` ({} is for: {})",
-                    key.option(),
-                    key.option(),
-                    key.kinds_list()
-                )
-            })
-    }
-}
-
 /// Which value applies: the file's declaration, else the command line's. A declaration that
 /// contradicts the command line is an error (`Err` carries the message).
-pub fn resolve<T: PartialEq + fmt::Display>(
+pub(crate) fn resolve<T: PartialEq + fmt::Display>(
     what: &str,
     option: &str,
     declared: Option<T>,
@@ -520,18 +461,5 @@ mod tests {
             resolve("degree", "--degree", Some(2), Some(3)).unwrap_err(),
             "the file declares degree `2` but --degree is `3` (omit --degree or make them agree)"
         );
-    }
-
-    #[test]
-    fn overrides_inapplicable() {
-        let o = Overrides {
-            rows: Some(3),
-            ..Overrides::default()
-        };
-        assert_eq!(
-            o.inapplicable(Kind::Curve(CurveKind::BSpline)).unwrap(),
-            "--rows does not apply to kind `bspline` (--rows is for: bezier-surface, bspline-surface, nurbs-surface)"
-        );
-        assert!(o.inapplicable(Kind::Surface(SurfaceKind::Bezier)).is_none());
     }
 }

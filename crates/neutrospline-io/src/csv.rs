@@ -7,22 +7,23 @@
 //! are physical lines of the file (1-based, comments counted).
 //!
 //! A CSV file lists control points only: the kind, degree, knots and grid come from the
-//! command line ([`Overrides`]: `--kind`, `--degree`, `--knots`, `--rows`, ...).
+//! [`ReadOptions`](crate::ReadOptions) (the command line's `--kind`, `--degree`, `--knots`,
+//! `--rows`, ...).
 
 use neutrospline::{DegreeError, Degrees};
 
 use std::io::{BufRead, Read};
 
-use crate::limits::MAX_CSV_LINE;
-
-use super::{
-    duplicate_rule, line_of, missing_degree, parse_number, Field, Format, InputError, Key, Kind,
-    KnotsSetting, Model, Origin, Overrides, PointRecord, Setting, Structure,
+use crate::format::{too_many_points, MAX_CSV_LINE};
+use crate::parsed::{
+    duplicate_rule, line_of, missing_degree, parse_number, Field, Origin, Parsed, PointRecord,
 };
+use crate::settings::{Key, Kind, KnotSpec, KnotsSetting, Setting, Structure};
+use crate::{InputError, ReadOptions};
 
 /// Parses a CSV table held in memory; see [`parse_reader`].
-pub(super) fn parse(file: &str, bytes: &[u8], overrides: &Overrides) -> Result<Model, InputError> {
-    parse_reader(file, bytes, overrides)
+pub(crate) fn parse(file: &str, bytes: &[u8], options: &ReadOptions) -> Result<Parsed, InputError> {
+    parse_reader(file, bytes, options)
 }
 
 /// A reading error: the line and the message.
@@ -118,16 +119,16 @@ fn cells(record: &str) -> Result<::csv::StringRecord, String> {
 
 /// Parses a CSV table from a stream, line by line: an error is reported as soon as its line is
 /// read, without reading further, and only the control points are kept in memory (at most
-/// `--max-control-points` of them). The command line's `overrides` give the kind, the
-/// membership rule the degrees must obey, and the structure.
-pub(super) fn parse_reader(
+/// `max_control_points` of them). The `options` give the kind, the membership rule the
+/// degrees must obey, and the structure.
+pub(crate) fn parse_reader(
     file: &str,
     reader: impl BufRead,
-    overrides: &Overrides,
-) -> Result<Model, InputError> {
-    let kind = overrides.kind.unwrap_or(Kind::DEFAULT);
-    let membership = overrides.membership.unwrap_or_default();
-    let max_points = crate::limits::current().max_control_points;
+    options: &ReadOptions,
+) -> Result<Parsed, InputError> {
+    let kind = options.kind.unwrap_or(Kind::DEFAULT);
+    let membership = options.membership.unwrap_or_default();
+    let max_points = options.limits.max_control_points;
     let error = |line: Option<usize>, field: Option<String>, message: String| InputError {
         file: file.to_owned(),
         line,
@@ -227,11 +228,7 @@ pub(super) fn parse_reader(
     while let Some((line, record)) = next()? {
         let line = Some(line);
         if points.len() as u64 >= max_points {
-            return Err(error(
-                line,
-                None,
-                crate::limits::too_many_points(max_points),
-            ));
+            return Err(error(line, None, too_many_points(max_points)));
         }
         if record.len() != columns.len() {
             return Err(error(
@@ -290,21 +287,20 @@ pub(super) fn parse_reader(
             "no control points (the header row is not followed by any data row)".to_owned(),
         ));
     }
-    Ok(Model {
+    Ok(Parsed {
         file: file.to_owned(),
-        format: Format::Csv,
         kind,
         name: None,
         description: None,
         membership,
         dimension,
         points,
-        structure: structure(kind, overrides),
+        structure: structure(kind, options),
     })
 }
 
 /// The structure given on the command line (`--degree`, `--knots`, `--rows`, ...).
-fn structure(kind: Kind, overrides: &Overrides) -> Structure {
+fn structure(kind: Kind, options: &ReadOptions) -> Structure {
     let number = |key: Key, value: Option<usize>| {
         value.map(|value| Setting {
             value,
@@ -314,7 +310,7 @@ fn structure(kind: Kind, overrides: &Overrides) -> Structure {
             },
         })
     };
-    let knots = |key: Key, spec: &Option<super::KnotSpec>| {
+    let knots = |key: Key, spec: &Option<KnotSpec>| {
         spec.clone().map(|spec| KnotsSetting {
             spec,
             origin: Origin {
@@ -325,7 +321,7 @@ fn structure(kind: Kind, overrides: &Overrides) -> Structure {
         })
     };
     if kind.is_surface() {
-        // `check_overrides` made sure that --rows and --cols are given for surface kinds.
+        // `ReadOptions::check` made sure that --rows and --cols are given for surface kinds.
         let count = |key: Key, value: Option<usize>| {
             number(key, value).unwrap_or(Setting {
                 value: 0,
@@ -336,17 +332,17 @@ fn structure(kind: Kind, overrides: &Overrides) -> Structure {
             })
         };
         Structure::Surface {
-            rows: count(Key::Rows, overrides.rows),
-            cols: count(Key::Cols, overrides.cols),
-            degree_u: number(Key::DegreeU, overrides.degree_u),
-            degree_v: number(Key::DegreeV, overrides.degree_v),
-            knots_u: knots(Key::KnotsU, &overrides.knots_u),
-            knots_v: knots(Key::KnotsV, &overrides.knots_v),
+            rows: count(Key::Rows, options.rows),
+            cols: count(Key::Cols, options.cols),
+            degree_u: number(Key::DegreeU, options.degree_u),
+            degree_v: number(Key::DegreeV, options.degree_v),
+            knots_u: knots(Key::KnotsU, &options.knots_u),
+            knots_v: knots(Key::KnotsV, &options.knots_v),
         }
     } else {
         Structure::Curve {
-            degree: number(Key::Degree, overrides.degree),
-            knots: knots(Key::Knots, &overrides.knots),
+            degree: number(Key::Degree, options.degree),
+            knots: knots(Key::Knots, &options.knots),
         }
     }
 }
@@ -380,14 +376,14 @@ mod tests {
     use super::*;
     use neutrospline::Membership;
 
-    fn rule(membership: Membership) -> Overrides {
-        Overrides {
+    fn rule(membership: Membership) -> ReadOptions {
+        ReadOptions {
             membership: Some(membership),
-            ..Overrides::default()
+            ..ReadOptions::default()
         }
     }
 
-    fn parse_ok(text: &str) -> Model {
+    fn parse_ok(text: &str) -> Parsed {
         parse("t.csv", text.as_bytes(), &rule(Membership::Neutrosophic)).unwrap()
     }
 

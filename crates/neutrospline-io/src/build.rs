@@ -1,17 +1,17 @@
-//! From a [`Model`] to the core's curve or surface: every check of knots, weights and grids is
-//! the core's own (`KnotVector::new`, `Nurbs::new`, `Surface::nurbs`, ...); this module only
-//! chooses the constructor and locates the core's errors at the key, line or control point
-//! they concern.
+//! From what a file holds ([`Parsed`]) to a [`Model`] with the core's curve or surface: every
+//! check of knots, weights and grids is the core's own (`KnotVector::new`, `Nurbs::new`,
+//! `Surface::nurbs`, ...); this module only chooses the constructor and locates the core's
+//! errors at the key, line or control point they concern.
 
 use neutrospline::{
     AnyCurve, BSpline, Bezier, ControlPoint, CurveError, CurveKind, Direction, KnotError,
     KnotVector, Nurbs, Surface, SurfaceError, SurfaceKind,
 };
 
-use super::{
-    InputError, Key, Kind, KnotRule, KnotSpec, KnotsSetting, Model, Origin, Setting, Structure,
-};
-use crate::shape::Shape;
+use crate::model::KnotSource;
+use crate::parsed::{Origin, Parsed};
+use crate::settings::{Key, Kind, KnotRule, KnotSpec, KnotsSetting, Setting, Structure};
+use crate::{InputError, Model, Shape};
 
 /// A knot vector that could not be built: the located error, and the core's error when it
 /// came from the core.
@@ -21,13 +21,42 @@ struct KnotFailure {
     degree: usize,
 }
 
-impl Model {
-    /// Builds the core curve or surface.
+impl Parsed {
+    /// Builds the core curve or surface, and the model.
     ///
     /// # Errors
     /// The core's knot, weight and grid errors, located at the key (`degree`, `knots_u`, ...,
     /// or the command-line option that gave it), the knot's line, or the control point.
-    pub fn into_shape(self) -> Result<Shape, InputError> {
+    pub(crate) fn into_model(self) -> Result<Model, InputError> {
+        let shape = self.shape()?;
+        let source = |setting: &Option<KnotsSetting>| match setting.as_ref().map(|k| &k.spec) {
+            None => KnotSource::Default,
+            Some(KnotSpec::Rule(rule)) => KnotSource::Rule(*rule),
+            Some(KnotSpec::Explicit(_)) => KnotSource::Explicit,
+        };
+        let knot_sources = match (&self.structure, self.kind.has_knots()) {
+            (_, false) => Vec::new(),
+            (Structure::Curve { knots, .. }, true) => vec![source(knots)],
+            (
+                Structure::Surface {
+                    knots_u, knots_v, ..
+                },
+                true,
+            ) => vec![source(knots_u), source(knots_v)],
+        };
+        let names = self.points.into_iter().map(|p| p.name).collect();
+        Ok(Model::from_parts(
+            shape,
+            self.name,
+            self.description,
+            self.membership,
+            names,
+            knot_sources,
+        ))
+    }
+
+    /// Builds the core curve or surface.
+    fn shape(&self) -> Result<Shape, InputError> {
         match &self.structure {
             Structure::Curve { degree, knots } => {
                 let (degree, knots) = (degree.as_ref(), knots.as_ref());

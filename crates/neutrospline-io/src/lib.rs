@@ -1,0 +1,69 @@
+//! The file formats of neutrospline: CSV tables of control points and TOML / JSON models of
+//! neutrosophic curves and surfaces (Bézier, B-spline, NURBS; tensor-product surfaces), read
+//! into the core's types and written back.
+//!
+//! - Reading: [`load`] a file (format by extension), [`parse`] bytes held in memory, or
+//!   [`read_csv`] from a stream. The result is a validated [`Model`]: the core's curve or
+//!   surface ([`Shape`]), the membership rule of its degrees, its name, description and
+//!   control-point names. [`ReadOptions`] give what a file does not hold (a CSV file's kind,
+//!   degree, knots, grid) and the [`Limits`].
+//! - Errors name the file, the line and the field, the value and the rule broken
+//!   (`bad.csv:2: truth = 1.2 is outside [0, 1] (every degree must be in [0, 1])`): an
+//!   [`InputError`] inside a [`ReadError`]. Every check of degrees, knots, weights and grids is
+//!   the core's own; this crate locates its errors.
+//! - Writing: [`to_toml_string`], [`to_json_string`], [`to_csv_string`] and [`save`], which
+//!   replaces a file atomically ([`AtomicFile`]). Whatever is written reads back to an equal
+//!   model, numbers to the last bit.
+//!
+//! ```
+//! use neutrospline_io::{parse, to_json_string, Format, ReadOptions};
+//!
+//! let csv = "name,x,y,truth,indeterminacy,falsity\n\
+//!            C0,1,3,0.3,0.6,0.1\nC1,3,6,0.8,0.1,0.1\nC2,6,2,0.7,0.1,0.2\nC3,9,5,0.2,0.4,0.4\n";
+//! let model = parse("example1.csv", Format::Csv, csv.as_bytes(), &ReadOptions::default())?;
+//! assert_eq!(model.shape().curve_degree(), Some(3));
+//! assert_eq!(model.point_names()[3].as_deref(), Some("C3"));
+//!
+//! let json = to_json_string(&model.clone().with_name("Example 1"));
+//! assert!(json.starts_with("{\n  \"kind\": \"bezier\",\n  \"name\": \"Example 1\""));
+//!
+//! let error = parse("bad.csv", Format::Csv, b"x,y,truth,indeterminacy,falsity\n1,2,1.2,0,0\n",
+//!                   &ReadOptions::default()).unwrap_err();
+//! assert_eq!(error.to_string(),
+//!            "bad.csv:2: truth = 1.2 is outside [0, 1] (every degree must be in [0, 1])");
+//! # Ok::<(), neutrospline_io::ReadError>(())
+//! ```
+//!
+//! The formats are described in the repository's README (section "File formats"); the
+//! messages name a setting by the `neutrospline` command's option for it (`--degree`).
+#![deny(missing_docs)]
+#![forbid(unsafe_code)]
+
+mod atomic;
+mod build;
+mod csv;
+mod error;
+mod format;
+mod model;
+mod number;
+mod options;
+mod parsed;
+mod read;
+mod settings;
+mod shape;
+mod tree;
+mod walker;
+mod write;
+
+pub use atomic::AtomicFile;
+pub use error::{InputError, ReadError, UnsupportedFormat, WriteError};
+pub use format::{
+    Format, Limits, DEFAULT_MAX_CONTROL_POINTS, DEFAULT_MAX_FILE_SIZE, MAX_CSV_LINE, MAX_INTEGER,
+};
+pub use model::{KnotSource, Model, ModelError};
+pub use number::{format_number, push_number};
+pub use options::ReadOptions;
+pub use read::{load, parse, read_csv};
+pub use settings::{Kind, KnotRule, KnotSpec};
+pub use shape::Shape;
+pub use write::{save, to_csv_string, to_json_string, to_string, to_toml_string};

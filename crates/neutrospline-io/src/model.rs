@@ -1,0 +1,336 @@
+//! [`Model`]: what a model file holds once validated, in any format.
+
+use neutrospline::{DegreeError, Degrees, Membership};
+
+use crate::settings::{Kind, KnotRule, KnotSpec};
+use crate::{ReadOptions, Shape};
+
+/// How the knots of one direction were given; see [`Model::knot_sources`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum KnotSource {
+    /// Not given: the default rule, clamped-uniform.
+    Default,
+    /// Computed by a named rule (`knots = "chord-length"`, `--knots centripetal`).
+    Rule(KnotRule),
+    /// Given as values: in the file, in the options, or in the shape a program built.
+    Explicit,
+}
+
+/// A model that a program cannot build ([`Model::with_membership`],
+/// [`Model::with_point_names`]).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ModelError {
+    /// Not one name (or `None`) per control point.
+    #[error("{names} point names for {points} control points (give one name, or none, per control point)")]
+    NameCount {
+        /// Names given.
+        names: usize,
+        /// Control points of the shape.
+        points: usize,
+    },
+    /// A control point's degrees do not obey the membership rule exactly as a reader would
+    /// produce them (intuitionistic: indeterminacy = 1 - truth - falsity to the last bit; fuzzy:
+    /// indeterminacy and falsity 0).
+    #[error("control point {index}: {error}")]
+    Membership {
+        /// The control point (surfaces: row by row).
+        index: usize,
+        /// The rule broken.
+        #[source]
+        error: DegreeError,
+    },
+}
+
+/// A curve or surface with what a model file says about it: an optional name and description,
+/// the membership rule of the degrees, and optional names of the control points.
+///
+/// Readers ([`crate::load`], [`crate::parse`], [`crate::read_csv`]) produce one; a program
+/// builds one from a core curve or surface with [`Model::new`] and the `with_` methods, and
+/// writes it with [`crate::save`] or [`crate::to_toml_string`] and the like. Every `Model`
+/// writes to a file that reads back to an equal `Model` (CSV: see [`crate::to_csv_string`]).
+///
+/// ```
+/// use neutrospline::{example1, AnyCurve, Membership};
+/// use neutrospline_io::{parse, to_toml_string, Format, Model, ReadOptions};
+///
+/// let model = Model::new(AnyCurve::Bezier(example1()))
+///     .with_name("Example 1")
+///     .with_point_names(["C0", "C1", "C2", "C3"].map(Some))?;
+/// let text = to_toml_string(&model);
+/// let back = parse("example1.toml", Format::Toml, text.as_bytes(), &ReadOptions::default())?;
+/// assert_eq!(back, model);
+/// assert_eq!(back.membership(), Membership::Neutrosophic);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct Model {
+    name: Option<String>,
+    description: Option<String>,
+    membership: Membership,
+    point_names: Vec<Option<String>>,
+    shape: Shape,
+    knot_sources: Vec<KnotSource>,
+}
+
+impl PartialEq for Model {
+    /// Equal name, description, membership rule, point names and shape; how the knots were
+    /// given ([`Model::knot_sources`]) is not part of the value.
+    fn eq(&self, other: &Model) -> bool {
+        self.name == other.name
+            && self.description == other.description
+            && self.membership == other.membership
+            && self.point_names == other.point_names
+            && self.shape == other.shape
+    }
+}
+
+/// The knot directions of a shape: none (Bézier), one (curves), two (surfaces).
+fn knot_directions(shape: &Shape) -> usize {
+    match (shape.kind().has_knots(), shape.is_surface()) {
+        (false, _) => 0,
+        (true, false) => 1,
+        (true, true) => 2,
+    }
+}
+
+/// Whether `degrees` are exactly what a reader produces under `membership` from the degrees
+/// the rule keeps (truth and falsity; truth alone).
+fn obeys(membership: Membership, degrees: &Degrees) -> Result<(), DegreeError> {
+    let [t, i, f] = degrees.to_array();
+    let derived = Degrees::with_membership(membership, t, Some(i), Some(f))?;
+    if derived.indeterminacy() != i {
+        return Err(DegreeError::HesitationMismatch {
+            given: i,
+            hesitation: derived.indeterminacy(),
+        });
+    }
+    Ok(())
+}
+
+impl Model {
+    /// A model of `shape`: no name, description or point names, neutrosophic degrees, knots
+    /// explicit.
+    pub fn new(shape: impl Into<Shape>) -> Model {
+        let shape = shape.into();
+        Model {
+            name: None,
+            description: None,
+            membership: Membership::Neutrosophic,
+            point_names: vec![None; shape.control_count()],
+            knot_sources: vec![KnotSource::Explicit; knot_directions(&shape)],
+            shape,
+        }
+    }
+
+    /// A model from parts a reader validated.
+    pub(crate) fn from_parts(
+        shape: Shape,
+        name: Option<String>,
+        description: Option<String>,
+        membership: Membership,
+        point_names: Vec<Option<String>>,
+        knot_sources: Vec<KnotSource>,
+    ) -> Model {
+        Model {
+            name,
+            description,
+            membership,
+            point_names,
+            shape,
+            knot_sources,
+        }
+    }
+
+    /// With this name (TOML / JSON `name`).
+    #[must_use]
+    pub fn with_name(mut self, name: impl Into<String>) -> Model {
+        self.name = Some(name.into());
+        self
+    }
+
+    /// With this description (TOML / JSON `description`; `plot` uses it as the caption).
+    #[must_use]
+    pub fn with_description(mut self, description: impl Into<String>) -> Model {
+        self.description = Some(description.into());
+        self
+    }
+
+    /// With this membership rule for the degrees.
+    ///
+    /// # Errors
+    /// [`ModelError::Membership`] for the first control point whose degrees do not obey the
+    /// rule exactly as a reader would build them: intuitionistic degrees need truth + falsity
+    /// <= 1 and indeterminacy equal to `(1 - truth - falsity).max(0)` (as
+    /// [`Degrees::intuitionistic`] computes it); fuzzy degrees need indeterminacy and falsity 0.
+    pub fn with_membership(mut self, membership: Membership) -> Result<Model, ModelError> {
+        for (index, degrees) in self.shape.control_degrees().iter().enumerate() {
+            obeys(membership, degrees).map_err(|error| ModelError::Membership { index, error })?;
+        }
+        self.membership = membership;
+        Ok(self)
+    }
+
+    /// With names for the control points (in order; surfaces row by row), `None` for a point
+    /// without one.
+    ///
+    /// # Errors
+    /// [`ModelError::NameCount`] unless there is one item per control point.
+    pub fn with_point_names<S: Into<String>>(
+        mut self,
+        names: impl IntoIterator<Item = Option<S>>,
+    ) -> Result<Model, ModelError> {
+        let names: Vec<Option<String>> = names.into_iter().map(|n| n.map(Into::into)).collect();
+        let points = self.shape.control_count();
+        if names.len() != points {
+            return Err(ModelError::NameCount {
+                names: names.len(),
+                points,
+            });
+        }
+        self.point_names = names;
+        Ok(self)
+    }
+
+    /// The name, if any.
+    pub fn name(&self) -> Option<&str> {
+        self.name.as_deref()
+    }
+
+    /// The description, if any.
+    pub fn description(&self) -> Option<&str> {
+        self.description.as_deref()
+    }
+
+    /// The rule the degrees obey.
+    pub fn membership(&self) -> Membership {
+        self.membership
+    }
+
+    /// The kind of curve or surface.
+    pub fn kind(&self) -> Kind {
+        self.shape.kind()
+    }
+
+    /// One name (or `None`) per control point, in order (surfaces row by row).
+    pub fn point_names(&self) -> &[Option<String>] {
+        &self.point_names
+    }
+
+    /// The curve or surface.
+    pub fn shape(&self) -> &Shape {
+        &self.shape
+    }
+
+    /// The curve or surface, taken out of the model.
+    pub fn into_shape(self) -> Shape {
+        self.shape
+    }
+
+    /// How the knots were given, per knot direction: none for the Bézier kinds, one for a
+    /// B-spline or NURBS curve, two (u, then v) for a B-spline or NURBS surface.
+    ///
+    /// This is provenance, for reports such as `neutrospline check`'s `knots: ...
+    /// (chord-length)`: it is not part of the model's value (ignored by `==`), and the writers
+    /// always write the knots as values ([`KnotSource::Explicit`] once read back).
+    pub fn knot_sources(&self) -> &[KnotSource] {
+        &self.knot_sources
+    }
+
+    /// The options that read [`crate::to_csv_string`]`(self)` back into this model (without its
+    /// name and description, which a CSV file cannot hold): the kind, the membership rule, the
+    /// degree(s), explicit knots and the grid.
+    pub fn csv_read_options(&self) -> ReadOptions {
+        let mut options = ReadOptions {
+            kind: Some(self.kind()),
+            membership: Some(self.membership),
+            ..ReadOptions::default()
+        };
+        let explicit = |k: &neutrospline::KnotVector| Some(KnotSpec::Explicit(k.knots().to_vec()));
+        match &self.shape {
+            Shape::Planar(_) | Shape::Spatial(_) => {
+                if let Some(knots) = self.shape.curve_knots() {
+                    options.degree = self.shape.curve_degree();
+                    options.knots = explicit(knots);
+                }
+            }
+            Shape::Surface(s) => {
+                options.rows = Some(s.rows());
+                options.cols = Some(s.cols());
+                if self.kind().has_knots() {
+                    options.degree_u = Some(s.degree_u());
+                    options.degree_v = Some(s.degree_v());
+                    options.knots_u = explicit(s.knots_u());
+                    options.knots_v = explicit(s.knots_v());
+                }
+            }
+        }
+        options
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use neutrospline::{example1, AnyCurve, ControlPoint, Surface};
+
+    #[test]
+    fn model_builders() {
+        let model = Model::new(AnyCurve::Bezier(example1()))
+            .with_name("n")
+            .with_description("d");
+        assert_eq!(model.name(), Some("n"));
+        assert_eq!(model.description(), Some("d"));
+        assert_eq!(model.point_names(), [None, None, None, None]);
+        assert!(model.knot_sources().is_empty());
+        assert_eq!(
+            model
+                .clone()
+                .with_point_names([Some("a")])
+                .unwrap_err()
+                .to_string(),
+            "1 point names for 4 control points (give one name, or none, per control point)"
+        );
+        assert_eq!(
+            model
+                .clone()
+                .with_membership(Membership::Fuzzy)
+                .unwrap_err()
+                .to_string(),
+            "control point 0: indeterminacy = 0.6 is not allowed (fuzzy rule: only truth is \
+             given; indeterminacy must be absent or 0)"
+        );
+        assert_eq!(
+            model
+                .with_membership(Membership::Intuitionistic)
+                .unwrap_err()
+                .to_string(),
+            "control point 1: indeterminacy = 0.1 differs from the hesitation 1 - truth - \
+             falsity = 0.09999999999999995 (intuitionistic rule: indeterminacy is derived; \
+             omit it or give 1 - truth - falsity)"
+        );
+    }
+
+    #[test]
+    fn intuitionistic_membership_is_exact() {
+        let exact = Degrees::intuitionistic(0.8, 0.1).unwrap();
+        let close = Degrees::new(0.8, 0.1, 0.1).unwrap();
+        assert_ne!(exact, close, "1 - 0.8 - 0.1 is not 0.1 in binary");
+        assert!(close.check_membership(Membership::Intuitionistic).is_ok());
+        let surface = |d| Surface::bezier(1, 1, vec![ControlPoint::new([0.0; 3], d)]).unwrap();
+        assert!(Model::new(surface(exact))
+            .with_membership(Membership::Intuitionistic)
+            .is_ok());
+        let e = Model::new(surface(close))
+            .with_membership(Membership::Intuitionistic)
+            .unwrap_err();
+        assert!(matches!(
+            e,
+            ModelError::Membership {
+                index: 0,
+                error: DegreeError::HesitationMismatch { .. }
+            }
+        ));
+    }
+}

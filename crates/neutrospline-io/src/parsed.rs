@@ -1,0 +1,261 @@
+//! What a file holds once parsed and before the core builds its shape: the neutral form shared
+//! by every format ([`Parsed`]), with the origin (line, field) of everything, so that an error
+//! found later (a knot, a weight) can still be located. Also the control-point fields and the
+//! small text helpers the readers share.
+
+use neutrospline::{DegreeError, Degrees, Membership};
+
+use crate::settings::{resolve, Kind, Structure};
+use crate::InputError;
+
+/// The fields of a control point: CSV columns and model keys.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Field {
+    X,
+    Y,
+    Z,
+    Truth,
+    Indeterminacy,
+    Falsity,
+    Weight,
+    Name,
+}
+
+impl Field {
+    /// Every field, in the order they are listed in messages.
+    pub(crate) const ALL: [Field; 8] = [
+        Field::X,
+        Field::Y,
+        Field::Z,
+        Field::Truth,
+        Field::Indeterminacy,
+        Field::Falsity,
+        Field::Weight,
+        Field::Name,
+    ];
+
+    /// The canonical name.
+    pub(crate) const fn name(self) -> &'static str {
+        match self {
+            Field::X => "x",
+            Field::Y => "y",
+            Field::Z => "z",
+            Field::Truth => "truth",
+            Field::Indeterminacy => "indeterminacy",
+            Field::Falsity => "falsity",
+            Field::Weight => "weight",
+            Field::Name => "name",
+        }
+    }
+
+    /// The one-letter alias of a degree.
+    pub(crate) const fn alias(self) -> Option<&'static str> {
+        match self {
+            Field::Truth => Some("T"),
+            Field::Indeterminacy => Some("I"),
+            Field::Falsity => Some("F"),
+            _ => None,
+        }
+    }
+
+    /// Index in [`Field::ALL`].
+    pub(crate) fn index(self) -> usize {
+        Field::ALL.iter().position(|&f| f == self).unwrap_or(0)
+    }
+
+    /// The field called `text` (its name or alias), exactly or ignoring ASCII case.
+    pub(crate) fn from_name(text: &str, ignore_case: bool) -> Option<Field> {
+        let same = |a: &str| {
+            if ignore_case {
+                a.eq_ignore_ascii_case(text)
+            } else {
+                a == text
+            }
+        };
+        Field::ALL
+            .into_iter()
+            .find(|f| same(f.name()) || f.alias().is_some_and(same))
+    }
+
+    /// `x, y, z, truth (T), indeterminacy (I), falsity (F), weight, name`.
+    pub(crate) fn known_list() -> String {
+        Field::ALL
+            .iter()
+            .map(|f| match f.alias() {
+                Some(a) => format!("{} ({a})", f.name()),
+                None => f.name().to_owned(),
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}
+
+/// Explains why two names of the same field clash.
+pub(crate) fn duplicate_rule() -> &'static str {
+    "each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity"
+}
+
+/// One control point as read from a file, its degrees already validated by its rule.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct PointRecord {
+    /// The optional name (`C0`, ...).
+    pub(crate) name: Option<String>,
+    /// `x`, `y` and, for 3-D input, `z`.
+    pub(crate) position: Vec<f64>,
+    /// The validated degrees.
+    pub(crate) degrees: Degrees,
+    /// The NURBS weight (present exactly for the NURBS kinds; checked when the shape is built).
+    pub(crate) weight: Option<f64>,
+    /// Where the point was read, for errors found later.
+    pub(crate) origin: Origin,
+    /// Where the weight was read (`control_points[2].weight`, `` column `weight` ``).
+    pub(crate) weight_origin: Origin,
+}
+
+/// Where something was read: the line and the field path of a point.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub(crate) struct Origin {
+    /// Physical 1-based line, when known.
+    pub(crate) line: Option<usize>,
+    /// Field path such as `control_points[2]`, for models.
+    pub(crate) field: Option<String>,
+}
+
+/// A model file in the neutral form shared by every format, before the shape is built.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Parsed {
+    /// The file as named in messages.
+    pub(crate) file: String,
+    /// The kind of curve or surface.
+    pub(crate) kind: Kind,
+    /// Optional name.
+    pub(crate) name: Option<String>,
+    /// Optional free-text description.
+    pub(crate) description: Option<String>,
+    /// The rule the degrees were validated with.
+    pub(crate) membership: Membership,
+    /// 2 or 3 (always 3 for surfaces).
+    pub(crate) dimension: usize,
+    /// The control points, in order (at least one; surfaces row by row).
+    pub(crate) points: Vec<PointRecord>,
+    /// Degree, knots and grid, as declared.
+    pub(crate) structure: Structure,
+}
+
+impl Parsed {
+    /// An error located at `origin` in this model's file.
+    pub(crate) fn error_at(&self, origin: &Origin, message: String) -> InputError {
+        InputError::new(&self.file, origin.line, origin.field.clone(), message)
+    }
+}
+
+/// Which membership rule applies: the file's own declaration, else the command line's, else
+/// neutrosophic. A declaration that contradicts the command line is an error (`Err` carries the
+/// message).
+pub(crate) fn resolve_membership(
+    declared: Option<Membership>,
+    cli: Option<Membership>,
+) -> Result<Membership, String> {
+    resolve("membership", "--membership", declared, cli).map(Option::unwrap_or_default)
+}
+
+/// The degree that `membership` requires but that is absent when only the degrees flagged
+/// present are given, as decided by the core's own rule (probed with zeros).
+pub(crate) fn missing_degree(
+    membership: Membership,
+    has_indeterminacy: bool,
+    has_falsity: bool,
+) -> Option<DegreeError> {
+    match Degrees::with_membership(
+        membership,
+        0.0,
+        has_indeterminacy.then_some(0.0),
+        has_falsity.then_some(0.0),
+    ) {
+        Err(e @ DegreeError::Missing { .. }) => Some(e),
+        _ => None,
+    }
+}
+
+/// Parses a number written in a file; NaN and infinities are rejected (message only).
+pub(crate) fn parse_number(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        Ok(_) => Err(format!(
+            "value `{text}` is not a finite number (NaN and infinities are not allowed)"
+        )),
+        Err(_) => Err(format!("value `{text}` is not a number")),
+    }
+}
+
+/// Message for a non-finite number that arrived already parsed (TOML `nan`, `inf`).
+pub(crate) fn not_finite_message(value: f64) -> String {
+    format!("value {value} is not a finite number (NaN and infinities are not allowed)")
+}
+
+/// The 1-based line of byte `offset` in `text`.
+pub(crate) fn line_of(text: &[u8], offset: usize) -> usize {
+    let end = offset.min(text.len());
+    text[..end].iter().filter(|&&b| b == b'\n').count() + 1
+}
+
+/// Removes a leading UTF-8 byte order mark.
+pub(crate) fn strip_bom(bytes: &[u8]) -> &[u8] {
+    bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes)
+}
+
+/// `a, b, c`.
+pub(crate) fn join<'a>(items: impl IntoIterator<Item = &'a str>) -> String {
+    items.into_iter().collect::<Vec<_>>().join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn resolve_membership_rules() {
+        use Membership::*;
+        assert_eq!(resolve_membership(None, None), Ok(Neutrosophic));
+        assert_eq!(resolve_membership(None, Some(Fuzzy)), Ok(Fuzzy));
+        assert_eq!(resolve_membership(Some(Fuzzy), Some(Fuzzy)), Ok(Fuzzy));
+        assert_eq!(resolve_membership(Some(Fuzzy), None), Ok(Fuzzy));
+        assert!(resolve_membership(Some(Fuzzy), Some(Intuitionistic)).is_err());
+    }
+
+    #[test]
+    fn missing_degree_follows_core_rule() {
+        use Membership::*;
+        assert!(missing_degree(Neutrosophic, true, true).is_none());
+        assert!(missing_degree(Neutrosophic, false, true).is_some());
+        assert!(missing_degree(Neutrosophic, true, false).is_some());
+        assert!(missing_degree(Intuitionistic, false, true).is_none());
+        assert!(missing_degree(Intuitionistic, true, false).is_some());
+        assert!(missing_degree(Fuzzy, false, false).is_none());
+    }
+
+    #[test]
+    fn parse_number_rejects_non_finite() {
+        assert_eq!(parse_number("1.5"), Ok(1.5));
+        assert_eq!(parse_number("-2e3"), Ok(-2000.0));
+        assert_eq!(
+            parse_number("NaN").unwrap_err(),
+            "value `NaN` is not a finite number (NaN and infinities are not allowed)"
+        );
+        assert!(parse_number("inf").is_err());
+        assert_eq!(
+            parse_number("abc").unwrap_err(),
+            "value `abc` is not a number"
+        );
+        assert_eq!(parse_number("").unwrap_err(), "value `` is not a number");
+    }
+
+    #[test]
+    fn line_of_counts_newlines() {
+        let text = b"a\nb\r\nc";
+        assert_eq!(line_of(text, 0), 1);
+        assert_eq!(line_of(text, 2), 2);
+        assert_eq!(line_of(text, 5), 3);
+        assert_eq!(line_of(text, 99), 3);
+    }
+}

@@ -1,0 +1,110 @@
+//! Reading: [`load`] a file, [`parse`] bytes held in memory, or [`read_csv`] a stream.
+
+use std::io::{BufRead, BufReader, Read};
+use std::path::Path;
+
+use crate::format::{too_large, too_many_points};
+use crate::parsed::Parsed;
+use crate::{csv, walker, Format, InputError, Model, ReadError, ReadOptions};
+
+/// Parses a model held in memory: the contents of `file` (the name used in messages) in
+/// `format`, for a program that has the bytes already (an upload, an editor buffer).
+///
+/// The `options` are checked first (as by [`load`]); the TOML and JSON size limit and the limit
+/// on control points apply.
+///
+/// # Errors
+/// [`ReadError::Options`] for options that do not fit together, [`ReadError::Input`] naming
+/// the file, line or field, value and rule.
+pub fn parse(
+    file: &str,
+    format: Format,
+    bytes: &[u8],
+    options: &ReadOptions,
+) -> Result<Model, ReadError> {
+    options.check(format)?;
+    let limit = options.limits.max_file_size;
+    if format != Format::Csv && bytes.len() as u64 > limit {
+        return Err(InputError::new(file, None, None, too_large(limit)).into());
+    }
+    let parsed = match format {
+        Format::Csv => csv::parse(file, bytes, options),
+        Format::Toml => walker::parse_toml(file, bytes, options),
+        Format::Json => walker::parse_json(file, bytes, options),
+    }?;
+    build(parsed, options)
+}
+
+/// Reads a CSV table from a stream (standard input, a socket), line by line: an error is
+/// reported as soon as its line is read, without reading further, and only the control points
+/// are kept in memory (at most `options.limits.max_control_points` of them). `file` names the
+/// stream in messages (`<stdin>`).
+///
+/// # Errors
+/// As [`parse`]; a read error is an [`InputError`] at the line it happened on.
+pub fn read_csv(
+    file: &str,
+    reader: impl BufRead,
+    options: &ReadOptions,
+) -> Result<Model, ReadError> {
+    options.check(Format::Csv)?;
+    let parsed = csv::parse_reader(file, reader, options)?;
+    build(parsed, options)
+}
+
+/// Reads and parses the file at `path`, its format chosen by the extension
+/// ([`Format::from_path`]); messages name the file as `path` displays.
+///
+/// CSV is read as a stream ([`read_csv`]) and refused at its first bad line; TOML and JSON
+/// documents are read whole, up to `options.limits.max_file_size` bytes (checked before reading
+/// and while reading, for a file that grows).
+///
+/// # Errors
+/// [`ReadError::Format`] for an unsupported extension and [`ReadError::Options`] for options
+/// that do not fit together (both before the file is opened), [`ReadError::Io`] and
+/// [`ReadError::IsDirectory`] when the file cannot be read, [`ReadError::Input`] for invalid
+/// content.
+pub fn load(path: impl AsRef<Path>, options: &ReadOptions) -> Result<Model, ReadError> {
+    let path = path.as_ref();
+    let format = Format::from_path(path)?;
+    options.check(format)?;
+    let shown = path.display().to_string();
+    let cannot = |error: std::io::Error| ReadError::Io {
+        path: shown.clone(),
+        error,
+    };
+    let file = std::fs::File::open(path).map_err(cannot)?;
+    let meta = file.metadata().map_err(cannot)?;
+    if meta.is_dir() {
+        return Err(ReadError::IsDirectory { path: shown });
+    }
+    if format == Format::Csv {
+        return read_csv(&shown, BufReader::new(file), options);
+    }
+    let limit = options.limits.max_file_size;
+    let too_large = || InputError::new(&shown, None, None, too_large(limit)).into();
+    if meta.len() > limit {
+        return Err(too_large());
+    }
+    // The size may grow while reading (a FIFO, a file being written): read one byte more than
+    // the limit at most.
+    let mut bytes = Vec::with_capacity(usize::try_from(meta.len()).unwrap_or(0));
+    file.take(limit.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(cannot)?;
+    if bytes.len() as u64 > limit {
+        return Err(too_large());
+    }
+    parse(&shown, format, &bytes, options)
+}
+
+/// Refuses a model with more control points than the limit, then builds the shape.
+fn build(parsed: Parsed, options: &ReadOptions) -> Result<Model, ReadError> {
+    let limit = options.limits.max_control_points;
+    if parsed.points.len() as u64 > limit {
+        let index = usize::try_from(limit).unwrap_or(usize::MAX);
+        let origin = parsed.points[index].origin.clone();
+        return Err(parsed.error_at(&origin, too_many_points(limit)).into());
+    }
+    Ok(parsed.into_model()?)
+}

@@ -1,0 +1,189 @@
+//! [`Shape`]: the core's curve (planar or spatial) or surface that a model file describes.
+
+use neutrospline::{AnyCurve, ControlPoint, KnotVector, Range, Surface};
+
+use crate::Kind;
+
+/// A curve or surface of any kind, as a model file holds it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Shape {
+    /// A curve in the plane (x, y).
+    Planar(AnyCurve<2>),
+    /// A curve in space (x, y, z).
+    Spatial(AnyCurve<3>),
+    /// A tensor-product surface in space.
+    Surface(Surface),
+}
+
+impl From<AnyCurve<2>> for Shape {
+    fn from(curve: AnyCurve<2>) -> Shape {
+        Shape::Planar(curve)
+    }
+}
+
+impl From<AnyCurve<3>> for Shape {
+    fn from(curve: AnyCurve<3>) -> Shape {
+        Shape::Spatial(curve)
+    }
+}
+
+impl From<Surface> for Shape {
+    fn from(surface: Surface) -> Shape {
+        Shape::Surface(surface)
+    }
+}
+
+/// One control point in any dimension: position (2 or 3 coordinates), degrees and weight.
+pub(crate) struct PointData {
+    pub(crate) position: Vec<f64>,
+    pub(crate) degrees: neutrospline::Degrees,
+    pub(crate) weight: Option<f64>,
+}
+
+fn point_data<const D: usize>(
+    points: Vec<ControlPoint<D>>,
+    weights: Option<&[f64]>,
+) -> Vec<PointData> {
+    points
+        .into_iter()
+        .enumerate()
+        .map(|(i, p)| PointData {
+            position: p.position.to_vec(),
+            degrees: p.degrees,
+            weight: weights.and_then(|w| w.get(i).copied()),
+        })
+        .collect()
+}
+
+impl Shape {
+    /// The kind, as named in files.
+    pub fn kind(&self) -> Kind {
+        match self {
+            Shape::Planar(c) => Kind::Curve(c.kind()),
+            Shape::Spatial(c) => Kind::Curve(c.kind()),
+            Shape::Surface(s) => Kind::Surface(s.kind()),
+        }
+    }
+
+    /// 2 or 3.
+    pub fn dimension(&self) -> usize {
+        match self {
+            Shape::Planar(_) => 2,
+            Shape::Spatial(_) | Shape::Surface(_) => 3,
+        }
+    }
+
+    /// Whether this is a surface.
+    pub fn is_surface(&self) -> bool {
+        matches!(self, Shape::Surface(_))
+    }
+
+    /// Number of control points (never 0; surfaces rows x cols).
+    pub fn control_count(&self) -> usize {
+        match self {
+            Shape::Planar(c) => c.len(),
+            Shape::Spatial(c) => c.len(),
+            Shape::Surface(s) => s.rows() * s.cols(),
+        }
+    }
+
+    /// The polynomial degree of a curve.
+    pub fn curve_degree(&self) -> Option<usize> {
+        match self {
+            Shape::Planar(c) => Some(c.degree()),
+            Shape::Spatial(c) => Some(c.degree()),
+            Shape::Surface(_) => None,
+        }
+    }
+
+    /// The knot vector of a B-spline or NURBS curve.
+    pub fn curve_knots(&self) -> Option<&KnotVector> {
+        match self {
+            Shape::Planar(c) => c.knots(),
+            Shape::Spatial(c) => c.knots(),
+            Shape::Surface(_) => None,
+        }
+    }
+
+    /// The domain of a curve.
+    pub fn curve_domain(&self) -> Option<(f64, f64)> {
+        match self {
+            Shape::Planar(c) => Some(c.domain()),
+            Shape::Spatial(c) => Some(c.domain()),
+            Shape::Surface(_) => None,
+        }
+    }
+
+    /// The weights of a NURBS curve or surface (surfaces row by row).
+    pub fn weights(&self) -> Option<&[f64]> {
+        match self {
+            Shape::Planar(c) => c.weights(),
+            Shape::Spatial(c) => c.weights(),
+            Shape::Surface(s) => s.weights(),
+        }
+    }
+
+    /// Range (min, max) of truth, indeterminacy and falsity over the control points.
+    pub fn degree_ranges(&self) -> [Range; 3] {
+        match self {
+            Shape::Planar(c) => {
+                let b = c.control_bounding_box();
+                [b.truth, b.indeterminacy, b.falsity]
+            }
+            Shape::Spatial(c) => {
+                let b = c.control_bounding_box();
+                [b.truth, b.indeterminacy, b.falsity]
+            }
+            Shape::Surface(s) => {
+                let b = s.control_bounding_box();
+                [b.truth, b.indeterminacy, b.falsity]
+            }
+        }
+    }
+
+    /// The degrees of every control point, in order (surfaces row by row).
+    pub fn control_degrees(&self) -> Vec<neutrospline::Degrees> {
+        match self {
+            Shape::Planar(c) => c.control_points().iter().map(|p| p.degrees).collect(),
+            Shape::Spatial(c) => c.control_points().iter().map(|p| p.degrees).collect(),
+            Shape::Surface(s) => s.control_points().iter().map(|p| p.degrees).collect(),
+        }
+    }
+
+    /// Every control point with its weight, for the writers.
+    pub(crate) fn point_data(&self) -> Vec<PointData> {
+        match self {
+            Shape::Planar(c) => point_data(c.control_points(), c.weights()),
+            Shape::Spatial(c) => point_data(c.control_points(), c.weights()),
+            Shape::Surface(s) => point_data(s.control_points(), s.weights()),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use neutrospline::{BSpline, CurveKind, Degrees, SurfaceKind};
+
+    #[test]
+    fn shape_accessors() {
+        let d = Degrees::new(0.5, 0.25, 0.0).unwrap();
+        let points = (0..5)
+            .map(|i| ControlPoint::new([f64::from(i), 0.0], d))
+            .collect();
+        let knots = KnotVector::new((0..8).map(f64::from).collect(), 2, 5).unwrap();
+        let shape = Shape::from(AnyCurve::BSpline(BSpline::new(points, knots).unwrap()));
+        assert_eq!(shape.kind(), Kind::Curve(CurveKind::BSpline));
+        assert_eq!(shape.dimension(), 2);
+        assert_eq!(shape.control_count(), 5);
+        assert_eq!(shape.curve_degree(), Some(2));
+        assert_eq!(shape.curve_domain(), Some((2.0, 5.0)));
+        assert_eq!(shape.weights(), None);
+        assert_eq!(shape.degree_ranges()[0].max, 0.5);
+        let surface = Surface::bezier(1, 1, vec![ControlPoint::new([0.0; 3], d)]).unwrap();
+        let shape = Shape::from(surface);
+        assert_eq!(shape.kind(), Kind::Surface(SurfaceKind::Bezier));
+        assert!(shape.is_surface());
+        assert_eq!(shape.curve_degree(), None);
+    }
+}

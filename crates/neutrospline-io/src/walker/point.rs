@@ -1,0 +1,179 @@
+//! The control points of a TOML or JSON model.
+
+use neutrospline::{DegreeError, DegreeKind, Degrees, Membership};
+
+use super::Walker;
+use crate::parsed::{duplicate_rule, Field, Origin, PointRecord};
+use crate::settings::Kind;
+use crate::tree::{Node, Value};
+use crate::InputError;
+
+impl Walker<'_> {
+    /// Reads control point `index` from `item`, its degrees validated by `membership`.
+    pub(super) fn point(
+        &self,
+        item: &Node,
+        index: usize,
+        membership: Membership,
+        kind: Kind,
+    ) -> Result<PointRecord, InputError> {
+        let path = format!("control_points[{index}]");
+        let Value::Table(entries) = &item.value else {
+            return Err(self.expected(item, &path, self.table_word()));
+        };
+        let mut nodes: [Option<&Node>; 8] = Default::default();
+        let mut keys: [Option<&str>; 8] = Default::default();
+        for entry in entries {
+            let Some(field) = Field::from_name(&entry.key, false) else {
+                return Err(self.error(
+                    entry.key_span.as_ref(),
+                    Some(path.clone()),
+                    format!(
+                        "unknown key `{}` (known keys: {})",
+                        entry.key,
+                        Field::known_list()
+                    ),
+                ));
+            };
+            if let Some(previous) = keys[field.index()] {
+                return Err(self.error(
+                    entry.key_span.as_ref(),
+                    Some(path.clone()),
+                    format!(
+                        "key `{}` repeats key `{previous}` ({})",
+                        entry.key,
+                        duplicate_rule()
+                    ),
+                ));
+            }
+            if field == Field::Weight && !kind.is_rational() {
+                return Err(self.error(
+                    entry.key_span.as_ref(),
+                    Some(path.clone()),
+                    format!(
+                        "key `weight` does not apply to kind `{kind}` (weights only apply to NURBS: {})",
+                        Kind::rational_list()
+                    ),
+                ));
+            }
+            keys[field.index()] = Some(&entry.key);
+            nodes[field.index()] = Some(&entry.value);
+        }
+        let node = |f: Field| nodes[f.index()];
+        let value = |f: Field| -> Result<Option<f64>, InputError> {
+            node(f)
+                .map(|n| {
+                    self.number(
+                        n,
+                        &format!("{path}.{}", keys[f.index()].unwrap_or(f.name())),
+                    )
+                })
+                .transpose()
+        };
+
+        let name = node(Field::Name)
+            .map(|n| self.string(n, &format!("{path}.name")))
+            .transpose()?;
+        let mut position = Vec::with_capacity(3);
+        for f in [Field::X, Field::Y] {
+            position.push(value(f)?.ok_or_else(|| {
+                self.error(
+                    item.span.as_ref(),
+                    Some(path.clone()),
+                    format!(
+                        "missing key `{}` (every control point needs x and y)",
+                        f.name()
+                    ),
+                )
+            })?);
+        }
+        match value(Field::Z)? {
+            Some(z) => position.push(z),
+            None if kind.is_surface() => {
+                return Err(self.error(
+                    item.span.as_ref(),
+                    Some(path.clone()),
+                    "missing key `z` (surfaces are 3-D: every control point needs x, y and z)"
+                        .to_owned(),
+                ))
+            }
+            None => {}
+        }
+        // Any number, NaN and infinities included: the core's NURBS weight rule judges it.
+        let weight = match node(Field::Weight) {
+            None => None,
+            Some(n) => match n.value {
+                Value::Integer(v) => Some(v as f64),
+                Value::Float(v) => Some(v),
+                _ => return Err(self.expected(n, &format!("{path}.weight"), "a number")),
+            },
+        };
+        if weight.is_none() && kind.is_rational() {
+            return Err(self.error(
+                item.span.as_ref(),
+                Some(path.clone()),
+                format!(
+                    "missing key `weight` (kind `{kind}` needs a positive weight for every control point)"
+                ),
+            ));
+        }
+        let truth = value(Field::Truth)?.ok_or_else(|| {
+            self.error(
+                item.span.as_ref(),
+                Some(path.clone()),
+                "missing key `truth` (every membership rule requires it)".to_owned(),
+            )
+        })?;
+        let degrees = Degrees::with_membership(
+            membership,
+            truth,
+            value(Field::Indeterminacy)?,
+            value(Field::Falsity)?,
+        )
+        .map_err(|e| {
+            let at = |kind: DegreeKind| {
+                let field = match kind {
+                    DegreeKind::Truth => Field::Truth,
+                    DegreeKind::Indeterminacy => Field::Indeterminacy,
+                    DegreeKind::Falsity => Field::Falsity,
+                };
+                node(field)
+                    .and_then(|n| n.span.as_ref())
+                    .or(item.span.as_ref())
+            };
+            let (span, message) = match &e {
+                DegreeError::Missing { kind, membership } => (
+                    item.span.as_ref(),
+                    format!("missing key `{kind}` ({membership} rule requires it)"),
+                ),
+                DegreeError::OutOfRange { kind, .. }
+                | DegreeError::NotFinite { kind, .. }
+                | DegreeError::FuzzyExtra { kind, .. } => (at(*kind), e.to_string()),
+                DegreeError::HesitationMismatch { .. } => {
+                    (at(DegreeKind::Indeterminacy), e.to_string())
+                }
+                _ => (item.span.as_ref(), e.to_string()),
+            };
+            self.error(span, Some(path.clone()), message)
+        })?;
+        let weight_origin = Origin {
+            line: self.line(
+                node(Field::Weight)
+                    .and_then(|n| n.span.as_ref())
+                    .or(item.span.as_ref()),
+            ),
+            field: Some(format!("{path}.weight")),
+        };
+        Ok(PointRecord {
+            name,
+            position,
+            degrees,
+            weight,
+            origin: Origin {
+                line: self.line(item.span.as_ref()),
+                field: Some(path),
+            },
+            weight_origin,
+        })
+    }
+}

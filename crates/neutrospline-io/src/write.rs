@@ -1,0 +1,411 @@
+//! Writing models: TOML and JSON with the keys of the readers' schema, CSV tables of control
+//! points, and [`save`], which replaces a file atomically.
+//!
+//! Numbers are written in Ryu's shortest round-trip form (at most 17 significant digits, with
+//! an exponent for very large and very small magnitudes, always a float in TOML and JSON:
+//! `1.0`, `0.30000000000000004`, `1e-300`); every reader gets the same `f64` back. Degrees,
+//! rows and columns are integers. Knots are always written as values, a Bézier kind without
+//! knots. Under the intuitionistic rule the indeterminacy is left out (the reader derives it
+//! from truth and falsity, to the same bits); under the fuzzy rule indeterminacy and falsity
+//! are.
+
+use std::fmt::Write as _;
+use std::io::Write as _;
+use std::path::Path;
+
+use neutrospline::Membership;
+
+use crate::format::MAX_CSV_LINE;
+use crate::number::file_number;
+use crate::shape::PointData;
+use crate::{AtomicFile, Format, Model, Shape, WriteError};
+
+/// A structure key's value.
+enum Setting {
+    /// A degree or count.
+    Integer(usize),
+    /// Knot values.
+    Knots(Vec<f64>),
+}
+
+/// The structure keys of a model, in the readers' order.
+fn settings(shape: &Shape) -> Vec<(&'static str, Setting)> {
+    let knots = |k: &neutrospline::KnotVector| Setting::Knots(k.knots().to_vec());
+    match shape {
+        Shape::Surface(s) => {
+            let mut keys = vec![
+                ("rows", Setting::Integer(s.rows())),
+                ("cols", Setting::Integer(s.cols())),
+                ("degree_u", Setting::Integer(s.degree_u())),
+                ("degree_v", Setting::Integer(s.degree_v())),
+            ];
+            if shape.kind().has_knots() {
+                keys.push(("knots_u", knots(s.knots_u())));
+                keys.push(("knots_v", knots(s.knots_v())));
+            }
+            keys
+        }
+        _ => {
+            let mut keys = Vec::with_capacity(2);
+            if let Some(degree) = shape.curve_degree() {
+                keys.push(("degree", Setting::Integer(degree)));
+            }
+            if let Some(k) = shape.curve_knots() {
+                keys.push(("knots", knots(k)));
+            }
+            keys
+        }
+    }
+}
+
+/// The degrees written under `membership`, with their index in `[truth, indeterminacy,
+/// falsity]`: those the rule does not derive.
+fn degree_keys(membership: Membership) -> &'static [(&'static str, usize)] {
+    match membership {
+        Membership::Neutrosophic => &[("truth", 0), ("indeterminacy", 1), ("falsity", 2)],
+        Membership::Intuitionistic => &[("truth", 0), ("falsity", 2)],
+        Membership::Fuzzy => &[("truth", 0)],
+    }
+}
+
+/// The keys and values of a control point in writing order: `x, y, [z,] truth,
+/// indeterminacy, falsity, [weight]` (the degrees the rule keeps).
+fn point_values(point: &PointData, membership: Membership) -> Vec<(&'static str, f64)> {
+    let mut values: Vec<(&'static str, f64)> = ["x", "y", "z"]
+        .into_iter()
+        .zip(point.position.iter().copied())
+        .collect();
+    let degrees = point.degrees.to_array();
+    values.extend(
+        degree_keys(membership)
+            .iter()
+            .map(|&(k, i)| (k, degrees[i])),
+    );
+    if let Some(w) = point.weight {
+        values.push(("weight", w));
+    }
+    values
+}
+
+/// Writes `[v0, v1, ...]`.
+fn push_array(out: &mut String, values: &[f64]) {
+    out.push('[');
+    for (i, &v) in values.iter().enumerate() {
+        if i > 0 {
+            out.push_str(", ");
+        }
+        file_number(out, v);
+    }
+    out.push(']');
+}
+
+/// A TOML basic string: `"`, `\` and control characters escaped.
+fn toml_string(out: &mut String, text: &str) {
+    out.push('"');
+    for c in text.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            '\t' => out.push_str("\\t"),
+            '\n' => out.push_str("\\n"),
+            '\r' => out.push_str("\\r"),
+            c if c.is_control() => {
+                let _ = write!(out, "\\u{:04X}", u32::from(c));
+            }
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+}
+
+/// A JSON string literal.
+fn json_string(out: &mut String, text: &str) {
+    out.push_str(&serde_json::Value::from(text).to_string());
+}
+
+/// The model as a TOML document: `kind`, `name`, `description`, `membership`, the structure
+/// keys (`degree`, `knots`; `rows`, `cols`, `degree_u`, `degree_v`, `knots_u`, `knots_v`),
+/// then one `[[control_points]]` table per control point (`name`, `x`, `y`, `z`, `truth`,
+/// `indeterminacy`, `falsity`, `weight`). [`crate::parse`] reads it back to an equal model.
+pub fn to_toml_string(model: &Model) -> String {
+    let mut out = String::new();
+    out.push_str("kind = ");
+    toml_string(&mut out, model.kind().name());
+    out.push('\n');
+    for (key, value) in [("name", model.name()), ("description", model.description())] {
+        if let Some(value) = value {
+            out.push_str(key);
+            out.push_str(" = ");
+            toml_string(&mut out, value);
+            out.push('\n');
+        }
+    }
+    let _ = writeln!(out, "membership = \"{}\"", model.membership());
+    for (key, setting) in settings(model.shape()) {
+        let _ = write!(out, "{key} = ");
+        match setting {
+            Setting::Integer(n) => {
+                let _ = write!(out, "{n}");
+            }
+            Setting::Knots(k) => push_array(&mut out, &k),
+        }
+        out.push('\n');
+    }
+    for (point, name) in model.shape().point_data().iter().zip(model.point_names()) {
+        out.push_str("\n[[control_points]]\n");
+        if let Some(name) = name {
+            out.push_str("name = ");
+            toml_string(&mut out, name);
+            out.push('\n');
+        }
+        for (key, value) in point_values(point, model.membership()) {
+            out.push_str(key);
+            out.push_str(" = ");
+            file_number(&mut out, value);
+            out.push('\n');
+        }
+    }
+    out
+}
+
+/// The model as a JSON document: an object with the keys of [`to_toml_string`] and
+/// `control_points`, an array of one object per control point, one per line.
+/// [`crate::parse`] reads it back to an equal model.
+pub fn to_json_string(model: &Model) -> String {
+    let mut out = String::from("{\n  \"kind\": ");
+    json_string(&mut out, model.kind().name());
+    for (key, value) in [("name", model.name()), ("description", model.description())] {
+        if let Some(value) = value {
+            let _ = write!(out, ",\n  \"{key}\": ");
+            json_string(&mut out, value);
+        }
+    }
+    let _ = write!(out, ",\n  \"membership\": \"{}\"", model.membership());
+    for (key, setting) in settings(model.shape()) {
+        let _ = write!(out, ",\n  \"{key}\": ");
+        match setting {
+            Setting::Integer(n) => {
+                let _ = write!(out, "{n}");
+            }
+            Setting::Knots(k) => push_array(&mut out, &k),
+        }
+    }
+    out.push_str(",\n  \"control_points\": [");
+    let points = model.shape().point_data();
+    for (i, (point, name)) in points.iter().zip(model.point_names()).enumerate() {
+        out.push_str(if i == 0 { "\n    { " } else { ",\n    { " });
+        let mut first = true;
+        if let Some(name) = name {
+            out.push_str("\"name\": ");
+            json_string(&mut out, name);
+            first = false;
+        }
+        for (key, value) in point_values(point, model.membership()) {
+            if !first {
+                out.push_str(", ");
+            }
+            first = false;
+            let _ = write!(out, "\"{key}\": ");
+            file_number(&mut out, value);
+        }
+        out.push_str(" }");
+    }
+    out.push_str("\n  ]\n}\n");
+    out
+}
+
+/// Why a CSV cell cannot hold `name` (the reader trims cells and reads an empty one as no
+/// name).
+fn csv_name_problem(name: &str) -> Option<&'static str> {
+    if name.is_empty() {
+        Some("is empty, which a CSV cell reads as no name")
+    } else if name.trim() != name {
+        Some("has leading or trailing whitespace, which a CSV cell loses")
+    } else {
+        None
+    }
+}
+
+/// A CSV cell for a name: quoted when it holds a comma, quote or line end, or starts with `#`
+/// (which would make the row a comment) or U+FEFF (which the CSV parser drops as a byte order
+/// mark at the start of a row).
+fn csv_name(out: &mut String, name: &str) {
+    if name.starts_with(['#', '\u{feff}']) || name.contains([',', '"', '\n', '\r']) {
+        out.push('"');
+        out.push_str(&name.replace('"', "\"\""));
+        out.push('"');
+    } else {
+        out.push_str(name);
+    }
+}
+
+/// The control points as a CSV table: a header, then one control point per row (columns
+/// `name` when any point has a name, `x`, `y`, `z` for 3-D shapes, the degrees the membership
+/// rule keeps, `weight` for NURBS). Surfaces are written row by row.
+///
+/// A CSV file cannot hold the kind, degree, knots, grid, membership rule, name or
+/// description: reading the table back needs the options of [`Model::csv_read_options`]
+/// (on the command line: `--kind`, `--degree`, `--knots K0,K1,...`, `--rows`, ...,
+/// `--membership`), and gives this model without its name and description.
+///
+/// # Errors
+/// [`WriteError::Unrepresentable`] for a control point name that a CSV cell cannot hold
+/// (empty, or with leading or trailing whitespace), or a row longer than the CSV reader's
+/// line limit ([`crate::MAX_CSV_LINE`]).
+pub fn to_csv_string(model: &Model) -> Result<String, WriteError> {
+    let unrepresentable = |message: String| WriteError::Unrepresentable {
+        path: None,
+        format: Format::Csv,
+        message,
+    };
+    let names = model.point_names();
+    let named = names.iter().any(Option::is_some);
+    let points = model.shape().point_data();
+    let mut out = String::new();
+    let mut header: Vec<&str> = Vec::new();
+    if named {
+        header.push("name");
+    }
+    if let Some(point) = points.first() {
+        header.extend(point_values(point, model.membership()).iter().map(|v| v.0));
+    }
+    out.push_str(&header.join(","));
+    out.push('\n');
+    let mut row = String::new();
+    for (index, (point, name)) in points.iter().zip(names).enumerate() {
+        row.clear();
+        if named {
+            if let Some(name) = name {
+                if let Some(problem) = csv_name_problem(name) {
+                    return Err(unrepresentable(format!(
+                        "control point {index}: the name {name:?} {problem} (write TOML or JSON \
+                         to keep it)"
+                    )));
+                }
+                csv_name(&mut row, name);
+            }
+            row.push(',');
+        }
+        for (i, (_, value)) in point_values(point, model.membership()).iter().enumerate() {
+            if i > 0 {
+                row.push(',');
+            }
+            file_number(&mut row, *value);
+        }
+        row.push('\n');
+        if row.len() > MAX_CSV_LINE {
+            return Err(unrepresentable(format!(
+                "control point {index}: the row is {} bytes long, more than the {MAX_CSV_LINE} a \
+                 CSV line may have (write TOML or JSON)",
+                row.len()
+            )));
+        }
+        out.push_str(&row);
+    }
+    Ok(out)
+}
+
+/// The model in `format`: [`to_toml_string`], [`to_json_string`] or [`to_csv_string`].
+///
+/// # Errors
+/// As [`to_csv_string`] (TOML and JSON hold every model).
+pub fn to_string(model: &Model, format: Format) -> Result<String, WriteError> {
+    match format {
+        Format::Csv => to_csv_string(model),
+        Format::Toml => Ok(to_toml_string(model)),
+        Format::Json => Ok(to_json_string(model)),
+    }
+}
+
+/// Writes the model to `path` in the format of its extension ([`Format::from_path`]),
+/// atomically: the text goes to a temporary file in the same directory, which is flushed to
+/// disk and renamed over `path` ([`AtomicFile`]). On any error the old file is left as it was
+/// and the temporary file is removed. A symbolic link is followed: its target is replaced.
+///
+/// # Errors
+/// [`WriteError::Format`] for an unsupported extension, as [`to_csv_string`] for CSV, and
+/// [`WriteError::Io`] naming the file.
+pub fn save(model: &Model, path: impl AsRef<Path>) -> Result<(), WriteError> {
+    let path = path.as_ref();
+    let format = Format::from_path(path)?;
+    let shown = path.display().to_string();
+    let text = to_string(model, format).map_err(|e| match e {
+        WriteError::Unrepresentable {
+            format, message, ..
+        } => WriteError::Unrepresentable {
+            path: Some(shown.clone()),
+            format,
+            message,
+        },
+        other => other,
+    })?;
+    write_file(path, text.as_bytes(), |file, bytes| file.write_all(bytes))
+        .map_err(|error| WriteError::Io { path: shown, error })
+}
+
+/// Writes `bytes` to a new version of `path` with `write`, then commits it.
+fn write_file(
+    path: &Path,
+    bytes: &[u8],
+    write: impl FnOnce(&mut AtomicFile, &[u8]) -> std::io::Result<()>,
+) -> std::io::Result<()> {
+    let mut file = AtomicFile::create(path)?;
+    write(&mut file, bytes)?;
+    file.commit()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use neutrospline::{example1, AnyCurve};
+    use std::fs;
+
+    #[test]
+    fn save_leaves_the_old_file_on_a_write_error() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("model.toml");
+        fs::write(&path, "old\n").unwrap();
+        let error = write_file(&path, b"kind = \"bezier\"\n", |file, bytes| {
+            file.write_all(&bytes[..5])?;
+            file.flush()?;
+            Err(std::io::Error::other("disk full"))
+        })
+        .unwrap_err();
+        assert_eq!(error.to_string(), "disk full");
+        assert_eq!(fs::read_to_string(&path).unwrap(), "old\n");
+        assert_eq!(
+            fs::read_dir(dir.path()).unwrap().count(),
+            1,
+            "temporary file left behind"
+        );
+        let model = Model::new(AnyCurve::Bezier(example1()));
+        save(&model, &path).unwrap();
+        assert_eq!(fs::read_to_string(&path).unwrap(), to_toml_string(&model));
+        assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
+    #[test]
+    fn csv_names_are_quoted_or_refused() {
+        let model = Model::new(AnyCurve::Bezier(example1()))
+            .with_point_names([Some("#1"), Some("a, \"b\""), None, Some("line\nbreak")])
+            .unwrap();
+        let text = to_csv_string(&model).unwrap();
+        assert!(
+            text.starts_with(
+                "name,x,y,truth,indeterminacy,falsity\n\"#1\",1.0,3.0,0.3,0.6,0.1\n\
+                 \"a, \"\"b\"\"\",3.0,6.0,0.8,0.1,0.1\n,6.0,2.0,0.7,0.1,0.2\n\"line\nbreak\","
+            ),
+            "{text}"
+        );
+        for bad in ["", " padded"] {
+            let model = Model::new(AnyCurve::Bezier(example1()))
+                .with_point_names([None, None, Some(bad), None])
+                .unwrap();
+            let e = to_csv_string(&model).unwrap_err().to_string();
+            assert!(
+                e.starts_with("cannot write CSV: control point 2: the name "),
+                "{e}"
+            );
+        }
+    }
+}

@@ -1,0 +1,345 @@
+//! Property tests: every model writes to TOML, JSON and CSV and reads back equal (model ->
+//! write -> read == model), and a file another program wrote reads, writes and reads again to
+//! the same model (read -> write -> read), for every kind, 2-D and 3-D curves, all three
+//! membership rules, names, descriptions, non-uniform knots, weights and any finite 64-bit
+//! numbers.
+
+use neutrospline::strategies;
+use neutrospline::{
+    AnyCurve, BSpline, Bezier, ControlPoint, CurveKind, Degrees, KnotVector, Membership, Nurbs,
+    Surface, SurfaceKind,
+};
+use neutrospline_io::{parse, to_string, Format, Model, ReadOptions, Shape};
+use proptest::prelude::*;
+
+/// Any finite number, with the awkward ones weighted in.
+fn number() -> impl Strategy<Value = f64> {
+    use proptest::num::f64::{NEGATIVE, NORMAL, POSITIVE, SUBNORMAL, ZERO};
+    prop_oneof![
+        4 => POSITIVE | NEGATIVE | NORMAL | SUBNORMAL | ZERO,
+        2 => -1000.0..1000.0f64,
+        2 => prop::sample::select(vec![
+            0.1 + 0.2,
+            1e-300,
+            -1e-300,
+            f64::MAX,
+            -f64::MAX,
+            f64::MIN_POSITIVE,
+            5e-324,
+            -0.0,
+            1.0 / 3.0,
+            1e16,
+            9007199254740993.0,
+            123456789.0,
+        ]),
+    ]
+}
+
+/// A degree in [0, 1], awkward values weighted in.
+fn unit() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        3 => strategies::degree(),
+        2 => 0.0..=1.0f64,
+        1 => prop::sample::select(vec![0.1 + 0.2, 1e-300, 5e-324, 1.0 - f64::EPSILON, 2.0 / 3.0]),
+    ]
+}
+
+/// Degrees obeying `membership`, built as a reader builds them.
+fn degrees(membership: Membership) -> BoxedStrategy<Degrees> {
+    match membership {
+        Membership::Neutrosophic => (unit(), unit(), unit())
+            .prop_map(|(t, i, f)| Degrees::new(t, i, f).unwrap())
+            .boxed(),
+        Membership::Intuitionistic => (unit(), unit())
+            .prop_filter_map("truth + falsity > 1", |(t, f)| {
+                Degrees::intuitionistic(t, f * (1.0 - t)).ok()
+            })
+            .boxed(),
+        Membership::Fuzzy => unit().prop_map(|t| Degrees::fuzzy(t).unwrap()).boxed(),
+    }
+}
+
+fn points<const D: usize>(
+    count: usize,
+    membership: Membership,
+) -> impl Strategy<Value = Vec<ControlPoint<D>>> {
+    prop::collection::vec(
+        (prop::array::uniform::<_, D>(number()), degrees(membership))
+            .prop_map(|(position, degrees)| ControlPoint::new(position, degrees)),
+        count,
+    )
+}
+
+/// A weight: the core's strategy, or any positive finite number.
+fn weight() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        3 => strategies::weight(),
+        1 => number().prop_map(f64::abs).prop_filter("positive", |w| *w > 0.0),
+    ]
+}
+
+/// Knots for `degree` and `count` control points: the core's non-uniform strategy, or sorted
+/// arbitrary numbers (when the core accepts them).
+fn knots(degree: usize, count: usize) -> BoxedStrategy<KnotVector> {
+    let sorted = prop::collection::vec(number(), count + degree + 1).prop_filter_map(
+        "the core refuses the knots",
+        move |mut values| {
+            values.sort_by(f64::total_cmp);
+            KnotVector::new(values, degree, count).ok()
+        },
+    );
+    prop_oneof![3 => strategies::knot_vector(degree, count), 1 => sorted].boxed()
+}
+
+fn curve<const D: usize>(kind: CurveKind, membership: Membership) -> BoxedStrategy<Shape>
+where
+    Shape: From<AnyCurve<D>>,
+{
+    match kind {
+        CurveKind::Bezier => (1usize..=6)
+            .prop_flat_map(move |count| points::<D>(count, membership))
+            .prop_filter_map("invalid Bezier", |p| {
+                Bezier::new(p).ok().map(|c| AnyCurve::Bezier(c).into())
+            })
+            .boxed(),
+        _ => (0usize..=3, 0usize..=4)
+            .prop_flat_map(move |(degree, extra)| {
+                let count = degree + 1 + extra;
+                (
+                    points::<D>(count, membership),
+                    knots(degree, count),
+                    prop::collection::vec(weight(), count),
+                )
+            })
+            .prop_filter_map("invalid spline", move |(p, k, w)| match kind {
+                CurveKind::Nurbs => Nurbs::new(p, w, k).ok().map(|c| AnyCurve::Nurbs(c).into()),
+                _ => BSpline::new(p, k).ok().map(|c| AnyCurve::BSpline(c).into()),
+            })
+            .boxed(),
+    }
+}
+
+fn surface(kind: SurfaceKind, membership: Membership) -> BoxedStrategy<Shape> {
+    (1usize..=3, 1usize..=3)
+        .prop_flat_map(move |(rows, cols)| {
+            let degree = |n: usize| {
+                if kind == SurfaceKind::Bezier {
+                    n - 1..=n - 1
+                } else {
+                    0..=n - 1
+                }
+            };
+            (Just((rows, cols)), degree(rows), degree(cols))
+        })
+        .prop_flat_map(move |((rows, cols), pu, pv)| {
+            (
+                Just((rows, cols)),
+                points::<3>(rows * cols, membership),
+                knots(pu, rows),
+                knots(pv, cols),
+                prop::collection::vec(weight(), rows * cols),
+            )
+        })
+        .prop_filter_map("invalid surface", move |((rows, cols), p, ku, kv, w)| {
+            match kind {
+                SurfaceKind::Bezier => Surface::bezier(rows, cols, p),
+                SurfaceKind::BSpline => Surface::bspline(rows, cols, p, ku, kv),
+                SurfaceKind::Nurbs => Surface::nurbs(rows, cols, p, w, ku, kv),
+            }
+            .ok()
+            .map(Shape::Surface)
+        })
+        .boxed()
+}
+
+fn membership() -> impl Strategy<Value = Membership> {
+    prop::sample::select(vec![
+        Membership::Neutrosophic,
+        Membership::Intuitionistic,
+        Membership::Fuzzy,
+    ])
+}
+
+/// A shape of any kind, and the rule its degrees obey.
+fn shape() -> impl Strategy<Value = (Shape, Membership)> {
+    (0usize..9, membership()).prop_flat_map(|(kind, m)| {
+        let shape = match kind {
+            0 => curve::<2>(CurveKind::Bezier, m),
+            1 => curve::<3>(CurveKind::Bezier, m),
+            2 => curve::<2>(CurveKind::BSpline, m),
+            3 => curve::<3>(CurveKind::BSpline, m),
+            4 => curve::<2>(CurveKind::Nurbs, m),
+            5 => curve::<3>(CurveKind::Nurbs, m),
+            6 => surface(SurfaceKind::Bezier, m),
+            7 => surface(SurfaceKind::BSpline, m),
+            _ => surface(SurfaceKind::Nurbs, m),
+        };
+        (shape, Just(m))
+    })
+}
+
+/// Any text: quotes, backslashes, line ends, control characters, non-ASCII, `#`, padding.
+fn text() -> impl Strategy<Value = String> {
+    prop_oneof![
+        3 => "[A-Za-z0-9_ ]{0,8}",
+        2 => "(?s).{0,12}",
+        1 => prop::sample::select(vec![
+            String::new(),
+            " padded ".to_owned(),
+            "#1".to_owned(),
+            "a,\"b\"".to_owned(),
+            "line\r\nbreak".to_owned(),
+            "tab\tnul\0del\u{7f}c1\u{85}".to_owned(),
+            "\u{feff}bom".to_owned(),
+            "'''\"\"\"\\u0041".to_owned(),
+        ]),
+    ]
+}
+
+/// A model of any kind, with or without name, description and point names.
+fn model() -> impl Strategy<Value = Model> {
+    shape().prop_flat_map(|(shape, membership)| {
+        let count = shape.control_count();
+        (
+            Just(shape),
+            Just(membership),
+            prop::option::of(text()),
+            prop::option::of(text()),
+            prop::option::of(prop::collection::vec(prop::option::of(text()), count)),
+        )
+            .prop_map(|(shape, membership, name, description, names)| {
+                let mut model = Model::new(shape).with_membership(membership).unwrap();
+                if let Some(name) = name {
+                    model = model.with_name(name);
+                }
+                if let Some(description) = description {
+                    model = model.with_description(description);
+                }
+                if let Some(names) = names {
+                    model = model.with_point_names(names).unwrap();
+                }
+                model
+            })
+    })
+}
+
+/// The model a CSV file of `model` holds: no name, no description.
+fn csv_view(model: &Model) -> Model {
+    Model::new(model.shape().clone())
+        .with_membership(model.membership())
+        .unwrap()
+        .with_point_names(model.point_names().to_vec())
+        .unwrap()
+}
+
+/// Whether a CSV cell keeps every point name (the reader trims cells; empty means none).
+fn csv_names_fit(model: &Model) -> bool {
+    model
+        .point_names()
+        .iter()
+        .flatten()
+        .all(|n| !n.is_empty() && n.trim() == n)
+}
+
+/// Writes `model` in `format` and reads it back.
+fn write_read(model: &Model, format: Format) -> Result<Model, TestCaseError> {
+    let text = to_string(model, format).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let options = match format {
+        Format::Csv => model.csv_read_options(),
+        _ => ReadOptions::default(),
+    };
+    parse("m", format, text.as_bytes(), &options)
+        .map_err(|e| TestCaseError::fail(format!("{e}\n{text}")))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 512,
+        failure_persistence: Some(Box::new(
+            proptest::test_runner::FileFailurePersistence::WithSource("regressions"),
+        )),
+        ..ProptestConfig::default()
+    })]
+
+    /// model -> write -> read == model, in every format.
+    #[test]
+    fn model_write_read_is_the_model(model in model()) {
+        // `==` on numbers does not tell -0.0 from 0.0: the written text does, to the bit.
+        let bits = |m: &Model| to_string(m, Format::Toml).unwrap();
+        for format in [Format::Toml, Format::Json] {
+            let back = write_read(&model, format)?;
+            prop_assert_eq!(&back, &model, "{}", format);
+            prop_assert_eq!(bits(&back), bits(&model));
+        }
+        if csv_names_fit(&model) {
+            let back = write_read(&model, Format::Csv)?;
+            prop_assert_eq!(bits(&back), bits(&csv_view(&model)));
+            prop_assert_eq!(back, csv_view(&model));
+        } else {
+            prop_assert!(to_string(&model, Format::Csv).is_err());
+        }
+    }
+
+    /// read -> write -> read: a CSV table written by another program (numbers in `Display`
+    /// form, no exponent) reads, then writes in every format and reads back to the same model.
+    #[test]
+    fn read_write_read_is_stable(model in model()) {
+        let names = model.point_names();
+        let named = names.iter().any(Option::is_some) && csv_names_fit(&model);
+        let membership = model.membership();
+        let mut text = String::new();
+        let header: Vec<&str> = match membership {
+            Membership::Neutrosophic => vec!["T", "I", "F"],
+            Membership::Intuitionistic => vec!["truth", "falsity"],
+            Membership::Fuzzy => vec!["truth"],
+        };
+        let dimension = model.shape().dimension();
+        let weights = model.shape().weights();
+        text.push_str("# written by hand\r\n");
+        if named {
+            text.push_str("Name,");
+        }
+        text.push_str(&["X", "Y", "Z"][..dimension].join(","));
+        text.push(',');
+        text.push_str(&header.join(","));
+        if weights.is_some() {
+            text.push_str(",Weight");
+        }
+        text.push_str("\r\n");
+        let positions: Vec<Vec<f64>> = match model.shape() {
+            Shape::Planar(c) => c.control_points().iter().map(|p| p.position.to_vec()).collect(),
+            Shape::Spatial(c) => c.control_points().iter().map(|p| p.position.to_vec()).collect(),
+            Shape::Surface(s) => s.control_points().iter().map(|p| p.position.to_vec()).collect(),
+        };
+        for (i, (position, degrees)) in positions.iter().zip(model.shape().control_degrees()).enumerate() {
+            let mut cells: Vec<String> = Vec::new();
+            if named {
+                let name = names[i].clone().unwrap_or_default();
+                cells.push(format!("\"{}\"", name.replace('"', "\"\"")));
+            }
+            cells.extend(position.iter().map(|v| format!("{v}")));
+            let [t, i_, f] = degrees.to_array();
+            cells.extend(match membership {
+                Membership::Neutrosophic => vec![t, i_, f],
+                Membership::Intuitionistic => vec![t, f],
+                Membership::Fuzzy => vec![t],
+            }.iter().map(|v| format!("{v}")));
+            if let Some(w) = weights {
+                cells.push(format!("{}", w[i]));
+            }
+            text.push_str(&cells.join(" , "));
+            text.push_str("\r\n");
+        }
+        let first = parse("hand.csv", Format::Csv, text.as_bytes(), &model.csv_read_options())
+            .map_err(|e| TestCaseError::fail(format!("{e}\n{text}")))?;
+        let mut expected = csv_view(&model);
+        if !named {
+            expected = Model::new(model.shape().clone()).with_membership(membership).unwrap();
+        }
+        prop_assert_eq!(&first, &expected);
+        for format in Format::ALL {
+            let second = write_read(&first, format)?;
+            prop_assert_eq!(&second, &first, "{}", format);
+        }
+    }
+}
