@@ -4,8 +4,8 @@ use std::fmt;
 use std::sync::Arc;
 
 use neutrospline::{
-    AnyCurve, Bezier, ControlPoint, CurveKind, CurvePoint, Evaluate, NeutrosophicPoint, Surface,
-    SurfaceKind,
+    uniform_parameter, AnyCurve, Bezier, ControlPoint, CurveKind, CurvePoint, Evaluate,
+    NeutrosophicPoint, Surface, SurfaceKind,
 };
 
 use crate::error::PlotError;
@@ -79,8 +79,7 @@ struct CurveSampler<C, const D: usize>(C);
 
 impl<C: Evaluate<D> + Send + Sync, const D: usize> Sampler for CurveSampler<C, D> {
     fn sample(&self, n: usize) -> Result<Vec<Pt>, PlotError> {
-        let (start, end) = self.0.domain();
-        let ts = parameters(start, end, n);
+        let ts = parameters(self.0.domain(), n);
         let mut out = vec![self.0.start(); ts.len()];
         self.0.evaluate_many(&ts, &mut out)?;
         to_pts(&out, "curve sample")
@@ -94,20 +93,11 @@ enum Geometry {
     Surface(Arc<Surface>),
 }
 
-/// Evenly spaced parameters from `start` to `end` (exactly), `n >= 2` of them.
-fn parameters(start: f64, end: f64, n: usize) -> Vec<f64> {
+/// `n` (at least 2) evenly spaced parameters over `domain`, both ends exact (the core's
+/// [`uniform_parameter`]).
+fn parameters(domain: (f64, f64), n: usize) -> Vec<f64> {
     let n = n.max(2);
-    let last = (n - 1) as f64;
-    // The end parameter is exact; the others are affine in k, never past `end`.
-    (0..n)
-        .map(|k| {
-            if k + 1 == n {
-                end
-            } else {
-                (start + (end - start) * (k as f64 / last)).min(end)
-            }
-        })
-        .collect()
+    (0..n).map(|k| uniform_parameter(k, n, domain)).collect()
 }
 
 /// A surface sampled on an `n x n` grid of parameters: points and unit normals, row `a`
@@ -135,10 +125,8 @@ impl Mesh {
 }
 
 fn sample_surface(surface: &Surface, n: usize) -> Result<Mesh, PlotError> {
-    let (u0, u1) = surface.domain_u();
-    let (v0, v1) = surface.domain_v();
-    let us = parameters(u0, u1, n);
-    let vs = parameters(v0, v1, n);
+    let us = parameters(surface.domain_u(), n);
+    let vs = parameters(surface.domain_v(), n);
     let n = us.len();
     let mut points = Vec::with_capacity(n * n);
     let mut normals = Vec::with_capacity(n * n);
@@ -152,18 +140,9 @@ fn sample_surface(surface: &Surface, n: usize) -> Result<Mesh, PlotError> {
             normals.push(normal);
         }
     }
-    let interior = |knots: &[f64], (lo, hi): (f64, f64)| {
-        let mut k: Vec<f64> = knots
-            .iter()
-            .copied()
-            .filter(|&t| t > lo && t < hi)
-            .collect();
-        k.dedup();
-        k
-    };
     let knots = [
-        interior(surface.knots_u().knots(), (u0, u1)),
-        interior(surface.knots_v().knots(), (v0, v1)),
+        surface.knots_u().interior_breakpoints(),
+        surface.knots_v().interior_breakpoints(),
     ];
     Ok(Mesh {
         n,

@@ -12,7 +12,7 @@
 //! - `plane`: the three degrees over the parameter domain, one heat map per degree, `u`
 //!   across and `v` up, with the knot lines of a spline surface.
 
-use neutrospline::DegreeKind;
+use neutrospline::{uniform_parameter, DegreeKind};
 
 use crate::axes::{Axes2, Axes3};
 use crate::callout::{obstacles_of, place_names, Keep};
@@ -365,8 +365,8 @@ fn add_net(
         let mut run = vec![(p.0, p.1)];
         let mut run_hidden = None;
         for k in 0..NET_PIECES {
-            let t0 = k as f64 / NET_PIECES as f64;
-            let t1 = (k + 1) as f64 / NET_PIECES as f64;
+            let t0 = uniform_parameter(k, NET_PIECES + 1, (0.0, 1.0));
+            let t1 = uniform_parameter(k + 1, NET_PIECES + 1, (0.0, 1.0));
             let hidden = occluder.hides(lerp((t0 + t1) / 2.0));
             let end = lerp(t1);
             if run_hidden.is_some_and(|h| h != hidden) {
