@@ -54,8 +54,8 @@
 //!   (the lanes are flat on the screen; the box keeps the 3-D context).
 //!
 //! For surfaces (positions x, y, z; a `rows x cols` control net), sampled on an `N x N`
-//! grid ([`PlotOptions::with_samples`], default [`DEFAULT_SURFACE_SAMPLES`] = 40 per
-//! direction, at most [`MAX_SURFACE_SAMPLES`]):
+//! grid ([`PlotOptions::with_samples`], default [`PlotOptions::DEFAULT_SURFACE_SAMPLES`] = 40 per
+//! direction, at most [`PlotOptions::MAX_SURFACE_SAMPLES`]):
 //! - `truth`, `indeterminacy`, `falsity`: the surface as a mesh of `(N - 1)^2` quads coloured
 //!   by that degree (viridis, 0 to 1, with a colour bar), shaded by its normals (Lambert
 //!   lighting from the upper left that darkens a face by at most a third, so the colour
@@ -118,15 +118,8 @@ mod view;
 
 pub use error::PlotError;
 pub use font::FONT_FAMILY;
-pub use model::{
-    PlotModel, BEZIER_LABEL, BEZIER_SURFACE_LABEL, BSPLINE_LABEL, BSPLINE_SURFACE_LABEL,
-    CURVE_LABEL, NURBS_LABEL, NURBS_SURFACE_LABEL,
-};
-pub use options::{
-    PlotOptions, DEFAULT_AZIMUTH, DEFAULT_ELEVATION, DEFAULT_HEIGHT, DEFAULT_SAMPLES,
-    DEFAULT_SURFACE_SAMPLES, DEFAULT_WIDTH, MAX_SAMPLES, MAX_SIDE, MAX_SURFACE_SAMPLES,
-    MIN_SAMPLES, MIN_SIDE,
-};
+pub use model::PlotModel;
+pub use options::PlotOptions;
 pub use png::{render_png, svg_to_png};
 pub use render::render_svg;
 pub use view::View;

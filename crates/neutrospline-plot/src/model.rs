@@ -201,20 +201,15 @@ impl fmt::Debug for PlotModel {
     }
 }
 
-/// The label of models made from a [`Bezier`].
-pub const BEZIER_LABEL: &str = "Neutrosophic Bézier curve";
-/// The label of models made from a B-spline ([`AnyCurve::BSpline`]).
-pub const BSPLINE_LABEL: &str = "Neutrosophic B-spline curve";
-/// The label of models made from a NURBS curve ([`AnyCurve::Nurbs`]).
-pub const NURBS_LABEL: &str = "Neutrosophic NURBS curve";
-/// The label of models made by [`PlotModel::from_curve`] and [`PlotModel::from_samples`].
-pub const CURVE_LABEL: &str = "Neutrosophic curve";
-/// The label of models made from a Bézier surface ([`SurfaceKind::Bezier`]).
-pub const BEZIER_SURFACE_LABEL: &str = "Neutrosophic Bézier surface";
-/// The label of models made from a B-spline surface ([`SurfaceKind::BSpline`]).
-pub const BSPLINE_SURFACE_LABEL: &str = "Neutrosophic B-spline surface";
-/// The label of models made from a NURBS surface ([`SurfaceKind::Nurbs`]).
-pub const NURBS_SURFACE_LABEL: &str = "Neutrosophic NURBS surface";
+// The labels of the models by kind, used in default titles ([`PlotModel::label`]);
+// `CURVE_LABEL` is that of models made by `from_curve` and `from_samples`.
+const BEZIER_LABEL: &str = "Neutrosophic Bézier curve";
+const BSPLINE_LABEL: &str = "Neutrosophic B-spline curve";
+const NURBS_LABEL: &str = "Neutrosophic NURBS curve";
+const CURVE_LABEL: &str = "Neutrosophic curve";
+const BEZIER_SURFACE_LABEL: &str = "Neutrosophic Bézier surface";
+const BSPLINE_SURFACE_LABEL: &str = "Neutrosophic B-spline surface";
+const NURBS_SURFACE_LABEL: &str = "Neutrosophic NURBS surface";
 
 impl PlotModel {
     /// A model of any curve kind: `curve` is sampled evenly in its parameter domain when the
@@ -401,7 +396,11 @@ impl PlotModel {
         &self.names
     }
 
-    /// The label used in default titles.
+    /// The label used in default titles: the one set by [`PlotModel::with_label`], else the
+    /// kind of model: "Neutrosophic Bézier curve", "Neutrosophic B-spline curve",
+    /// "Neutrosophic NURBS curve", "Neutrosophic Bézier surface", "Neutrosophic B-spline
+    /// surface", "Neutrosophic NURBS surface", or "Neutrosophic curve" for
+    /// [`PlotModel::from_curve`] and [`PlotModel::from_samples`].
     pub fn label(&self) -> &str {
         &self.label
     }
