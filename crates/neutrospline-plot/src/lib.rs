@@ -98,7 +98,8 @@
 
 #[cfg(test)]
 mod audit;
-mod axes;
+mod axes2;
+mod axes3;
 mod callout;
 mod camera;
 mod error;

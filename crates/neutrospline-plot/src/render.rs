@@ -2,7 +2,8 @@
 
 use neutrospline::DegreeKind;
 
-use crate::axes::{Axes2, Axes3};
+use crate::axes2::Axes2;
+use crate::axes3::Axes3;
 use crate::callout::{draw_callouts, obstacles_of, place_names, Keep, Obstacle};
 use crate::camera::Camera;
 use crate::error::PlotError;

@@ -14,7 +14,8 @@
 
 use neutrospline::{uniform_parameter, DegreeKind};
 
-use crate::axes::{Axes2, Axes3};
+use crate::axes2::Axes2;
+use crate::axes3::Axes3;
 use crate::callout::{obstacles_of, place_names, Keep};
 use crate::layout::{text_centred, ColorBar, Entry, Legend, LegendPlace, Rect, Swatch};
 use crate::model::Mesh;
