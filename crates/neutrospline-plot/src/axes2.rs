@@ -3,6 +3,7 @@
 
 use crate::font::text_width;
 use crate::layout::{text_centred, Rect, TEXT_BOX};
+use crate::model::Pt;
 use crate::svg::{Anchor, Style, SvgWriter, TextStyle};
 use crate::theme::{self, Theme};
 use crate::ticks::{padded, ticks_inside, widen_degenerate, Ticks};
@@ -184,6 +185,18 @@ impl Axes2 {
             f.w + left + half_x,
             f.h + 0.5 * tick + bottom,
         )
+    }
+
+    /// Opens a group clipped to the frame (id `plot-clip`); close it with
+    /// [`SvgWriter::end_group`].
+    pub(crate) fn begin_clip(&self, svg: &mut SvgWriter) {
+        let f = self.frame;
+        svg.begin_clip("plot-clip", f.x, f.y, f.w, f.h);
+    }
+
+    /// Pixel positions of points (their x and y).
+    pub(crate) fn pixels(&self, pts: &[Pt]) -> Vec<(f64, f64)> {
+        pts.iter().map(|p| self.map(p.pos[0], p.pos[1])).collect()
     }
 
     /// Pixel position of data point `(x, y)`.

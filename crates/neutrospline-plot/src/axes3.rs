@@ -520,6 +520,21 @@ impl Axes3 {
     }
 }
 
+/// Relative box edge lengths: the longer horizontal axis is 1, the other follows the data
+/// (at least 0.45), and the vertical axis is `z`.
+pub(crate) fn box_lengths(t: [&Ticks; 2], z: f64) -> [f64; 3] {
+    let (xr, yr) = (t[0].hi - t[0].lo, t[1].hi - t[1].lo);
+    let m = xr.max(yr);
+    [(xr / m).max(0.45), (yr / m).max(0.45), z]
+}
+
+/// Relative box edge lengths following the data (each at least 0.45 of the longest).
+pub(crate) fn box_lengths3(t: [&Ticks; 3]) -> [f64; 3] {
+    let r = t.map(|t| t.hi - t.lo);
+    let m = r[0].max(r[1]).max(r[2]);
+    r.map(|v| (v / m).max(0.45))
+}
+
 /// Convex hull (counter-clockwise in a y-up frame) of a few points.
 fn convex_hull(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
     let mut p: Vec<(f64, f64)> = points.to_vec();

@@ -4,7 +4,7 @@ use std::fmt;
 use std::sync::Arc;
 
 use neutrospline::{
-    uniform_parameter, AnyCurve, Bezier, ControlPoint, CurveKind, CurvePoint, Evaluate,
+    uniform_parameter, AnyCurve, Bezier, ControlPoint, CurveKind, CurvePoint, DegreeKind, Evaluate,
     NeutrosophicPoint, Surface, SurfaceKind,
 };
 
@@ -121,6 +121,16 @@ impl Mesh {
 
     pub(crate) fn normal(&self, a: usize, b: usize) -> Option<[f64; 3]> {
         self.normals[a * self.n + b]
+    }
+
+    /// The degree `kind` of the cell between samples `(a, b)` and `(a + 1, b + 1)`: the mean
+    /// of its four corners.
+    pub(crate) fn cell_degree(&self, a: usize, b: usize, kind: DegreeKind) -> f64 {
+        [(a, b), (a + 1, b), (a + 1, b + 1), (a, b + 1)]
+            .iter()
+            .map(|&(i, j)| self.at(i, j).deg[kind.index()])
+            .sum::<f64>()
+            / 4.0
     }
 }
 
