@@ -3,7 +3,7 @@
 //! - 2-D curve: the three space curves `(x, y, degree)` in one box, each in its colour with
 //!   its own marker shape, above the crisp curve.
 //! - 3-D curve: three panels, one per degree (the curve coloured by it), sharing the colour
-//!   bar, arranged by [`panels`](crate::panels).
+//!   bar, arranged by [`panels`].
 //! - Surface: three meshes, one per degree, arranged alike.
 
 use neutrospline::DegreeKind;
