@@ -5,7 +5,7 @@
 use neutrospline::DegreeKind;
 
 use crate::font::text_width;
-use crate::layout::{support, Rect, BASELINE_FROM_CENTRE};
+use crate::layout::{support, text_centred, Rect, BASELINE_FROM_CENTRE};
 use crate::svg::{Anchor, Color, Style, SvgWriter, TextStyle};
 use crate::theme::{self, Theme};
 
@@ -101,6 +101,15 @@ pub(crate) struct Keep {
 }
 
 impl Keep {
+    /// What to keep clear of: `obstacles`, inside `bounds`, off `avoid` if any.
+    pub(crate) fn new(obstacles: Vec<Obstacle>, bounds: Rect, avoid: Option<Rect>) -> Keep {
+        Keep {
+            obstacles,
+            bounds,
+            avoid: avoid.into_iter().collect(),
+        }
+    }
+
     /// Badness of covering `rect`: area outside the bounds, area over avoided rectangles, and
     /// the number of obstacle segments it meets (weighted by `per_hit`).
     fn cost(&self, rect: &Rect, per_hit: f64) -> f64 {
@@ -305,6 +314,31 @@ fn draw_box(svg: &mut SvgWriter, theme: &Theme, dims: &Dims, c: &Content, rect: 
     }
 }
 
+/// The style of a point's name: bold, on a halo that keeps it readable over the drawing.
+fn name_style(theme: &Theme) -> TextStyle {
+    TextStyle::new(theme.name(), theme::INK)
+        .bold()
+        .halo(theme.s * 7.0)
+        .with_class("point-name")
+}
+
+/// Draws `names` of the points at `at` (pixels), each placed by [`place_names`], in a group
+/// `point-names`.
+pub(crate) fn draw_names(
+    svg: &mut SvgWriter,
+    theme: &Theme,
+    at: &[(f64, f64)],
+    names: &[String],
+    keep: &Keep,
+) {
+    svg.begin_group("point-names");
+    let centres = place_names(theme, at, names, keep);
+    for (c, name) in centres.iter().zip(names) {
+        text_centred(svg, *c, name, &name_style(theme));
+    }
+    svg.end_group();
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -340,12 +374,7 @@ pub(crate) fn obstacles_of(pts: &[(f64, f64)], clearance: f64) -> Vec<Obstacle> 
 
 /// Centres for the names of points at `at`: each among 8 spots around its point, chosen to
 /// keep clear of what `keep` says and of the other points and names.
-pub(crate) fn place_names(
-    theme: &Theme,
-    at: &[(f64, f64)],
-    names: &[String],
-    keep: &Keep,
-) -> Vec<(f64, f64)> {
+fn place_names(theme: &Theme, at: &[(f64, f64)], names: &[String], keep: &Keep) -> Vec<(f64, f64)> {
     let r = theme.marker_r();
     let fs = theme.name();
     let h = crate::layout::TEXT_BOX * fs;

@@ -1,5 +1,7 @@
 //! Figure layout: rectangles, text measuring and wrapping, title, caption and legend.
 
+use neutrospline::DegreeKind;
+
 use crate::font::text_width;
 use crate::svg::{Anchor, Color, Style, SvgWriter, TextStyle};
 use crate::theme::{self, Marker, Theme};
@@ -134,6 +136,27 @@ pub(crate) fn support(d: (f64, f64), w: f64, h: f64) -> f64 {
     d.0.abs() * w / 2.0 + d.1.abs() * h / 2.0
 }
 
+/// The median distance in pixels from a point to its nearest neighbour (infinite for fewer
+/// than two points): how crowded the control points are on screen.
+pub(crate) fn median_spacing(at: &[(f64, f64)]) -> f64 {
+    if at.len() < 2 {
+        return f64::INFINITY;
+    }
+    let mut nearest: Vec<f64> = at
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            at.iter()
+                .enumerate()
+                .filter(|(j, _)| *j != i)
+                .map(|(_, q)| ((p.0 - q.0).powi(2) + (p.1 - q.1).powi(2)).sqrt())
+                .fold(f64::INFINITY, f64::min)
+        })
+        .collect();
+    nearest.sort_by(f64::total_cmp);
+    nearest[nearest.len() / 2]
+}
+
 /// Draws a marker of the given shape.
 pub(crate) fn marker(svg: &mut SvgWriter, shape: Marker, c: (f64, f64), r: f64, style: &Style) {
     match shape {
@@ -185,6 +208,54 @@ pub(crate) enum Swatch {
 pub(crate) struct Entry {
     pub swatch: Swatch,
     pub label: String,
+}
+
+impl Entry {
+    /// A line sample, optionally dashed.
+    pub(crate) fn line(color: Color, width: f64, dash: Option<(f64, f64)>, label: &str) -> Entry {
+        Entry {
+            swatch: Swatch::Line {
+                color,
+                width,
+                dash,
+                marker: None,
+            },
+            label: label.to_string(),
+        }
+    }
+
+    /// A control polygon's sample: a dashed line with a marker of `shape` filled with `fill`.
+    pub(crate) fn polygon(
+        theme: &Theme,
+        color: Color,
+        shape: Marker,
+        fill: Color,
+        label: &str,
+    ) -> Entry {
+        Entry {
+            swatch: Swatch::Line {
+                color,
+                width: theme.polygon_w(),
+                dash: Some(theme.dash()),
+                marker: Some((shape, fill)),
+            },
+            label: label.to_string(),
+        }
+    }
+
+    /// A band sample per degree (truth, indeterminacy, falsity in their colours), labelled
+    /// by `label`.
+    pub(crate) fn bands(label: impl Fn(DegreeKind) -> String) -> Vec<Entry> {
+        DegreeKind::ALL
+            .iter()
+            .map(|&kind| Entry {
+                swatch: Swatch::Band {
+                    color: theme::degree_color(kind),
+                },
+                label: label(kind),
+            })
+            .collect()
+    }
 }
 
 /// A vertical colour bar for degree values in \[0, 1\].

@@ -4,11 +4,20 @@
 //! (control points; truth, indeterminacy and falsity curves; all three together), a flat
 //! `plane` view, and the same six views for tensor-product surfaces.
 //!
-//! A [`PlotModel`] holds what to draw: a curve (any kind implementing
-//! [`neutrospline::Evaluate`], sampled when drawn, or precomputed samples) or a surface
-//! ([`PlotModel::from_surface`]: Bézier, B-spline or NURBS), its control points and optionally
-//! their names. [`render_svg`] draws one [`View`] of it with [`PlotOptions`]; [`svg_to_png`]
-//! and [`render_png`] rasterize.
+//! ## The public items
+//! - [`PlotModel`]: what to draw: a curve (any kind implementing [`neutrospline::Evaluate`],
+//!   sampled when drawn, or precomputed samples) or a surface ([`PlotModel::from_surface`]:
+//!   Bézier, B-spline or NURBS), its control points and optionally their names; its
+//!   [`label`](PlotModel::label) (the kind of model) goes into the default titles.
+//! - [`PlotOptions`]: size, title, caption, camera and sampling, with the defaults and limits
+//!   as associated constants ([`PlotOptions::DEFAULT_WIDTH`], [`PlotOptions::MAX_SAMPLES`],
+//!   [`PlotOptions::MIN_SIDE`], ...).
+//! - [`View`]: which figure to draw (`controls`, `truth`, `indeterminacy`, `falsity`, `all`,
+//!   `plane`); parsed from and displayed as those names. It is `#[non_exhaustive]`: views may
+//!   be added, so a `match` on it needs a wildcard arm.
+//! - [`render_svg`] draws one view of a model with options; [`render_png`] draws and
+//!   rasterizes it, [`svg_to_png`] rasterizes an SVG document.
+//! - [`PlotError`]: every error of the above; [`FONT_FAMILY`]: the bundled font's family name.
 //!
 //! ```
 //! use neutrospline_plot::{render_png, render_svg, PlotModel, PlotOptions, View};
@@ -54,8 +63,8 @@
 //!   (the lanes are flat on the screen; the box keeps the 3-D context).
 //!
 //! For surfaces (positions x, y, z; a `rows x cols` control net), sampled on an `N x N`
-//! grid ([`PlotOptions::with_samples`], default [`DEFAULT_SURFACE_SAMPLES`] = 40 per
-//! direction, at most [`MAX_SURFACE_SAMPLES`]):
+//! grid ([`PlotOptions::with_samples`], default [`PlotOptions::DEFAULT_SURFACE_SAMPLES`] = 40
+//! per direction, at most [`PlotOptions::MAX_SURFACE_SAMPLES`]):
 //! - `truth`, `indeterminacy`, `falsity`: the surface as a mesh of `(N - 1)^2` quads coloured
 //!   by that degree (viridis, 0 to 1, with a colour bar), shaded by its normals (Lambert
 //!   lighting from the upper left that darkens a face by at most a third, so the colour
@@ -81,6 +90,31 @@
 //! ([`PlotOptions::with_camera`]; azimuth measured from the x axis in the x-y plane,
 //! elevation above it) and draw back panes, grid and labels like common 3-D plotting tools.
 //!
+//! ## Inside the crate
+//! [`render_svg`] (module `render`) checks the options, samples the model and builds the
+//! context every view draws from (`ctx`), then hands it to the view. The views sit behind one
+//! dispatch, `views::figure`, the only `match` on [`View`] that draws: each view is one
+//! module of `views` that draws its three cases (a 2-D curve, a 3-D curve, a surface) and its
+//! default title:
+//! - `views::controls`: `controls`; `views::degree`: `truth`, `indeterminacy`, `falsity`;
+//!   `views::all`: `all`; `views::plane`: `plane`.
+//!
+//! They draw with shared helpers, which never import a view module:
+//! - figure pieces: `curve3d` (a 3-D curve in its box: shadow, drop lines, control polygon,
+//!   the curve coloured by a degree), `lifted` (2-D curves with a degree as the height),
+//!   `mesh` (a surface as a shaded mesh), `net` (a surface's control net, faint where the
+//!   surface hides it), `glyph` (degree glyphs of a surface's control points), `callout`
+//!   (callouts and point names placed clear of the drawing), `panels` (the three-panel
+//!   figures);
+//! - layout and axes: `layout` (rectangles, text, legends, colour bars, title and caption),
+//!   `axes2` (2-D axes at equal scale), `axes3` (the 3-D box), `ticks`, `camera`;
+//! - output: `scene` (depth-sorted drawing), `svg` (the SVG writer), `theme` (sizes and
+//!   colours), `font` (the bundled font and its metrics), `png` (rasterizing);
+//! - the public types: `model`, `options`, `view`, `error`.
+//!
+//! Adding a view means adding its variant and name to [`View`], one module in `views`, and
+//! its arm in `views::figure`.
+//!
 //! ## Output
 //! SVG is written by a small deterministic writer (coordinates with two decimals, fixed
 //! element order), with real `<text>` elements in the bundled DejaVu Sans ([`FONT_FAMILY`],
@@ -98,35 +132,35 @@
 
 #[cfg(test)]
 mod audit;
-mod axes;
+mod axes2;
+mod axes3;
 mod callout;
 mod camera;
+mod ctx;
+mod curve3d;
 mod error;
 mod font;
+mod glyph;
 mod layout;
+mod lifted;
+mod mesh;
 mod model;
+mod net;
 mod options;
 mod panels;
 mod png;
 mod render;
 mod scene;
-mod surface;
 mod svg;
 mod theme;
 mod ticks;
 mod view;
+mod views;
 
 pub use error::PlotError;
 pub use font::FONT_FAMILY;
-pub use model::{
-    PlotModel, BEZIER_LABEL, BEZIER_SURFACE_LABEL, BSPLINE_LABEL, BSPLINE_SURFACE_LABEL,
-    CURVE_LABEL, NURBS_LABEL, NURBS_SURFACE_LABEL,
-};
-pub use options::{
-    PlotOptions, DEFAULT_AZIMUTH, DEFAULT_ELEVATION, DEFAULT_HEIGHT, DEFAULT_SAMPLES,
-    DEFAULT_SURFACE_SAMPLES, DEFAULT_WIDTH, MAX_SAMPLES, MAX_SIDE, MAX_SURFACE_SAMPLES,
-    MIN_SAMPLES, MIN_SIDE,
-};
+pub use model::PlotModel;
+pub use options::PlotOptions;
 pub use png::{render_png, svg_to_png};
 pub use render::render_svg;
 pub use view::View;

@@ -4,8 +4,8 @@ use std::fmt;
 use std::sync::Arc;
 
 use neutrospline::{
-    AnyCurve, Bezier, ControlPoint, CurveKind, CurvePoint, Evaluate, NeutrosophicPoint, Surface,
-    SurfaceKind,
+    uniform_parameter, AnyCurve, Bezier, ControlPoint, CurveKind, CurvePoint, DegreeKind, Evaluate,
+    NeutrosophicPoint, Surface, SurfaceKind,
 };
 
 use crate::error::PlotError;
@@ -79,8 +79,7 @@ struct CurveSampler<C, const D: usize>(C);
 
 impl<C: Evaluate<D> + Send + Sync, const D: usize> Sampler for CurveSampler<C, D> {
     fn sample(&self, n: usize) -> Result<Vec<Pt>, PlotError> {
-        let (start, end) = self.0.domain();
-        let ts = parameters(start, end, n);
+        let ts = parameters(self.0.domain(), n);
         let mut out = vec![self.0.start(); ts.len()];
         self.0.evaluate_many(&ts, &mut out)?;
         to_pts(&out, "curve sample")
@@ -94,20 +93,11 @@ enum Geometry {
     Surface(Arc<Surface>),
 }
 
-/// Evenly spaced parameters from `start` to `end` (exactly), `n >= 2` of them.
-fn parameters(start: f64, end: f64, n: usize) -> Vec<f64> {
+/// `n` (at least 2) evenly spaced parameters over `domain`, both ends exact (the core's
+/// [`uniform_parameter`]).
+fn parameters(domain: (f64, f64), n: usize) -> Vec<f64> {
     let n = n.max(2);
-    let last = (n - 1) as f64;
-    // The end parameter is exact; the others are affine in k, never past `end`.
-    (0..n)
-        .map(|k| {
-            if k + 1 == n {
-                end
-            } else {
-                (start + (end - start) * (k as f64 / last)).min(end)
-            }
-        })
-        .collect()
+    (0..n).map(|k| uniform_parameter(k, n, domain)).collect()
 }
 
 /// A surface sampled on an `n x n` grid of parameters: points and unit normals, row `a`
@@ -132,13 +122,21 @@ impl Mesh {
     pub(crate) fn normal(&self, a: usize, b: usize) -> Option<[f64; 3]> {
         self.normals[a * self.n + b]
     }
+
+    /// The degree `kind` of the cell between samples `(a, b)` and `(a + 1, b + 1)`: the mean
+    /// of its four corners.
+    pub(crate) fn cell_degree(&self, a: usize, b: usize, kind: DegreeKind) -> f64 {
+        [(a, b), (a + 1, b), (a + 1, b + 1), (a, b + 1)]
+            .iter()
+            .map(|&(i, j)| self.at(i, j).deg[kind.index()])
+            .sum::<f64>()
+            / 4.0
+    }
 }
 
 fn sample_surface(surface: &Surface, n: usize) -> Result<Mesh, PlotError> {
-    let (u0, u1) = surface.domain_u();
-    let (v0, v1) = surface.domain_v();
-    let us = parameters(u0, u1, n);
-    let vs = parameters(v0, v1, n);
+    let us = parameters(surface.domain_u(), n);
+    let vs = parameters(surface.domain_v(), n);
     let n = us.len();
     let mut points = Vec::with_capacity(n * n);
     let mut normals = Vec::with_capacity(n * n);
@@ -152,18 +150,9 @@ fn sample_surface(surface: &Surface, n: usize) -> Result<Mesh, PlotError> {
             normals.push(normal);
         }
     }
-    let interior = |knots: &[f64], (lo, hi): (f64, f64)| {
-        let mut k: Vec<f64> = knots
-            .iter()
-            .copied()
-            .filter(|&t| t > lo && t < hi)
-            .collect();
-        k.dedup();
-        k
-    };
     let knots = [
-        interior(surface.knots_u().knots(), (u0, u1)),
-        interior(surface.knots_v().knots(), (v0, v1)),
+        surface.knots_u().interior_breakpoints(),
+        surface.knots_v().interior_breakpoints(),
     ];
     Ok(Mesh {
         n,
@@ -222,20 +211,15 @@ impl fmt::Debug for PlotModel {
     }
 }
 
-/// The label of models made from a [`Bezier`].
-pub const BEZIER_LABEL: &str = "Neutrosophic Bézier curve";
-/// The label of models made from a B-spline ([`AnyCurve::BSpline`]).
-pub const BSPLINE_LABEL: &str = "Neutrosophic B-spline curve";
-/// The label of models made from a NURBS curve ([`AnyCurve::Nurbs`]).
-pub const NURBS_LABEL: &str = "Neutrosophic NURBS curve";
-/// The label of models made by [`PlotModel::from_curve`] and [`PlotModel::from_samples`].
-pub const CURVE_LABEL: &str = "Neutrosophic curve";
-/// The label of models made from a Bézier surface ([`SurfaceKind::Bezier`]).
-pub const BEZIER_SURFACE_LABEL: &str = "Neutrosophic Bézier surface";
-/// The label of models made from a B-spline surface ([`SurfaceKind::BSpline`]).
-pub const BSPLINE_SURFACE_LABEL: &str = "Neutrosophic B-spline surface";
-/// The label of models made from a NURBS surface ([`SurfaceKind::Nurbs`]).
-pub const NURBS_SURFACE_LABEL: &str = "Neutrosophic NURBS surface";
+// The labels of the models by kind, used in default titles ([`PlotModel::label`]);
+// `CURVE_LABEL` is that of models made by `from_curve` and `from_samples`.
+const BEZIER_LABEL: &str = "Neutrosophic Bézier curve";
+const BSPLINE_LABEL: &str = "Neutrosophic B-spline curve";
+const NURBS_LABEL: &str = "Neutrosophic NURBS curve";
+const CURVE_LABEL: &str = "Neutrosophic curve";
+const BEZIER_SURFACE_LABEL: &str = "Neutrosophic Bézier surface";
+const BSPLINE_SURFACE_LABEL: &str = "Neutrosophic B-spline surface";
+const NURBS_SURFACE_LABEL: &str = "Neutrosophic NURBS surface";
 
 impl PlotModel {
     /// A model of any curve kind: `curve` is sampled evenly in its parameter domain when the
@@ -422,7 +406,11 @@ impl PlotModel {
         &self.names
     }
 
-    /// The label used in default titles.
+    /// The label used in default titles: the one set by [`PlotModel::with_label`], else the
+    /// kind of model: "Neutrosophic Bézier curve", "Neutrosophic B-spline curve",
+    /// "Neutrosophic NURBS curve", "Neutrosophic Bézier surface", "Neutrosophic B-spline
+    /// surface", "Neutrosophic NURBS surface", or "Neutrosophic curve" for
+    /// [`PlotModel::from_curve`] and [`PlotModel::from_samples`].
     pub fn label(&self) -> &str {
         &self.label
     }

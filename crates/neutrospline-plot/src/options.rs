@@ -2,34 +2,18 @@
 
 use crate::error::PlotError;
 
-/// Default image width in pixels.
-pub const DEFAULT_WIDTH: u32 = 1600;
-/// Default image height in pixels.
-pub const DEFAULT_HEIGHT: u32 = 1200;
-/// Default camera azimuth in degrees (measured in the x-y plane from the x axis).
-pub const DEFAULT_AZIMUTH: f64 = -55.0;
-/// Default camera elevation in degrees (above the x-y plane).
-pub const DEFAULT_ELEVATION: f64 = 25.0;
-/// Default number of curve samples.
-pub const DEFAULT_SAMPLES: usize = 200;
-/// Default number of surface samples per parameter direction (a 40 x 40 grid, 39 x 39 quads).
-pub const DEFAULT_SURFACE_SAMPLES: usize = 40;
-/// Largest number of surface samples per direction accepted (keeps an SVG near 1 MB).
-pub const MAX_SURFACE_SAMPLES: usize = 100;
-
-/// Smallest image side accepted, in pixels.
-pub const MIN_SIDE: u32 = 64;
-/// Largest image side accepted, in pixels.
-pub const MAX_SIDE: u32 = 16384;
-/// Smallest number of curve samples accepted.
-pub const MIN_SAMPLES: usize = 2;
-/// Largest number of curve samples accepted.
-pub const MAX_SAMPLES: usize = 100_000;
-
 /// How to draw a figure: size, texts, camera and sampling.
 ///
 /// Every length in a figure (fonts, lines, markers, margins) scales with
 /// `min(width / 1600, height / 1200)`, so a figure looks the same at any size.
+///
+/// The defaults and the limits that [`PlotOptions::validate`] enforces are associated
+/// constants: the size ([`PlotOptions::DEFAULT_WIDTH`], [`PlotOptions::DEFAULT_HEIGHT`], each
+/// side within [`PlotOptions::MIN_SIDE`]..=[`PlotOptions::MAX_SIDE`]), the camera
+/// ([`PlotOptions::DEFAULT_AZIMUTH`], [`PlotOptions::DEFAULT_ELEVATION`]) and the sampling
+/// ([`PlotOptions::DEFAULT_SAMPLES`] curve points, at most [`PlotOptions::MAX_SAMPLES`];
+/// [`PlotOptions::DEFAULT_SURFACE_SAMPLES`] surface samples per direction, at most
+/// [`PlotOptions::MAX_SURFACE_SAMPLES`]; at least [`PlotOptions::MIN_SAMPLES`] for both).
 ///
 /// ```
 /// use neutrospline_plot::PlotOptions;
@@ -39,6 +23,7 @@ pub const MAX_SAMPLES: usize = 100_000;
 ///     .with_camera(-60.0, 30.0);
 /// assert_eq!(options.width(), 800);
 /// assert_eq!(options.title(), Some("Example 1"));
+/// assert_eq!(PlotOptions::default().height(), PlotOptions::DEFAULT_HEIGHT);
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlotOptions {
@@ -55,18 +40,42 @@ pub struct PlotOptions {
 impl Default for PlotOptions {
     fn default() -> PlotOptions {
         PlotOptions {
-            width: DEFAULT_WIDTH,
-            height: DEFAULT_HEIGHT,
+            width: PlotOptions::DEFAULT_WIDTH,
+            height: PlotOptions::DEFAULT_HEIGHT,
             title: None,
             caption: None,
-            azimuth: DEFAULT_AZIMUTH,
-            elevation: DEFAULT_ELEVATION,
+            azimuth: PlotOptions::DEFAULT_AZIMUTH,
+            elevation: PlotOptions::DEFAULT_ELEVATION,
             samples: None,
         }
     }
 }
 
 impl PlotOptions {
+    /// Default image width in pixels.
+    pub const DEFAULT_WIDTH: u32 = 1600;
+    /// Default image height in pixels.
+    pub const DEFAULT_HEIGHT: u32 = 1200;
+    /// Smallest image side accepted, in pixels.
+    pub const MIN_SIDE: u32 = 64;
+    /// Largest image side accepted, in pixels.
+    pub const MAX_SIDE: u32 = 16384;
+    /// Default camera azimuth in degrees (measured in the x-y plane from the x axis).
+    pub const DEFAULT_AZIMUTH: f64 = -55.0;
+    /// Default camera elevation in degrees (above the x-y plane).
+    pub const DEFAULT_ELEVATION: f64 = 25.0;
+    /// Default number of curve samples.
+    pub const DEFAULT_SAMPLES: usize = 200;
+    /// Smallest number of samples accepted (curves, and surfaces per direction).
+    pub const MIN_SAMPLES: usize = 2;
+    /// Largest number of curve samples accepted.
+    pub const MAX_SAMPLES: usize = 100_000;
+    /// Default number of surface samples per parameter direction (a 40 x 40 grid, 39 x 39
+    /// quads).
+    pub const DEFAULT_SURFACE_SAMPLES: usize = 40;
+    /// Largest number of surface samples per direction accepted (keeps an SVG near 1 MB).
+    pub const MAX_SURFACE_SAMPLES: usize = 100;
+
     /// The same as [`PlotOptions::default`].
     pub fn new() -> PlotOptions {
         PlotOptions::default()
@@ -123,9 +132,9 @@ impl PlotOptions {
     }
 
     /// Sets the number of points at which a curve is evaluated (default 200, evenly spaced in
-    /// the parameter), or for a surface the number per parameter direction (default 40, at
-    /// most [`MAX_SURFACE_SAMPLES`]): the mesh is `samples x samples` points. Models built
-    /// from samples are drawn as given.
+    /// the parameter, at most [`PlotOptions::MAX_SAMPLES`]), or for a surface the number per
+    /// parameter direction (default 40, at most [`PlotOptions::MAX_SURFACE_SAMPLES`]): the
+    /// mesh is `samples x samples` points. Models built from samples are drawn as given.
     pub fn with_samples(mut self, samples: usize) -> PlotOptions {
         self.samples = Some(samples);
         self
@@ -161,30 +170,30 @@ impl PlotOptions {
         self.elevation
     }
 
-    /// Number of curve samples: the one set, else [`DEFAULT_SAMPLES`].
+    /// Number of curve samples: the one set, else [`PlotOptions::DEFAULT_SAMPLES`].
     pub fn samples(&self) -> usize {
-        self.samples.unwrap_or(DEFAULT_SAMPLES)
+        self.samples.unwrap_or(PlotOptions::DEFAULT_SAMPLES)
     }
 
     /// Number of surface samples per parameter direction: the one set, else
-    /// [`DEFAULT_SURFACE_SAMPLES`].
+    /// [`PlotOptions::DEFAULT_SURFACE_SAMPLES`].
     pub fn surface_samples(&self) -> usize {
-        self.samples.unwrap_or(DEFAULT_SURFACE_SAMPLES)
+        self.samples.unwrap_or(PlotOptions::DEFAULT_SURFACE_SAMPLES)
     }
 
     /// Checks the options for drawing a surface: [`PlotOptions::validate`], and at most
-    /// [`MAX_SURFACE_SAMPLES`] samples per direction.
+    /// [`PlotOptions::MAX_SURFACE_SAMPLES`] samples per direction.
     ///
     /// # Errors
     /// Those of [`PlotOptions::validate`]; [`PlotError::InvalidSamples`] above the maximum.
     pub fn validate_surface(&self) -> Result<(), PlotError> {
         self.validate()?;
         let n = self.surface_samples();
-        if n > MAX_SURFACE_SAMPLES {
+        if n > PlotOptions::MAX_SURFACE_SAMPLES {
             return Err(PlotError::InvalidSamples {
                 samples: n,
-                min: MIN_SAMPLES,
-                max: MAX_SURFACE_SAMPLES,
+                min: PlotOptions::MIN_SAMPLES,
+                max: PlotOptions::MAX_SURFACE_SAMPLES,
             });
         }
         Ok(())
@@ -197,11 +206,11 @@ impl PlotOptions {
     /// [`PlotError::InvalidCamera`].
     pub fn validate(&self) -> Result<(), PlotError> {
         check_size(self.width, self.height)?;
-        if !(MIN_SAMPLES..=MAX_SAMPLES).contains(&self.samples()) {
+        if !(PlotOptions::MIN_SAMPLES..=PlotOptions::MAX_SAMPLES).contains(&self.samples()) {
             return Err(PlotError::InvalidSamples {
                 samples: self.samples(),
-                min: MIN_SAMPLES,
-                max: MAX_SAMPLES,
+                min: PlotOptions::MIN_SAMPLES,
+                max: PlotOptions::MAX_SAMPLES,
             });
         }
         if !self.azimuth.is_finite() {
@@ -223,15 +232,15 @@ impl PlotOptions {
 }
 
 pub(crate) fn check_size(width: u32, height: u32) -> Result<(), PlotError> {
-    let ok = |s: u32| (MIN_SIDE..=MAX_SIDE).contains(&s);
+    let ok = |s: u32| (PlotOptions::MIN_SIDE..=PlotOptions::MAX_SIDE).contains(&s);
     if ok(width) && ok(height) {
         Ok(())
     } else {
         Err(PlotError::InvalidSize {
             width,
             height,
-            min: MIN_SIDE,
-            max: MAX_SIDE,
+            min: PlotOptions::MIN_SIDE,
+            max: PlotOptions::MAX_SIDE,
         })
     }
 }

@@ -7,14 +7,18 @@
 //! whose smallest panel is drawn at the largest scale wins (ties go to the grid). Each panel
 //! title sits right above its drawing.
 
-use crate::layout::{Frame, Legend, LegendPlace, Rect};
-use crate::theme::Theme;
+use neutrospline::DegreeKind;
+
+use crate::ctx::Ctx;
+use crate::layout::{text_centred, Frame, Legend, LegendPlace, Rect};
+use crate::svg::{SvgWriter, TextStyle};
+use crate::theme::{self, Theme};
 
 /// Shortest colour bar, relative to the default length, before an arrangement is rejected.
 const MIN_BAR: f64 = 0.22;
 
 /// Where the three panels and the legend of an `all` figure go.
-pub(crate) struct Panels {
+struct Panels {
     /// Title, caption and the placed legend.
     pub frame: Frame,
     /// One cell per degree (truth, indeterminacy, falsity), panel title included.
@@ -25,17 +29,17 @@ pub(crate) struct Panels {
 
 impl Panels {
     /// Height of a panel title row.
-    pub(crate) fn head(theme: &Theme) -> f64 {
+    fn head(theme: &Theme) -> f64 {
         1.3 * theme.subtitle()
     }
 
     /// The drawing area of panel `j`: its cell below the panel title.
-    pub(crate) fn area(&self, j: usize, theme: &Theme) -> Rect {
+    fn area(&self, j: usize, theme: &Theme) -> Rect {
         area_of(&self.cells[j], theme)
     }
 
     /// The centre of panel `j`'s title: right above its drawing, inside its cell.
-    pub(crate) fn title_centre(&self, j: usize, theme: &Theme) -> (f64, f64) {
+    fn title_centre(&self, j: usize, theme: &Theme) -> (f64, f64) {
         let c = &self.cells[j];
         let highest = c.y + 0.5 * theme.subtitle();
         (
@@ -149,7 +153,7 @@ fn arrange(
 /// Chooses the arrangement whose smallest panel is largest: `fit` gives the scale at which a
 /// panel fills a drawing area and the top of what it then draws (pixels); `frame` builds the
 /// figure's frame for a legend.
-pub(crate) fn choose(
+fn choose(
     theme: &Theme,
     legend: &Legend,
     frame: &dyn Fn(Legend, LegendPlace) -> Frame,
@@ -174,4 +178,37 @@ pub(crate) fn choose(
         Some((_, _, panels)) => panels,
         None => arrange(Arrangement::Grid, theme, legend, frame).0,
     }
+}
+
+/// A figure of three panels, one per degree (truth, indeterminacy, falsity), each under its
+/// title, arranged by [`choose`] with the shared `legend`: `fit` gives the scale at which a
+/// panel fills an area and the top of its drawing, `panel` draws the panel of a degree into
+/// an area.
+pub(crate) fn figure(
+    ctx: &Ctx,
+    legend: &Legend,
+    fit: &dyn Fn(Rect) -> (f64, f64),
+    panel: &dyn Fn(&mut SvgWriter, Rect, DegreeKind),
+) -> String {
+    let th = &ctx.theme;
+    let layout = choose(th, legend, &|legend, place| ctx.frame(legend, place), fit);
+    let mut svg = ctx.svg();
+    for (j, kind) in DegreeKind::ALL.iter().enumerate() {
+        panel_title(&mut svg, th, layout.title_centre(j, th), *kind);
+        panel(&mut svg, layout.area(j, th), *kind);
+    }
+    layout.frame.draw(&mut svg, th);
+    svg.finish()
+}
+
+/// The title of one panel of an `all` figure: the degree's name in its colour.
+fn panel_title(svg: &mut SvgWriter, th: &Theme, at: (f64, f64), kind: DegreeKind) {
+    text_centred(
+        svg,
+        at,
+        kind.name(),
+        &TextStyle::new(th.subtitle(), theme::degree_color(kind))
+            .bold()
+            .with_class("panel-title"),
+    );
 }

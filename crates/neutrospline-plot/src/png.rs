@@ -31,8 +31,8 @@ pub fn svg_to_png(svg: &str, width: u32, height: u32) -> Result<Vec<u8>, PlotErr
     let mut pixmap = tiny_skia::Pixmap::new(width, height).ok_or(PlotError::InvalidSize {
         width,
         height,
-        min: crate::options::MIN_SIDE,
-        max: crate::options::MAX_SIDE,
+        min: PlotOptions::MIN_SIDE,
+        max: PlotOptions::MAX_SIDE,
     })?;
     pixmap.fill(tiny_skia::Color::WHITE);
     let size = tree.size();

@@ -4,6 +4,9 @@ use crate::layout::marker;
 use crate::svg::{Color, Style, SvgWriter};
 use crate::theme::Marker;
 
+/// Segments per depth-sorted chunk of a curve.
+pub(crate) const CHUNK: usize = 6;
+
 /// Something to draw, already projected to pixels.
 pub(crate) enum Shape {
     Polyline(Vec<(f64, f64)>, Style),
@@ -86,6 +89,11 @@ impl Scene {
             draw_shape(svg, p.shape);
         }
     }
+}
+
+/// Projected points (pixels and depth) as pixels.
+pub(crate) fn flat(pts: &[(f64, f64, f64)]) -> Vec<(f64, f64)> {
+    pts.iter().map(|p| (p.0, p.1)).collect()
 }
 
 fn draw_shape(svg: &mut SvgWriter, shape: Shape) {

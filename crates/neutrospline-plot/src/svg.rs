@@ -6,6 +6,8 @@
 
 use std::fmt::Write as _;
 
+use neutrospline::uniform_parameter;
+
 use crate::font::FONT_FAMILY_CSS;
 
 /// An sRGB colour.
@@ -456,13 +458,12 @@ impl SvgWriter {
             self.out,
             "<defs><linearGradient id=\"{id}\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">"
         );
-        let last = stops.len().saturating_sub(1).max(1) as f64;
         for (i, c) in stops.iter().enumerate() {
             self.indent();
             let _ = writeln!(
                 self.out,
                 " <stop offset=\"{}\" stop-color=\"{}\"/>",
-                num(i as f64 / last),
+                num(uniform_parameter(i, stops.len(), (0.0, 1.0))),
                 c.hex()
             );
         }

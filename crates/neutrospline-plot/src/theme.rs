@@ -2,7 +2,7 @@
 
 use neutrospline::DegreeKind;
 
-use crate::svg::Color;
+use crate::svg::{Color, Style};
 
 /// Text colour.
 pub(crate) const INK: Color = Color(0x1a, 0x1a, 0x1a);
@@ -100,6 +100,11 @@ pub(crate) fn unit(v: f64) -> f64 {
     } else {
         0.0
     }
+}
+
+/// The style of a control point's marker: `fill` in a dark outline.
+pub(crate) fn marker_style(theme: &Theme, fill: Color) -> Style {
+    Style::stroke(CRISP, theme.s * 1.8).with_fill(fill)
 }
 
 /// Sizes of one figure: every length is a size at 1600 x 1200 times the figure's scale.

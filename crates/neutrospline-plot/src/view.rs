@@ -24,7 +24,11 @@ use crate::error::PlotError;
 /// assert_eq!(view.to_string(), "truth");
 /// # Ok::<(), neutrospline_plot::PlotError>(())
 /// ```
+///
+/// More views may come: the enum is `#[non_exhaustive]`, so a `match` on it outside this crate
+/// needs a wildcard arm; [`View::ALL`] lists the views there are.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum View {
     /// The control points with their degrees (paper Fig. 1).
     Controls,

@@ -3,10 +3,7 @@
 //! the sample limit.
 
 use neutrospline::{ControlPoint, Degrees, KnotVector, Surface};
-use neutrospline_plot::{
-    render_png, render_svg, PlotError, PlotModel, PlotOptions, View, BEZIER_SURFACE_LABEL,
-    BSPLINE_SURFACE_LABEL, MAX_SURFACE_SAMPLES, NURBS_SURFACE_LABEL,
-};
+use neutrospline_plot::{render_png, render_svg, PlotError, PlotModel, PlotOptions, View};
 
 fn point(p: [f64; 3], d: [f64; 3]) -> ControlPoint<3> {
     ControlPoint::new(p, Degrees::new(d[0], d[1], d[2]).unwrap())
@@ -97,9 +94,9 @@ fn group<'a>(svg: &'a str, class: &str) -> &'a str {
 #[test]
 fn surfaces_model_labels_and_grid() {
     for (surface, label, grid) in [
-        (bicubic(), BEZIER_SURFACE_LABEL, (4, 4)),
-        (bspline(), BSPLINE_SURFACE_LABEL, (4, 4)),
-        (quarter_cylinder(), NURBS_SURFACE_LABEL, (3, 2)),
+        (bicubic(), "Neutrosophic Bézier surface", (4, 4)),
+        (bspline(), "Neutrosophic B-spline surface", (4, 4)),
+        (quarter_cylinder(), "Neutrosophic NURBS surface", (3, 2)),
     ] {
         let model = PlotModel::from_surface(&surface).unwrap();
         assert_eq!(model.label(), label);
@@ -280,7 +277,7 @@ fn surfaces_too_many_samples_is_an_error() {
         PlotError::InvalidSamples {
             samples: 101,
             min: 2,
-            max: MAX_SURFACE_SAMPLES
+            max: PlotOptions::MAX_SURFACE_SAMPLES
         }
     );
     // Curves keep their own limit.

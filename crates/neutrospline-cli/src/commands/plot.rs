@@ -70,11 +70,11 @@ pub struct PlotArgs {
     pub view: View,
 
     /// Width in pixels (the SVG's size too)
-    #[arg(long, value_name = "PX", default_value_t = neutrospline_plot::DEFAULT_WIDTH)]
+    #[arg(long, value_name = "PX", default_value_t = PlotOptions::DEFAULT_WIDTH)]
     pub width: u32,
 
     /// Height in pixels
-    #[arg(long, value_name = "PX", default_value_t = neutrospline_plot::DEFAULT_HEIGHT)]
+    #[arg(long, value_name = "PX", default_value_t = PlotOptions::DEFAULT_HEIGHT)]
     pub height: u32,
 
     /// Title above the figure (default: the kind of model and the view; "" for none)
@@ -86,11 +86,11 @@ pub struct PlotArgs {
     pub caption: Option<String>,
 
     /// 3-D camera: angle around the vertical axis, in degrees
-    #[arg(long, value_name = "DEG", default_value_t = neutrospline_plot::DEFAULT_AZIMUTH, allow_hyphen_values = true)]
+    #[arg(long, value_name = "DEG", default_value_t = PlotOptions::DEFAULT_AZIMUTH, allow_hyphen_values = true)]
     pub azimuth: f64,
 
     /// 3-D camera: angle above the horizontal plane, in degrees
-    #[arg(long, value_name = "DEG", default_value_t = neutrospline_plot::DEFAULT_ELEVATION, allow_hyphen_values = true)]
+    #[arg(long, value_name = "DEG", default_value_t = PlotOptions::DEFAULT_ELEVATION, allow_hyphen_values = true)]
     pub elevation: f64,
 
     /// Points sampled along a curve (surfaces: samples per direction of the mesh; default 40)

@@ -1,0 +1,144 @@
+//! What every view draws from: the model's points as the renderer uses them, the options,
+//! the theme and the texts, and the axes fitted to the points.
+
+use crate::axes2::Axes2;
+use crate::axes3::{box_lengths3, Axes3};
+use crate::callout::{draw_names, Keep, Obstacle};
+use crate::camera::Camera;
+use crate::layout::{Frame, Legend, LegendPlace, Rect};
+use crate::model::Pt;
+use crate::options::PlotOptions;
+use crate::svg::SvgWriter;
+use crate::theme::Theme;
+use crate::ticks::{padded, ticks_loose, Ticks};
+
+/// Everything a view needs.
+pub(crate) struct Ctx<'a> {
+    pub theme: Theme,
+    pub options: &'a PlotOptions,
+    /// The curve samples (for a surface: the mesh points, so that extents cover them).
+    pub curve: Vec<Pt>,
+    pub controls: &'a [Pt],
+    pub names: &'a [String],
+    pub title: String,
+    pub caption: String,
+}
+
+impl Ctx<'_> {
+    /// The camera of the 3-D views.
+    pub(crate) fn cam(&self) -> Camera {
+        Camera::new(self.options.azimuth(), self.options.elevation())
+    }
+
+    /// The curve samples, then the control points.
+    fn all_points(&self) -> impl Iterator<Item = &Pt> {
+        self.curve.iter().chain(self.controls.iter())
+    }
+
+    /// (min, max) of coordinate `axis` over curve and control points.
+    pub(crate) fn extent(&self, axis: usize) -> (f64, f64) {
+        self.all_points()
+            .map(|p| p.pos[axis])
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                (lo.min(v), hi.max(v))
+            })
+    }
+
+    /// The figure's frame (title, caption, plot area) with `legend` at `place`.
+    pub(crate) fn frame(&self, legend: Legend, place: LegendPlace) -> Frame {
+        Frame::new(
+            self.options.width(),
+            self.options.height(),
+            &self.theme,
+            &self.title,
+            &self.caption,
+            legend,
+            place,
+        )
+    }
+
+    /// Draws the names of points at pixel positions `at`, clear of `obstacles`, inside
+    /// `bounds` and off `avoid`.
+    pub(crate) fn names(
+        &self,
+        svg: &mut SvgWriter,
+        at: &[(f64, f64)],
+        obstacles: Vec<Obstacle>,
+        bounds: Rect,
+        avoid: Option<Rect>,
+    ) {
+        if self.names.is_empty() {
+            return;
+        }
+        let keep = Keep::new(obstacles, bounds, avoid);
+        draw_names(svg, &self.theme, at, self.names, &keep);
+    }
+
+    /// A figure of one drawing with `legend` at `place`: `draw` draws into the plot area, given
+    /// with the legend's rectangle to keep clear of, and the frame (title, caption, legend) is
+    /// drawn last.
+    pub(crate) fn figure(
+        &self,
+        legend: Legend,
+        place: LegendPlace,
+        draw: impl FnOnce(&mut SvgWriter, Rect, Option<Rect>),
+    ) -> String {
+        let frame = self.frame(legend, place);
+        let mut svg = self.svg();
+        draw(&mut svg, frame.plot, frame.legend_rect(&self.theme));
+        frame.draw(&mut svg, &self.theme);
+        svg.finish()
+    }
+
+    /// An empty SVG document of the figure's size and title.
+    pub(crate) fn svg(&self) -> SvgWriter {
+        SvgWriter::new(self.options.width(), self.options.height(), &self.title)
+    }
+
+    /// 2-D axes x, y for the model in `plot`, with `inner` pixels kept free around the data.
+    pub(crate) fn axes2(&self, plot: Rect, inner: f64) -> Axes2 {
+        Axes2::new(
+            plot,
+            self.extent(0),
+            self.extent(1),
+            inner,
+            &self.theme,
+            ("x", "y"),
+        )
+    }
+
+    /// The 3-D box x, y, z of the model (about `target` ticks per axis) fitted into `area`,
+    /// clear of `avoid`.
+    pub(crate) fn axes3(&self, area: Rect, target: usize, avoid: Option<Rect>) -> Axes3 {
+        let t: [Ticks; 3] = [0, 1, 2].map(|a| {
+            let (lo, hi) = self.extent(a);
+            let (lo, hi) = padded(lo, hi, 0.03);
+            ticks_loose(lo, hi, target)
+        });
+        let len = box_lengths3([&t[0], &t[1], &t[2]]);
+        Axes3::new(
+            area,
+            t,
+            len,
+            ["x", "y", "z"],
+            self.cam(),
+            &self.theme,
+            avoid,
+        )
+    }
+
+    /// The 3-D box fitted into `area` clear of `avoid` (as [`Ctx::axes3`], about five ticks
+    /// per axis), drawn into `svg`.
+    pub(crate) fn draw_box(&self, svg: &mut SvgWriter, area: Rect, avoid: Option<Rect>) -> Axes3 {
+        let axes = self.axes3(area, 5, avoid);
+        axes.draw(svg, &self.theme);
+        axes
+    }
+
+    /// How a panel of the 3-D box fits `area`: its scale and the top of its drawing (for
+    /// the three-panel figures).
+    pub(crate) fn fit_box(&self, area: Rect) -> (f64, f64) {
+        let axes = self.axes3(area, 5, None);
+        (axes.scale(), axes.bounds().y)
+    }
+}
