@@ -11,7 +11,7 @@ The output is deterministic (fixed seeds, Python's `random` module whose
 `random()` stream is guaranteed stable across Python versions) and is written to
 `crates/neutrospline/tests/data/`:
 
-  example1.json          the paper's Example 1 (SPEC section 5, Table 1 data: C3
+  example1.json          the paper's Example 1 (docs/model.md section 5, Table 1 data: C3
                          indeterminacy 0.4), evaluated EXACTLY with
                          fractions.Fraction.
   bezier_random.json     random 2-D / 3-D curves of degree 1 .. 400, evaluated
@@ -30,7 +30,7 @@ is the hodograph
     C'(t) = n * sum_i B_{n-1,i}(t) (P_{i+1} - P_i)
 
 summed the same way.  Every degree channel (truth, indeterminacy, falsity) is
-blended exactly like a coordinate (SPEC section 4).  Results are rounded to the
+blended exactly like a coordinate (docs/model.md section 4).  Results are rounded to the
 nearest double (through an exact Fraction, not mpmath's float(), which
 truncates) and written with Python's repr, which round-trips.
 
@@ -158,7 +158,7 @@ def point_json(position, degrees):
 # --------------------------------------------------------------------------- example 1
 
 EXAMPLE1 = [
-    # name, x, y, truth, indeterminacy, falsity  (SPEC section 5, Table 1: C3 I = 0.4)
+    # name, x, y, truth, indeterminacy, falsity  (docs/model.md section 5, Table 1: C3 I = 0.4)
     ("C0", "1", "3", "0.3", "0.6", "0.1"),
     ("C1", "3", "6", "0.8", "0.1", "0.1"),
     ("C2", "6", "2", "0.7", "0.1", "0.2"),
@@ -213,13 +213,13 @@ def make_example1():
         t = float(Fraction(k, 10))  # correctly rounded: the same double as Rust's 0.1 etc.
         grid.append(entry(Fraction(t), "%d/10 (as double)" % k))
 
-    # the SPEC's stated value at t = 1/2
+    # the value docs/model.md states at t = 1/2
     half = quarters[2]
     assert half["exact"] == {"x": "37/8", "y": "4", "truth": "5/8",
                              "indeterminacy": "1/5", "falsity": "7/40"}, half["exact"]
 
     return {
-        "description": "Paper Example 1 (SPEC section 5, Table 1 data; erratum: C3 "
+        "description": "Paper Example 1 (docs/model.md section 5, Table 1 data; erratum: C3 "
                        "indeterminacy is 0.4 as in Table 1, not 0.1 as in Table 3). "
                        "Exact rational evaluation (fractions.Fraction) with the control "
                        "values taken as exact decimals; 'grid' parameters are the doubles "

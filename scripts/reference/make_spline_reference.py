@@ -35,7 +35,7 @@ knot of multiplicity p + 1 the curve jumps; the reference holds the right-hand v
 and `nextafter(knot, -inf)` parameters are included to exercise the left-hand piece.
 
 Every degree channel (truth, indeterminacy, falsity) is blended exactly like a coordinate
-(SPEC section 4 and 6).  Doubles are written with Python's repr (round-trip); mpmath results
+(docs/model.md section 4 and 6).  Doubles are written with Python's repr (round-trip); mpmath results
 are rounded to the nearest double through an exact Fraction.
 
 Tolerances used by crates/neutrospline/tests/spline_reference.rs (documented in README.md):

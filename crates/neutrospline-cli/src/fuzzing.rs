@@ -6,7 +6,7 @@
 //!   file; a model that parses and builds is evaluated and must satisfy [`check_shape`], and
 //!   written in every format it reads back to an equal model (`neutrospline-io`'s writers).
 //! - [`evaluate`]: control points, knots, weights and parameters decoded from the bytes are
-//!   given to the core directly; whatever the core accepts must satisfy SPEC section 4.
+//!   given to the core directly; whatever the core accepts must satisfy docs/model.md section 4.
 //!
 //! The properties checked for a valid shape ([`check_shape`]): every evaluated degree lies in
 //! \[0, 1\] and within the range of its control values, positions are finite and inside the
@@ -14,9 +14,11 @@
 //! their end control points, and derivatives are either finite or an `Overflow` error, never a
 //! silent infinity or NaN.
 
+use std::ops::Range;
+
 use neutrospline::{
-    AnyCurve, BSpline, Bezier, ControlPoint, Degrees, EvalError, KnotVector, Membership, Nurbs,
-    Surface,
+    AnyCurve, BSpline, Bezier, ControlPoint, Degrees, Derivative, EvalError, Evaluate,
+    EvaluateSurface, KnotVector, Membership, Nurbs, Surface,
 };
 
 use neutrospline_io::{Format, Kind, KnotRule, KnotSpec, Model, ReadError, ReadOptions};
@@ -208,7 +210,7 @@ pub fn evaluate(data: &[u8]) {
                     if let Ok(p) = curve.evaluate(t) {
                         assert!(p.position.iter().all(|c| c.is_finite()), "t = {t}: {p:?}");
                     }
-                    if let Ok(d) = curve.derivative_at(t) {
+                    if let Ok(d) = curve.derivative().evaluate(t) {
                         assert!(finite_rates(&d), "t = {t}: {d:?}");
                     }
                 }
@@ -253,7 +255,7 @@ fn finite_rates<const D: usize>(d: &neutrospline::DerivativeValue<D>) -> bool {
 }
 
 /// `count` parameters spread over `[a, b]`, ends included.
-fn spread(count: u32, (a, b): (f64, f64)) -> impl Iterator<Item = f64> {
+fn spread(count: u32, Range { start: a, end: b }: Range<f64>) -> impl Iterator<Item = f64> {
     (0..=count).map(move |k| {
         if k == 0 {
             a
@@ -270,7 +272,7 @@ fn within(value: f64, lo: f64, hi: f64, tolerance: f64) -> bool {
     value >= lo - tolerance && value <= hi + tolerance
 }
 
-/// Checks the properties of SPEC section 4 on a valid shape, and that the command's own row
+/// Checks the properties of docs/model.md section 4 on a valid shape, and that the command's own row
 /// sampler (with derivatives and normals) either succeeds with finite values or reports an
 /// error: never a panic, never a silent infinity or NaN.
 ///
@@ -288,10 +290,10 @@ pub fn check_shape(shape: &Shape) {
     };
     let sampler = shape.sampler(extras);
     let params: Vec<Param> = match shape {
-        Shape::Surface(s) => spread(3, s.domain_u())
-            .flat_map(|u| spread(3, s.domain_v()).map(move |v| Param::Uv(u, v)))
+        Shape::Surface(s) => spread(3, s.domain()[0].clone())
+            .flat_map(|u| spread(3, s.domain()[1].clone()).map(move |v| Param::Uv(u, v)))
             .collect(),
-        _ => spread(8, shape.curve_domain().unwrap_or((0.0, 1.0)))
+        _ => spread(8, shape.curve_domain().unwrap_or(0.0..1.0))
             .map(Param::T)
             .collect(),
     };
@@ -353,12 +355,13 @@ fn check_curve<const D: usize>(curve: &AnyCurve<D>) {
     let points = curve.control_points();
     let b = bounds(&points);
     let domain = curve.domain();
-    for t in spread(16, domain) {
+    let derivative = curve.derivative();
+    for t in spread(16, domain.clone()) {
         match curve.evaluate(t) {
             Ok(p) => check_point(&format!("t = {t}"), &p, &b),
             Err(e) => panic!("t = {t} inside the domain {domain:?}: {e}"),
         }
-        match curve.derivative_at(t) {
+        match derivative.evaluate(t) {
             Ok(d) => assert!(finite_rates(&d), "t = {t}: {d:?}"),
             Err(EvalError::Overflow { .. }) => {}
             Err(e) => panic!("derivative at t = {t}: {e}"),
@@ -366,7 +369,10 @@ fn check_curve<const D: usize>(curve: &AnyCurve<D>) {
     }
     let clamped = curve.knots().is_none_or(KnotVector::is_clamped);
     if clamped {
-        let ends = [(domain.0, points[0]), (domain.1, points[points.len() - 1])];
+        let ends = [
+            (domain.start, points[0]),
+            (domain.end, points[points.len() - 1]),
+        ];
         for (t, control) in ends {
             let p = curve.evaluate(t).expect("end of the domain");
             for k in 0..D {
@@ -393,8 +399,9 @@ fn check_surface(surface: &Surface) {
         return;
     }
     let b = bounds(&surface.control_points());
-    for u in spread(4, surface.domain_u()) {
-        for v in spread(4, surface.domain_v()) {
+    let [domain_u, domain_v] = surface.domain();
+    for u in spread(4, domain_u) {
+        for v in spread(4, domain_v.clone()) {
             match surface.evaluate(u, v) {
                 Ok(p) => check_point(&format!("u = {u}, v = {v}"), &p, &b),
                 Err(e) => panic!("u = {u}, v = {v} inside the domain: {e}"),

@@ -3,10 +3,11 @@
 //! `--at` and the row-by-row evaluation that `eval` writes ([`Table`]).
 
 use std::fmt;
+use std::ops::Range;
 
 use neutrospline::{
-    AnyCurve, BSplineDerivative, BezierDerivative, DerivativeValue, EvalError, KnotVector,
-    NurbsDerivative, Surface,
+    AnyCurve, CurveDerivative, Derivative, DerivativeValue, EvalError, Evaluate, EvaluateSurface,
+    KnotVector, Surface,
 };
 pub use neutrospline_io::Shape;
 
@@ -55,8 +56,8 @@ fn channel_names(dimension: usize) -> impl Iterator<Item = &'static str> {
 
 /// The domain `[a, b]` of a curve or one direction of a surface, as text: `[0, 1]`, or with its
 /// knot indices, `[knot 2, knot 7] = [2, 5]`.
-fn domain_text(domain: (f64, f64), knots: Option<&KnotVector>, prefix: &str) -> String {
-    let values = format!("[{}, {}]", number(domain.0), number(domain.1));
+fn domain_text(domain: &Range<f64>, knots: Option<&KnotVector>, prefix: &str) -> String {
+    let values = format!("[{}, {}]", number(domain.start), number(domain.end));
     match knots {
         Some(k) => {
             let p = k.degree();
@@ -67,8 +68,8 @@ fn domain_text(domain: (f64, f64), knots: Option<&KnotVector>, prefix: &str) -> 
     }
 }
 
-fn contains(domain: (f64, f64), t: f64) -> bool {
-    domain.0 <= t && t <= domain.1
+fn contains(domain: &Range<f64>, t: f64) -> bool {
+    domain.start <= t && t <= domain.end
 }
 
 /// What the command computes from a shape: table columns, `--at` checks and rows.
@@ -98,7 +99,7 @@ pub trait Table {
 impl Table for Shape {
     fn curve_domain_text(&self) -> Option<String> {
         self.curve_domain()
-            .map(|d| domain_text(d, self.curve_knots(), "knot "))
+            .map(|d| domain_text(&d, self.curve_knots(), "knot "))
     }
 
     fn check_param(&self, param: Param, text: &str) -> Result<(), String> {
@@ -110,25 +111,26 @@ impl Table for Shape {
                 "`{text}` is a pair U:V but the file holds a curve (give --at T1,T2,...)"
             )),
             (Shape::Surface(s), Param::Uv(u, v)) => {
+                let [domain_u, domain_v] = s.domain();
                 for (name, value, domain, knots) in [
-                    ("u", u, s.domain_u(), s.knots_u()),
-                    ("v", v, s.domain_v(), s.knots_v()),
+                    ("u", u, domain_u, s.knots_u()),
+                    ("v", v, domain_v, s.knots_v()),
                 ] {
-                    if !contains(domain, value) {
+                    if !contains(&domain, value) {
                         let knots =
                             (s.kind() != neutrospline::SurfaceKind::Bezier).then_some(knots);
                         return Err(format!(
                             "{name} = {} (in `{text}`) is outside the surface's {name} domain {}",
                             number(value),
-                            domain_text(domain, knots, &format!("knot_{name} "))
+                            domain_text(&domain, knots, &format!("knot_{name} "))
                         ));
                     }
                 }
                 Ok(())
             }
             (_, Param::T(t)) => {
-                let domain = self.curve_domain().unwrap_or((0.0, 1.0));
-                if contains(domain, t) {
+                let domain = self.curve_domain().unwrap_or(0.0..1.0);
+                if contains(&domain, t) {
                     Ok(())
                 } else {
                     Err(format!(
@@ -204,42 +206,17 @@ impl Sampler<'_> {
     }
 }
 
-/// The first derivative of a curve of any kind, built once for many parameters.
-enum AnyDerivative<const D: usize> {
-    Bezier(BezierDerivative<D>),
-    BSpline(BSplineDerivative<D>),
-    Nurbs(NurbsDerivative<D>),
-}
-
-impl<const D: usize> AnyDerivative<D> {
-    fn new(curve: &AnyCurve<D>) -> Self {
-        match curve {
-            AnyCurve::Bezier(c) => AnyDerivative::Bezier(c.derivative()),
-            AnyCurve::BSpline(c) => AnyDerivative::BSpline(c.derivative()),
-            AnyCurve::Nurbs(c) => AnyDerivative::Nurbs(c.derivative()),
-        }
-    }
-
-    fn evaluate(&self, t: f64) -> Result<DerivativeValue<D>, EvalError> {
-        match self {
-            AnyDerivative::Bezier(d) => d.evaluate(t),
-            AnyDerivative::BSpline(d) => d.evaluate(t),
-            AnyDerivative::Nurbs(d) => d.evaluate(t),
-        }
-    }
-}
-
 /// A curve with its derivative computed once.
 pub struct CurveSampler<'a, const D: usize> {
     curve: &'a AnyCurve<D>,
-    derivative: Option<AnyDerivative<D>>,
+    derivative: Option<CurveDerivative<D>>,
 }
 
 impl<'a, const D: usize> CurveSampler<'a, D> {
     fn new(curve: &'a AnyCurve<D>, derivative: bool) -> Self {
         CurveSampler {
             curve,
-            derivative: derivative.then(|| AnyDerivative::new(curve)),
+            derivative: derivative.then(|| curve.derivative()),
         }
     }
 

@@ -1,6 +1,8 @@
 //! [`Shape`]: the core's curve (planar or spatial) or surface that a model file describes.
 
-use neutrospline::{AnyCurve, ControlPoint, KnotVector, Range, Surface};
+use core::ops::Range;
+
+use neutrospline::{AnyCurve, Bounded, ControlPoint, Evaluate, Interval, KnotVector, Surface};
 
 use crate::Kind;
 
@@ -106,7 +108,7 @@ impl Shape {
     }
 
     /// The domain of a curve.
-    pub fn curve_domain(&self) -> Option<(f64, f64)> {
+    pub fn curve_domain(&self) -> Option<Range<f64>> {
         match self {
             Shape::Planar(c) => Some(c.domain()),
             Shape::Spatial(c) => Some(c.domain()),
@@ -124,7 +126,7 @@ impl Shape {
     }
 
     /// Range (min, max) of truth, indeterminacy and falsity over the control points.
-    pub fn degree_ranges(&self) -> [Range; 3] {
+    pub fn degree_ranges(&self) -> [Interval; 3] {
         match self {
             Shape::Planar(c) => {
                 let b = c.control_bounding_box();
@@ -177,7 +179,7 @@ mod tests {
         assert_eq!(shape.dimension(), 2);
         assert_eq!(shape.control_count(), 5);
         assert_eq!(shape.curve_degree(), Some(2));
-        assert_eq!(shape.curve_domain(), Some((2.0, 5.0)));
+        assert_eq!(shape.curve_domain(), Some(2.0..5.0));
         assert_eq!(shape.weights(), None);
         assert_eq!(shape.degree_ranges()[0].max, 0.5);
         let surface = Surface::bezier(1, 1, vec![ControlPoint::new([0.0; 3], d)]).unwrap();

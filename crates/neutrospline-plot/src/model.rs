@@ -1,11 +1,12 @@
 //! What a figure shows: a curve, its control points and their names.
 
 use std::fmt;
+use std::ops::Range;
 use std::sync::Arc;
 
 use neutrospline::{
     uniform_parameter, AnyCurve, Bezier, ControlPoint, CurveKind, CurvePoint, DegreeKind, Evaluate,
-    NeutrosophicPoint, Surface, SurfaceKind,
+    EvaluateSurface, NeutrosophicPoint, Surface, SurfaceKind,
 };
 
 use crate::error::PlotError;
@@ -77,10 +78,13 @@ trait Sampler: Send + Sync {
 
 struct CurveSampler<C, const D: usize>(C);
 
-impl<C: Evaluate<D> + Send + Sync, const D: usize> Sampler for CurveSampler<C, D> {
+impl<C, const D: usize> Sampler for CurveSampler<C, D>
+where
+    C: Evaluate<Point = CurvePoint<D>> + Send + Sync,
+{
     fn sample(&self, n: usize) -> Result<Vec<Pt>, PlotError> {
         let ts = parameters(self.0.domain(), n);
-        let mut out = vec![self.0.start(); ts.len()];
+        let mut out = vec![self.0.start()?; ts.len()];
         self.0.evaluate_many(&ts, &mut out)?;
         to_pts(&out, "curve sample")
     }
@@ -95,9 +99,11 @@ enum Geometry {
 
 /// `n` (at least 2) evenly spaced parameters over `domain`, both ends exact (the core's
 /// [`uniform_parameter`]).
-fn parameters(domain: (f64, f64), n: usize) -> Vec<f64> {
+fn parameters(domain: Range<f64>, n: usize) -> Vec<f64> {
     let n = n.max(2);
-    (0..n).map(|k| uniform_parameter(k, n, domain)).collect()
+    (0..n)
+        .map(|k| uniform_parameter(k, n, domain.clone()))
+        .collect()
 }
 
 /// A surface sampled on an `n x n` grid of parameters: points and unit normals, row `a`
@@ -135,8 +141,9 @@ impl Mesh {
 }
 
 fn sample_surface(surface: &Surface, n: usize) -> Result<Mesh, PlotError> {
-    let us = parameters(surface.domain_u(), n);
-    let vs = parameters(surface.domain_v(), n);
+    let [domain_u, domain_v] = surface.domain();
+    let us = parameters(domain_u, n);
+    let vs = parameters(domain_v, n);
     let n = us.len();
     let mut points = Vec::with_capacity(n * n);
     let mut normals = Vec::with_capacity(n * n);
@@ -234,7 +241,7 @@ impl PlotModel {
         controls: &[ControlPoint<D>],
     ) -> Result<PlotModel, PlotError>
     where
-        C: Evaluate<D> + Send + Sync + 'static,
+        C: Evaluate<Point = CurvePoint<D>> + Send + Sync + 'static,
     {
         check_dimension(D)?;
         if controls.is_empty() {
@@ -242,7 +249,7 @@ impl PlotModel {
         }
         Ok(PlotModel {
             dimension: D,
-            curve: Geometry::Curve(Arc::new(CurveSampler(curve))),
+            curve: Geometry::Curve(Arc::new(CurveSampler::<C, D>(curve))),
             controls: to_pts(controls, "control point")?,
             grid: None,
             names: Vec::new(),
@@ -437,40 +444,25 @@ impl PlotModel {
     }
 }
 
-impl From<&Bezier<2>> for PlotModel {
-    fn from(curve: &Bezier<2>) -> PlotModel {
+impl<const D: usize> From<&Bezier<D>> for PlotModel {
+    /// Infallible: a Bézier curve is 2-D or 3-D with finite control values (its constructor
+    /// checks both).
+    fn from(curve: &Bezier<D>) -> PlotModel {
         let controls: Vec<Pt> = curve
             .control_points()
             .iter()
-            .map(|p| Pt {
-                pos: [p.position[0], p.position[1], 0.0],
-                deg: p.degrees.to_array(),
+            .map(|p| {
+                let mut pos = [0.0; 3];
+                pos[..D].copy_from_slice(&p.position);
+                Pt {
+                    pos,
+                    deg: p.degrees.to_array(),
+                }
             })
             .collect();
         PlotModel {
-            dimension: 2,
-            curve: Geometry::Curve(Arc::new(CurveSampler(curve.clone()))),
-            controls,
-            grid: None,
-            names: Vec::new(),
-            label: BEZIER_LABEL.to_string(),
-        }
-    }
-}
-
-impl From<&Bezier<3>> for PlotModel {
-    fn from(curve: &Bezier<3>) -> PlotModel {
-        let controls: Vec<Pt> = curve
-            .control_points()
-            .iter()
-            .map(|p| Pt {
-                pos: p.position,
-                deg: p.degrees.to_array(),
-            })
-            .collect();
-        PlotModel {
-            dimension: 3,
-            curve: Geometry::Curve(Arc::new(CurveSampler(curve.clone()))),
+            dimension: D,
+            curve: Geometry::Curve(Arc::new(CurveSampler::<_, D>(curve.clone()))),
             controls,
             grid: None,
             names: Vec::new(),

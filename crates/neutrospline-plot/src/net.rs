@@ -125,8 +125,8 @@ fn add_net(
         let mut run = vec![(p.0, p.1)];
         let mut run_hidden = None;
         for k in 0..NET_PIECES {
-            let t0 = uniform_parameter(k, NET_PIECES + 1, (0.0, 1.0));
-            let t1 = uniform_parameter(k + 1, NET_PIECES + 1, (0.0, 1.0));
+            let t0 = uniform_parameter(k, NET_PIECES + 1, 0.0..1.0);
+            let t1 = uniform_parameter(k + 1, NET_PIECES + 1, 0.0..1.0);
             let hidden = occluder.hides(lerp((t0 + t1) / 2.0));
             let end = lerp(t1);
             if run_hidden.is_some_and(|h| h != hidden) {

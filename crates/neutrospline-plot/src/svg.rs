@@ -463,7 +463,7 @@ impl SvgWriter {
             let _ = writeln!(
                 self.out,
                 " <stop offset=\"{}\" stop-color=\"{}\"/>",
-                num(uniform_parameter(i, stops.len(), (0.0, 1.0))),
+                num(uniform_parameter(i, stops.len(), 0.0..1.0)),
                 c.hex()
             );
         }

@@ -1,4 +1,4 @@
-//! Neutrosophic Bézier curves (paper Eq. 6-8, SPEC section 4).
+//! Neutrosophic Bézier curves (paper Eq. 6-8, docs/model.md section 4).
 
 use core::ops::Range;
 

@@ -1,4 +1,4 @@
-//! Neutrosophic degrees: truth, indeterminacy and falsity (SPEC section 1).
+//! Neutrosophic degrees: truth, indeterminacy and falsity (docs/model.md section 1).
 
 use core::fmt;
 use core::str::FromStr;
@@ -87,7 +87,7 @@ impl FromStr for DegreeKind {
     }
 }
 
-/// The validity rule a set of degrees obeys (SPEC section 1).
+/// The validity rule a set of degrees obeys (docs/model.md section 1).
 ///
 /// | rule | stored as | constraint |
 /// |---|---|---|

@@ -1,4 +1,4 @@
-//! The paper's Example 1 (SPEC section 5), built into the library.
+//! The paper's Example 1 (docs/model.md section 5), built into the library.
 
 use crate::bezier::Bezier;
 use crate::degrees::Degrees;

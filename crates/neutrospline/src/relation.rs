@@ -1,4 +1,4 @@
-//! Neutrosophic point relations (paper Def. 3 and 4, SPEC section 2).
+//! Neutrosophic point relations (paper Def. 3 and 4, docs/model.md section 2).
 //!
 //! Two neutrosophic sets on the axes, `M` on the first (`r` values) and `N` on the second
 //! (`s` values), each give every coordinate value its own degrees. A relation on `R x S` gives

@@ -1,4 +1,4 @@
-//! Property tests for the invariants of SPEC section 4 and for the CAGD operations.
+//! Property tests for the invariants of docs/model.md section 4 and for the CAGD operations.
 
 use neutrospline::strategies::{bezier, control_point, degrees, parameter};
 use neutrospline::{

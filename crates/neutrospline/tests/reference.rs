@@ -366,11 +366,11 @@ fn example1_exact_values() {
     assert_eq!(
         neutrospline::example1(),
         curve,
-        "neutrospline::example1() differs from SPEC section 5 / Table 1 (C3 indeterminacy 0.4)"
+        "neutrospline::example1() differs from docs/model.md section 5 / Table 1 (C3 indeterminacy 0.4)"
     );
     assert_eq!(data.quarters.len(), 5);
 
-    // SPEC section 5: at t = 0.5 the curve is at (4.625, 4.0), T = 0.625, I = 0.2, F = 0.175
+    // docs/model.md section 5: at t = 0.5 the curve is at (4.625, 4.0), T = 0.625, I = 0.2, F = 0.175
     let half = &data.quarters[2];
     assert_eq!(half.t, 0.5);
     assert_eq!(half.position, [4.625, 4.0]);

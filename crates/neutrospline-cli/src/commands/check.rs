@@ -1,6 +1,6 @@
 //! `neutrospline check FILE`: validate a file and summarise the curve or surface.
 
-use neutrospline::KnotVector;
+use neutrospline::{EvaluateSurface, KnotVector};
 use neutrospline_io::{KnotRule, KnotSource};
 
 use crate::commands::options::ModelArgs;
@@ -57,8 +57,8 @@ fn knots_line(knots: &KnotVector, source: Option<KnotSource>) -> String {
     format!("{} ({} knots, {source})", shown.join(", "), values.len())
 }
 
-fn domain_line((a, b): (f64, f64)) -> String {
-    format!("[{}, {}]", number(a), number(b))
+fn domain_line(domain: std::ops::Range<f64>) -> String {
+    format!("[{}, {}]", number(domain.start), number(domain.end))
 }
 
 /// Validates the file and prints its summary.
@@ -99,8 +99,9 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
                     writeln!(w, "knots_u: {}", knots_line(s.knots_u(), source(0)))?;
                     writeln!(w, "knots_v: {}", knots_line(s.knots_v(), source(1)))?;
                 }
-                writeln!(w, "domain_u: {}", domain_line(s.domain_u()))?;
-                writeln!(w, "domain_v: {}", domain_line(s.domain_v()))?;
+                let [domain_u, domain_v] = s.domain();
+                writeln!(w, "domain_u: {}", domain_line(domain_u))?;
+                writeln!(w, "domain_v: {}", domain_line(domain_v))?;
             }
             _ => {
                 if let Some(degree) = shape.curve_degree() {

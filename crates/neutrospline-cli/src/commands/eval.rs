@@ -3,7 +3,9 @@
 
 use std::path::PathBuf;
 
-use neutrospline::uniform_parameter;
+use std::ops::Range;
+
+use neutrospline::{uniform_parameter, EvaluateSurface};
 
 use crate::commands::options::ModelArgs;
 use crate::input::{self, UsageError};
@@ -126,7 +128,7 @@ fn parse_at(text: &str) -> Result<AtList, String> {
 
 /// Sample `k` of `n` evenly spaced over `[a, b]` (the library's [`uniform_parameter`]: both
 /// ends exact, never beyond `b`; for `n = 1`, `a`).
-fn sample(k: u64, n: u64, domain: (f64, f64)) -> f64 {
+fn sample(k: u64, n: u64, domain: Range<f64>) -> f64 {
     // Sample counts are limited far below `usize::MAX` (`--max-samples`).
     let index = |v: u64| usize::try_from(v).unwrap_or(usize::MAX);
     uniform_parameter(index(k), index(n), domain)
@@ -140,15 +142,16 @@ fn parameters<'a>(args: &'a EvalArgs, shape: &Shape) -> Box<dyn Iterator<Item = 
     let n = args.samples;
     match shape {
         Shape::Surface(s) => {
-            let (du, dv) = (s.domain_u(), s.domain_v());
+            let [du, dv] = s.domain();
             Box::new((0..n).flat_map(move |i| {
-                let u = sample(i, n, du);
-                (0..n).map(move |j| Param::Uv(u, sample(j, n, dv)))
+                let u = sample(i, n, du.clone());
+                let dv = dv.clone();
+                (0..n).map(move |j| Param::Uv(u, sample(j, n, dv.clone())))
             }))
         }
         _ => {
-            let domain = shape.curve_domain().unwrap_or((0.0, 1.0));
-            Box::new((0..n).map(move |k| Param::T(sample(k, n, domain))))
+            let domain = shape.curve_domain().unwrap_or(0.0..1.0);
+            Box::new((0..n).map(move |k| Param::T(sample(k, n, domain.clone()))))
         }
     }
 }
@@ -272,17 +275,17 @@ mod tests {
 
     #[test]
     fn sample_ends_are_exact() {
-        let d = (0.1, 0.7);
-        assert_eq!(sample(0, 7, d), 0.1);
-        assert_eq!(sample(6, 7, d), 0.7);
+        let d = 0.1..0.7;
+        assert_eq!(sample(0, 7, d.clone()), 0.1);
+        assert_eq!(sample(6, 7, d.clone()), 0.7);
         assert_eq!(sample(0, 1, d), 0.1);
         for k in 0..1000 {
-            let t = sample(k, 1000, (1.0 / 3.0, 2.0 / 3.0));
+            let t = sample(k, 1000, 1.0 / 3.0..2.0 / 3.0);
             assert!((1.0 / 3.0..=2.0 / 3.0).contains(&t));
         }
         // On [0, 1] the samples are exactly k / (n - 1).
         for k in 0..=100 {
-            assert_eq!(sample(k, 101, (0.0, 1.0)), k as f64 / 100.0);
+            assert_eq!(sample(k, 101, 0.0..1.0), k as f64 / 100.0);
         }
     }
 }

@@ -4,7 +4,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
-use neutrospline::{example1, AnyCurve, EXAMPLE1_NAMES};
+use neutrospline::{example1, AnyCurve, Evaluate, EXAMPLE1_NAMES};
 use neutrospline_plot::{PlotModel, PlotOptions, View};
 
 use crate::commands::plot::{write_figure, FigureFormat};
@@ -30,7 +30,7 @@ pub const FIGURES: [(&str, View); 5] = [
     ("figure5", View::All),
 ];
 
-/// The caption of every figure: where the data comes from, with the erratum (SPEC section 5).
+/// The caption of every figure: where the data comes from, with the erratum (docs/model.md section 5).
 pub const CAPTION: &str = "Example 1 of Mahmud et al., Table 1 data. Erratum: the paper's \
 Table 3 gives C3 an indeterminacy of 0.1; Table 1, which defines the example, gives 0.4, \
 used here.";
@@ -40,7 +40,7 @@ const STEPS: u32 = 10;
 /// Decimals shown in the curve table.
 const DECIMALS: usize = 6;
 
-/// The note printed under the tables (SPEC section 5).
+/// The note printed under the tables (docs/model.md section 5).
 pub const ERRATUM: &str =
     "Note: the paper's Table 3 gives C3 an indeterminacy of 0.1, but Table 1, \
 which defines the example, gives 0.4; this output follows Table 1.";

@@ -4,7 +4,7 @@ use super::*;
 
 // ------------------------------------------------------------------------ generic checks
 
-/// SPEC 4: every point is a valid neutrosophic point whose degrees lie within the range of
+/// docs/model.md section 4: every point is a valid neutrosophic point whose degrees lie within the range of
 /// the (active) control degrees. Exact: no tolerance.
 pub fn check_degree_bounds<const D: usize, C: TestSpline<D>>(
     c: &C,

@@ -1,5 +1,5 @@
 //! Shared checks of the spline property tests (`bspline_properties.rs`,
-//! `nurbs_properties.rs`): the invariants of SPEC section 4 (which carry over to every kind,
+//! `nurbs_properties.rs`): the invariants of docs/model.md section 4 (which carry over to every kind,
 //! `docs/model.md`) and the CAGD operations, written once for both spline kinds, and the
 //! `curve_properties!` macro that runs them for one kind and dimension.
 //!
