@@ -17,8 +17,8 @@
 use std::ops::Range;
 
 use neutrospline::{
-    AnyCurve, BSpline, Bezier, ControlPoint, Degrees, Derivative, EvalError, Evaluate,
-    EvaluateSurface, KnotVector, Membership, Nurbs, Surface,
+    AnyCurve, BSpline, Bezier, ControlPoint, ControlPolygon, Degrees, Derivative, EvalError,
+    Evaluate, EvaluateSurface, KnotVector, Membership, Nurbs, Surface,
 };
 
 use neutrospline_io::{Format, Kind, KnotRule, KnotSpec, Model, ReadError, ReadOptions};

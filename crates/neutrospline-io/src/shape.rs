@@ -2,7 +2,9 @@
 
 use core::ops::Range;
 
-use neutrospline::{AnyCurve, Bounded, ControlPoint, Evaluate, Interval, KnotVector, Surface};
+use neutrospline::{
+    AnyCurve, Bounded, ControlPoint, ControlPolygon, Evaluate, Interval, KnotVector, Surface,
+};
 
 use crate::Kind;
 

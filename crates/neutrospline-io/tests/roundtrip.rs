@@ -6,8 +6,8 @@
 
 use neutrospline::strategies;
 use neutrospline::{
-    AnyCurve, BSpline, Bezier, ControlPoint, CurveKind, Degrees, KnotVector, Membership, Nurbs,
-    Surface, SurfaceKind,
+    AnyCurve, BSpline, Bezier, ControlPoint, ControlPolygon, CurveKind, Degrees, KnotVector,
+    Membership, Nurbs, Surface, SurfaceKind,
 };
 use neutrospline_io::{parse, to_string, Format, Model, ReadOptions, Shape};
 use proptest::prelude::*;

@@ -4,7 +4,7 @@
 //! JSON writer writes deserializes with the core's serde to the model's point.
 
 use neutrospline::strategies::{bspline, control_point};
-use neutrospline::{AnyCurve, ControlPoint};
+use neutrospline::{AnyCurve, ControlPoint, ControlPolygon};
 use neutrospline_io::{parse, to_json_string, Format, Model, ReadOptions, Shape};
 use proptest::prelude::*;
 use serde_json::Value;

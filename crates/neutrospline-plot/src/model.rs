@@ -5,8 +5,8 @@ use std::ops::Range;
 use std::sync::Arc;
 
 use neutrospline::{
-    uniform_parameter, AnyCurve, Bezier, ControlPoint, CurveKind, CurvePoint, DegreeKind, Evaluate,
-    EvaluateSurface, NeutrosophicPoint, Surface, SurfaceKind,
+    uniform_parameter, AnyCurve, Bezier, ControlPoint, ControlPolygon, CurveKind, CurvePoint,
+    DegreeKind, Evaluate, EvaluateSurface, NeutrosophicPoint, Surface, SurfaceKind,
 };
 
 use crate::error::PlotError;

@@ -14,7 +14,8 @@ use std::hint::black_box;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use neutrospline::{
     batch, example1, AnyCurve, BSpline, BatchOptions, BatchParams, Bezier, ControlPoint,
-    CurveBatch, CurvePoint, Degrees, Derivative, Evaluate, KnotVector, Nurbs, Split,
+    ControlPolygon, CurveBatch, CurvePoint, Degrees, Derivative, Evaluate, KnotVector, Nurbs,
+    Split,
 };
 
 /// `count` seeded pseudo-random control points.

@@ -4,7 +4,9 @@ use core::fmt;
 use core::ops::Range;
 
 use crate::bezier::Bezier;
-use crate::curve::{Bounded, CurveError, Derivative, Elevate, EvalError, Evaluate, Split};
+use crate::curve::{
+    Bounded, ControlPolygon, CurveError, Derivative, Elevate, EvalError, Evaluate, Split,
+};
 use crate::degrees::DegreeKind;
 use crate::derivative::CurveDerivative;
 use crate::knots::KnotVector;
@@ -83,21 +85,6 @@ impl<const D: usize> AnyCurve<D> {
         forward!(self, c => c.degree())
     }
 
-    /// Number of control points.
-    pub fn len(&self) -> usize {
-        forward!(self, c => c.len())
-    }
-
-    /// Always `false`: a curve has at least one control point.
-    pub fn is_empty(&self) -> bool {
-        false
-    }
-
-    /// All control points, in order.
-    pub fn control_points(&self) -> Vec<ControlPoint<D>> {
-        forward!(self, c => c.control_points())
-    }
-
     /// The knot vector (B-spline and NURBS curves).
     pub fn knots(&self) -> Option<&KnotVector> {
         match self {
@@ -134,6 +121,16 @@ impl AnyCurve<2> {
     /// The paper's space curve `(C(t), degree(t))` for one degree, of the same kind.
     pub fn degree_curve(&self, kind: DegreeKind) -> AnyCurve<3> {
         forward!(self, c => c.degree_curve(kind).into())
+    }
+}
+
+impl<const D: usize> ControlPolygon<D> for AnyCurve<D> {
+    fn len(&self) -> usize {
+        forward!(self, c => c.len())
+    }
+
+    fn control_point(&self, i: usize) -> ControlPoint<D> {
+        forward!(self, c => c.control_point(i))
     }
 }
 

@@ -38,7 +38,7 @@ const STACK_SCRATCH: usize = 192;
 impl Packed {
     /// `data.len()` must be a non-zero multiple of `stride`.
     pub(crate) fn new(stride: usize, data: Vec<f64>) -> Self {
-        debug_assert!(stride > 0 && !data.is_empty() && data.len() % stride == 0);
+        debug_assert!(stride > 0 && !data.is_empty() && data.len().is_multiple_of(stride));
         Packed { stride, data }
     }
 

@@ -4,8 +4,8 @@ use core::ops::Range;
 
 use crate::bernstein::Packed;
 use crate::curve::{
-    check_parameter, Bounded, CurveError, Derivative, Elevate, EvalError, Evaluate, Split,
-    BOUNDS_TOLERANCE,
+    check_parameter, Bounded, ControlPolygon, CurveError, Derivative, Elevate, EvalError, Evaluate,
+    Split, BOUNDS_TOLERANCE,
 };
 use crate::degrees::DegreeKind;
 use crate::derivative::CurveDerivative;
@@ -81,29 +81,6 @@ impl<const D: usize> Bezier<D> {
         self.packed.degree()
     }
 
-    /// The number of control points, `n + 1` (never 0).
-    pub fn len(&self) -> usize {
-        self.packed.count()
-    }
-
-    /// Always `false`: a curve has at least one control point.
-    pub fn is_empty(&self) -> bool {
-        false
-    }
-
-    /// Control point `i`.
-    ///
-    /// # Panics
-    /// If `i > degree()`.
-    pub fn control_point(&self, i: usize) -> ControlPoint<D> {
-        point_from_row(self.packed.row(i))
-    }
-
-    /// All control points, in order.
-    pub fn control_points(&self) -> Vec<ControlPoint<D>> {
-        (0..self.len()).map(|i| self.control_point(i)).collect()
-    }
-
     /// The same curve traversed backwards: control points in reverse order.
     pub fn reversed(&self) -> Bezier<D> {
         Bezier {
@@ -152,6 +129,17 @@ impl Bezier<2> {
         Bezier {
             packed: Packed::new(stride(3), lift_degree(self.packed.data(), kind)),
         }
+    }
+}
+
+impl<const D: usize> ControlPolygon<D> for Bezier<D> {
+    /// `n + 1`.
+    fn len(&self) -> usize {
+        self.packed.count()
+    }
+
+    fn control_point(&self, i: usize) -> ControlPoint<D> {
+        point_from_row(self.packed.row(i))
     }
 }
 

@@ -8,7 +8,7 @@
 
 use core::ops::Range;
 
-use crate::point::BoundingBox;
+use crate::point::{BoundingBox, ControlPoint};
 
 /// Why a curve cannot be built from the given control data.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -121,6 +121,36 @@ pub(crate) fn check_parameter(t: f64, domain: &Range<f64>) -> Result<(), EvalErr
         })
     } else {
         Ok(())
+    }
+}
+
+/// The control points of a curve of any kind, in order.
+///
+/// ```
+/// use neutrospline::ControlPolygon;
+/// let curve = neutrospline::example1();
+/// assert_eq!(curve.len(), 4);
+/// assert_eq!(curve.control_point(1).position, [3.0, 6.0]);
+/// assert_eq!(curve.control_points()[3].degrees.indeterminacy(), 0.4);
+/// ```
+pub trait ControlPolygon<const D: usize> {
+    /// The number of control points (at least 1: a curve has no empty polygon).
+    fn len(&self) -> usize;
+
+    /// Always `false`: a curve has at least one control point.
+    fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Control point `i`.
+    ///
+    /// # Panics
+    /// If `i >= len()`.
+    fn control_point(&self, i: usize) -> ControlPoint<D>;
+
+    /// All control points, in order.
+    fn control_points(&self) -> Vec<ControlPoint<D>> {
+        (0..self.len()).map(|i| self.control_point(i)).collect()
     }
 }
 

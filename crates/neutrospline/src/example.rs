@@ -43,6 +43,7 @@ pub fn example1() -> Bezier<2> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::curve::ControlPolygon;
 
     #[test]
     fn example1_table_is_valid() {

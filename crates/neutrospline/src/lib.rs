@@ -51,7 +51,8 @@
 //!   [`Weighting`], [`Polynomial`] or [`Rational`]), [`AnyCurve`] for any of them,
 //!   [`KnotVector`], and the derivative of any of them, [`CurveDerivative`].
 //! - Capabilities, one small trait each, implemented by every kind where the math allows:
-//!   [`Evaluate`] (domain, point, start and end), [`Derivative`] (the derivative is again
+//!   [`ControlPolygon`] (the control points), [`Evaluate`] (domain, point, start and end),
+//!   [`Derivative`] (the derivative is again
 //!   evaluable and differentiable), [`Split`] (split and subsegment), [`Elevate`],
 //!   [`Bounded`] (tight and control bounding boxes).
 //! - Surfaces: [`Surface`] (Bézier, B-spline, NURBS), [`EvaluateSurface`], partial
@@ -100,7 +101,8 @@ pub use any_curve::{AnyCurve, CurveKind};
 pub use batch::{uniform_parameter, BatchOptions, BatchParams, CurveBatch};
 pub use bezier::Bezier;
 pub use curve::{
-    Bounded, CurveError, Derivative, Elevate, EvalError, Evaluate, Split, BOUNDS_TOLERANCE,
+    Bounded, ControlPolygon, CurveError, Derivative, Elevate, EvalError, Evaluate, Split,
+    BOUNDS_TOLERANCE,
 };
 pub use degrees::{
     DegreeError, DegreeKind, Degrees, Membership, ParseNameError, HESITATION_TOLERANCE,

@@ -11,8 +11,8 @@ use crate::any_curve::CurveKind;
 use crate::bernstein::Packed;
 use crate::bezier::Bezier;
 use crate::curve::{
-    check_parameter, Bounded, CurveError, Derivative, Elevate, EvalError, Evaluate, Split,
-    BOUNDS_TOLERANCE,
+    check_parameter, Bounded, ControlPolygon, CurveError, Derivative, Elevate, EvalError, Evaluate,
+    Split, BOUNDS_TOLERANCE,
 };
 use crate::degrees::DegreeKind;
 use crate::derivative::CurveDerivative;
@@ -252,29 +252,6 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
         &self.spline.knots
     }
 
-    /// Number of control points.
-    pub fn len(&self) -> usize {
-        self.spline.count()
-    }
-
-    /// Always `false`: a curve has at least one control point.
-    pub fn is_empty(&self) -> bool {
-        false
-    }
-
-    /// Control point `i`.
-    ///
-    /// # Panics
-    /// If `i >= len()`.
-    pub fn control_point(&self, i: usize) -> ControlPoint<D> {
-        point_from_row(self.spline.row(i))
-    }
-
-    /// All control points, in order.
-    pub fn control_points(&self) -> Vec<ControlPoint<D>> {
-        (0..self.len()).map(|i| self.control_point(i)).collect()
-    }
-
     /// The weights, one per control point (NURBS); `None` for a B-spline, whose weights are
     /// all 1.
     pub fn weights(&self) -> Option<&[f64]> {
@@ -353,6 +330,16 @@ pub(crate) fn check_weights(weights: &[f64], points: usize) -> Result<(), CurveE
     {
         Some((index, &value)) => Err(CurveError::WeightNotPositive { index, value }),
         None => Ok(()),
+    }
+}
+
+impl<const D: usize, W: Weighting> ControlPolygon<D> for SplineCurve<D, W> {
+    fn len(&self) -> usize {
+        self.spline.count()
+    }
+
+    fn control_point(&self, i: usize) -> ControlPoint<D> {
+        point_from_row(self.spline.row(i))
     }
 }
 

@@ -17,6 +17,7 @@ use core::ops::RangeInclusive;
 use proptest::prelude::*;
 
 use crate::bezier::Bezier;
+use crate::curve::ControlPolygon;
 use crate::degrees::Degrees;
 use crate::knots::KnotVector;
 use crate::point::ControlPoint;

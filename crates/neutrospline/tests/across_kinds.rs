@@ -6,6 +6,7 @@
 #[macro_use]
 mod spline_common;
 
+use neutrospline::ControlPolygon;
 use spline_common::*;
 
 // ------------------------------------------------------------------------ across kinds

@@ -6,7 +6,7 @@
 
 use neutrospline::strategies::{bezier, parameter};
 use neutrospline::{
-    BatchOptions, BatchParams, Bezier, ControlPoint, CurveBatch, Degrees, Evaluate,
+    BatchOptions, BatchParams, Bezier, ControlPoint, ControlPolygon, CurveBatch, Degrees, Evaluate,
 };
 use proptest::prelude::*;
 

@@ -10,8 +10,8 @@
 
 use neutrospline::strategies::{bspline, domain_parameter, nurbs};
 use neutrospline::{
-    uniform_parameter, AnyCurve, BSpline, BatchOptions, BatchParams, ControlPoint, CurveBatch,
-    Degrees, Evaluate, KnotVector, Nurbs,
+    uniform_parameter, AnyCurve, BSpline, BatchOptions, BatchParams, ControlPoint, ControlPolygon,
+    CurveBatch, Degrees, Evaluate, KnotVector, Nurbs,
 };
 use proptest::prelude::*;
 

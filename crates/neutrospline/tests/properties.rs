@@ -2,8 +2,8 @@
 
 use neutrospline::strategies::{bezier, control_point, degrees, parameter};
 use neutrospline::{
-    Affine, AxisSet, AxisSetName, Bezier, Bounded, CurvePoint, DegreeKind, Degrees, Derivative,
-    Elevate, Evaluate, NeutrosophicPoint, PointRelation, Split,
+    Affine, AxisSet, AxisSetName, Bezier, Bounded, ControlPolygon, CurvePoint, DegreeKind, Degrees,
+    Derivative, Elevate, Evaluate, NeutrosophicPoint, PointRelation, Split,
 };
 use proptest::prelude::*;
 

@@ -308,6 +308,7 @@ pub fn random_nurbs(p: usize, pieces: usize, seed: u64) -> Nurbs<2> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use neutrospline::ControlPolygon;
 
     fn args(points: usize, degree: usize, format: BenchFormat) -> BenchArgs {
         BenchArgs {

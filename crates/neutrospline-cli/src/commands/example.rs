@@ -4,7 +4,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
-use neutrospline::{example1, AnyCurve, Evaluate, EXAMPLE1_NAMES};
+use neutrospline::{example1, AnyCurve, ControlPolygon, Evaluate, EXAMPLE1_NAMES};
 use neutrospline_plot::{PlotModel, PlotOptions, View};
 
 use crate::commands::plot::{write_figure, FigureFormat};

@@ -84,7 +84,9 @@ pub(crate) struct Coeffs {
 impl Coeffs {
     /// From point-major packed control values (`data[i * channels + c]`).
     pub(crate) fn from_packed(channels: usize, data: &[f64]) -> Self {
-        debug_assert!(channels <= MAX_CHANNELS && !data.is_empty() && data.len() % channels == 0);
+        debug_assert!(
+            channels <= MAX_CHANNELS && !data.is_empty() && data.len().is_multiple_of(channels)
+        );
         let count = data.len() / channels;
         let degree = count - 1;
         let mut values = Vec::with_capacity(data.len());

@@ -73,6 +73,14 @@ use crate::spline_curve::{SplineCurve, Weighting};
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct CurveBatch<const D: usize> {
+    inner: Pieces,
+}
+
+/// The prepared pieces of a curve: everything but its dimension, so that the evaluation
+/// code is compiled once, in this crate, for every dimension (the kernels are instantiated
+/// per channel count only).
+#[derive(Clone, Debug, PartialEq)]
+struct Pieces {
     domain: Range<f64>,
     degree: usize,
     rational: bool,
@@ -176,11 +184,13 @@ impl<const D: usize> CurveBatch<D> {
     /// channels are 5 or 6.
     fn from_pieces(domain: Range<f64>, degree: usize, rational: bool, pieces: Vec<Piece>) -> Self {
         CurveBatch {
-            domain,
-            degree,
-            rational,
-            starts: pieces.iter().map(|p| p.start).collect(),
-            pieces,
+            inner: Pieces {
+                domain,
+                degree,
+                rational,
+                starts: pieces.iter().map(|p| p.start).collect(),
+                pieces,
+            },
         }
     }
 
@@ -203,37 +213,28 @@ impl<const D: usize> CurveBatch<D> {
 
     /// The parameter domain `start..end` (\[0, 1\] for a Bézier curve).
     pub fn domain(&self) -> Range<f64> {
-        self.domain.clone()
+        self.inner.domain.clone()
     }
 
     /// The prepared control values of piece `j` (for tests of the kernels).
     #[cfg(test)]
     pub(crate) fn piece_coeffs(&self, j: usize) -> &Coeffs {
-        &self.pieces[j].coeffs
-    }
-
-    /// A single non-rational piece on exactly \[0, 1\] (a Bézier curve): its local parameter
-    /// is the parameter itself, so evenly spaced parameters go to the kernels as they are.
-    fn is_unit_polynomial(&self) -> bool {
-        !self.rational
-            && self.pieces.len() == 1
-            && self.pieces[0].start == 0.0
-            && self.pieces[0].end == 1.0
+        &self.inner.pieces[j].coeffs
     }
 
     /// The polynomial degree.
     pub fn degree(&self) -> usize {
-        self.degree
+        self.inner.degree
     }
 
     /// `true` for a NURBS curve.
     pub fn is_rational(&self) -> bool {
-        self.rational
+        self.inner.rational
     }
 
     /// The number of Bézier pieces (non-empty knot spans of the domain; 1 for a Bézier curve).
     pub fn pieces(&self) -> usize {
-        self.pieces.len()
+        self.inner.pieces.len()
     }
 
     /// Evaluates at every parameter of `params` into `out`, channel-major: channel `c` at
@@ -255,7 +256,7 @@ impl<const D: usize> CurveBatch<D> {
         out: &mut [f64],
         options: &BatchOptions,
     ) -> Result<(), EvalError> {
-        Self::evaluate_all(core::slice::from_ref(self), params, out, options)
+        evaluate_pieces(&[&self.inner], stride(D), params, out, options)
     }
 
     /// Evaluates every curve at the same parameters (evenly spaced over each curve's own
@@ -275,11 +276,19 @@ impl<const D: usize> CurveBatch<D> {
         out: &mut [f64],
         options: &BatchOptions,
     ) -> Result<(), EvalError> {
-        match stride(D) {
-            5 => evaluate_all::<D, 5>(curves, params, out, options),
-            6 => evaluate_all::<D, 6>(curves, params, out, options),
-            _ => unreachable!("CurveBatch accepts D = 2 or 3 only"),
-        }
+        let inner: Vec<&Pieces> = curves.iter().map(|c| &c.inner).collect();
+        evaluate_pieces(&inner, stride(D), params, out, options)
+    }
+}
+
+impl Pieces {
+    /// A single non-rational piece on exactly \[0, 1\] (a Bézier curve): its local parameter
+    /// is the parameter itself, so evenly spaced parameters go to the kernels as they are.
+    fn is_unit_polynomial(&self) -> bool {
+        !self.rational
+            && self.pieces.len() == 1
+            && self.pieces[0].start == 0.0
+            && self.pieces[0].end == 1.0
     }
 
     /// The piece holding `t` (in the domain): the last one that starts at or before `t`, as
@@ -309,8 +318,25 @@ impl<const D: usize> From<&AnyCurve<D>> for CurveBatch<D> {
     }
 }
 
-fn evaluate_all<const D: usize, const CH: usize>(
-    curves: &[CurveBatch<D>],
+/// Evaluates prepared curves of `channels` (5 or 6) output channels each. Not generic: the
+/// kernels are compiled here, once for each channel count (not per dimension and crate).
+#[inline(never)]
+fn evaluate_pieces(
+    curves: &[&Pieces],
+    channels: usize,
+    params: BatchParams<'_>,
+    out: &mut [f64],
+    options: &BatchOptions,
+) -> Result<(), EvalError> {
+    match channels {
+        5 => evaluate_channels::<5>(curves, params, out, options),
+        6 => evaluate_channels::<6>(curves, params, out, options),
+        _ => unreachable!("curves are 2-D or 3-D: 5 or 6 channels"),
+    }
+}
+
+fn evaluate_channels<const CH: usize>(
+    curves: &[&Pieces],
     params: BatchParams<'_>,
     out: &mut [f64],
     options: &BatchOptions,
@@ -320,14 +346,15 @@ fn evaluate_all<const D: usize, const CH: usize>(
     let Some(threads) = plan(out.len(), CH, count, degrees, options) else {
         return Ok(());
     };
-    let refs: Vec<(usize, &CurveBatch<D>)> = curves.iter().enumerate().collect();
+    let refs: Vec<(usize, &Pieces)> = curves.iter().copied().enumerate().collect();
     let tasks = partition::<_, CH>(&refs, count, out, threads);
     match run_tasks(tasks, threads, |task| run_task(task, params)) {
         None => Ok(()),
-        Some((k, j)) => Err(
-            check_parameter(params.get(k, curves[j].domain()), &curves[j].domain)
-                .expect_err("an invalid parameter was reported"),
-        ),
+        Some((k, j)) => {
+            let domain = &curves[j].domain;
+            Err(check_parameter(params.get(k, domain.clone()), domain)
+                .expect_err("an invalid parameter was reported"))
+        }
     }
 }
 
@@ -370,122 +397,152 @@ struct Workspace<V> {
     kernel: Vec<V>,
 }
 
-/// Evaluates one task block by block; stops at the first invalid parameter and returns its
-/// index and the curve's.
-fn run_task<const D: usize, const CH: usize>(
-    task: Task<'_, (usize, &CurveBatch<D>), CH>,
+/// Evaluates one task, curve by curve, each through the kernels of its kind (one dispatched
+/// function each, so that no compiled function holds more than one set of kernels); returns
+/// the first invalid parameter's index and curve (lowest index, then lowest curve).
+fn run_task<const CH: usize>(
+    task: Task<'_, (usize, &Pieces), CH>,
     params: BatchParams<'_>,
 ) -> Option<(usize, usize)> {
-    struct Job<'a, 'p, const D: usize, const CH: usize> {
-        task: Task<'a, (usize, &'a CurveBatch<D>), CH>,
-        params: BatchParams<'p>,
-    }
-    impl<const D: usize, const CH: usize> LaneJob for Job<'_, '_, D, CH> {
-        type Output = Option<(usize, usize)>;
-        #[inline(always)]
-        fn run<L: Lanes>(self, l: L) -> Option<(usize, usize)> {
-            let Job { mut task, params } = self;
-            let mut ws = Workspace {
-                local: Vec::new(),
-                weight: Vec::new(),
-                piece: Vec::new(),
-                order: Vec::new(),
-                counts: Vec::new(),
-                values: Vec::new(),
-                runs: Vec::new(),
-                kernel: Vec::new(),
-            };
-            let mut generated = Vec::new();
-            let mut first_bad: Option<(usize, usize)> = None;
-            let mut block = task.start;
-            while block < task.end {
-                let end = (block + BLOCK).min(task.end);
-                let (lo, hi) = (block - task.start, end - task.start);
-                for ((index, curve), outs) in task.items.iter_mut() {
-                    let ts: &[f64] = match params {
-                        BatchParams::Uniform(count) if curve.is_unit_polynomial() => {
-                            let run = Uniform {
-                                first: block,
-                                denominator: count.saturating_sub(1).max(1) as f64,
-                            };
-                            let mut outs: [&mut [f64]; CH] =
-                                outs.each_mut().map(|s| &mut s[lo..hi]);
-                            unit_block(l, curve, &run, &mut outs, &mut ws.kernel);
-                            continue;
-                        }
-                        BatchParams::Uniform(count) => {
-                            uniform_block(count, block..end, &curve.domain, &mut generated);
-                            &generated
-                        }
-                        BatchParams::Values(ts) => {
-                            let ts = &ts[block..end];
-                            if let Some(bad) = first_outside(ts, &curve.domain) {
-                                let found = (block + bad, *index);
-                                first_bad = Some(first_bad.map_or(found, |f| f.min(found)));
-                                continue;
-                            }
-                            ts
-                        }
-                    };
-                    let mut outs: [&mut [f64]; CH] = outs.each_mut().map(|s| &mut s[lo..hi]);
-                    let in_order = matches!(params, BatchParams::Uniform(_))
-                        || ts.windows(2).all(|w| w[0] <= w[1]);
-                    evaluate_block(l, curve, ts, in_order, &mut outs, &mut ws);
-                }
-                if first_bad.is_some() {
-                    return first_bad;
-                }
-                block = end;
+    let Task {
+        start,
+        end,
+        mut items,
+    } = task;
+    let mut first_bad: Option<(usize, usize)> = None;
+    for ((index, curve), outs) in items.iter_mut() {
+        let run = Run {
+            curve,
+            outs,
+            start,
+            end,
+            params,
+        };
+        let bad = if curve.is_unit_polynomial() && matches!(params, BatchParams::Uniform(_)) {
+            lanes::dispatch(UnitJob(run))
+        } else {
+            match (CH, curve.rational) {
+                (5, false) => lanes::dispatch(PieceJob::<CH, 5>(run)),
+                (6, false) | (5, true) => lanes::dispatch(PieceJob::<CH, 6>(run)),
+                (6, true) => lanes::dispatch(PieceJob::<CH, 7>(run)),
+                _ => unreachable!("curves are 2-D or 3-D: 5 or 6 channels"),
             }
-            None
+        };
+        if let Some(k) = bad {
+            let found = (k, *index);
+            first_bad = Some(first_bad.map_or(found, |f| f.min(found)));
         }
     }
-    lanes::dispatch(Job { task, params })
+    first_bad
 }
 
-/// Evaluates a single non-rational piece on \[0, 1\] at the evenly spaced parameters `run`
-/// into `outs`, with the parameters generated inside the kernels.
-#[inline(always)]
-fn unit_block<L: Lanes, const D: usize, const CH: usize>(
-    l: L,
-    curve: &CurveBatch<D>,
-    run: &Uniform,
-    outs: &mut [&mut [f64]; CH],
-    scratch: &mut Vec<L::V>,
-) {
-    kernel::evaluate(l, &curve.pieces[0].coeffs, run, outs, scratch);
+/// One curve's share of a task: parameters `start..end` into `outs`.
+struct Run<'r, 'a, 'p, const CH: usize> {
+    curve: &'r Pieces,
+    outs: &'r mut [&'a mut [f64]; CH],
+    start: usize,
+    end: usize,
+    params: BatchParams<'p>,
 }
 
-/// Evaluates `curve` at the parameters `ts` (in its domain; non-decreasing if `in_order`)
-/// into `outs` (one slice per channel, as long as `ts`): the kernels for the channel count,
-/// with the weight for a rational curve.
-#[inline(always)]
-fn evaluate_block<L: Lanes, const D: usize, const CH: usize>(
-    l: L,
-    curve: &CurveBatch<D>,
-    ts: &[f64],
-    in_order: bool,
-    outs: &mut [&mut [f64]; CH],
-    ws: &mut Workspace<L::V>,
-) {
-    match (CH, curve.rational) {
-        (5, false) => block::<L, D, 5>(l, curve, ts, in_order, outs, ws),
-        (6, false) | (5, true) => block::<L, D, 6>(l, curve, ts, in_order, outs, ws),
-        (6, true) => block::<L, D, 7>(l, curve, ts, in_order, outs, ws),
-        _ => unreachable!("CurveBatch accepts D = 2 or 3 only"),
+/// A single non-rational piece on \[0, 1\] at evenly spaced parameters, generated inside the
+/// kernels (a Bézier curve's `eval --samples` and `bench`).
+struct UnitJob<'r, 'a, 'p, const CH: usize>(Run<'r, 'a, 'p, CH>);
+
+impl<const CH: usize> LaneJob for UnitJob<'_, '_, '_, CH> {
+    type Output = Option<usize>;
+
+    #[inline(always)]
+    fn run<L: Lanes>(self, l: L) -> Option<usize> {
+        let Run {
+            curve,
+            outs,
+            start,
+            end,
+            params,
+        } = self.0;
+        let denominator = params.len().saturating_sub(1).max(1) as f64;
+        let mut scratch = Vec::new();
+        let mut block = start;
+        while block < end {
+            let stop = (block + BLOCK).min(end);
+            let run = Uniform {
+                first: block,
+                denominator,
+            };
+            let mut outs: [&mut [f64]; CH] =
+                outs.each_mut().map(|s| &mut s[block - start..stop - start]);
+            kernel::evaluate(l, &curve.pieces[0].coeffs, &run, &mut outs, &mut scratch);
+            block = stop;
+        }
+        None
     }
 }
 
-/// [`evaluate_block`] with `H` channels evaluated by the kernels: the `outs.len()` output
+/// A curve of any kind evaluated piece by piece with `H` kernel channels (`CH` outputs, plus
+/// the weight for a rational curve); stops at the first invalid parameter.
+struct PieceJob<'r, 'a, 'p, const CH: usize, const H: usize>(Run<'r, 'a, 'p, CH>);
+
+impl<const CH: usize, const H: usize> LaneJob for PieceJob<'_, '_, '_, CH, H> {
+    type Output = Option<usize>;
+
+    #[inline(always)]
+    fn run<L: Lanes>(self, l: L) -> Option<usize> {
+        let Run {
+            curve,
+            outs,
+            start,
+            end,
+            params,
+        } = self.0;
+        let mut ws = Workspace {
+            local: Vec::new(),
+            weight: Vec::new(),
+            piece: Vec::new(),
+            order: Vec::new(),
+            counts: Vec::new(),
+            values: Vec::new(),
+            runs: Vec::new(),
+            kernel: Vec::new(),
+        };
+        let mut generated = Vec::new();
+        let mut block = start;
+        while block < end {
+            let stop = (block + BLOCK).min(end);
+            let ts: &[f64] = match params {
+                BatchParams::Uniform(count) => {
+                    uniform_block(count, block..stop, &curve.domain, &mut generated);
+                    &generated
+                }
+                BatchParams::Values(ts) => {
+                    let ts = &ts[block..stop];
+                    if let Some(bad) = first_outside(ts, &curve.domain) {
+                        return Some(block + bad);
+                    }
+                    ts
+                }
+            };
+            let mut outs: [&mut [f64]; CH] =
+                outs.each_mut().map(|s| &mut s[block - start..stop - start]);
+            let in_order =
+                matches!(params, BatchParams::Uniform(_)) || ts.windows(2).all(|w| w[0] <= w[1]);
+            self::block::<L, H>(l, curve, ts, in_order, &mut outs, &mut ws);
+            block = stop;
+        }
+        None
+    }
+}
+
+/// `H` channels evaluated by the kernels: the `outs.len()` output
 /// channels, then the weight if the curve is rational.
 ///
 /// The parameters are first cut into runs of one piece with their local parameters; then
 /// the kernels run once per run, from a single call site (they are inlined there, so one copy
 /// of them per channel count and instruction set).
 #[inline(always)]
-fn block<L: Lanes, const D: usize, const H: usize>(
+fn block<L: Lanes, const H: usize>(
     l: L,
-    curve: &CurveBatch<D>,
+    curve: &Pieces,
     ts: &[f64],
     in_order: bool,
     outs: &mut [&mut [f64]],
@@ -601,7 +658,7 @@ fn reciprocals(weights: &mut [f64]) {
 /// (`ws.order`: a counting sort, or a comparison sort when there are many more pieces than
 /// parameters), the local parameters in that order (`ws.local`) and the runs of one piece
 /// (`ws.runs`).
-fn group_by_piece<const D: usize, V>(curve: &CurveBatch<D>, ts: &[f64], ws: &mut Workspace<V>) {
+fn group_by_piece<V>(curve: &Pieces, ts: &[f64], ws: &mut Workspace<V>) {
     let n = ts.len();
     let pieces = curve.pieces.len();
     ws.piece.clear();

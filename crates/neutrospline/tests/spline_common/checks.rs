@@ -1,6 +1,7 @@
 //! The generic checks: each takes a curve of either spline kind (`TestSpline`).
 
 use super::*;
+use neutrospline::ControlPolygon;
 
 // ------------------------------------------------------------------------ generic checks
 

@@ -12,9 +12,10 @@ pub use neutrospline::strategies::{
     self, bspline, control_point, coordinate, degrees, domain_parameter, knot_vector, nurbs, weight,
 };
 pub use neutrospline::{
-    Affine, AnyCurve, BSpline, Bezier, Bounded, ControlPoint, CurveError, CurveKind, CurvePoint,
-    DegreeKind, Degrees, Derivative, DerivativeValue, Direction, Elevate, EvalError, Evaluate,
-    EvaluateSurface, KnotError, KnotVector, Nurbs, Split, Surface, SurfaceError, SurfaceKind,
+    Affine, AnyCurve, BSpline, Bezier, Bounded, ControlPoint, ControlPolygon, CurveError,
+    CurveKind, CurvePoint, DegreeKind, Degrees, Derivative, DerivativeValue, Direction, Elevate,
+    EvalError, Evaluate, EvaluateSurface, KnotError, KnotVector, Nurbs, Split, Surface,
+    SurfaceError, SurfaceKind,
 };
 pub use proptest::prelude::*;
 
