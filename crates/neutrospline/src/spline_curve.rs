@@ -439,7 +439,7 @@ impl<const D: usize, W: Weighting> Bounded<D> for SplineCurve<D, W> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::degrees::Degrees;
     use core::f64::consts::FRAC_1_SQRT_2;
@@ -540,7 +540,9 @@ mod tests {
         );
     }
 
-    fn quarter_circle() -> Nurbs<2> {
+    /// A quarter of the unit circle, truth 0, 1, 1/2 at the control points, indeterminacy and
+    /// falsity constant (1/2, 1/4).
+    pub(crate) fn quarter_circle() -> Nurbs<2> {
         let d = |t| Degrees::new(t, 0.5, 0.25).unwrap();
         Nurbs::new(
             vec![

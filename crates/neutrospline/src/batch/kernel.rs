@@ -41,6 +41,9 @@ use super::lanes::Lanes;
 /// Highest degree evaluated with Bernstein weights; de Casteljau above it.
 pub(crate) const DIRECT_MAX_DEGREE: usize = super::DIRECT_MAX_DEGREE;
 
+/// Lowest degree with a kernel compiled for it (below, the Taylor kernel serves).
+const FIXED_MIN_DEGREE: usize = 4;
+
 /// Highest degree with a kernel compiled for it (unrolled, binomials folded in).
 const FIXED_MAX_DEGREE: usize = 15;
 
@@ -250,7 +253,8 @@ pub(crate) struct Values<'a>(pub(crate) &'a [f64]);
 impl Params for Values<'_> {
     #[inline(always)]
     fn vector<L: Lanes>(&self, l: L, offset: usize) -> L::V {
-        let rest = &self.0[offset..];
+        // (A step of several vectors may start a vector past the end: zeros there.)
+        let rest = self.0.get(offset..).unwrap_or_default();
         if rest.len() >= L::LANES {
             l.load(rest)
         } else {
@@ -260,7 +264,7 @@ impl Params for Values<'_> {
 
     #[inline(always)]
     fn side<L: Lanes>(&self, offset: usize, len: usize) -> Side {
-        let rest = &self.0[offset..];
+        let rest = self.0.get(offset..).unwrap_or_default();
         let lanes = &rest[..rest.len().min(len)];
         let low = lanes.iter().filter(|&&t| t <= 0.5).count();
         // Lanes past the end are zero: low.
@@ -270,6 +274,34 @@ impl Params for Values<'_> {
             Side::High
         } else {
             Side::Mixed
+        }
+    }
+}
+
+/// Parameters of a run, evenly spaced or given: one type for both, so that every call site
+/// of the kernels compiles them once (a per-vector branch that the processor predicts).
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Run<'a> {
+    /// Evenly spaced, generated in the lanes.
+    Uniform(Uniform),
+    /// Given.
+    Values(Values<'a>),
+}
+
+impl Params for Run<'_> {
+    #[inline(always)]
+    fn vector<L: Lanes>(&self, l: L, offset: usize) -> L::V {
+        match self {
+            Run::Uniform(u) => u.vector(l, offset),
+            Run::Values(v) => v.vector(l, offset),
+        }
+    }
+
+    #[inline(always)]
+    fn side<L: Lanes>(&self, offset: usize, len: usize) -> Side {
+        match self {
+            Run::Uniform(u) => u.side::<L>(offset, len),
+            Run::Values(v) => v.side::<L>(offset, len),
         }
     }
 }
@@ -285,26 +317,52 @@ pub(crate) fn evaluate<L: Lanes, P: Params, const CH: usize>(
     scratch: &mut Vec<L::V>,
 ) {
     debug_assert_eq!(coeffs.channels, CH);
+    match coeffs.degree {
+        0 => constant(coeffs, out),
+        1 if !coeffs.taylor.is_empty() => taylor::<L, P, CH, 2>(l, coeffs, params, out),
+        2 if !coeffs.taylor.is_empty() => taylor::<L, P, CH, 3>(l, coeffs, params, out),
+        3 if !coeffs.taylor.is_empty() => taylor::<L, P, CH, 4>(l, coeffs, params, out),
+        n => {
+            if !l.fixed(coeffs, params, out) {
+                if n <= DIRECT_MAX_DEGREE {
+                    weights_long(l, coeffs, params, out, scratch)
+                } else {
+                    casteljau(l, coeffs, params, out, scratch)
+                }
+            }
+        }
+    }
+}
+
+/// The kernels compiled per degree (`FIXED_MIN_DEGREE ..= FIXED_MAX_DEGREE`), with the binomial
+/// coefficients folded into the control values (`scaled`): the weights are then plain products
+/// of powers, two multiplications fewer per weight. Returns `false` when none serves the
+/// degree (or `scaled` is empty: a product overflowed), and the caller runs the general kernel.
+/// The lane types call it from [`Lanes::fixed`] (the portable fallback of x86-64 builds with
+/// SIMD does not: these kernels are most of the crate's compile time).
+#[inline(always)]
+pub(crate) fn fixed<L: Lanes, P: Params, const CH: usize>(
+    l: L,
+    coeffs: &Coeffs,
+    params: &P,
+    out: &mut [&mut [f64]; CH],
+) -> bool {
+    if coeffs.scaled.is_empty() {
+        return false;
+    }
     macro_rules! fixed {
         ($($w:literal)*) => {
             match coeffs.degree {
-                0 => constant(coeffs, out),
-                1 if !coeffs.taylor.is_empty() => taylor::<L, P, CH, 2>(l, coeffs, params, out),
-                2 if !coeffs.taylor.is_empty() => taylor::<L, P, CH, 3>(l, coeffs, params, out),
-                3 if !coeffs.taylor.is_empty() => taylor::<L, P, CH, 4>(l, coeffs, params, out),
-                // The binomial coefficients folded into the control values (`scaled`): the
-                // weights are then plain products of powers, two multiplications fewer per
-                // weight. (`scaled` is empty in the rare case a product overflows.)
-                $($w if !coeffs.scaled.is_empty() => {
-                    const { assert!($w <= FIXED_MAX_DEGREE) };
+                $($w => {
+                    const { assert!(FIXED_MIN_DEGREE <= $w && $w <= FIXED_MAX_DEGREE) };
                     run::<L, P, CH, { $w + 1 }>(l, coeffs, params, out)
                 })*
-                n if n <= DIRECT_MAX_DEGREE => weights_long(l, coeffs, params, out, scratch),
-                _ => casteljau(l, coeffs, params, out, scratch),
+                _ => return false,
             }
         };
     }
-    fixed!(1 2 3 4 5 6 7 8 9 10 11 12 13 14 15);
+    fixed!(4 5 6 7 8 9 10 11 12 13 14 15);
+    true
 }
 
 /// Degree 0: every point is the control point.
@@ -314,8 +372,9 @@ fn constant<const CH: usize>(coeffs: &Coeffs, out: &mut [&mut [f64]; CH]) {
     }
 }
 
-/// Runs `kernel` over the whole output: `U` vectors of parameters per step, then the rest one
-/// vector at a time (the last one partial).
+/// Runs `kernel` over the whole output, `U` vectors of parameters per step. The last, partial
+/// step goes through the same code into vectors on the stack, then its valid lanes are copied
+/// out: one instantiation of the kernel's step (its compile time is most of the crate's).
 #[inline(always)]
 fn drive<L: Lanes, P: Params, K: Kernel<L, CH>, const CH: usize, const U: usize>(
     l: L,
@@ -323,56 +382,43 @@ fn drive<L: Lanes, P: Params, K: Kernel<L, CH>, const CH: usize, const U: usize>
     params: &P,
     out: &mut [&mut [f64]; CH],
 ) {
-    let done = run_steps::<L, P, K, CH, U>(l, kernel, params, out);
-    let len = out[0].len();
-    let mut k = done;
-    while k < len {
-        let mut sink = Tail { out: &mut *out, k };
-        kernel.step::<P, _, 1>(l, params, k, &mut sink);
-        k += L::LANES;
-    }
-}
-
-/// The main loop, `U` vectors of parameters per step; returns how many parameters it did.
-#[inline(always)]
-fn run_steps<L: Lanes, P: Params, K: Kernel<L, CH>, const CH: usize, const U: usize>(
-    l: L,
-    kernel: &K,
-    params: &P,
-    out: &mut [&mut [f64]; CH],
-) -> usize {
     let len = out[0].len();
     let step = U * L::LANES;
     let full = len - len % step;
     let vectors = full / L::LANES;
-    // The outputs as slices of vectors when the lane type allows: one index for every
-    // channel, bounds checks proven away by the equal lengths.
+    // The outputs as slices of vectors: one index for every channel, bounds checks proven
+    // away by the equal lengths.
     let heads = out.each_mut().map(|s| l.as_vectors_mut(&mut s[..full]));
-    if heads.iter().all(Option::is_some) {
-        let heads = heads.map(|h| h.unwrap_or_default());
-        for head in &heads {
-            assert_eq!(head.len(), vectors);
-        }
-        let mut sink = Vectors { heads, j: 0 };
-        while sink.j < vectors {
-            kernel.step::<P, _, U>(l, params, sink.j * L::LANES, &mut sink);
-            sink.j += U;
-        }
-        return full;
+    for head in &heads {
+        assert_eq!(head.len(), vectors);
     }
-    // Otherwise one iterator of whole steps per channel: a length test per step instead of a
-    // bounds check per store.
-    let mut chunks = out.each_mut().map(|s| s[..full].chunks_exact_mut(step));
-    let mut k = 0;
-    while k < full {
-        let chunk = chunks.each_mut().map(|c| match c.next() {
-            Some(chunk) => chunk,
-            None => unreachable!("each channel has full / step chunks"),
-        });
-        kernel.step::<P, _, U>(l, params, k, &mut Chunks(chunk));
-        k += step;
+    let mut sink = Vectors { heads, j: 0 };
+    while sink.j < vectors {
+        kernel.step::<P, _, U>(l, params, sink.j * L::LANES, &mut sink);
+        sink.j += U;
     }
-    full
+    if full < len {
+        let mut rest = [[l.splat(0.0); U]; CH];
+        let mut sink = Vectors {
+            heads: rest.each_mut().map(|r| &mut r[..]),
+            j: 0,
+        };
+        kernel.step::<P, _, U>(l, params, full, &mut sink);
+        for (channel, vectors) in out.iter_mut().zip(&rest) {
+            for (u, &v) in vectors.iter().enumerate() {
+                let start = full + u * L::LANES;
+                if start >= len {
+                    break;
+                }
+                let dst = &mut channel[start..(start + L::LANES).min(len)];
+                if dst.len() == L::LANES {
+                    l.store(dst, v);
+                } else {
+                    l.store_partial(dst, v);
+                }
+            }
+        }
+    }
 }
 
 /// Where a kernel puts its results: vector `u` of the current step, channel `c`.
@@ -393,16 +439,6 @@ impl<L: Lanes, const CH: usize> Sink<L> for Vectors<'_, L::V, CH> {
     #[inline(always)]
     fn put(&mut self, _: L, c: usize, u: usize, v: L::V) {
         self.heads[c][self.j + u] = v;
-    }
-}
-
-/// The current step's piece of every channel.
-struct Chunks<'a, const CH: usize>([&'a mut [f64]; CH]);
-
-impl<L: Lanes, const CH: usize> Sink<L> for Chunks<'_, CH> {
-    #[inline(always)]
-    fn put(&mut self, l: L, c: usize, u: usize, v: L::V) {
-        l.store(&mut self.0[c][u * L::LANES..], v);
     }
 }
 
@@ -725,17 +761,22 @@ fn weights_long<L: Lanes, P: Params, const CH: usize>(
     scratch.clear();
     scratch.resize(2 * count, one);
     let (weights, powers_s) = scratch.split_at_mut(count);
+    // The control values, or (up to degree FIXED_MAX_DEGREE) the control values times the
+    // binomial coefficients, which then count as 1.
+    let folded = !coeffs.scaled.is_empty();
+    let values = if folded {
+        &coeffs.scaled
+    } else {
+        &coeffs.values
+    };
     let mut k = 0;
     while k < len {
         let t = params.vector(l, k);
         let s = l.sub(one, t);
         // C(n, i) t^i and s^j, then w_i = (C(n, i) t^i) s^(n-i).
         let (mut power_t, mut power_s) = (one, one);
-        for ((w, p), &binomial) in weights
-            .iter_mut()
-            .zip(powers_s.iter_mut())
-            .zip(&coeffs.binomials)
-        {
+        for (i, (w, p)) in weights.iter_mut().zip(powers_s.iter_mut()).enumerate() {
+            let binomial = if folded { 1.0 } else { coeffs.binomials[i] };
             *w = l.mul(l.splat(binomial), power_t);
             *p = power_s;
             power_t = l.mul(power_t, t);
@@ -746,11 +787,11 @@ fn weights_long<L: Lanes, P: Params, const CH: usize>(
         }
         let mut acc = [one; CH];
         for (c, a) in acc.iter_mut().enumerate() {
-            *a = l.mul(weights[0], l.splat(coeffs.values[c * count]));
+            *a = l.mul(weights[0], l.splat(values[c * count]));
         }
         for (i, &w) in weights.iter().enumerate().skip(1) {
             for (c, a) in acc.iter_mut().enumerate() {
-                *a = l.mul_add(w, l.splat(coeffs.values[c * count + i]), *a);
+                *a = l.mul_add(w, l.splat(values[c * count + i]), *a);
             }
         }
         let mut sink = Tail { out: &mut *out, k };

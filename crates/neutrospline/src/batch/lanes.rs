@@ -14,6 +14,8 @@
 //! hardware (one rounding) and a multiply then an add elsewhere (two roundings); the accuracy
 //! analysis of the kernels allows either.
 
+use super::kernel::{self, Coeffs, Params};
+
 /// A vector of [`Lanes::LANES`] doubles and the operations the kernels use.
 ///
 /// Every method is `#[inline(always)]` in both implementations so that a kernel inlines into
@@ -46,9 +48,16 @@ pub(crate) trait Lanes: Copy {
     fn store(self, dst: &mut [f64], v: Self::V);
     /// Stores the first `dst.len()` (fewer than `LANES`) lanes.
     fn store_partial(self, dst: &mut [f64], v: Self::V);
-    /// `dst` (a multiple of `LANES` long) as a slice of vectors, where the lane type allows
-    /// it without copying; `None` otherwise.
-    fn as_vectors_mut(self, dst: &mut [f64]) -> Option<&mut [Self::V]>;
+    /// `dst` (a multiple of `LANES` long) as a slice of vectors, without copying.
+    fn as_vectors_mut(self, dst: &mut [f64]) -> &mut [Self::V];
+    /// Runs [`kernel::fixed`] where this lane type has the kernels compiled per degree;
+    /// `false` when it has not or they do not serve the degree.
+    fn fixed<P: Params, const CH: usize>(
+        self,
+        coeffs: &Coeffs,
+        params: &P,
+        out: &mut [&mut [f64]; CH],
+    ) -> bool;
 }
 
 /// Four lanes as an array; the portable path, vectorised by the compiler for the baseline
@@ -141,9 +150,29 @@ impl Lanes for Portable {
         dst.copy_from_slice(&v[..len]);
     }
     #[inline(always)]
-    fn as_vectors_mut(self, _dst: &mut [f64]) -> Option<&mut [Self::V]> {
-        // `<[f64]>::as_chunks_mut` would do, but is newer than the crate's minimum Rust.
-        None
+    fn as_vectors_mut(self, dst: &mut [f64]) -> &mut [Self::V] {
+        dst.as_chunks_mut::<P>().0
+    }
+    /// On x86-64 with the `simd` feature this path only serves processors without AVX2 (before
+    /// 2013), and goes without the per-degree kernels (Bernstein weights in a scratch buffer
+    /// instead, about half the speed from degree 4 to 15); elsewhere it is the main path and
+    /// has them.
+    #[inline(always)]
+    fn fixed<Q: Params, const CH: usize>(
+        self,
+        coeffs: &Coeffs,
+        params: &Q,
+        out: &mut [&mut [f64]; CH],
+    ) -> bool {
+        #[cfg(all(feature = "simd", target_arch = "x86_64"))]
+        {
+            let _ = (coeffs, params, out);
+            false
+        }
+        #[cfg(not(all(feature = "simd", target_arch = "x86_64")))]
+        {
+            kernel::fixed(self, coeffs, params, out)
+        }
     }
 }
 
@@ -218,8 +247,17 @@ impl<S: pulp::Simd> Lanes for Pulp<S> {
         self.0.partial_store_f64s(dst, v);
     }
     #[inline(always)]
-    fn as_vectors_mut(self, dst: &mut [f64]) -> Option<&mut [Self::V]> {
-        Some(S::as_mut_simd_f64s(dst).0)
+    fn as_vectors_mut(self, dst: &mut [f64]) -> &mut [Self::V] {
+        S::as_mut_simd_f64s(dst).0
+    }
+    #[inline(always)]
+    fn fixed<Q: Params, const CH: usize>(
+        self,
+        coeffs: &Coeffs,
+        params: &Q,
+        out: &mut [&mut [f64]; CH],
+    ) -> bool {
+        kernel::fixed(self, coeffs, params, out)
     }
 }
 

@@ -33,7 +33,7 @@
 
 use core::ops::Range;
 
-use super::kernel::{self, Coeffs, Uniform, Values, MAX_CHANNELS};
+use super::kernel::{self, Coeffs, Run as Params, Uniform, Values, MAX_CHANNELS};
 use super::lanes::{self, LaneJob, Lanes};
 use super::{first_outside, partition, plan, run_tasks, BatchOptions, BatchParams, Task, BLOCK};
 use crate::any_curve::AnyCurve;
@@ -397,9 +397,11 @@ struct Workspace<V> {
     kernel: Vec<V>,
 }
 
-/// Evaluates one task, curve by curve, each through the kernels of its kind (one dispatched
-/// function each, so that no compiled function holds more than one set of kernels); returns
-/// the first invalid parameter's index and curve (lowest index, then lowest curve).
+/// Evaluates one task, curve by curve, each through the kernels for its number of kernel
+/// channels `H` (the outputs, plus the weight of a rational curve: 5, 6 or 7), one
+/// dispatched function per `H` so that no compiled function holds more than one set of
+/// kernels; returns the first invalid parameter's index and curve (lowest index, then lowest
+/// curve).
 fn run_task<const CH: usize>(
     task: Task<'_, (usize, &Pieces), CH>,
     params: BatchParams<'_>,
@@ -413,20 +415,16 @@ fn run_task<const CH: usize>(
     for ((index, curve), outs) in items.iter_mut() {
         let run = Run {
             curve,
-            outs,
+            outs: &mut outs[..],
             start,
             end,
             params,
         };
-        let bad = if curve.is_unit_polynomial() && matches!(params, BatchParams::Uniform(_)) {
-            lanes::dispatch(UnitJob(run))
-        } else {
-            match (CH, curve.rational) {
-                (5, false) => lanes::dispatch(PieceJob::<CH, 5>(run)),
-                (6, false) | (5, true) => lanes::dispatch(PieceJob::<CH, 6>(run)),
-                (6, true) => lanes::dispatch(PieceJob::<CH, 7>(run)),
-                _ => unreachable!("curves are 2-D or 3-D: 5 or 6 channels"),
-            }
+        let bad = match CH + usize::from(curve.rational) {
+            5 => lanes::dispatch(PieceJob::<5>(run)),
+            6 => lanes::dispatch(PieceJob::<6>(run)),
+            7 => lanes::dispatch(PieceJob::<7>(run)),
+            _ => unreachable!("curves are 2-D or 3-D: 5 or 6 channels"),
         };
         if let Some(k) = bad {
             let found = (k, *index);
@@ -436,54 +434,21 @@ fn run_task<const CH: usize>(
     first_bad
 }
 
-/// One curve's share of a task: parameters `start..end` into `outs`.
-struct Run<'r, 'a, 'p, const CH: usize> {
+/// One curve's share of a task: parameters `start..end` into `outs` (one slice per output
+/// channel).
+struct Run<'r, 'a, 'p> {
     curve: &'r Pieces,
-    outs: &'r mut [&'a mut [f64]; CH],
+    outs: &'r mut [&'a mut [f64]],
     start: usize,
     end: usize,
     params: BatchParams<'p>,
 }
 
-/// A single non-rational piece on \[0, 1\] at evenly spaced parameters, generated inside the
-/// kernels (a Bézier curve's `eval --samples` and `bench`).
-struct UnitJob<'r, 'a, 'p, const CH: usize>(Run<'r, 'a, 'p, CH>);
+/// A curve of any kind evaluated piece by piece with `H` kernel channels (the outputs, plus
+/// the weight for a rational curve), block by block; stops at the first invalid parameter.
+struct PieceJob<'r, 'a, 'p, const H: usize>(Run<'r, 'a, 'p>);
 
-impl<const CH: usize> LaneJob for UnitJob<'_, '_, '_, CH> {
-    type Output = Option<usize>;
-
-    #[inline(always)]
-    fn run<L: Lanes>(self, l: L) -> Option<usize> {
-        let Run {
-            curve,
-            outs,
-            start,
-            end,
-            params,
-        } = self.0;
-        let denominator = params.len().saturating_sub(1).max(1) as f64;
-        let mut scratch = Vec::new();
-        let mut block = start;
-        while block < end {
-            let stop = (block + BLOCK).min(end);
-            let run = Uniform {
-                first: block,
-                denominator,
-            };
-            let mut outs: [&mut [f64]; CH] =
-                outs.each_mut().map(|s| &mut s[block - start..stop - start]);
-            kernel::evaluate(l, &curve.pieces[0].coeffs, &run, &mut outs, &mut scratch);
-            block = stop;
-        }
-        None
-    }
-}
-
-/// A curve of any kind evaluated piece by piece with `H` kernel channels (`CH` outputs, plus
-/// the weight for a rational curve); stops at the first invalid parameter.
-struct PieceJob<'r, 'a, 'p, const CH: usize, const H: usize>(Run<'r, 'a, 'p, CH>);
-
-impl<const CH: usize, const H: usize> LaneJob for PieceJob<'_, '_, '_, CH, H> {
+impl<const H: usize> LaneJob for PieceJob<'_, '_, '_, H> {
     type Output = Option<usize>;
 
     #[inline(always)]
@@ -506,10 +471,14 @@ impl<const CH: usize, const H: usize> LaneJob for PieceJob<'_, '_, '_, CH, H> {
             kernel: Vec::new(),
         };
         let mut generated = Vec::new();
+        // A Bézier curve's evenly spaced parameters are generated in the kernels' lanes.
+        let unit_uniform = curve.is_unit_polynomial() && matches!(params, BatchParams::Uniform(_));
+        let denominator = params.len().saturating_sub(1).max(1) as f64;
         let mut block = start;
         while block < end {
             let stop = (block + BLOCK).min(end);
             let ts: &[f64] = match params {
+                BatchParams::Uniform(_) if unit_uniform => &[],
                 BatchParams::Uniform(count) => {
                     uniform_block(count, block..stop, &curve.domain, &mut generated);
                     &generated
@@ -522,11 +491,18 @@ impl<const CH: usize, const H: usize> LaneJob for PieceJob<'_, '_, '_, CH, H> {
                     ts
                 }
             };
-            let mut outs: [&mut [f64]; CH] =
-                outs.each_mut().map(|s| &mut s[block - start..stop - start]);
+            let mut outs: Vec<&mut [f64]> = outs
+                .iter_mut()
+                .map(|s| &mut s[block - start..stop - start])
+                .collect();
             let in_order =
                 matches!(params, BatchParams::Uniform(_)) || ts.windows(2).all(|w| w[0] <= w[1]);
-            self::block::<L, H>(l, curve, ts, in_order, &mut outs, &mut ws);
+            let generate = unit_uniform.then_some(Uniform {
+                first: block,
+                denominator,
+            });
+            let n = stop - block;
+            self::block::<L, H>(l, curve, (ts, n, generate), in_order, &mut outs, &mut ws);
             block = stop;
         }
         None
@@ -543,17 +519,21 @@ impl<const CH: usize, const H: usize> LaneJob for PieceJob<'_, '_, '_, CH, H> {
 fn block<L: Lanes, const H: usize>(
     l: L,
     curve: &Pieces,
-    ts: &[f64],
+    (ts, n, generate): (&[f64], usize, Option<Uniform>),
     in_order: bool,
     outs: &mut [&mut [f64]],
     ws: &mut Workspace<L::V>,
 ) {
-    let n = ts.len();
     let rational = H > outs.len();
     ws.local.resize(n, 0.0);
     ws.weight.resize(n, 0.0);
     ws.runs.clear();
-    if in_order {
+    // A single non-rational piece on [0, 1] (a Bézier curve): the local parameters are the
+    // parameters (`(t - 0) / (1 - 0) = t` exactly), read where they are.
+    let unit = curve.is_unit_polynomial();
+    if unit {
+        ws.runs.push((0, n));
+    } else if in_order {
         // (Evenly spaced parameters always are.) Each piece's run is contiguous, found by
         // binary search, and evaluated in place.
         let mut k = 0;
@@ -578,7 +558,7 @@ fn block<L: Lanes, const H: usize>(
     for &(j, end) in &ws.runs {
         let piece = &curve.pieces[j];
         {
-            let mut target: [&mut [f64]; H] = if in_order {
+            let mut target: [&mut [f64]; H] = if in_order || unit {
                 let mut slots = outs
                     .iter_mut()
                     .map(|s| &mut s[k..end])
@@ -588,15 +568,18 @@ fn block<L: Lanes, const H: usize>(
                 let mut slots = ws.values.chunks_exact_mut(n).map(|s| &mut s[k..end]);
                 core::array::from_fn(|_| slots.next().expect("H channels of values"))
             };
-            let run = &ws.local[k..end];
+            let run = if unit { ts } else { &ws.local[k..end] };
+            // One call site of the kernels for both kinds of parameters.
+            let params = match generate {
+                Some(uniform) => Params::Uniform(uniform),
+                None => Params::Values(Values(run)),
+            };
             match &piece.euclidean {
-                None => {
-                    kernel::evaluate(l, &piece.coeffs, &Values(run), &mut target, &mut ws.kernel)
-                }
+                None => kernel::evaluate(l, &piece.coeffs, &params, &mut target, &mut ws.kernel),
                 Some(spline) => euclidean_run(spline, run, &mut target),
             }
         }
-        if in_order && rational {
+        if (in_order || unit) && rational {
             let weights = &mut ws.weight[k..end];
             reciprocals(weights);
             for (c, out) in outs.iter_mut().enumerate() {
@@ -608,7 +591,7 @@ fn block<L: Lanes, const H: usize>(
         }
         k = end;
     }
-    if in_order {
+    if in_order || unit {
         return;
     }
     // Scatter the values, in piece order, back to the parameters' places.
