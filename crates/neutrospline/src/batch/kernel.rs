@@ -278,34 +278,6 @@ impl Params for Values<'_> {
     }
 }
 
-/// Parameters of a run, evenly spaced or given: one type for both, so that every call site
-/// of the kernels compiles them once (a per-vector branch that the processor predicts).
-#[derive(Clone, Copy, Debug)]
-pub(crate) enum Run<'a> {
-    /// Evenly spaced, generated in the lanes.
-    Uniform(Uniform),
-    /// Given.
-    Values(Values<'a>),
-}
-
-impl Params for Run<'_> {
-    #[inline(always)]
-    fn vector<L: Lanes>(&self, l: L, offset: usize) -> L::V {
-        match self {
-            Run::Uniform(u) => u.vector(l, offset),
-            Run::Values(v) => v.vector(l, offset),
-        }
-    }
-
-    #[inline(always)]
-    fn side<L: Lanes>(&self, offset: usize, len: usize) -> Side {
-        match self {
-            Run::Uniform(u) => u.side::<L>(offset, len),
-            Run::Values(v) => v.side::<L>(offset, len),
-        }
-    }
-}
-
 /// Evaluates `coeffs` at the parameters of `params` into `out[c]` (channel `c`; every slice
 /// as long as the run). `scratch` is reused across calls (de Casteljau only).
 #[inline(always)]

@@ -33,7 +33,7 @@
 
 use core::ops::Range;
 
-use super::kernel::{self, Coeffs, Run as Params, Uniform, Values, MAX_CHANNELS};
+use super::kernel::{self, Coeffs, Uniform, Values, MAX_CHANNELS};
 use super::lanes::{self, LaneJob, Lanes};
 use super::{first_outside, partition, plan, run_tasks, BatchOptions, BatchParams, Task, BLOCK};
 use crate::any_curve::AnyCurve;
@@ -420,7 +420,9 @@ fn run_task<const CH: usize>(
             end,
             params,
         };
+        let unit = curve.is_unit_polynomial() && matches!(params, BatchParams::Uniform(_));
         let bad = match CH + usize::from(curve.rational) {
+            _ if unit => lanes::dispatch(UnitJob::<CH>(run)),
             5 => lanes::dispatch(PieceJob::<5>(run)),
             6 => lanes::dispatch(PieceJob::<6>(run)),
             7 => lanes::dispatch(PieceJob::<7>(run)),
@@ -442,6 +444,44 @@ struct Run<'r, 'a, 'p> {
     start: usize,
     end: usize,
     params: BatchParams<'p>,
+}
+
+/// A single non-rational piece on \[0, 1\] (a Bézier curve) at evenly spaced parameters,
+/// generated in the kernels' lanes (no parameter array to write and read back: at degree 3
+/// the evaluation runs at the speed of writing the output).
+struct UnitJob<'r, 'a, 'p, const CH: usize>(Run<'r, 'a, 'p>);
+
+impl<const CH: usize> LaneJob for UnitJob<'_, '_, '_, CH> {
+    type Output = Option<usize>;
+
+    #[inline(always)]
+    fn run<L: Lanes>(self, l: L) -> Option<usize> {
+        let Run {
+            curve,
+            outs,
+            start,
+            end,
+            params,
+        } = self.0;
+        let denominator = params.len().saturating_sub(1).max(1) as f64;
+        let mut scratch = Vec::new();
+        let mut block = start;
+        while block < end {
+            let stop = (block + BLOCK).min(end);
+            let run = Uniform {
+                first: block,
+                denominator,
+            };
+            let mut channels = outs.iter_mut();
+            let mut slots: [&mut [f64]; CH] = core::array::from_fn(|_| match channels.next() {
+                Some(channel) => &mut channel[block - start..stop - start],
+                None => unreachable!("a run has CH output channels"),
+            });
+            kernel::evaluate(l, &curve.pieces[0].coeffs, &run, &mut slots, &mut scratch);
+            block = stop;
+        }
+        None
+    }
 }
 
 /// A curve of any kind evaluated piece by piece with `H` kernel channels (the outputs, plus
@@ -471,14 +511,10 @@ impl<const H: usize> LaneJob for PieceJob<'_, '_, '_, H> {
             kernel: Vec::new(),
         };
         let mut generated = Vec::new();
-        // A Bézier curve's evenly spaced parameters are generated in the kernels' lanes.
-        let unit_uniform = curve.is_unit_polynomial() && matches!(params, BatchParams::Uniform(_));
-        let denominator = params.len().saturating_sub(1).max(1) as f64;
         let mut block = start;
         while block < end {
             let stop = (block + BLOCK).min(end);
             let ts: &[f64] = match params {
-                BatchParams::Uniform(_) if unit_uniform => &[],
                 BatchParams::Uniform(count) => {
                     uniform_block(count, block..stop, &curve.domain, &mut generated);
                     &generated
@@ -491,18 +527,15 @@ impl<const H: usize> LaneJob for PieceJob<'_, '_, '_, H> {
                     ts
                 }
             };
-            let mut outs: Vec<&mut [f64]> = outs
-                .iter_mut()
-                .map(|s| &mut s[block - start..stop - start])
-                .collect();
+            let channels = outs.len();
+            let mut slots: [&mut [f64]; MAX_CHANNELS] = Default::default();
+            for (slot, channel) in slots.iter_mut().zip(outs.iter_mut()) {
+                *slot = &mut channel[block - start..stop - start];
+            }
             let in_order =
                 matches!(params, BatchParams::Uniform(_)) || ts.windows(2).all(|w| w[0] <= w[1]);
-            let generate = unit_uniform.then_some(Uniform {
-                first: block,
-                denominator,
-            });
-            let n = stop - block;
-            self::block::<L, H>(l, curve, (ts, n, generate), in_order, &mut outs, &mut ws);
+            let outs = &mut slots[..channels];
+            self::block::<L, H>(l, curve, ts, in_order, outs, &mut ws);
             block = stop;
         }
         None
@@ -519,17 +552,18 @@ impl<const H: usize> LaneJob for PieceJob<'_, '_, '_, H> {
 fn block<L: Lanes, const H: usize>(
     l: L,
     curve: &Pieces,
-    (ts, n, generate): (&[f64], usize, Option<Uniform>),
+    ts: &[f64],
     in_order: bool,
     outs: &mut [&mut [f64]],
     ws: &mut Workspace<L::V>,
 ) {
+    let n = ts.len();
     let rational = H > outs.len();
     ws.local.resize(n, 0.0);
     ws.weight.resize(n, 0.0);
     ws.runs.clear();
-    // A single non-rational piece on [0, 1] (a Bézier curve): the local parameters are the
-    // parameters (`(t - 0) / (1 - 0) = t` exactly), read where they are.
+    // A single non-rational piece on [0, 1] (a Bézier curve) at given parameters: the local
+    // parameters are the parameters (`(t - 0) / (1 - 0) = t` exactly), read where they are.
     let unit = curve.is_unit_polynomial();
     if unit {
         ws.runs.push((0, n));
@@ -569,13 +603,10 @@ fn block<L: Lanes, const H: usize>(
                 core::array::from_fn(|_| slots.next().expect("H channels of values"))
             };
             let run = if unit { ts } else { &ws.local[k..end] };
-            // One call site of the kernels for both kinds of parameters.
-            let params = match generate {
-                Some(uniform) => Params::Uniform(uniform),
-                None => Params::Values(Values(run)),
-            };
             match &piece.euclidean {
-                None => kernel::evaluate(l, &piece.coeffs, &params, &mut target, &mut ws.kernel),
+                None => {
+                    kernel::evaluate(l, &piece.coeffs, &Values(run), &mut target, &mut ws.kernel)
+                }
                 Some(spline) => euclidean_run(spline, run, &mut target),
             }
         }
