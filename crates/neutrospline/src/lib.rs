@@ -60,6 +60,10 @@
 //! - Batch evaluation into flat arrays, SIMD with run-time dispatch and threads:
 //!   [`CurveBatch`] with [`BatchParams`] and [`BatchOptions`]; [`uniform_parameter`] is the
 //!   evenly spaced sampling every front end uses. The tuning constants are in [`batch`].
+//! - Fitting data (points with degrees, not control points): [`fit::fit`] interpolates or
+//!   fits by weighted least squares (to a number of control points or a tolerance), open or
+//!   closed, with smoothing, the degree channels under the membership rule's bounds, and a
+//!   [`fit::FitReport`].
 //! - The paper's Example 1: [`example1`], [`EXAMPLE1_TABLE`], [`EXAMPLE1_NAMES`].
 //!
 //! Geometry operations are infallible or return a typed error at the input boundary
@@ -87,6 +91,7 @@ mod curve;
 mod degrees;
 mod derivative;
 mod example;
+pub mod fit;
 mod knots;
 mod layout;
 mod point;
