@@ -34,10 +34,12 @@
 
 mod banded;
 mod basis;
+mod choose;
 mod knots;
 mod qp;
 mod report;
 mod solve;
+mod system;
 
 use core::fmt;
 
