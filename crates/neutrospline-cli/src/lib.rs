@@ -21,7 +21,8 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 use commands::{
-    bench::BenchArgs, check::CheckArgs, eval::EvalArgs, example::ExampleArgs, plot::PlotArgs,
+    bench::BenchArgs, bench_fit::BenchFitArgs, check::CheckArgs, eval::EvalArgs,
+    example::ExampleArgs, plot::PlotArgs,
 };
 
 /// Evaluate and check neutrosophic curves and surfaces (Bezier, B-spline, NURBS): control
@@ -65,6 +66,10 @@ enum Command {
     /// Time the library's batch evaluator (Mpts/s) on Example 1 or a random curve of a given
     /// degree, next to a memory-bandwidth reference
     Bench(BenchArgs),
+    /// Time fitting (least squares to a number of control points, or to a tolerance) of
+    /// synthetic noisy data in-process, as one JSON object (bench/compare_fit.py compares it
+    /// with scipy in the same run)
+    BenchFit(BenchFitArgs),
 }
 
 fn run(cli: &Cli) -> anyhow::Result<()> {
@@ -74,6 +79,7 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         Command::Plot(args) => commands::plot::run(args),
         Command::Example(args) => commands::example::run(args),
         Command::Bench(args) => commands::bench::run(args, &mut std::io::stdout().lock()),
+        Command::BenchFit(args) => commands::bench_fit::run(args, &mut std::io::stdout().lock()),
     }
 }
 

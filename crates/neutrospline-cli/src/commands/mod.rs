@@ -2,6 +2,7 @@
 //! and writes through the output layer.
 
 pub mod bench;
+pub mod bench_fit;
 pub mod check;
 pub mod eval;
 pub mod example;

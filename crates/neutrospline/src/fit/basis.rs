@@ -1,8 +1,7 @@
 //! B-spline basis functions and their derivatives at a parameter (The NURBS Book, A2.2 and
 //! A2.3), over a knot vector given as a slice: the rows of the fitting matrix.
 
-/// The largest degree whose basis values are computed on the stack.
-pub(crate) const MAX_STACK_DEGREE: usize = 31;
+use super::width::{with_width, Width};
 
 /// The span `k` with `u_k <= t < u_{k+1}` among `u_p ..= u_{len - p - 2}` (the last non-empty
 /// span for `t` at the end), for `t` in `[u_p, u_{len-p-1}]`.
@@ -16,29 +15,77 @@ pub(crate) fn span(knots: &[f64], p: usize, t: f64) -> usize {
     k
 }
 
-/// The `p + 1` non-zero basis functions `N_{k-p,p}(t) ..= N_{k,p}(t)` on span `k`, into
-/// `out[..=p]` (Cox-de Boor, non-negative with unit sum).
-pub(crate) fn values(knots: &[f64], p: usize, k: usize, t: f64, out: &mut [f64]) {
-    let mut stack = [0.0; 2 * (MAX_STACK_DEGREE + 1)];
-    let mut heap;
-    let buffer: &mut [f64] = if p <= MAX_STACK_DEGREE {
-        &mut stack[..2 * (p + 1)]
-    } else {
-        heap = vec![0.0; 2 * (p + 1)];
-        &mut heap
-    };
-    let (left, right) = buffer.split_at_mut(p + 1);
-    out[0] = 1.0;
-    for j in 1..=p {
-        left[j] = t - knots[k + 1 - j];
-        right[j] = knots[k + j] - t;
-        let mut saved = 0.0;
-        for r in 0..j {
-            let temp = out[r] / (right[r + 1] + left[j - r]);
-            out[r] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
+/// The `p + 1` non-zero basis functions at a run of parameters (Cox-de Boor, The NURBS Book
+/// A2.2): non-negative with unit sum.
+///
+/// On span `k` the recursion divides by the knot differences `u_{k+r+1} - u_{k+1-j+r}`
+/// (`1 <= j <= p`, `0 <= r < j`), which do not depend on `t` and are positive (each contains
+/// the span); their reciprocals are kept with the span, and the span of the previous
+/// parameter is tried first, so that sorted data costs a few multiplications per point.
+pub(crate) struct Basis<'a> {
+    knots: &'a [f64],
+    p: usize,
+    /// The span of the kept reciprocals (`usize::MAX` before the first).
+    span: usize,
+    /// `1 / (u_{k+r+1} - u_{k+1-j+r})` at `j (j - 1) / 2 + r`.
+    inverse: Vec<f64>,
+    left: Vec<f64>,
+    right: Vec<f64>,
+}
+
+impl<'a> Basis<'a> {
+    pub(crate) fn new(knots: &'a [f64], p: usize) -> Basis<'a> {
+        Basis {
+            knots,
+            p,
+            span: usize::MAX,
+            inverse: vec![0.0; p * (p + 1) / 2],
+            left: vec![0.0; p + 1],
+            right: vec![0.0; p + 1],
         }
-        out[j] = saved;
+    }
+
+    /// `N_{k-p,p}(t) ..= N_{k,p}(t)` into `out[..=p]`; returns the span `k`.
+    pub(crate) fn values(&mut self, t: f64, out: &mut [f64]) -> usize {
+        with_width!(row row = self.p + 1 => self.values_in(row, t, out))
+    }
+
+    /// [`Basis::values`] with the row's width `p + 1` given as a [`Width`].
+    #[inline(always)]
+    pub(crate) fn values_in(&mut self, row: impl Width, t: f64, out: &mut [f64]) -> usize {
+        let knots = self.knots;
+        let p = row.get() - 1;
+        let out = &mut out[..=p];
+        let (left, right) = (&mut self.left[..=p], &mut self.right[..=p]);
+        let mut k = self.span;
+        if k == usize::MAX || !(knots[k] <= t && t < knots[k + 1]) {
+            k = span(knots, p, t);
+            if k != self.span {
+                self.span = k;
+                for j in 1..=p {
+                    for r in 0..j {
+                        self.inverse[j * (j - 1) / 2 + r] =
+                            1.0 / (knots[k + r + 1] - knots[k + 1 - j + r]);
+                    }
+                }
+            }
+        }
+        for j in 1..=p {
+            left[j] = t - knots[k + 1 - j];
+            right[j] = knots[k + j] - t;
+        }
+        out[0] = 1.0;
+        for j in 1..=p {
+            let inverse = &self.inverse[j * (j - 1) / 2..];
+            let mut saved = 0.0;
+            for r in 0..j {
+                let temp = out[r] * inverse[r];
+                out[r] = saved + right[r + 1] * temp;
+                saved = left[j - r] * temp;
+            }
+            out[j] = saved;
+        }
+        k
     }
 }
 
@@ -151,11 +198,13 @@ mod tests {
     fn basis_values_and_derivatives_match_the_recursion() {
         let knots = [0.0, 0.0, 0.0, 0.0, 0.2, 0.5, 0.5, 0.8, 1.0, 1.0, 1.0, 1.0];
         let p = 3;
-        for step in 0..=20 {
+        let mut basis = Basis::new(&knots, p);
+        // Forwards, then backwards: the kept span is reused or replaced.
+        for step in (0..=20).chain((0..=20).rev()) {
             let t = step as f64 / 20.0;
-            let k = span(&knots, p, t);
             let mut n = [0.0; 4];
-            values(&knots, p, k, t, &mut n);
+            let k = basis.values(t, &mut n);
+            assert_eq!(k, span(&knots, p, t));
             assert!((n.iter().sum::<f64>() - 1.0).abs() < 1e-15);
             for j in 0..=p {
                 let want = cox(&knots, k - p + j, p, t);

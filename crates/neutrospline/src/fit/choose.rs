@@ -2,7 +2,7 @@
 //! closed curves), and refining them to a tolerance.
 
 use super::knots::{clamped, interpolation_knots, least_squares_knots, periodic_base};
-use super::system::{Layout, System};
+use super::system::{Layout, Rows, System, Values};
 use super::{FitData, FitError, FitKind, FitOptions, FitTarget};
 use crate::knots::KnotVector;
 
@@ -265,7 +265,8 @@ pub(super) fn position_fit<const D: usize>(
     weights: &[f64],
     lambda: f64,
 ) -> Result<f64, FitError> {
-    Ok(position_residuals(data, layout, params, weights, lambda)?
+    let rows = Rows::new(layout, params);
+    Ok(position_residuals(data, layout, &rows, weights, lambda)?
         .into_iter()
         .fold(0.0, f64::max))
 }
@@ -274,23 +275,21 @@ pub(super) fn position_fit<const D: usize>(
 pub(super) fn position_residuals<const D: usize>(
     data: &FitData<D>,
     layout: &Layout,
-    params: &[f64],
+    rows: &Rows,
     weights: &[f64],
     lambda: f64,
 ) -> Result<Vec<f64>, FitError> {
-    let system = System::new(layout, params, weights, Vec::new(), lambda)?;
-    let positions = data.positions();
-    let coords: Vec<Vec<f64>> = (0..D)
-        .map(|a| system.solve(&|k| positions[k][a], 0))
-        .collect();
-    Ok((0..data.len())
-        .map(|k| {
-            let d2: f64 = (0..D)
-                .map(|a| (system.rows.dot(layout, k, &coords[a]) - positions[k][a]).powi(2))
-                .sum();
-            d2.sqrt()
-        })
-        .collect())
+    let q = Values {
+        positions: data.positions(),
+        degrees: None,
+    };
+    let system = System::new(layout, rows, weights, q, Vec::new(), lambda)?;
+    let x = system.solve();
+    let mut residuals = vec![0.0; data.len()];
+    rows.sweep(layout, &x, q, None, |k, r| {
+        residuals[k] = r.iter().map(|v| v * v).sum::<f64>().sqrt();
+    });
+    Ok(residuals)
 }
 
 /// Knot refinement to a tolerance (as splipy's `fit` and The NURBS Book's A9.10 do): fit,
@@ -305,8 +304,9 @@ pub(super) fn refine<const D: usize>(
     lambda: f64,
     e: f64,
 ) -> Result<Chosen, FitError> {
+    let mut rows = Rows::new(layout, params);
     for _ in 0..MAX_REFINEMENTS {
-        let residuals = position_residuals(data, layout, params, weights, lambda)?;
+        let residuals = position_residuals(data, layout, &rows, weights, lambda)?;
         let bad: Vec<f64> = params
             .iter()
             .zip(&residuals)
@@ -354,9 +354,10 @@ pub(super) fn refine<const D: usize>(
         for &k in &knots {
             candidate = with_knot(&candidate, k);
         }
+        let candidate_rows = Rows::new(&candidate, params);
         if knots.is_empty()
             || candidate.n > sorted.len()
-            || schoenberg_whitney(&candidate, params, weights).is_err()
+            || schoenberg_whitney(&candidate, &candidate_rows, params, weights).is_err()
         {
             return Ok(Chosen {
                 layout: layout.clone(),
@@ -365,6 +366,7 @@ pub(super) fn refine<const D: usize>(
             });
         }
         *layout = candidate;
+        rows = candidate_rows;
     }
     let met = position_fit(data, layout, params, weights, lambda)? <= e;
     Ok(Chosen {
@@ -395,11 +397,11 @@ pub(super) fn with_knot(layout: &Layout, knot: f64) -> Layout {
 /// unknown without.
 pub(super) fn schoenberg_whitney(
     layout: &Layout,
+    rows: &Rows,
     params: &[f64],
     weights: &[f64],
 ) -> Result<(), usize> {
     let p = layout.p;
-    let mut values = vec![0.0; p + 1];
     let mut next = 0;
     let mut order: Vec<usize> = (0..params.len()).collect();
     order.sort_by(|&a, &b| params[a].total_cmp(&params[b]));
@@ -413,7 +415,7 @@ pub(super) fn schoenberg_whitney(
             if weights[point] <= 0.0 {
                 continue;
             }
-            let first = layout.row(params[point], 0, &mut values);
+            let (first, values) = rows.row(point);
             let hit = (0..=p).any(|r| layout.index(first, r) == next && values[r] > 0.0);
             if hit {
                 break;

@@ -22,14 +22,6 @@ impl Parametrization {
             Parametrization::Centripetal => "centripetal",
         }
     }
-
-    fn exponent(self) -> f64 {
-        match self {
-            Parametrization::Uniform => 0.0,
-            Parametrization::ChordLength => 1.0,
-            Parametrization::Centripetal => 0.5,
-        }
-    }
 }
 
 /// Cumulative parameters of the points, normalised so that the last is `1`: increments
@@ -44,10 +36,13 @@ pub(crate) fn parameters<const D: usize>(
     closed: bool,
 ) -> Result<Vec<f64>, usize> {
     let m = positions.len();
-    let e = parametrization.exponent();
     let distance = |a: &[f64; D], b: &[f64; D]| -> f64 {
         let d2: f64 = (0..D).map(|i| (a[i] - b[i]).powi(2)).sum();
-        d2.sqrt().powf(e)
+        match parametrization {
+            Parametrization::Uniform => 1.0,
+            Parametrization::ChordLength => d2.sqrt(),
+            Parametrization::Centripetal => d2.sqrt().sqrt(),
+        }
     };
     let mut steps: Vec<f64> = positions
         .windows(2)

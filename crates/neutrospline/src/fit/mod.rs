@@ -40,6 +40,7 @@ mod qp;
 mod report;
 mod solve;
 mod system;
+mod width;
 
 use core::fmt;
 

@@ -4,7 +4,7 @@
 use super::choose::{choose, schoenberg_whitney, Chosen};
 use super::knots::parameters;
 use super::report::{AtBound, FitReport};
-use super::system::{Extra, Layout, System};
+use super::system::{Extra, Layout, Rows, System, Values};
 use super::{
     channel_names, qp, DataWeights, Fit, FitData, FitError, FitKind, FitOptions, FitTarget,
 };
@@ -142,7 +142,8 @@ fn finish<const D: usize>(
     let layout = &chosen.layout;
     let p = layout.p;
     let m = data.len();
-    let sw = schoenberg_whitney(layout, &params, weights);
+    let rows = Rows::new(layout, &params);
+    let sw = schoenberg_whitney(layout, &rows, &params, weights);
     if let Err(unknown) = sw {
         if options.smoothing == 0.0 && !chosen.extras_tangents {
             return Err(FitError::SchoenbergWhitney {
@@ -154,30 +155,33 @@ fn finish<const D: usize>(
         }
     }
     let degrees = data.degrees();
-    let channel = |k: usize, c: usize| degrees[k].to_array()[c];
     let extras = if chosen.extras_tangents {
         tangent_rows(data, options, layout, &params)
     } else {
         Vec::new()
     };
-    let system = System::new(layout, &params, weights, extras, options.smoothing)?;
-    let positions = data.positions();
-    let coords: Vec<Vec<f64>> = (0..D)
-        .map(|a| system.solve(&|k| positions[k][a], a))
-        .collect();
-    // The degree channels: unconstrained, then under the rule's bounds where they leave them.
+    // Every channel at once: positions, then truth, indeterminacy, falsity.
+    let cc = D + 3;
+    let q = Values {
+        positions: data.positions(),
+        degrees: Some(degrees),
+    };
+    let system = System::new(layout, &rows, weights, q, extras, options.smoothing)?;
+    let all = system.solve();
+    let rhs = &system.rhs;
     let n = layout.n;
-    let solve_free = |c: usize| system.solve(&|k| channel(k, c), D + c);
+    let column = |x: &[f64], j: usize| -> Vec<f64> { (0..n).map(|i| x[i * cc + j]).collect() };
+    let coords: Vec<Vec<f64>> = (0..D).map(|a| column(&all, a)).collect();
+    // The degree channels: unconstrained, then under the rule's bounds where they leave them.
     let mut at_bound = Vec::new();
     let mut bounded = |k: usize, columns: &[usize]| -> Result<Vec<Vec<f64>>, FitError> {
-        let free: Vec<Vec<f64>> = columns.iter().map(|&c| solve_free(c)).collect();
+        let free: Vec<Vec<f64>> = columns.iter().map(|&c| column(&all, D + c)).collect();
         let mut start = vec![0.0; n * k];
         let mut b = vec![0.0; n * k];
         for (j, &c) in columns.iter().enumerate() {
-            let rhs = system.rhs(&|q| channel(q, c), D + c);
             for i in 0..n {
                 start[i * k + j] = free[j][i];
-                b[i * k + j] = rhs[i];
+                b[i * k + j] = rhs[i * cc + D + c];
             }
         }
         let feasible = start
@@ -275,28 +279,26 @@ fn finish<const D: usize>(
     let mut max = vec![0.0_f64; D + 3];
     let mut sum = vec![0.0_f64; D + 3];
     let (mut worst_index, mut worst_distance) = (0, -1.0);
-    let controls: Vec<Vec<f64>> = (0..3)
-        .map(|c| control.iter().map(|row| row[c]).collect())
-        .collect();
-    for k in 0..m {
+    // The final coefficients: the positions as solved, the degrees as bounded.
+    let mut coefficients = all.clone();
+    for (i, row) in control.iter().enumerate() {
+        coefficients[i * cc + D..(i + 1) * cc].copy_from_slice(row);
+    }
+    rows.sweep(layout, &coefficients, q, None, |k, residual| {
         let mut d2 = 0.0;
-        for a in 0..D {
-            let r = system.rows.dot(layout, k, &coords[a]) - positions[k][a];
-            d2 += r * r;
-            max[a] = max[a].max(r.abs());
-            sum[a] += r * r;
-        }
-        for c in 0..3 {
-            let r = system.rows.dot(layout, k, &controls[c]) - channel(k, c);
-            max[D + c] = max[D + c].max(r.abs());
-            sum[D + c] += r * r;
+        for (j, r) in residual.iter().enumerate() {
+            if j < D {
+                d2 += r * r;
+            }
+            max[j] = max[j].max(r.abs());
+            sum[j] += r * r;
         }
         let d = d2.sqrt();
         if d > worst_distance {
             worst_distance = d;
             worst_index = k;
         }
-    }
+    });
     let report = FitReport {
         control_points: n,
         degree: p,
@@ -310,7 +312,7 @@ fn finish<const D: usize>(
         worst_parameter: params[worst_index],
         worst_distance,
         schoenberg_whitney: sw.is_ok(),
-        condition_estimate: system.matrix.condition_estimate(&system.factor),
+        condition_estimate: system.condition,
         at_bound,
         tolerance_met: match target {
             FitTarget::Tolerance(_) => chosen.tolerance_met,

@@ -4,7 +4,9 @@
 use super::banded::{Band, CyclicBand, Factor, Normal};
 use super::basis;
 use super::knots::periodic_knots;
+use super::width::{with_width, Width};
 use super::FitError;
+use crate::degrees::Degrees;
 
 /// The spline being fitted: degree, knots and how the unknowns map to basis functions.
 #[derive(Clone, Debug)]
@@ -49,14 +51,15 @@ impl Layout {
     /// returns the unknown of the first (the others follow, cyclically when periodic).
     pub(super) fn row(&self, t: f64, order: usize, values: &mut [f64]) -> usize {
         let p = self.p;
-        let k = basis::span(&self.knots, p, t);
-        if order == 0 {
-            basis::values(&self.knots, p, k, t, values);
+        let k = if order == 0 {
+            basis::Basis::new(&self.knots, p).values(t, values)
         } else {
+            let k = basis::span(&self.knots, p, t);
             let mut all = vec![0.0; (order + 1) * (p + 1)];
             basis::derivatives(&self.knots, p, k, t, order, &mut all);
             values[..=p].copy_from_slice(&all[order * (p + 1)..]);
-        }
+            k
+        };
         (k - p) % self.n.max(1)
     }
 
@@ -90,7 +93,35 @@ impl Layout {
     }
 }
 
-/// A row of the basis matrix: its first unknown and `p + 1` values.
+/// The data values a pass reads: the positions, and after them the degrees (truth,
+/// indeterminacy, falsity) when every channel is fitted: `D` or `D + 3` channels per point.
+#[derive(Clone, Copy)]
+pub(super) struct Values<'a, const D: usize> {
+    pub(super) positions: &'a [[f64; D]],
+    pub(super) degrees: Option<&'a [Degrees]>,
+}
+
+impl<const D: usize> Values<'_, D> {
+    pub(super) fn channels(&self) -> usize {
+        if self.degrees.is_some() {
+            D + 3
+        } else {
+            D
+        }
+    }
+
+    /// Point `k`'s channels into `out`.
+    #[inline(always)]
+    fn load(&self, k: usize, out: &mut [f64]) {
+        out[..D].copy_from_slice(&self.positions[k]);
+        if let Some(degrees) = self.degrees {
+            out[D..D + 3].copy_from_slice(&degrees[k].to_array());
+        }
+    }
+}
+
+/// The basis matrix at the data: row `k` has `p + 1` values from unknown `first[k]` on
+/// (cyclically when periodic).
 pub(super) struct Rows {
     pub(super) p: usize,
     pub(super) first: Vec<usize>,
@@ -100,11 +131,15 @@ pub(super) struct Rows {
 impl Rows {
     pub(super) fn new(layout: &Layout, params: &[f64]) -> Rows {
         let p = layout.p;
+        let mut basis = basis::Basis::new(&layout.knots, p);
         let mut first = Vec::with_capacity(params.len());
         let mut values = vec![0.0; params.len() * (p + 1)];
-        for (k, &t) in params.iter().enumerate() {
-            first.push(layout.row(t, 0, &mut values[k * (p + 1)..(k + 1) * (p + 1)]));
-        }
+        let n = layout.n.max(1);
+        with_width!(row width = p + 1 => {
+            for (t, row) in params.iter().zip(values.chunks_exact_mut(p + 1)) {
+                first.push((basis.values_in(width, *t, row) - p) % n);
+            }
+        });
         Rows { p, first, values }
     }
 
@@ -113,14 +148,140 @@ impl Rows {
         (self.first[k], &self.values[k * w..(k + 1) * w])
     }
 
-    /// `sum_r N_r x_{j_r}` at data point `k`.
-    pub(super) fn dot(&self, layout: &Layout, k: usize, x: &[f64]) -> f64 {
-        let (first, values) = self.row(k);
-        values
-            .iter()
-            .enumerate()
-            .map(|(r, v)| v * x[layout.index(first, r)])
-            .sum()
+    /// The runs of consecutive rows that share their first unknown (one per span for sorted
+    /// data): sums over a run are gathered in a small block and added to the system once.
+    fn runs(&self) -> impl Iterator<Item = (usize, core::ops::Range<usize>)> + '_ {
+        let mut start = 0;
+        self.first.chunk_by(|a, b| a == b).map(move |run| {
+            let rows = start..start + run.len();
+            start = rows.end;
+            (run[0], rows)
+        })
+    }
+
+    /// Adds the lower triangle of `N^T W N` into `matrix` and `N^T W q` of the data values `q`
+    /// into `b` (`b[i c + j]`, `c` channels).
+    fn normal_equations<const D: usize>(
+        &self,
+        layout: &Layout,
+        weights: &[f64],
+        q: Values<'_, D>,
+        matrix: &mut Normal,
+        b: &mut [f64],
+    ) {
+        with_width!(row row = self.p + 1 => with_width!(channels channels = q.channels() => {
+            self.normal_equations_in((channels, row), layout, weights, q, matrix, b)
+        }));
+    }
+
+    fn normal_equations_in<const D: usize>(
+        &self,
+        (channels, row): (impl Width, impl Width),
+        layout: &Layout,
+        weights: &[f64],
+        q: Values<'_, D>,
+        matrix: &mut Normal,
+        b: &mut [f64],
+    ) {
+        let (c, w) = (channels.get(), row.get());
+        let mut block = vec![0.0; w * w];
+        let mut sums = vec![0.0; w * c];
+        let mut qk = vec![0.0; c];
+        for (first, rows) in self.runs() {
+            block.fill(0.0);
+            sums.fill(0.0);
+            for k in rows {
+                let weight = weights[k];
+                if weight == 0.0 {
+                    continue;
+                }
+                let values = &self.values[k * w..(k + 1) * w];
+                q.load(k, &mut qk);
+                for (r, v) in values.iter().enumerate() {
+                    let a = weight * v;
+                    for (entry, vs) in block[r * w..r * w + r + 1].iter_mut().zip(values) {
+                        *entry += a * vs;
+                    }
+                    for (sum, qv) in sums[r * c..(r + 1) * c].iter_mut().zip(&qk) {
+                        *sum += a * qv;
+                    }
+                }
+            }
+            for r in 0..w {
+                let i = layout.index(first, r);
+                for s in 0..=r {
+                    matrix.add(i, layout.index(first, s), block[r * w + s]);
+                }
+                for (bv, sum) in b[i * c..(i + 1) * c].iter_mut().zip(&sums[r * c..]) {
+                    *bv += sum;
+                }
+            }
+        }
+    }
+
+    /// One pass over the data with the coefficients `x` (`x[i c + j]`) of the `c` channels of
+    /// `q`: calls `each(k, residual)` with `residual[j] = q_kj - (N x)_kj` for every row, and,
+    /// with `gradient`, adds `N^T W (q - N x)` into it.
+    pub(super) fn sweep<const D: usize>(
+        &self,
+        layout: &Layout,
+        x: &[f64],
+        q: Values<'_, D>,
+        gradient: Option<(&[f64], &mut [f64])>,
+        each: impl FnMut(usize, &[f64]),
+    ) {
+        with_width!(row row = self.p + 1 => with_width!(channels channels = q.channels() => {
+            self.sweep_in((channels, row), layout, x, q, gradient, each)
+        }));
+    }
+
+    fn sweep_in<const D: usize>(
+        &self,
+        (channels, row): (impl Width, impl Width),
+        layout: &Layout,
+        x: &[f64],
+        q: Values<'_, D>,
+        mut gradient: Option<(&[f64], &mut [f64])>,
+        mut each: impl FnMut(usize, &[f64]),
+    ) {
+        let (c, w) = (channels.get(), row.get());
+        let mut local = vec![0.0; w * c];
+        let mut sums = vec![0.0; w * c];
+        let mut residual = vec![0.0; c];
+        for (first, rows) in self.runs() {
+            for r in 0..w {
+                let i = layout.index(first, r);
+                local[r * c..(r + 1) * c].copy_from_slice(&x[i * c..(i + 1) * c]);
+            }
+            sums.fill(0.0);
+            for k in rows {
+                let values = &self.values[k * w..(k + 1) * w];
+                q.load(k, &mut residual);
+                for (v, xr) in values.iter().zip(local.chunks_exact(c)) {
+                    for (res, xv) in residual.iter_mut().zip(xr) {
+                        *res -= v * xv;
+                    }
+                }
+                each(k, &residual);
+                if let Some((weights, _)) = &gradient {
+                    let weight = weights[k];
+                    for (v, sr) in values.iter().zip(sums.chunks_exact_mut(c)) {
+                        let a = weight * v;
+                        for (sum, res) in sr.iter_mut().zip(&residual) {
+                            *sum += a * res;
+                        }
+                    }
+                }
+            }
+            if let Some((_, g)) = &mut gradient {
+                for r in 0..w {
+                    let i = layout.index(first, r);
+                    for (gv, sum) in g[i * c..(i + 1) * c].iter_mut().zip(&sums[r * c..]) {
+                        *gv += sum;
+                    }
+                }
+            }
+        }
     }
 }
 
@@ -131,105 +292,123 @@ pub(super) struct Extra {
     pub(super) targets: Vec<f64>,
 }
 
-/// The normal equations of one layout and their factorisation.
-pub(super) struct System<'a> {
+/// The normal equations of one layout for `c` channels of data values, factored.
+pub(super) struct System<'a, const D: usize> {
     pub(super) layout: &'a Layout,
-    pub(super) rows: Rows,
+    pub(super) rows: &'a Rows,
     pub(super) weights: &'a [f64],
+    /// The data values.
+    pub(super) q: Values<'a, D>,
+    pub(super) c: usize,
     pub(super) extras: Vec<Extra>,
     /// `lambda R`, when smoothing.
     pub(super) penalty: Option<Normal>,
     pub(super) matrix: Normal,
     pub(super) factor: Factor,
+    /// An estimate of the matrix's 1-norm condition number.
+    pub(super) condition: f64,
+    /// The right-hand sides `N^T W q` (and the extras' rows), `b[i c + j]`.
+    pub(super) rhs: Vec<f64>,
 }
 
-impl<'a> System<'a> {
+impl<'a, const D: usize> System<'a, D> {
     pub(super) fn new(
         layout: &'a Layout,
-        params: &[f64],
+        rows: &'a Rows,
         weights: &'a [f64],
+        q: Values<'a, D>,
         extras: Vec<Extra>,
         lambda: f64,
-    ) -> Result<System<'a>, FitError> {
-        let rows = Rows::new(layout, params);
+    ) -> Result<System<'a, D>, FitError> {
+        let c = q.channels();
         let mut matrix = layout.normal();
-        for k in 0..params.len() {
-            let (first, values) = rows.row(k);
-            add_outer(&mut matrix, layout, first, values, weights[k]);
-        }
+        let mut rhs = vec![0.0; layout.n * c];
+        rows.normal_equations(layout, weights, q, &mut matrix, &mut rhs);
         for e in &extras {
             add_outer(&mut matrix, layout, e.first, &e.values, 1.0);
+            for (r, v) in e.values.iter().enumerate() {
+                let i = layout.index(e.first, r);
+                for (bv, target) in rhs[i * c..(i + 1) * c].iter_mut().zip(&e.targets) {
+                    *bv += v * target;
+                }
+            }
         }
         let penalty = (lambda > 0.0).then(|| second_derivative_gram(layout, lambda));
         if let Some(r) = &penalty {
             matrix.add_matrix(r);
         }
         let factor = matrix.factor().ok_or(FitError::Singular)?;
+        let condition = matrix.condition_estimate(&factor);
         Ok(System {
             layout,
             rows,
             weights,
+            q,
+            c,
             extras,
             penalty,
             matrix,
             factor,
+            condition,
+            rhs,
         })
     }
 
-    /// The right-hand side `N^T W q` (and the extras' rows) for one channel.
-    pub(super) fn rhs(&self, target: &dyn Fn(usize) -> f64, extra: usize) -> Vec<f64> {
-        let mut b = vec![0.0; self.layout.n];
-        for k in 0..self.weights.len() {
-            let (first, values) = self.rows.row(k);
-            let wq = self.weights[k] * target(k);
-            for (r, v) in values.iter().enumerate() {
-                b[self.layout.index(first, r)] += v * wq;
+    /// Solves `M x = b` for the `c` channels (`b[i c + j]`), in place.
+    fn solve_in_place(&self, b: &mut [f64]) {
+        let (n, c) = (self.layout.n, self.c);
+        let mut column = vec![0.0; n];
+        for j in 0..c {
+            for i in 0..n {
+                column[i] = b[i * c + j];
+            }
+            self.factor.solve(&mut column);
+            for i in 0..n {
+                b[i * c + j] = column[i];
             }
         }
-        for e in &self.extras {
-            for (r, v) in e.values.iter().enumerate() {
-                b[self.layout.index(e.first, r)] += v * e.targets[extra];
-            }
-        }
-        b
     }
 
-    /// The least-squares solution for one channel, with two steps of refinement against the
-    /// data residuals (the gradient of the objective computed from `q - N x`, not from the
-    /// normal equations), which recovers the accuracy the normal equations lose.
-    pub(super) fn solve(&self, target: &dyn Fn(usize) -> f64, extra: usize) -> Vec<f64> {
-        let layout = self.layout;
-        let mut x = self.rhs(target, extra);
-        self.factor.solve(&mut x);
-        for _ in 0..2 {
-            let mut g = vec![0.0; layout.n];
-            for k in 0..self.weights.len() {
-                let residual = self.weights[k] * (target(k) - self.rows.dot(layout, k, &x));
-                let (first, values) = self.rows.row(k);
-                for (r, v) in values.iter().enumerate() {
-                    g[layout.index(first, r)] += v * residual;
-                }
-            }
+    /// The least-squares solution, with one step of refinement against the data residuals
+    /// (the gradient of the objective computed from `q - N x`, not from the normal
+    /// equations), which recovers the accuracy the normal equations lose, and a second when
+    /// the matrix is ill-conditioned. Returns the coefficients `x[i c + j]`.
+    pub(super) fn solve(&self) -> Vec<f64> {
+        let (layout, c) = (self.layout, self.c);
+        let mut x = self.rhs.clone();
+        self.solve_in_place(&mut x);
+        let steps = if self.condition > 1e6 { 2 } else { 1 };
+        for _ in 0..steps {
+            let mut g = vec![0.0; layout.n * c];
+            self.rows
+                .sweep(layout, &x, self.q, Some((self.weights, &mut g)), |_, _| {});
             for e in &self.extras {
-                let value: f64 = e
-                    .values
-                    .iter()
-                    .enumerate()
-                    .map(|(r, v)| v * x[layout.index(e.first, r)])
-                    .sum();
-                let residual = e.targets[extra] - value;
-                for (r, v) in e.values.iter().enumerate() {
-                    g[layout.index(e.first, r)] += v * residual;
+                for j in 0..c {
+                    let value: f64 = e
+                        .values
+                        .iter()
+                        .enumerate()
+                        .map(|(r, v)| v * x[layout.index(e.first, r) * c + j])
+                        .sum();
+                    let residual = e.targets[j] - value;
+                    for (r, v) in e.values.iter().enumerate() {
+                        g[layout.index(e.first, r) * c + j] += v * residual;
+                    }
                 }
             }
             if let Some(r) = &self.penalty {
-                let mut rx = vec![0.0; layout.n];
-                r.mul(&x, &mut rx);
-                for (gi, ri) in g.iter_mut().zip(&rx) {
-                    *gi -= ri;
+                let (mut column, mut product) = (vec![0.0; layout.n], vec![0.0; layout.n]);
+                for j in 0..c {
+                    for i in 0..layout.n {
+                        column[i] = x[i * c + j];
+                    }
+                    r.mul(&column, &mut product);
+                    for i in 0..layout.n {
+                        g[i * c + j] -= product[i];
+                    }
                 }
             }
-            self.factor.solve(&mut g);
+            self.solve_in_place(&mut g);
             for (xi, di) in x.iter_mut().zip(&g) {
                 *xi += di;
             }
