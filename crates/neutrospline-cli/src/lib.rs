@@ -22,7 +22,7 @@ use clap::{Parser, Subcommand};
 
 use commands::{
     bench::BenchArgs, bench_fit::BenchFitArgs, check::CheckArgs, eval::EvalArgs,
-    example::ExampleArgs, plot::PlotArgs,
+    example::ExampleArgs, fit::FitArgs, plot::PlotArgs,
 };
 
 /// Evaluate and check neutrosophic curves and surfaces (Bezier, B-spline, NURBS): control
@@ -60,6 +60,10 @@ enum Command {
     Check(CheckArgs),
     /// Draw a figure of a curve or surface (SVG or PNG): the paper's views and a plane view
     Plot(PlotArgs),
+    /// Fit a curve to measured data points (CSV with positions and degrees): interpolation or
+    /// least squares, the degrees kept within their bounds; the model to standard output or
+    /// -o, the error report to standard error
+    Fit(FitArgs),
     /// Run the paper's Example 1 from built-in data: print its control points and curve, and
     /// with --out DIR write the paper's five figures and the curve table
     Example(ExampleArgs),
@@ -77,6 +81,7 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         Command::Eval(args) => commands::eval::run(args),
         Command::Check(args) => commands::check::run(args),
         Command::Plot(args) => commands::plot::run(args),
+        Command::Fit(args) => commands::fit::run(args),
         Command::Example(args) => commands::example::run(args),
         Command::Bench(args) => commands::bench::run(args, &mut std::io::stdout().lock()),
         Command::BenchFit(args) => commands::bench_fit::run(args, &mut std::io::stdout().lock()),

@@ -27,11 +27,11 @@ pub(crate) fn parse(file: &str, bytes: &[u8], options: &ReadOptions) -> Result<P
 }
 
 /// A reading error: the line and the message.
-type LineError = (usize, String);
+pub(crate) type LineError = (usize, String);
 
 /// Reads the records of a CSV stream one physical line at a time (a quoted cell may span
 /// lines), never holding more than one record in memory.
-struct Records<R> {
+pub(crate) struct Records<R> {
     reader: R,
     /// The physical line last read.
     line: usize,
@@ -40,6 +40,15 @@ struct Records<R> {
 }
 
 impl<R: BufRead> Records<R> {
+    /// Records from the start of `reader`.
+    pub(crate) fn new(reader: R) -> Records<R> {
+        Records {
+            reader,
+            line: 0,
+            buffer: Vec::new(),
+        }
+    }
+
     /// Appends the next physical line to the buffer (at most [`MAX_CSV_LINE`] bytes in all);
     /// `false` at the end of the input.
     fn read_line(&mut self) -> Result<bool, LineError> {
@@ -65,7 +74,7 @@ impl<R: BufRead> Records<R> {
     }
 
     /// The next record that is neither empty nor a comment, with the line it starts on.
-    fn next_record(&mut self) -> Result<Option<(usize, &[u8])>, LineError> {
+    pub(crate) fn next_record(&mut self) -> Result<Option<(usize, &[u8])>, LineError> {
         loop {
             self.buffer.clear();
             if !self.read_line()? {
@@ -104,7 +113,7 @@ impl<R: BufRead> Records<R> {
 }
 
 /// Splits one record (UTF-8, line ends removed) into trimmed cells.
-fn cells(record: &str) -> Result<::csv::StringRecord, String> {
+pub(crate) fn cells(record: &str) -> Result<::csv::StringRecord, String> {
     let mut reader = ::csv::ReaderBuilder::new()
         .has_headers(false)
         .trim(::csv::Trim::All)
@@ -135,11 +144,7 @@ pub(crate) fn parse_reader(
         field,
         message,
     };
-    let mut records = Records {
-        reader,
-        line: 0,
-        buffer: Vec::new(),
-    };
+    let mut records = Records::new(reader);
     // The next record as text and cells, with its line.
     let mut next = || -> Result<Option<(usize, ::csv::StringRecord)>, InputError> {
         let Some((line, bytes)) = records

@@ -11,6 +11,9 @@
 //!   (`bad.csv:2: truth = 1.2 is outside [0, 1] (every degree must be in [0, 1])`): an
 //!   [`InputError`] inside a [`ReadError`]. Every check of degrees, knots, weights and grids is
 //!   the core's own; this crate locates its errors.
+//! - Data for fitting: [`load_data`] / [`read_data`] read measured points (CSV, with optional
+//!   `parameter` and `weight` columns) into a [`DataTable`], whose errors and fitting errors
+//!   are located by line.
 //! - Writing: [`to_toml_string`], [`to_json_string`], [`to_csv_string`] and [`save`], which
 //!   replaces a file atomically ([`AtomicFile`]). Whatever is written reads back to an equal
 //!   model, numbers to the last bit.
@@ -42,6 +45,7 @@
 mod atomic;
 mod build;
 mod csv;
+mod data;
 mod error;
 mod format;
 mod model;
@@ -56,6 +60,7 @@ mod walker;
 mod write;
 
 pub use atomic::AtomicFile;
+pub use data::{load_data, read_data, DataTable};
 pub use error::{InputError, ReadError, UnsupportedFormat, WriteError};
 pub use format::{
     Format, Limits, DEFAULT_MAX_CONTROL_POINTS, DEFAULT_MAX_FILE_SIZE, MAX_CSV_LINE, MAX_INTEGER,

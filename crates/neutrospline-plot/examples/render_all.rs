@@ -202,7 +202,7 @@ fn degenerate_surfaces() -> Result<Vec<(&'static str, Surface)>, Box<dyn Error>>
 fn degenerate(out: &std::path::Path) -> Result<(), Box<dyn Error>> {
     for (tag, surface) in degenerate_surfaces()? {
         let model = PlotModel::from_surface(&surface)?;
-        for view in View::ALL {
+        for view in View::MODEL {
             write(
                 out,
                 &format!("degenerate-{tag}"),
@@ -281,7 +281,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         ("2d", &plane, &options),
         ("3d", &space, &PlotOptions::default()),
     ] {
-        for view in View::ALL {
+        for view in View::MODEL {
             let svg = render_svg(model, view, options)?;
             let png = svg_to_png(&svg, options.width(), options.height())?;
             std::fs::write(out.join(format!("{tag}-{view}.svg")), &svg)?;
@@ -295,7 +295,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     }
     let curves = [("bspline", wave()?), ("nurbs-circle", nurbs_circle()?)];
     for (tag, model) in &curves {
-        for view in View::ALL {
+        for view in View::MODEL {
             write(
                 &out,
                 tag,
@@ -312,7 +312,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     ];
     for (tag, surface) in &surfaces {
         let model = PlotModel::from_surface(surface)?;
-        for view in View::ALL {
+        for view in View::MODEL {
             write(&out, tag, &model, view, &PlotOptions::default())?;
         }
     }

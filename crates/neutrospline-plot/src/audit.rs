@@ -300,11 +300,53 @@ mod tests {
     }
 
     #[test]
+    fn audit_data_view_every_size_keeps_texts_and_legend_clear() {
+        use crate::DataOverlay;
+        use neutrospline::DegreeKind;
+        for (what, model, options) in models() {
+            if model.is_surface() {
+                continue;
+            }
+            // Points around the curve's samples, pushed off it, with parameters and without.
+            let curve = model.curve_points(40).unwrap();
+            let positions: Vec<[f64; 3]> = curve
+                .iter()
+                .enumerate()
+                .map(|(k, p)| {
+                    let w = 0.3 * (k as f64 * 1.3).sin();
+                    [p.pos[0] + w, p.pos[1] - w, p.pos[2] + w]
+                })
+                .collect();
+            let degrees = curve.iter().map(|p| p.deg).collect();
+            let overlay = DataOverlay::new(positions, degrees);
+            for (label, data) in [
+                ("nearest", overlay.clone()),
+                (
+                    "indeterminacy",
+                    overlay.clone().with_color_by(DegreeKind::Indeterminacy),
+                ),
+            ] {
+                let model = model.clone().with_data(data).unwrap();
+                for (w, h) in SIZES {
+                    let options = options.clone().with_size(w, h);
+                    let svg = render_svg(&model, View::Data, &options).unwrap();
+                    let found = problems(&svg, w, h);
+                    assert!(
+                        found.is_empty(),
+                        "{what}, data ({label}), {w}x{h}:\n{}",
+                        found.join("\n")
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
     fn audit_every_view_every_size_keeps_texts_and_legend_clear() {
         for (what, model, options) in models() {
             for (w, h) in SIZES {
                 let options = options.clone().with_size(w, h);
-                for view in View::ALL {
+                for view in View::MODEL {
                     let svg = render_svg(&model, view, &options).unwrap();
                     let found = problems(&svg, w, h);
                     assert!(

@@ -1,4 +1,4 @@
-//! 2-D axes at equal scale on x and y: for the flat views of curves and the heat maps over a
+//! 2-D axes at equal scale on x and y (or filling the frame, for data views): for the flat views of curves and the heat maps over a
 //! surface's parameter domain.
 
 use crate::font::text_width;
@@ -35,8 +35,8 @@ fn bottom_margin(theme: &Theme) -> f64 {
 /// margins its labels need, at most three times in all, until they no longer change.
 fn fit_margins(
     theme: &Theme,
-    place: impl Fn(f64, f64) -> (Rect, Ticks, Ticks, f64),
-) -> Option<(Rect, Ticks, Ticks, f64)> {
+    place: impl Fn(f64, f64) -> (Rect, Ticks, Ticks, (f64, f64)),
+) -> Option<(Rect, Ticks, Ticks, (f64, f64))> {
     let tick = theme.tick();
     let mut left = 4.0 * tick;
     let mut right = 1.5 * tick;
@@ -66,6 +66,8 @@ pub(crate) struct Axes2 {
     pub xt: Ticks,
     pub yt: Ticks,
     scale: f64,
+    /// Pixels per y unit: `scale` unless the axes were made by [`Axes2::filling`].
+    scale_y: f64,
     xlabel: String,
     ylabel: String,
     /// Axes of an image that fills the frame (a heat map): no grid, which the image would
@@ -84,6 +86,33 @@ impl Axes2 {
         theme: &Theme,
         labels: (&str, &str),
     ) -> Axes2 {
+        Axes2::placed(plot, x, y, inner, theme, labels, false)
+    }
+
+    /// Like [`Axes2::new`], but when equal scale would leave more than half of the frame empty
+    /// in one direction (data much wider than tall, or the reverse), each axis is scaled to
+    /// fill the frame: for data whose residuals must stay visible, such as a long survey
+    /// profile.
+    pub(crate) fn filling(
+        plot: Rect,
+        x: (f64, f64),
+        y: (f64, f64),
+        inner: f64,
+        theme: &Theme,
+        labels: (&str, &str),
+    ) -> Axes2 {
+        Axes2::placed(plot, x, y, inner, theme, labels, true)
+    }
+
+    fn placed(
+        plot: Rect,
+        x: (f64, f64),
+        y: (f64, f64),
+        inner: f64,
+        theme: &Theme,
+        labels: (&str, &str),
+        fill: bool,
+    ) -> Axes2 {
         let (x0, x1) = padded(x.0, x.1, 0.03);
         let (y0, y1) = padded(y.0, y.1, 0.03);
         let (top, bottom) = (top_margin(theme), bottom_margin(theme));
@@ -96,13 +125,19 @@ impl Axes2 {
             );
             let uw = (frame.w - 2.0 * inner).max(0.3 * frame.w);
             let uh = (frame.h - 2.0 * inner).max(0.3 * frame.h);
-            let scale = (uw / (x1 - x0)).min(uh / (y1 - y0));
+            let (sx, sy) = (uw / (x1 - x0), uh / (y1 - y0));
+            let scale = sx.min(sy);
+            let (sx, sy) = if fill && sx.max(sy) > 2.0 * scale {
+                (sx, sy)
+            } else {
+                (scale, scale)
+            };
             let (cx, cy) = (x0 / 2.0 + x1 / 2.0, y0 / 2.0 + y1 / 2.0);
-            let hx = frame.w / 2.0 / scale;
-            let hy = frame.h / 2.0 / scale;
+            let hx = frame.w / 2.0 / sx;
+            let hy = frame.h / 2.0 / sy;
             let xt = ticks_inside(cx - hx, cx + hx, tick_target(frame.w, 190.0 * theme.s));
             let yt = ticks_inside(cy - hy, cy + hy, tick_target(frame.h, 150.0 * theme.s));
-            (frame, xt, yt, scale)
+            (frame, xt, yt, (sx, sy))
         });
         Axes2::fitted(fit, plot, (x0, x1), (y0, y1), labels, false)
     }
@@ -132,7 +167,7 @@ impl Axes2 {
             );
             let xt = ticks_inside(x0, x1, tick_target(frame.w, 190.0 * theme.s));
             let yt = ticks_inside(y0, y1, tick_target(frame.h, 150.0 * theme.s));
-            (frame, xt, yt, scale)
+            (frame, xt, yt, (scale, scale))
         });
         Axes2::fitted(fit, plot, (x0, x1), (y0, y1), labels, true)
     }
@@ -140,19 +175,19 @@ impl Axes2 {
     /// Axes with the frame, ticks and scale of `fit`, or failing a fit, the whole `plot` with
     /// plain ticks over `x` by `y`.
     fn fitted(
-        fit: Option<(Rect, Ticks, Ticks, f64)>,
+        fit: Option<(Rect, Ticks, Ticks, (f64, f64))>,
         plot: Rect,
         x: (f64, f64),
         y: (f64, f64),
         labels: (&str, &str),
         image: bool,
     ) -> Axes2 {
-        let (frame, xt, yt, scale) = fit.unwrap_or_else(|| {
+        let (frame, xt, yt, (scale, scale_y)) = fit.unwrap_or_else(|| {
             (
                 plot,
                 ticks_inside(x.0, x.1, 5),
                 ticks_inside(y.0, y.1, 5),
-                1.0,
+                (1.0, 1.0),
             )
         });
         Axes2 {
@@ -160,13 +195,14 @@ impl Axes2 {
             xt,
             yt,
             scale,
+            scale_y,
             xlabel: labels.0.to_string(),
             ylabel: labels.1.to_string(),
             image,
         }
     }
 
-    /// Pixels per data unit.
+    /// Pixels per data unit (of x, for axes made by [`Axes2::filling`]).
     pub(crate) fn scale(&self) -> f64 {
         self.scale
     }
@@ -203,7 +239,7 @@ impl Axes2 {
     pub(crate) fn map(&self, x: f64, y: f64) -> (f64, f64) {
         (
             self.frame.x + (x - self.xt.lo) * self.scale,
-            self.frame.bottom() - (y - self.yt.lo) * self.scale,
+            self.frame.bottom() - (y - self.yt.lo) * self.scale_y,
         )
     }
 

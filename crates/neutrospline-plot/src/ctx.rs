@@ -1,6 +1,8 @@
 //! What every view draws from: the model's points as the renderer uses them, the options,
 //! the theme and the texts, and the axes fitted to the points.
 
+use neutrospline::DegreeKind;
+
 use crate::axes2::Axes2;
 use crate::axes3::{box_lengths3, Axes3};
 use crate::callout::{draw_names, Keep, Obstacle};
@@ -12,6 +14,17 @@ use crate::svg::SvgWriter;
 use crate::theme::Theme;
 use crate::ticks::{padded, ticks_loose, Ticks};
 
+/// The data points of the `data` view and the curve points their whiskers go to.
+pub(crate) struct DataCtx {
+    pub points: Vec<Pt>,
+    /// One per point: the curve at its parameter, or the curve's point nearest to it.
+    pub feet: Vec<Pt>,
+    /// The degree that colours the points.
+    pub color_by: DegreeKind,
+    /// Whether the feet are the curve at the points' parameters (else the nearest points).
+    pub at_parameters: bool,
+}
+
 /// Everything a view needs.
 pub(crate) struct Ctx<'a> {
     pub theme: Theme,
@@ -22,6 +35,8 @@ pub(crate) struct Ctx<'a> {
     pub names: &'a [String],
     pub title: String,
     pub caption: String,
+    /// The data overlay, for the view that draws it (`None` for every other view).
+    pub data: Option<DataCtx>,
 }
 
 impl Ctx<'_> {
@@ -30,9 +45,14 @@ impl Ctx<'_> {
         Camera::new(self.options.azimuth(), self.options.elevation())
     }
 
-    /// The curve samples, then the control points.
+    /// The curve samples, then the control points, then the data points and their feet on
+    /// the curve (for the view that draws them).
     fn all_points(&self) -> impl Iterator<Item = &Pt> {
-        self.curve.iter().chain(self.controls.iter())
+        let data = self
+            .data
+            .iter()
+            .flat_map(|d| d.points.iter().chain(d.feet.iter()));
+        self.curve.iter().chain(self.controls.iter()).chain(data)
     }
 
     /// (min, max) of coordinate `axis` over curve and control points.
@@ -98,6 +118,19 @@ impl Ctx<'_> {
     /// 2-D axes x, y for the model in `plot`, with `inner` pixels kept free around the data.
     pub(crate) fn axes2(&self, plot: Rect, inner: f64) -> Axes2 {
         Axes2::new(
+            plot,
+            self.extent(0),
+            self.extent(1),
+            inner,
+            &self.theme,
+            ("x", "y"),
+        )
+    }
+
+    /// 2-D axes x, y that fill `plot` when equal scale would leave half of it empty
+    /// ([`Axes2::filling`]).
+    pub(crate) fn axes2_filling(&self, plot: Rect, inner: f64) -> Axes2 {
+        Axes2::filling(
             plot,
             self.extent(0),
             self.extent(1),

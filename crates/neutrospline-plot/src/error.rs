@@ -5,7 +5,7 @@
 #[non_exhaustive]
 pub enum PlotError {
     /// A view name that [`View`](crate::View) does not know.
-    #[error("unknown view \"{name}\" (expected one of: controls, truth, indeterminacy, falsity, all, plane)")]
+    #[error("unknown view \"{name}\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, data)")]
     UnknownView {
         /// The name given.
         name: String,
@@ -54,14 +54,16 @@ pub enum PlotError {
     /// A model given curve samples but none.
     #[error("the model has no curve samples")]
     NoCurvePoints,
-    /// A position or degree that is NaN or infinite.
+    /// A position, degree or parameter that is NaN or infinite.
     #[error("{what} {index}: {channel} = {value} is not a finite number")]
     NotFinite {
-        /// `"control point"`, `"curve sample"` or `"surface sample"`.
+        /// `"control point"`, `"curve sample"`, `"surface sample"`, `"data point"` or
+        /// `"curve point of data point"` (the curve where a data point's whisker ends).
         what: &'static str,
         /// Index of the point (0-based).
         index: usize,
-        /// `x`, `y`, `z`, `truth`, `indeterminacy` or `falsity`.
+        /// `x`, `y`, `z`, `truth`, `indeterminacy`, `falsity`, or `t` (a data point's
+        /// parameter).
         channel: &'static str,
         /// The offending value.
         value: f64,
@@ -79,6 +81,49 @@ pub enum PlotError {
     RangeTooLarge {
         /// `x`, `y` or `z`.
         axis: &'static str,
+    },
+    /// The `data` view was asked for a model without data points.
+    #[error("the data view needs data points (neutrospline plot MODEL --data DATA.csv, or neutrospline fit --plot)")]
+    NoData,
+    /// Data points given to a surface, or the `data` view asked for of a surface.
+    #[error("the data view draws curves; surfaces have no data overlay")]
+    DataOnSurface,
+    /// A data overlay without any point.
+    #[error("the data overlay has no data points (give at least one)")]
+    EmptyData,
+    /// The degrees or parameters of a data overlay are not one per point.
+    #[error("{count} {what} given for {points} data points")]
+    DataCount {
+        /// `"degree triples"` or `"parameters"`.
+        what: &'static str,
+        /// How many were given.
+        count: usize,
+        /// Number of data points.
+        points: usize,
+    },
+    /// A degree of a data point outside \[0, 1\].
+    #[error("data point {index}: {channel} = {value} is outside [0, 1]")]
+    DataDegreeRange {
+        /// Index of the data point (0-based).
+        index: usize,
+        /// `truth`, `indeterminacy` or `falsity`.
+        channel: &'static str,
+        /// The offending value.
+        value: f64,
+    },
+    /// A data point's parameter outside the curve's parameter domain.
+    #[error(
+        "data point {index}: parameter t = {value} is outside the curve's domain [{start}, {end}]"
+    )]
+    ParameterOutsideDomain {
+        /// Index of the data point (0-based).
+        index: usize,
+        /// The parameter given.
+        value: f64,
+        /// Start of the domain.
+        start: f64,
+        /// End of the domain.
+        end: f64,
     },
     /// The curve could not be evaluated.
     #[error("cannot sample the curve: {0}")]

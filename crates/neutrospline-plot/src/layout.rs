@@ -192,6 +192,8 @@ pub(crate) enum Swatch {
     },
     /// A lane of the plane view: grey track, coloured band of half its width.
     Band { color: Color },
+    /// A marker alone (a data point), of `shape` filled with `fill`.
+    Marker { shape: Marker, fill: Color },
     /// A filled patch with an outline (a surface).
     Patch { color: Color },
     /// A dashed line across a patch (lines drawn over a heat map).
@@ -487,6 +489,15 @@ fn draw_swatch(svg: &mut SvgWriter, theme: &Theme, swatch: &Swatch, x: f64, cy: 
                 (x, cy),
                 (x + w, cy),
                 &Style::stroke(*line, *width).with_dash(dash.0, dash.1),
+            );
+        }
+        Swatch::Marker { shape, fill } => {
+            marker(
+                svg,
+                *shape,
+                (x + w / 2.0, cy),
+                0.7 * theme.marker_r(),
+                &Style::stroke(theme::CRISP, theme.s * 1.5).with_fill(*fill),
             );
         }
         Swatch::Band { color } => {

@@ -2,19 +2,24 @@
 //!
 //! Figures of neutrosophic curves and surfaces as SVG and PNG: the paper's figures 1-5
 //! (control points; truth, indeterminacy and falsity curves; all three together), a flat
-//! `plane` view, and the same six views for tensor-product surfaces.
+//! `plane` view, the same six views for tensor-product surfaces, and a `data` view of a curve
+//! next to the measured points it was fitted to.
 //!
 //! ## The public items
 //! - [`PlotModel`]: what to draw: a curve (any kind implementing [`neutrospline::Evaluate`],
 //!   sampled when drawn, or precomputed samples) or a surface ([`PlotModel::from_surface`]:
 //!   Bézier, B-spline or NURBS), its control points and optionally their names; its
-//!   [`label`](PlotModel::label) (the kind of model) goes into the default titles.
+//!   [`label`](PlotModel::label) (the kind of model) goes into the default titles; and
+//!   optionally, for a curve, the data points it was fitted to
+//!   ([`PlotModel::with_data`]).
+//! - [`DataOverlay`]: measured data points (positions, their three degrees, optionally their
+//!   curve parameters, and the degree that colours them), drawn by the `data` view.
 //! - [`PlotOptions`]: size, title, caption, camera and sampling, with the defaults and limits
 //!   as associated constants ([`PlotOptions::DEFAULT_WIDTH`], [`PlotOptions::MAX_SAMPLES`],
 //!   [`PlotOptions::MIN_SIDE`], ...).
 //! - [`View`]: which figure to draw (`controls`, `truth`, `indeterminacy`, `falsity`, `all`,
-//!   `plane`); parsed from and displayed as those names. It is `#[non_exhaustive]`: views may
-//!   be added, so a `match` on it needs a wildcard arm.
+//!   `plane`, `data`); parsed from and displayed as those names. It is `#[non_exhaustive]`:
+//!   views may be added, so a `match` on it needs a wildcard arm.
 //! - [`render_svg`] draws one view of a model with options; [`render_png`] draws and
 //!   rasterizes it, [`svg_to_png`] rasterizes an SVG document.
 //! - [`PlotError`]: every error of the above; [`FONT_FAMILY`]: the bundled font's family name.
@@ -81,6 +86,32 @@
 //!   across and `v` up, with the interior knot lines of a spline surface dashed in white,
 //!   arranged like `all`.
 //!
+//! The `data` view ([`View::Data`]) draws a curve with the data points it was fitted to
+//! ([`PlotModel::with_data`]): the fitted curve (its crisp positions) as a dark line over the
+//! data; each data point as a marker filled with the viridis colour of one of its degrees
+//! ([`DataOverlay::color_by`], truth unless set), with a colour bar titled, for example,
+//! "truth of the data"; and a red residual whisker from each point to the curve point it was
+//! fitted to: the curve at the point's parameter when the parameters are given, else the
+//! nearest point of the curve. 2-D curves are drawn on x-y axes (like `controls`), 3-D
+//! curves in the 3-D box with the curve's shadow on the floor. The control points are not
+//! drawn, nor are the points named: past 200 points the markers shrink, so that thousands
+//! stay readable. Its default title is "{label} fitted to data". It is an error for a model
+//! without data ([`PlotError::NoData`]) and for a surface ([`PlotError::DataOnSurface`]);
+//! the other views ignore the data.
+//!
+//! ```
+//! use neutrospline_plot::{render_svg, DataOverlay, PlotModel, PlotOptions, View};
+//!
+//! let model = PlotModel::from(&neutrospline::example1()).with_data(DataOverlay::new(
+//!     vec![[2.0, 4.0, 0.0], [6.0, 3.0, 0.0]],
+//!     vec![[0.9, 0.1, 0.0], [0.3, 0.4, 0.5]],
+//! ))?;
+//! let svg = render_svg(&model, View::Data, &PlotOptions::default())?;
+//! assert!(svg.contains("Neutrosophic Bézier curve fitted to data"));
+//! assert_eq!(svg.matches("class=\"residual\"").count(), 2);
+//! # Ok::<(), neutrospline_plot::PlotError>(())
+//! ```
+//!
 //! A surface that shows no area (a single row or column, all points equal, or a flat one
 //! seen edge on) is drawn as a coloured curve or a point.
 //!
@@ -97,7 +128,9 @@
 //! module of `views` that draws its three cases (a 2-D curve, a 3-D curve, a surface) and its
 //! default title:
 //! - `views::controls`: `controls`; `views::degree`: `truth`, `indeterminacy`, `falsity`;
-//!   `views::all`: `all`; `views::plane`: `plane`.
+//!   `views::all`: `all`; `views::plane`: `plane`; `views::data`: `data` (the one view that
+//!   draws the model's data overlay: `render_svg` gives it the data points and the curve
+//!   points their whiskers go to, and no control points).
 //!
 //! They draw with shared helpers, which never import a view module:
 //! - figure pieces: `curve3d` (a 3-D curve in its box: shadow, drop lines, control polygon,
@@ -108,9 +141,12 @@
 //!   figures);
 //! - layout and axes: `layout` (rectangles, text, legends, colour bars, title and caption),
 //!   `axes2` (2-D axes at equal scale), `axes3` (the 3-D box), `ticks`, `camera`;
+//! - geometry: `nearest` (the point of a curve nearest to a given point: dense samples, then
+//!   a golden-section search);
 //! - output: `scene` (depth-sorted drawing), `svg` (the SVG writer), `theme` (sizes and
 //!   colours), `font` (the bundled font and its metrics), `png` (rasterizing);
-//! - the public types: `model`, `options`, `view`, `error`.
+//! - the public types: `model`, `overlay` (the data overlay and its checks), `options`,
+//!   `view`, `error`.
 //!
 //! Adding a view means adding its variant and name to [`View`], one module in `views`, and
 //! its arm in `views::figure`.
@@ -145,8 +181,10 @@ mod layout;
 mod lifted;
 mod mesh;
 mod model;
+mod nearest;
 mod net;
 mod options;
+mod overlay;
 mod panels;
 mod png;
 mod render;
@@ -161,6 +199,7 @@ pub use error::PlotError;
 pub use font::FONT_FAMILY;
 pub use model::PlotModel;
 pub use options::PlotOptions;
+pub use overlay::DataOverlay;
 pub use png::{render_png, svg_to_png};
 pub use render::render_svg;
 pub use view::View;

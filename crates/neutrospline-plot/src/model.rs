@@ -10,6 +10,8 @@ use neutrospline::{
 };
 
 use crate::error::PlotError;
+use crate::nearest::nearest;
+use crate::overlay::DataOverlay;
 
 /// A point as the renderer uses it: position padded to 3-D (z = 0 for planar models) and
 /// the degrees `[truth, indeterminacy, falsity]`.
@@ -74,6 +76,9 @@ fn check_dimension(d: usize) -> Result<(), PlotError> {
 /// A curve that can be sampled at render time.
 trait Sampler: Send + Sync {
     fn sample(&self, n: usize) -> Result<Vec<Pt>, PlotError>;
+    fn domain(&self) -> Range<f64>;
+    /// The curve at parameter `t` (of the point `index` of the data overlay, for errors).
+    fn at(&self, t: f64, index: usize) -> Result<Pt, PlotError>;
 }
 
 struct CurveSampler<C, const D: usize>(C);
@@ -88,7 +93,42 @@ where
         self.0.evaluate_many(&ts, &mut out)?;
         to_pts(&out, "curve sample")
     }
+
+    fn domain(&self) -> Range<f64> {
+        self.0.domain()
+    }
+
+    fn at(&self, t: f64, index: usize) -> Result<Pt, PlotError> {
+        to_pt(&self.0.evaluate(t)?, "curve point of data point", index)
+    }
 }
+
+/// The parameter domain of a model given as samples: the samples are taken at evenly spaced
+/// parameters over \[0, 1\], joined by straight lines.
+const SAMPLES_DOMAIN: Range<f64> = 0.0..1.0;
+
+/// The polyline through `samples` at parameter `t` of [`SAMPLES_DOMAIN`].
+fn polyline_at(samples: &[Pt], t: f64) -> Pt {
+    let n = samples.len();
+    if n < 2 {
+        return samples[0];
+    }
+    let s = t.clamp(0.0, 1.0) * (n - 1) as f64;
+    let k = (s.floor() as usize).min(n - 2);
+    let f = s - k as f64;
+    let (a, b) = (samples[k], samples[k + 1]);
+    let lerp = |x: f64, y: f64| if f == 0.0 { x } else { x + (y - x) * f };
+    Pt {
+        pos: [0, 1, 2].map(|i| lerp(a.pos[i], b.pos[i])),
+        deg: [0, 1, 2].map(|i| lerp(a.deg[i], b.deg[i])),
+    }
+}
+
+/// The data points and, one each, the curve points their whiskers go to.
+pub(crate) type Residuals = (Vec<Pt>, Vec<Pt>);
+
+/// Samples per curve from which the nearest point to each data point is refined.
+pub(crate) const NEAREST_SAMPLES: usize = 1024;
 
 #[derive(Clone)]
 enum Geometry {
@@ -198,6 +238,7 @@ pub struct PlotModel {
     grid: Option<(usize, usize)>,
     names: Vec<String>,
     label: String,
+    data: Option<DataOverlay>,
 }
 
 impl fmt::Debug for PlotModel {
@@ -214,7 +255,11 @@ impl fmt::Debug for PlotModel {
             .field("grid", &self.grid)
             .field("names", &self.names)
             .field("label", &self.label)
-            .finish()
+            .finish()?;
+        match &self.data {
+            Some(d) => write!(f, " with {} data points", d.positions.len()),
+            None => Ok(()),
+        }
     }
 }
 
@@ -254,6 +299,7 @@ impl PlotModel {
             grid: None,
             names: Vec::new(),
             label: CURVE_LABEL.to_string(),
+            data: None,
         })
     }
 
@@ -316,6 +362,7 @@ impl PlotModel {
             grid: None,
             names: Vec::new(),
             label: CURVE_LABEL.to_string(),
+            data: None,
         })
     }
 
@@ -359,6 +406,7 @@ impl PlotModel {
             grid: Some((surface.rows(), surface.cols())),
             names: Vec::new(),
             label: label.to_string(),
+            data: None,
         })
     }
 
@@ -386,6 +434,96 @@ impl PlotModel {
     pub fn with_label(mut self, label: impl Into<String>) -> PlotModel {
         self.label = label.into();
         self
+    }
+
+    /// Attaches measured data points, drawn by the [`data`](crate::View::Data) view next to
+    /// this curve (the curve fitted to them): the curve as a line, each point as a marker
+    /// coloured by its [`color_by`](DataOverlay::color_by) degree, and a residual whisker
+    /// from each point to the curve at its parameter (or, without parameters, to the nearest
+    /// point of the curve). Other views ignore the data. For a 2-D model the points' z is
+    /// ignored (set to 0). A model given as samples ([`PlotModel::from_samples`]) has the
+    /// parameter domain \[0, 1\]: its samples at evenly spaced parameters, joined by
+    /// straight lines.
+    ///
+    /// ```
+    /// use neutrospline_plot::{DataOverlay, PlotError, PlotModel};
+    /// let model = PlotModel::from(&neutrospline::example1());
+    /// let data = DataOverlay::new(vec![[4.0, 4.5, 0.0]], vec![[0.6, 0.2, 0.1]]);
+    /// assert!(model.clone().with_data(data.clone())?.data().is_some());
+    /// let err = model.with_data(data.with_parameters(vec![1.5])).unwrap_err();
+    /// assert_eq!(
+    ///     err.to_string(),
+    ///     "data point 0: parameter t = 1.5 is outside the curve's domain [0, 1]"
+    /// );
+    /// # Ok::<(), PlotError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`PlotError::DataOnSurface`] for a surface, [`PlotError::EmptyData`] without points,
+    /// [`PlotError::DataCount`] when the degrees or parameters are not one per point,
+    /// [`PlotError::NotFinite`] for a coordinate, degree or parameter that is NaN or
+    /// infinite, [`PlotError::DataDegreeRange`] for a degree outside \[0, 1\], and
+    /// [`PlotError::ParameterOutsideDomain`] for a parameter outside the curve's domain.
+    pub fn with_data(mut self, data: DataOverlay) -> Result<PlotModel, PlotError> {
+        let domain = match &self.curve {
+            Geometry::Surface(_) => return Err(PlotError::DataOnSurface),
+            Geometry::Samples(_) => SAMPLES_DOMAIN,
+            Geometry::Curve(c) => c.domain(),
+        };
+        self.data = Some(data.checked(self.dimension, domain)?);
+        Ok(self)
+    }
+
+    /// The data points drawn by the `data` view ([`PlotModel::with_data`]), if any.
+    pub fn data(&self) -> Option<&DataOverlay> {
+        self.data.as_ref()
+    }
+
+    /// The data points and, for each, the curve point it was fitted to: the curve at its
+    /// parameter, else the curve's point nearest to it (refined from `dense` samples).
+    /// `None` without data or for a surface.
+    pub(crate) fn residuals(&self, dense: usize) -> Result<Option<Residuals>, PlotError> {
+        let Some(data) = &self.data else {
+            return Ok(None);
+        };
+        let points: Vec<Pt> = data
+            .positions
+            .iter()
+            .zip(&data.degrees)
+            .map(|(&pos, &deg)| Pt { pos, deg })
+            .collect();
+        let feet = match (&self.curve, &data.parameters) {
+            (Geometry::Surface(_), _) => return Ok(None),
+            (Geometry::Curve(c), Some(ts)) => ts
+                .iter()
+                .enumerate()
+                .map(|(k, &t)| c.at(t, k))
+                .collect::<Result<Vec<Pt>, PlotError>>()?,
+            (Geometry::Samples(s), Some(ts)) => ts.iter().map(|&t| polyline_at(s, t)).collect(),
+            (Geometry::Curve(c), None) => {
+                let ts = parameters(c.domain(), dense);
+                let samples = c.sample(dense)?;
+                let pos: Vec<[f64; 3]> = samples.iter().map(|p| p.pos).collect();
+                let mut feet = Vec::with_capacity(points.len());
+                for (k, p) in points.iter().enumerate() {
+                    let at = |t: f64| c.at(t, k).map(|q| q.pos);
+                    let (t, _) = nearest(&at, &ts, &pos, p.pos)?;
+                    feet.push(c.at(t, k)?);
+                }
+                feet
+            }
+            (Geometry::Samples(s), None) => {
+                let n = s.len();
+                let ts = parameters(SAMPLES_DOMAIN, n);
+                let pos: Vec<[f64; 3]> = s.iter().map(|p| p.pos).collect();
+                let at = |t: f64| Ok::<_, PlotError>(polyline_at(s, t).pos);
+                points
+                    .iter()
+                    .map(|p| nearest(&at, &ts[..n], &pos, p.pos).map(|(t, _)| polyline_at(s, t)))
+                    .collect::<Result<Vec<Pt>, PlotError>>()?
+            }
+        };
+        Ok(Some((points, feet)))
     }
 
     /// 2 or 3.
@@ -467,6 +605,7 @@ impl<const D: usize> From<&Bezier<D>> for PlotModel {
             grid: None,
             names: Vec::new(),
             label: BEZIER_LABEL.to_string(),
+            data: None,
         }
     }
 }
@@ -491,6 +630,52 @@ mod tests {
         let samples = model.curve_points(11).unwrap();
         assert_eq!(samples[0].pos, [0.0, 0.0, 0.0]);
         assert!((samples[10].pos[0] - 5.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn model_residual_feet_are_the_curve_at_the_parameters() {
+        let curve = neutrospline::example1();
+        let ts = [0.0, 0.125, 0.4, 0.77, 1.0];
+        let positions = ts.iter().map(|&t| [t * 10.0, 1.0 - t, 7.0]).collect();
+        let data =
+            DataOverlay::new(positions, vec![[0.3, 0.2, 0.1]; 5]).with_parameters(ts.to_vec());
+        let model = PlotModel::from(&curve).with_data(data).unwrap();
+        let (points, feet) = model.residuals(NEAREST_SAMPLES).unwrap().unwrap();
+        assert_eq!(points[1].pos, [1.25, 0.875, 0.0], "z of 2-D data is 0");
+        for (k, &t) in ts.iter().enumerate() {
+            let p = curve.evaluate(t).unwrap();
+            for i in 0..2 {
+                assert!((feet[k].pos[i] - p.position[i]).abs() < 1e-9, "{k}");
+            }
+            assert_eq!(feet[k].pos[2], 0.0);
+            assert!((feet[k].deg[0] - p.degrees.truth()).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn model_residual_feet_without_parameters_are_the_nearest_points() {
+        // Example 1 is a planar cubic: at the nearest point, the residual is perpendicular to
+        // the tangent, and no sample of the curve is nearer.
+        let curve = neutrospline::example1();
+        let targets = [
+            [3.0, 6.0, 0.0],
+            [6.0, 2.0, 0.0],
+            [9.5, 5.5, 0.0],
+            [0.0, 0.0, 0.0],
+        ];
+        let data = DataOverlay::new(targets.to_vec(), vec![[0.5; 3]; 4]);
+        let model = PlotModel::from(&curve).with_data(data).unwrap();
+        let (_, feet) = model.residuals(NEAREST_SAMPLES).unwrap().unwrap();
+        let dense = model.curve_points(20_000).unwrap();
+        for (q, foot) in targets.iter().zip(&feet) {
+            let d = |p: &[f64; 3]| ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt();
+            let best = dense
+                .iter()
+                .map(|p| d(&p.pos))
+                .fold(f64::INFINITY, f64::min);
+            assert!(d(&foot.pos) <= best + 1e-12, "{q:?}");
+            assert!(best - d(&foot.pos) < 1e-4, "{q:?}");
+        }
     }
 
     #[test]

@@ -2,9 +2,9 @@
 //! [`Ctx`] every view draws from, and hands it to the view's [`Figure`](crate::views::Figure)
 //! for the kind of model.
 
-use crate::ctx::Ctx;
+use crate::ctx::{Ctx, DataCtx};
 use crate::error::PlotError;
-use crate::model::PlotModel;
+use crate::model::{PlotModel, NEAREST_SAMPLES};
 use crate::options::PlotOptions;
 use crate::theme::Theme;
 use crate::view::View;
@@ -18,7 +18,8 @@ use crate::views;
 /// are real SVG `<text>` elements.
 ///
 /// # Errors
-/// Invalid options ([`PlotOptions::validate`]; for a surface
+/// The `data` view of a surface ([`PlotError::DataOnSurface`]) or of a model without data
+/// ([`PlotError::NoData`]), invalid options ([`PlotOptions::validate`]; for a surface
 /// [`PlotOptions::validate_surface`], which caps the samples per direction), a curve or
 /// surface that cannot be sampled
 /// ([`PlotError::Evaluate`], [`PlotError::NotFinite`]), or coordinates whose range overflows
@@ -37,6 +38,15 @@ pub fn render_svg(
     view: View,
     options: &PlotOptions,
 ) -> Result<String, PlotError> {
+    let figure = views::figure(view);
+    if figure.draws_data() {
+        if model.is_surface() {
+            return Err(PlotError::DataOnSurface);
+        }
+        if model.data().is_none() {
+            return Err(PlotError::NoData);
+        }
+    }
     if model.is_surface() {
         options.validate_surface()?;
     } else {
@@ -47,7 +57,23 @@ pub fn render_svg(
         Some(mesh) => mesh.points.clone(),
         None => model.curve_points(options.samples())?,
     };
-    let figure = views::figure(view);
+    // The data view draws the data and the curve, not the control points (they would only
+    // take room).
+    let (data, controls, names) = if figure.draws_data() {
+        let overlay = model.data().ok_or(PlotError::NoData)?;
+        let (points, feet) = model
+            .residuals(NEAREST_SAMPLES.max(options.samples()))?
+            .ok_or(PlotError::NoData)?;
+        let data = DataCtx {
+            points,
+            feet,
+            color_by: overlay.color_by,
+            at_parameters: overlay.parameters.is_some(),
+        };
+        (Some(data), &[][..], &[][..])
+    } else {
+        (None, model.controls(), model.names())
+    };
     let title = match options.title() {
         Some(t) => t.to_string(),
         None => figure.title(model.label(), model.is_surface()),
@@ -56,10 +82,11 @@ pub fn render_svg(
         theme: Theme::new(options.width(), options.height()),
         options,
         curve,
-        controls: model.controls(),
-        names: model.names(),
+        controls,
+        names,
         title,
         caption: options.caption().unwrap_or("").to_string(),
+        data,
     };
     for axis in 0..model.dimension() {
         let (lo, hi) = ctx.extent(axis);

@@ -26,6 +26,9 @@ pub(crate) const SHADOW: Color = Color(0x9a, 0x9a, 0x9a);
 pub(crate) const SURFACE: Color = Color(0xcf, 0xd5, 0xdc);
 /// Knot lines over a heat map.
 pub(crate) const KNOT: Color = Color(0xff, 0xff, 0xff);
+/// Residual whiskers from data points to the curve (Paul Tol's vibrant red: apart from the
+/// viridis fills of the points and from the grey curve).
+pub(crate) const RESIDUAL: Color = Color(0xcc, 0x33, 0x11);
 /// Background of the degree lanes of the plane view.
 pub(crate) const TRACK: Color = Color(0xe6, 0xe8, 0xeb);
 

@@ -8,7 +8,8 @@ use neutrospline::DegreeKind;
 use crate::error::PlotError;
 
 /// Which figure to draw. Names (for [`FromStr`] and [`Display`](fmt::Display)) are the
-/// lowercase variant names: `controls`, `truth`, `indeterminacy`, `falsity`, `all`, `plane`.
+/// lowercase variant names: `controls`, `truth`, `indeterminacy`, `falsity`, `all`, `plane`,
+/// `data`.
 ///
 /// | view | 2-D model (the paper's figures) | 3-D model | surface |
 /// |---|---|---|---|
@@ -16,6 +17,7 @@ use crate::error::PlotError;
 /// | `truth`, `indeterminacy`, `falsity` | Fig. 2-4: space curve `(x, y, degree)` with its control polygon above the crisp curve (its shadow on the degree = 0 plane) | the 3-D curve coloured by that degree, with a colour bar and its shadow on the floor | the shaded mesh coloured by that degree, with the control net and a colour bar |
 /// | `all` | Fig. 5: the three space curves in one box | three panels, one per degree, sharing a colour bar | three meshes, one per degree, sharing a colour bar |
 /// | `plane` | crisp curve with three bands along it whose widths are the degrees | the same bands along the curve's projection in the 3-D box | three heat maps of the degrees over the parameter domain (u, v), with knot lines |
+/// | `data` | the curve fitted to measured data ([`PlotModel::with_data`](crate::PlotModel::with_data)) as a line on x-y axes, the data points as markers coloured by one degree (viridis, with a colour bar), a residual whisker from each point to its point of the curve | the same in the 3-D box, with the curve's shadow on the floor | none: an error ([`PlotError::DataOnSurface`]) |
 ///
 /// ```
 /// use neutrospline_plot::View;
@@ -24,6 +26,9 @@ use crate::error::PlotError;
 /// assert_eq!(view.to_string(), "truth");
 /// # Ok::<(), neutrospline_plot::PlotError>(())
 /// ```
+///
+/// The `data` view needs a model with data points; without them it is an error
+/// ([`PlotError::NoData`]). [`View::MODEL`] lists the views that draw any model.
 ///
 /// More views may come: the enum is `#[non_exhaustive]`, so a `match` on it outside this crate
 /// needs a wildcard arm; [`View::ALL`] lists the views there are.
@@ -42,11 +47,26 @@ pub enum View {
     All,
     /// A flat view: the three degrees as bands along the crisp curve.
     Plane,
+    /// Measured data points next to the curve fitted to them, with residual whiskers
+    /// ([`PlotModel::with_data`](crate::PlotModel::with_data)).
+    Data,
 }
 
 impl View {
-    /// Every view, in the paper's order, `plane` last.
-    pub const ALL: [View; 6] = [
+    /// Every view, in the paper's order, then `plane` and `data`.
+    pub const ALL: [View; 7] = [
+        View::Controls,
+        View::Truth,
+        View::Indeterminacy,
+        View::Falsity,
+        View::All,
+        View::Plane,
+        View::Data,
+    ];
+
+    /// The views that draw any model (every view but `data`, which needs data points), in
+    /// the order of [`View::ALL`].
+    pub const MODEL: [View; 6] = [
         View::Controls,
         View::Truth,
         View::Indeterminacy,
@@ -64,6 +84,7 @@ impl View {
             View::Falsity => "falsity",
             View::All => "all",
             View::Plane => "plane",
+            View::Data => "data",
         }
     }
 
@@ -127,7 +148,7 @@ mod tests {
         let err = "Truth".parse::<View>().unwrap_err();
         assert_eq!(
             err.to_string(),
-            "unknown view \"Truth\" (expected one of: controls, truth, indeterminacy, falsity, all, plane)"
+            "unknown view \"Truth\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, data)"
         );
     }
 

@@ -114,7 +114,7 @@ fn surfaces_model_labels_and_grid() {
 fn surfaces_every_view_every_kind_renders() {
     for surface in [bicubic(), bspline(), quarter_cylinder()] {
         let model = PlotModel::from_surface(&surface).unwrap();
-        for view in View::ALL {
+        for view in View::MODEL {
             let svg = render_svg(&model, view, &small()).unwrap();
             check_svg(&svg);
             assert!(
@@ -246,7 +246,7 @@ fn surfaces_plane_view_maps_three_degrees_over_uv() {
 #[test]
 fn surfaces_determinism_same_input_same_bytes() {
     let model = PlotModel::from_surface(&quarter_cylinder()).unwrap();
-    for view in View::ALL {
+    for view in View::MODEL {
         let a = render_svg(&model, view, &small()).unwrap();
         let b = render_svg(&model.clone(), view, &small()).unwrap();
         assert_eq!(a, b, "{view}");
@@ -347,7 +347,7 @@ fn degenerate_surfaces() -> Vec<(&'static str, Surface)> {
 fn surfaces_degenerate_render_without_nan() {
     for (what, surface) in degenerate_surfaces() {
         let model = PlotModel::from_surface(&surface).unwrap();
-        for view in View::ALL {
+        for view in View::MODEL {
             let svg = render_svg(&model, view, &small())
                 .unwrap_or_else(|e| panic!("{what}, {view}: {e}"));
             check_svg(&svg);

@@ -84,7 +84,8 @@ fn check_svg(svg: &str, width: u32, height: u32) {
 
 #[test]
 fn views_names_parse() {
-    assert_eq!(View::ALL.len(), 6);
+    assert_eq!(View::ALL.len(), 7);
+    assert_eq!(View::MODEL, View::ALL[..6]);
     for (name, view) in [
         ("controls", View::Controls),
         ("truth", View::Truth),
@@ -92,6 +93,7 @@ fn views_names_parse() {
         ("falsity", View::Falsity),
         ("all", View::All),
         ("plane", View::Plane),
+        ("data", View::Data),
     ] {
         assert_eq!(name.parse::<View>().unwrap(), view);
         assert_eq!(view.to_string(), name);
@@ -106,7 +108,7 @@ fn views_names_parse() {
 fn views_2d_every_view_renders() {
     let model = example1_model();
     let options = PlotOptions::default().with_caption(ERRATUM);
-    for view in View::ALL {
+    for view in View::MODEL {
         let svg = render_svg(&model, view, &options).unwrap();
         check_svg(&svg, 1600, 1200);
         assert!(svg.contains("Table 3"), "{view}: caption with the erratum");
@@ -209,7 +211,7 @@ fn views_controls_callouts_show_values() {
 #[test]
 fn views_3d_every_view_renders() {
     let model = space_model();
-    for view in View::ALL {
+    for view in View::MODEL {
         let svg = render_svg(&model, view, &PlotOptions::default()).unwrap();
         check_svg(&svg, 1600, 1200);
         assert!(svg.contains(">z</text>"), "{view}: z axis label");
@@ -230,7 +232,7 @@ fn views_3d_every_view_renders() {
 #[test]
 fn views_png_decode_at_requested_size() {
     let model = example1_model();
-    for view in View::ALL {
+    for view in View::MODEL {
         let png = render_png(&model, view, &small()).unwrap();
         assert_eq!(decode_png(&png), (400, 300), "{view}");
     }
@@ -250,7 +252,7 @@ fn determinism_same_input_same_bytes() {
         .with_caption(ERRATUM)
         .with_samples(80);
     for model in [example1_model(), space_model()] {
-        for view in View::ALL {
+        for view in View::MODEL {
             let a = render_svg(&model, view, &options).unwrap();
             let b = render_svg(&model.clone(), view, &options.clone()).unwrap();
             assert_eq!(a, b, "{view}: SVG");
@@ -360,7 +362,7 @@ fn degenerate_models() -> Vec<(&'static str, PlotModel)> {
 #[test]
 fn degenerate_inputs_render_without_nan() {
     for (what, model) in degenerate_models() {
-        for view in View::ALL {
+        for view in View::MODEL {
             let svg = render_svg(&model, view, &small())
                 .unwrap_or_else(|e| panic!("{what}, {view}: {e}"));
             check_svg(&svg, 400, 300);
@@ -381,18 +383,18 @@ fn degenerate_cameras_and_sizes() {
         (725.0, -30.0),
     ] {
         let options = small().with_camera(az, el);
-        for view in View::ALL {
+        for view in View::MODEL {
             let svg = render_svg(&model, view, &options).unwrap();
             check_svg(&svg, 400, 300);
         }
-        for view in View::ALL {
+        for view in View::MODEL {
             let svg = render_svg(&space_model(), view, &options).unwrap();
             check_svg(&svg, 400, 300);
         }
     }
     for (w, h) in [(64, 64), (64, 2000), (3000, 200)] {
         let options = PlotOptions::default().with_size(w, h).with_samples(20);
-        for view in View::ALL {
+        for view in View::MODEL {
             let svg = render_svg(&model, view, &options).unwrap();
             check_svg(&svg, w, h);
         }

@@ -454,10 +454,9 @@ fn fit_errors_name_the_problem() {
     .unwrap();
     assert!(matches!(
         fit(&repeated, &interpolate),
-        Err(FitError::RepeatedParameter {
+        Err(FitError::RepeatedPoint {
             index: 2,
             previous: 1,
-            ..
         })
     ));
     let given = repeated

@@ -6,6 +6,7 @@ pub mod bench_fit;
 pub mod check;
 pub mod eval;
 pub mod example;
+pub mod fit;
 pub mod options;
 pub mod plot;
 

@@ -2,8 +2,9 @@
 
 use std::path::{Path, PathBuf};
 
-use neutrospline_plot::{render_png, render_svg, PlotModel, PlotOptions, View};
+use neutrospline_plot::{render_png, render_svg, DataOverlay, PlotModel, PlotOptions, View};
 
+use crate::commands::fit::{read_data, ColorByArg};
 use crate::commands::options::ModelArgs;
 use crate::input::{self, UsageError};
 use crate::output;
@@ -54,7 +55,9 @@ coloured by truth)\n  \
 indeterminacy  the same for indeterminacy (paper Fig. 3)\n  \
 falsity        the same for falsity (paper Fig. 4)\n  \
 all            the three together (paper Fig. 5)\n  \
-plane          the crisp curve with three bands along it whose widths follow the degrees\n\
+plane          the crisp curve with three bands along it whose widths follow the degrees\n  \
+data           the data points of --data coloured by a degree over the curve, with residual\n                 \
+whiskers (curves only)\n\
 The format follows the extension of OUT: .svg or .png.")]
 pub struct PlotArgs {
     /// The model file: .csv, .toml or .json; `-` reads CSV from standard input
@@ -65,9 +68,20 @@ pub struct PlotArgs {
     #[arg(short = 'o', long = "output", value_name = "OUT")]
     pub output: PathBuf,
 
-    /// Which view to draw: controls, truth, indeterminacy, falsity, all, plane
-    #[arg(long, value_name = "VIEW", default_value = "all", value_parser = parse_view)]
-    pub view: View,
+    /// Which view to draw: controls, truth, indeterminacy, falsity, all, plane, data (default:
+    /// data with --data, else all)
+    #[arg(long, value_name = "VIEW", value_parser = parse_view)]
+    pub view: Option<View>,
+
+    /// Measured points (a CSV data file, as `neutrospline fit` reads) to draw over the curve in
+    /// the data view, with whiskers to the curve at their `parameter` column, or to the
+    /// nearest point of the curve without one
+    #[arg(long, value_name = "DATA.csv")]
+    pub data: Option<String>,
+
+    /// The degree that colours the data points
+    #[arg(long, value_enum, value_name = "DEGREE", default_value = "truth")]
+    pub color_by: ColorByArg,
 
     /// Width in pixels (the SVG's size too)
     #[arg(long, value_name = "PX", default_value_t = PlotOptions::DEFAULT_WIDTH)]
@@ -157,6 +171,7 @@ pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
     }
     options.validate().map_err(|e| UsageError(e.to_string()))?;
     let model = input::read_model(&args.file, &args.model)?;
+    let membership = model.membership();
     let names = model.point_names().to_vec();
     let description = model.description().map(str::to_owned);
     let shape = model.into_shape();
@@ -171,6 +186,44 @@ pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
     if let Some(caption) = args.caption.clone().or(description) {
         options = options.with_caption(caption);
     }
-    let plot = plot_model(&shape, &names)?;
-    write_figure(&plot, args.view, &options, &args.output, format)
+    let view = args.view.unwrap_or(if args.data.is_some() {
+        View::Data
+    } else {
+        View::All
+    });
+    let mut plot = plot_model(&shape, &names)?;
+    match (&args.data, view) {
+        (Some(file), View::Data) => {
+            let table = read_data(file, membership)?;
+            if table.dimension() != shape.dimension() {
+                return Err(anyhow::anyhow!(
+                    "{}: the data is {}-D but the model is {}-D (give z for a 3-D curve, or \
+                     none for a 2-D one)",
+                    table.file(),
+                    table.dimension(),
+                    shape.dimension()
+                ));
+            }
+            let mut overlay = DataOverlay::new(
+                table.positions().to_vec(),
+                table.degrees().iter().map(|d| d.to_array()).collect(),
+            )
+            .with_color_by(args.color_by.into());
+            if let Some(parameters) = table.parameters() {
+                overlay = overlay.with_parameters(parameters.to_vec());
+            }
+            plot = plot
+                .with_data(overlay)
+                .map_err(|e| anyhow::anyhow!("{}: {e}", table.file()))?;
+        }
+        (Some(_), other) => {
+            return Err(UsageError(format!(
+                "--data is drawn by the data view, not by --view {other} (give --view data or \
+                 leave --view out)"
+            ))
+            .into())
+        }
+        (None, _) => {}
+    }
+    write_figure(&plot, view, &options, &args.output, format)
 }

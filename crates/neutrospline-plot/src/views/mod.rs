@@ -7,6 +7,7 @@
 
 mod all;
 mod controls;
+mod data;
 mod degree;
 mod plane;
 
@@ -29,6 +30,13 @@ pub(crate) trait Figure {
 
     /// The figure of a surface sampled as `mesh`, with a `rows x cols` control net.
     fn surface(&self, ctx: &Ctx, mesh: &Mesh, grid: (usize, usize)) -> String;
+
+    /// Whether the view draws the model's data overlay: [`render_svg`](crate::render_svg)
+    /// then requires a curve with data, and gives the view the data (`Ctx::data`) instead of
+    /// the control points.
+    fn draws_data(&self) -> bool {
+        false
+    }
 }
 
 /// The view's drawing: the one dispatch on [`View`].
@@ -40,5 +48,6 @@ pub(crate) fn figure(view: View) -> &'static dyn Figure {
         View::Falsity => &degree::Degree(DegreeKind::Falsity),
         View::All => &all::All,
         View::Plane => &plane::Plane,
+        View::Data => &data::Data,
     }
 }

@@ -417,6 +417,15 @@ pub enum FitError {
         /// The rule broken.
         rule: &'static str,
     },
+    /// A point repeats the previous point's position, so chord-length and centripetal
+    /// parameters would repeat (for a closed curve, `previous` of point 0 is the last point).
+    #[error("point {index} repeats the position of point {previous}: chord-length and centripetal parameters need distinct consecutive points (remove it, give parameters, or use uniform ones)")]
+    RepeatedPoint {
+        /// The point.
+        index: usize,
+        /// The point it repeats.
+        previous: usize,
+    },
     /// The data and knots violate the Schoenberg-Whitney conditions (some control point is
     /// not determined by the data).
     #[error("the data does not determine every control point (the Schoenberg-Whitney conditions fail: {detail}); use fewer control points, different parameters, or smoothing")]

@@ -41,6 +41,9 @@ pub struct FitReport {
     pub condition_estimate: f64,
     /// The control degrees on a bound (`0`, `1`, or `truth + falsity = 1`).
     pub at_bound: Vec<AtBound>,
+    /// For a tolerance fit, the tolerance (given, or the default: 1e-3 of the data's
+    /// bounding-box diagonal).
+    pub tolerance: Option<f64>,
     /// For a tolerance fit, whether every position residual is within the tolerance.
     pub tolerance_met: Option<bool>,
 }

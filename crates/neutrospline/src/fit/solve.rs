@@ -36,13 +36,9 @@ fn data_parameters<const D: usize>(
         return Ok(given.to_vec());
     }
     parameters(data.positions(), options.parametrization, options.closed).map_err(|index| {
-        let previous = (index + data.len() - 1) % data.len();
-        FitError::RepeatedParameter {
+        FitError::RepeatedPoint {
             index,
-            previous,
-            value: 0.0,
-            rule: "a point repeats the previous one, so chord-length and centripetal \
-                   parameters repeat too (remove it, give parameters, or use uniform ones)",
+            previous: (index + data.len() - 1) % data.len(),
         }
     })
 }
@@ -314,6 +310,10 @@ fn finish<const D: usize>(
         schoenberg_whitney: sw.is_ok(),
         condition_estimate: system.condition,
         at_bound,
+        tolerance: match target {
+            FitTarget::Tolerance(e) => Some(e),
+            _ => None,
+        },
         tolerance_met: match target {
             FitTarget::Tolerance(_) => chosen.tolerance_met,
             _ => None,

@@ -1,0 +1,453 @@
+//! `neutrospline fit DATA.csv`: a neutrosophic curve fitted to measured points, written as a
+//! model, with the error report on standard error (docs/model.md section 8).
+
+use std::io::Write;
+use std::path::PathBuf;
+
+use neutrospline::fit::{
+    channel_names, fit, DataWeights, Fit, FitKind, FitOptions, FitReport, FitTarget,
+    Parametrization,
+};
+use neutrospline::{DegreeKind, Membership};
+use neutrospline_io::{DataTable, Format, Model};
+use neutrospline_plot::{DataOverlay, PlotModel, PlotOptions, View};
+
+use crate::commands::plot::{write_figure, FigureFormat};
+use crate::commands::MembershipArg;
+use crate::input::{UsageError, STDIN_NAME};
+use crate::output::{self, number};
+
+/// `--parametrization` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ParametrizationArg {
+    /// Evenly spaced parameters.
+    Uniform,
+    /// Proportional to the distance between consecutive points.
+    ChordLength,
+    /// Proportional to the square root of that distance.
+    Centripetal,
+}
+
+/// `--weights` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum WeightsArg {
+    /// Every point counts the same.
+    None,
+    /// The data's `weight` column.
+    Column,
+    /// Each point weighted by its score (2 + T - I - F) / 3: doubtful points pull less.
+    Score,
+}
+
+/// `--kind` values of a fit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum FitKindArg {
+    /// A clamped (or, with --closed, periodic) B-spline.
+    Bspline,
+    /// One Bézier segment.
+    Bezier,
+}
+
+/// `--report` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ReportFormat {
+    /// Aligned lines for reading.
+    Text,
+    /// One JSON object.
+    Json,
+}
+
+/// `--color-by` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ColorByArg {
+    /// Colour data points by truth.
+    Truth,
+    /// By indeterminacy.
+    Indeterminacy,
+    /// By falsity.
+    Falsity,
+}
+
+impl From<ColorByArg> for DegreeKind {
+    fn from(c: ColorByArg) -> DegreeKind {
+        match c {
+            ColorByArg::Truth => DegreeKind::Truth,
+            ColorByArg::Indeterminacy => DegreeKind::Indeterminacy,
+            ColorByArg::Falsity => DegreeKind::Falsity,
+        }
+    }
+}
+
+/// Arguments of `fit`.
+#[derive(Debug, clap::Args)]
+#[command(
+    after_help = "DATA.csv: a header row, then one measured point per row; columns x, y[, z], \
+truth, indeterminacy, falsity (aliases T, I, F; which are required follows --membership), and \
+optionally parameter (the point's parameter on the curve), weight (> 0, used with --weights \
+column) and name.\n\
+Target (one of): --interpolate (through every point), --control-points N (least squares), \
+--tolerance E (least squares, knots refined until every position residual is within E); default: \
+--tolerance of 1e-3 of the data's bounding-box diagonal.\n\
+The degrees of the fitted control points are solved under the bounds of the membership rule, so \
+the model always passes `neutrospline check`. The report (residuals per channel, worst point, \
+Schoenberg-Whitney conditions, condition estimate, control degrees on a bound) goes to standard \
+error."
+)]
+pub struct FitArgs {
+    /// The data: a CSV file of measured points; `-` reads standard input
+    #[arg(value_name = "DATA.csv")]
+    pub data: String,
+
+    /// Write the model here (.toml or .json, replaced atomically) instead of TOML on standard
+    /// output
+    #[arg(short = 'o', long = "output", value_name = "MODEL")]
+    pub output: Option<PathBuf>,
+
+    /// Degree of the fitted curve
+    #[arg(long, value_name = "P", default_value_t = 3)]
+    pub degree: usize,
+
+    /// Least squares with this many control points
+    #[arg(long, value_name = "N", conflicts_with_all = ["tolerance", "interpolate"])]
+    pub control_points: Option<usize>,
+
+    /// Least squares to this tolerance: every position residual at most E (absolute)
+    #[arg(long, value_name = "E", conflicts_with = "interpolate")]
+    pub tolerance: Option<f64>,
+
+    /// Interpolate: the curve passes through every data point
+    #[arg(long)]
+    pub interpolate: bool,
+
+    /// A closed (periodic) curve, C^(p-1) at the seam
+    #[arg(long)]
+    pub closed: bool,
+
+    /// How data points get parameters when the file has no `parameter` column
+    #[arg(long, value_enum, value_name = "RULE", default_value = "chord-length")]
+    pub parametrization: ParametrizationArg,
+
+    /// How the points are weighted in least squares
+    #[arg(long, value_enum, value_name = "WEIGHTS", default_value = "none")]
+    pub weights: WeightsArg,
+
+    /// Smoothing: a penalty LAMBDA times the integral of the squared second derivative
+    #[arg(long, value_name = "LAMBDA", default_value_t = 0.0)]
+    pub smoothing: f64,
+
+    /// The kind of curve fitted
+    #[arg(long, value_enum, value_name = "KIND", default_value = "bspline")]
+    pub kind: FitKindArg,
+
+    /// Membership rule of the data's degrees and of the fitted curve's
+    #[arg(long, value_enum, value_name = "RULE", default_value = "neutrosophic")]
+    pub membership: MembershipArg,
+
+    /// The report's format (on standard error)
+    #[arg(long, value_enum, value_name = "FORMAT", default_value = "text")]
+    pub report: ReportFormat,
+
+    /// Also draw the data over the fitted curve (the `data` view): FIG.svg or FIG.png
+    #[arg(long, value_name = "FIG")]
+    pub plot: Option<PathBuf>,
+
+    /// The degree that colours the data points in --plot
+    #[arg(long, value_enum, value_name = "DEGREE", default_value = "truth")]
+    pub color_by: ColorByArg,
+
+    /// The model's name
+    #[arg(long, value_name = "TEXT")]
+    pub name: Option<String>,
+}
+
+impl FitArgs {
+    fn options(&self) -> FitOptions {
+        let target = if self.interpolate {
+            Some(FitTarget::Interpolate)
+        } else if let Some(n) = self.control_points {
+            Some(FitTarget::ControlPoints(n))
+        } else {
+            self.tolerance.map(FitTarget::Tolerance)
+        };
+        let mut options = FitOptions::default()
+            .with_degree(self.degree)
+            .with_closed(self.closed)
+            .with_parametrization(match self.parametrization {
+                ParametrizationArg::Uniform => Parametrization::Uniform,
+                ParametrizationArg::ChordLength => Parametrization::ChordLength,
+                ParametrizationArg::Centripetal => Parametrization::Centripetal,
+            })
+            .with_weights(match self.weights {
+                WeightsArg::None => DataWeights::None,
+                WeightsArg::Column => DataWeights::Given,
+                WeightsArg::Score => DataWeights::Score,
+            })
+            .with_smoothing(self.smoothing)
+            .with_kind(match self.kind {
+                FitKindArg::Bspline => FitKind::BSpline,
+                FitKindArg::Bezier => FitKind::Bezier,
+            })
+            .with_membership(self.membership.into());
+        if let Some(target) = target {
+            options = options.with_target(target);
+        }
+        options
+    }
+}
+
+/// The fitted curve of either dimension, with its parameters and report.
+enum Fitted {
+    Planar(Fit<2>),
+    Spatial(Fit<3>),
+}
+
+impl Fitted {
+    fn report(&self) -> &FitReport {
+        match self {
+            Fitted::Planar(f) => &f.report,
+            Fitted::Spatial(f) => &f.report,
+        }
+    }
+
+    fn parameters(&self) -> &[f64] {
+        match self {
+            Fitted::Planar(f) => &f.parameters,
+            Fitted::Spatial(f) => &f.parameters,
+        }
+    }
+}
+
+/// Fits `table` with `options`, errors located in the data file.
+fn fit_table(table: &DataTable, options: &FitOptions) -> anyhow::Result<Fitted> {
+    fn one<const D: usize>(table: &DataTable, options: &FitOptions) -> anyhow::Result<Fit<D>> {
+        let located = |e: neutrospline::fit::FitError| anyhow::Error::msg(table.locate(&e));
+        let data = table.fit_data::<D>().map_err(located)?;
+        fit(&data, options).map_err(located)
+    }
+    Ok(if table.dimension() == 3 {
+        Fitted::Spatial(one::<3>(table, options)?)
+    } else {
+        Fitted::Planar(one::<2>(table, options)?)
+    })
+}
+
+/// Reads the data, fits, writes the model, the report and the figure.
+///
+/// # Errors
+/// Usage errors (contradicting options, an unsupported extension), a located data error, a
+/// fitting error, a write error.
+pub fn run(args: &FitArgs) -> anyhow::Result<()> {
+    let model_format = match &args.output {
+        Some(path) => match Format::from_path(path) {
+            Ok(Format::Toml) => Format::Toml,
+            Ok(Format::Json) => Format::Json,
+            _ => {
+                return Err(UsageError(format!(
+                    "{}: unsupported model extension for a fitted curve (accepted: .toml, .json)",
+                    path.display()
+                ))
+                .into())
+            }
+        },
+        None => Format::Toml,
+    };
+    let figure_format = args
+        .plot
+        .as_deref()
+        .map(FigureFormat::from_path)
+        .transpose()?;
+    if let Some(e) = args.tolerance {
+        if !(e > 0.0 && e.is_finite()) {
+            return Err(UsageError(format!(
+                "--tolerance {e}: the tolerance must be a positive finite number"
+            ))
+            .into());
+        }
+    }
+    if !(args.smoothing >= 0.0 && args.smoothing.is_finite()) {
+        return Err(UsageError(format!(
+            "--smoothing {}: the smoothing weight must be a non-negative finite number",
+            args.smoothing
+        ))
+        .into());
+    }
+    let membership: Membership = args.membership.into();
+    let table = read_data(&args.data, membership)?;
+    if args.weights == WeightsArg::Column && table.weights().is_none() {
+        return Err(UsageError(format!(
+            "--weights column: {} has no `weight` column",
+            table.file()
+        ))
+        .into());
+    }
+    if args.weights != WeightsArg::Column && table.weights().is_some() {
+        return Err(UsageError(format!(
+            "{} has a `weight` column: give --weights column to use it (or remove the column)",
+            table.file()
+        ))
+        .into());
+    }
+    let fitted = fit_table(&table, &args.options())?;
+    let mut model = match &fitted {
+        Fitted::Planar(f) => Model::new(f.curve.clone()),
+        Fitted::Spatial(f) => Model::new(f.curve.clone()),
+    }
+    .with_membership(membership)?
+    .with_description(format!(
+        "Fitted to {} ({} points) by neutrospline fit",
+        table.file(),
+        table.len()
+    ));
+    if let Some(name) = &args.name {
+        model = model.with_name(name.clone());
+    }
+    let text = neutrospline_io::to_string(&model, model_format)?;
+    if let (Some(path), Some(format)) = (&args.plot, figure_format) {
+        let plot = data_plot(&fitted, &table, args.color_by.into())?;
+        let options = PlotOptions::new().with_caption(format!("Data: {}", table.file()));
+        write_figure(&plot, View::Data, &options, path, format)?;
+    }
+    output::emit(args.output.as_deref(), |w| {
+        w.write_all(text.as_bytes())?;
+        Ok(())
+    })?;
+    let report = fitted.report();
+    let dimension = table.dimension();
+    let mut err = std::io::stderr().lock();
+    match args.report {
+        ReportFormat::Text => write!(err, "{}", report_text(report, &table))?,
+        ReportFormat::Json => writeln!(err, "{}", report_json(report, dimension))?,
+    }
+    Ok(())
+}
+
+/// Reads a data file (or standard input for `-`).
+///
+/// # Errors
+/// The located error of the io crate.
+pub fn read_data(file: &str, membership: Membership) -> anyhow::Result<DataTable> {
+    let result = if file == "-" {
+        neutrospline_io::read_data(STDIN_NAME, std::io::stdin().lock(), membership)
+    } else {
+        neutrospline_io::load_data(file, membership)
+    };
+    result.map_err(|e| anyhow::Error::msg(e.to_string()))
+}
+
+/// The `data` view's model: the fitted curve, the data coloured by `color_by`, whiskers to
+/// the curve at the fitted parameters.
+fn data_plot(
+    fitted: &Fitted,
+    table: &DataTable,
+    color_by: DegreeKind,
+) -> anyhow::Result<PlotModel> {
+    let model = match fitted {
+        Fitted::Planar(f) => PlotModel::from_any(&f.curve)?,
+        Fitted::Spatial(f) => PlotModel::from_any(&f.curve)?,
+    };
+    let overlay = DataOverlay::new(
+        table.positions().to_vec(),
+        table.degrees().iter().map(|d| d.to_array()).collect(),
+    )
+    .with_parameters(fitted.parameters().to_vec())
+    .with_color_by(color_by);
+    Ok(model.with_data(overlay)?)
+}
+
+/// The report as aligned text lines.
+fn report_text(report: &FitReport, table: &DataTable) -> String {
+    let mut out = String::new();
+    let mut line = |label: &str, value: String| {
+        out.push_str(&format!("{label:<21}{value}\n"));
+    };
+    line(
+        "control points",
+        format!("{} (degree {})", report.control_points, report.degree),
+    );
+    if let Some(e) = report.tolerance {
+        let met = match report.tolerance_met {
+            Some(true) => "met",
+            _ => {
+                "NOT met: no span with a point beyond it can be split with data left on both halves"
+            }
+        };
+        line("tolerance", format!("{}, {met}", output::rounded(e, 6)));
+    }
+    line(
+        "worst point",
+        format!(
+            "{} (line {}, t = {}): position residual {}",
+            report.worst_index,
+            table.line(report.worst_index),
+            output::rounded(report.worst_parameter, 6),
+            number(report.worst_distance)
+        ),
+    );
+    line("channel", "max error              rms error".to_owned());
+    for ((name, max), (_, rms)) in report.max_error.iter().zip(&report.rms_error) {
+        line(
+            &format!("  {name}"),
+            format!("{:<23}{}", number(*max), number(*rms)),
+        );
+    }
+    line(
+        "schoenberg-whitney",
+        if report.schoenberg_whitney {
+            "hold (every control point has data of its own)".to_owned()
+        } else {
+            "fail (smoothing determines the control points without data)".to_owned()
+        },
+    );
+    line(
+        "condition estimate",
+        format!("{:.3e}", report.condition_estimate),
+    );
+    if report.at_bound.is_empty() {
+        line("at bound", "none".to_owned());
+    } else {
+        let list: Vec<String> = report
+            .at_bound
+            .iter()
+            .map(|a| format!("{} {} = {}", a.index, a.channel, a.bound))
+            .collect();
+        line("at bound", list.join(", "));
+    }
+    out
+}
+
+/// The report as one JSON object (keys as in docs/model.md section 8).
+fn report_json(report: &FitReport, dimension: usize) -> String {
+    let channels = |values: &[(&'static str, f64)]| {
+        serde_json::Value::Object(
+            channel_names(dimension)
+                .iter()
+                .zip(values)
+                .map(|(name, (_, v))| ((*name).to_owned(), json_number(*v)))
+                .collect(),
+        )
+    };
+    let value = serde_json::json!({
+        "control_points": report.control_points,
+        "degree": report.degree,
+        "max_error": channels(&report.max_error),
+        "rms_error": channels(&report.rms_error),
+        "worst_index": report.worst_index,
+        "worst_parameter": json_number(report.worst_parameter),
+        "worst_distance": json_number(report.worst_distance),
+        "schoenberg_whitney": report.schoenberg_whitney,
+        "condition_estimate": json_number(report.condition_estimate),
+        "at_bound": report.at_bound.iter().map(|a| serde_json::json!({
+            "index": a.index,
+            "channel": a.channel,
+            "bound": a.bound,
+        })).collect::<Vec<_>>(),
+        "tolerance": report.tolerance.map(json_number),
+        "tolerance_met": report.tolerance_met,
+    });
+    value.to_string()
+}
+
+/// A finite number as JSON (an infinite condition estimate of a singular system as `null`).
+fn json_number(v: f64) -> serde_json::Value {
+    serde_json::Number::from_f64(v).map_or(serde_json::Value::Null, serde_json::Value::Number)
+}

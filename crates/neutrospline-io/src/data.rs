@@ -1,0 +1,489 @@
+//! Data tables for fitting: measured points with their degrees, one per CSV row.
+//!
+//! Columns (case-insensitive): `x`, `y`, optional `z`, `truth`, `indeterminacy`, `falsity`
+//! (aliases `T`, `I`, `F`; which degrees are required follows the membership rule, as for
+//! control points), and the optional `parameter` (the point's parameter on the curve; `t`
+//! reads as the alias of truth), `weight` (a positive number: how strongly the point pulls)
+//! and `name`. Comments, empty lines, quoting, CRLF and a byte order mark as in control-point
+//! CSV files (see [`crate::read_csv`]); line numbers in errors are physical lines.
+//!
+//! ```
+//! use neutrospline::Membership;
+//! use neutrospline_io::read_data;
+//!
+//! let csv = "x,y,T,I,F,weight\n0,0,0.9,0.1,0.0,1\n1,2,0.8,0.2,0.1,2\n2,1,0.7,0.2,0.1,1\n";
+//! let table = read_data("survey.csv", csv.as_bytes(), Membership::Neutrosophic)?;
+//! assert_eq!((table.len(), table.dimension()), (3, 2));
+//! assert_eq!(table.weights(), Some(&[1.0, 2.0, 1.0][..]));
+//! assert_eq!(table.line(2), 4);
+//!
+//! let bad = "x,y,T,I,F,weight\n0,0,0.9,0.1,0.0,0\n";
+//! let error = read_data("survey.csv", bad.as_bytes(), Membership::Neutrosophic).unwrap_err();
+//! assert_eq!(
+//!     error.to_string(),
+//!     "survey.csv:2: column `weight`: weight = 0 is not positive (a data weight scales how \
+//!      strongly the point pulls the curve: it must be a positive finite number)"
+//! );
+//! # Ok::<(), neutrospline_io::ReadError>(())
+//! ```
+
+use std::io::BufRead;
+use std::path::Path;
+
+use neutrospline::fit::{FitData, FitError};
+use neutrospline::{DegreeError, Degrees, Membership};
+
+use crate::csv::{cells, Records};
+use crate::parsed::{duplicate_rule, line_of, missing_degree, parse_number, Field};
+use crate::{InputError, ReadError};
+
+/// The columns of a data table: a control-point field or the point's parameter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Column {
+    Field(Field),
+    Parameter,
+}
+
+impl Column {
+    fn from_name(text: &str) -> Option<Column> {
+        if text.eq_ignore_ascii_case("parameter") {
+            return Some(Column::Parameter);
+        }
+        Field::from_name(text, true).map(Column::Field)
+    }
+
+    fn known_list() -> String {
+        format!("{}, parameter", Field::known_list())
+    }
+}
+
+/// Measured points read from a CSV file: positions, degrees and, when the file has them,
+/// parameters, weights and names, with the line each point was read from.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DataTable {
+    file: String,
+    dimension: usize,
+    positions: Vec<[f64; 3]>,
+    degrees: Vec<Degrees>,
+    parameters: Option<Vec<f64>>,
+    weights: Option<Vec<f64>>,
+    names: Vec<Option<String>>,
+    lines: Vec<usize>,
+}
+
+impl DataTable {
+    /// The file as named by the caller.
+    pub fn file(&self) -> &str {
+        &self.file
+    }
+
+    /// 2 (columns `x`, `y`) or 3 (with `z`).
+    pub fn dimension(&self) -> usize {
+        self.dimension
+    }
+
+    /// The number of points.
+    pub fn len(&self) -> usize {
+        self.positions.len()
+    }
+
+    /// Whether there are no points (never true for a table that was read).
+    pub fn is_empty(&self) -> bool {
+        self.positions.is_empty()
+    }
+
+    /// The positions, `z = 0` for 2-D data.
+    pub fn positions(&self) -> &[[f64; 3]] {
+        &self.positions
+    }
+
+    /// The degrees, valid under the membership rule they were read with.
+    pub fn degrees(&self) -> &[Degrees] {
+        &self.degrees
+    }
+
+    /// The `parameter` column, when the file has one.
+    pub fn parameters(&self) -> Option<&[f64]> {
+        self.parameters.as_deref()
+    }
+
+    /// The `weight` column, when the file has one (every weight positive and finite).
+    pub fn weights(&self) -> Option<&[f64]> {
+        self.weights.as_deref()
+    }
+
+    /// The `name` column's cells (`None` for an empty cell or without the column).
+    pub fn names(&self) -> &[Option<String>] {
+        &self.names
+    }
+
+    /// The physical line (1-based) point `index` was read from.
+    ///
+    /// # Panics
+    /// When `index` is not a point of the table.
+    pub fn line(&self, index: usize) -> usize {
+        self.lines[index]
+    }
+
+    /// The core's fitting data of dimension `D` (the positions' first `D` coordinates, the
+    /// degrees, and the parameters and weights when the file has them).
+    ///
+    /// # Errors
+    /// The core's checks ([`FitData::new`], [`FitData::with_parameters`],
+    /// [`FitData::with_weights`]): a dimension other than 2 or 3, parameters that decrease.
+    /// [`DataTable::locate`] turns them into located errors.
+    pub fn fit_data<const D: usize>(&self) -> Result<FitData<D>, FitError> {
+        let positions = self
+            .positions
+            .iter()
+            .map(|p| core::array::from_fn(|a| p[a]))
+            .collect();
+        let mut data = FitData::new(positions, self.degrees.clone())?;
+        if let Some(parameters) = &self.parameters {
+            data = data.with_parameters(parameters.clone())?;
+        }
+        if let Some(weights) = &self.weights {
+            data = data.with_weights(weights.clone())?;
+        }
+        Ok(data)
+    }
+
+    /// A fitting error located in this file: an error about one point names the point's line
+    /// (`data.csv:7: repeats the parameter of line 6 ...`), any other names the file.
+    pub fn locate(&self, error: &FitError) -> InputError {
+        let at = |index: usize, field: Option<&str>, message: String| {
+            let line = self.lines.get(index).copied();
+            InputError::new(&self.file, line, field.map(str::to_owned), message)
+        };
+        match error {
+            FitError::NotFinite {
+                index,
+                field,
+                value,
+            } => at(
+                *index,
+                Some(&format!("column `{field}`")),
+                format!("{field} = {value} is not a finite number"),
+            ),
+            FitError::WeightNotPositive { index, value } => {
+                at(*index, Some("column `weight`"), weight_message(*value))
+            }
+            FitError::ParameterDecreasing {
+                index,
+                value,
+                previous,
+            } => at(
+                *index,
+                Some("column `parameter`"),
+                format!(
+                    "parameter = {value} is less than the previous point's {previous} \
+                     (parameters must be non-decreasing, in the order of the rows)"
+                ),
+            ),
+            FitError::Degrees { index, source } => at(*index, None, source.to_string()),
+            FitError::RepeatedParameter {
+                index,
+                previous,
+                value,
+                rule,
+            } => {
+                let previous = self.lines.get(*previous).copied().unwrap_or_default();
+                at(
+                    *index,
+                    None,
+                    format!("repeats the parameter of line {previous} (t = {value}): {rule}"),
+                )
+            }
+            FitError::RepeatedPoint { index, previous } => {
+                let previous = self.lines.get(*previous).copied().unwrap_or_default();
+                at(
+                    *index,
+                    None,
+                    format!(
+                        "repeats the position of line {previous}: chord-length and centripetal \
+                         parameters need distinct consecutive points (remove it, give a \
+                         `parameter` column, or use uniform parameters)"
+                    ),
+                )
+            }
+            other => InputError::new(&self.file, None, None, other.to_string()),
+        }
+    }
+}
+
+/// The message for a data weight that is not a positive finite number.
+fn weight_message(value: f64) -> String {
+    format!(
+        "weight = {value} is not positive (a data weight scales how strongly the point pulls \
+         the curve: it must be a positive finite number)"
+    )
+}
+
+/// Reads a data table from a CSV file.
+///
+/// # Errors
+/// The file cannot be read, or is invalid: see [`read_data`].
+pub fn load_data(path: impl AsRef<Path>, membership: Membership) -> Result<DataTable, ReadError> {
+    let path = path.as_ref();
+    let shown = path.display().to_string();
+    let cannot = |error: std::io::Error| ReadError::Io {
+        path: shown.clone(),
+        error,
+    };
+    let file = std::fs::File::open(path).map_err(cannot)?;
+    if file.metadata().map_err(cannot)?.is_dir() {
+        return Err(ReadError::IsDirectory { path: shown });
+    }
+    read_data(&shown, std::io::BufReader::new(file), membership)
+}
+
+/// Reads a data table from a CSV stream, one line at a time; `file` names it in errors.
+///
+/// # Errors
+/// A located [`InputError`]: an empty file, a missing, unknown or repeated column, a row with
+/// the wrong number of cells, a value that is not a finite number, degrees that break the
+/// membership rule, a weight that is not positive, no data rows; or the stream cannot be read.
+pub fn read_data(
+    file: &str,
+    reader: impl BufRead,
+    membership: Membership,
+) -> Result<DataTable, ReadError> {
+    let error = |line: Option<usize>, field: Option<String>, message: String| -> ReadError {
+        InputError::new(file, line, field, message).into()
+    };
+    let mut records = Records::new(reader);
+    let mut next = || -> Result<Option<(usize, ::csv::StringRecord)>, ReadError> {
+        let Some((line, bytes)) = records
+            .next_record()
+            .map_err(|(line, m)| error(Some(line), None, m))?
+        else {
+            return Ok(None);
+        };
+        let text = std::str::from_utf8(bytes).map_err(|e| {
+            error(
+                Some(line + line_of(bytes, e.valid_up_to()) - 1),
+                None,
+                "invalid UTF-8 (the file must be UTF-8 encoded)".to_owned(),
+            )
+        })?;
+        let cells = cells(text).map_err(|m| error(Some(line), None, m))?;
+        Ok(Some((line, cells)))
+    };
+    let Some((header_line, header)) = next()? else {
+        return Err(error(
+            None,
+            None,
+            "empty file (expected a header row such as `x,y,truth,indeterminacy,falsity`)"
+                .to_owned(),
+        ));
+    };
+    let header_line = Some(header_line);
+    let mut columns: Vec<Column> = Vec::with_capacity(header.len());
+    for (i, heading) in header.iter().enumerate() {
+        let column = Column::from_name(heading).ok_or_else(|| {
+            error(
+                header_line,
+                None,
+                format!(
+                    "unknown column `{heading}` (known columns: {})",
+                    Column::known_list()
+                ),
+            )
+        })?;
+        if let Some(j) = columns.iter().position(|&c| c == column) {
+            return Err(error(
+                header_line,
+                None,
+                format!(
+                    "column {} `{heading}` repeats column {} `{}` ({})",
+                    i + 1,
+                    j + 1,
+                    header.get(j).unwrap_or_default(),
+                    duplicate_rule()
+                ),
+            ));
+        }
+        columns.push(column);
+    }
+    let has = |f: Field| columns.contains(&Column::Field(f));
+    for f in [Field::X, Field::Y, Field::Truth] {
+        if !has(f) {
+            return Err(error(
+                header_line,
+                None,
+                format!(
+                    "missing column `{}` (every data point needs x, y and its truth)",
+                    f.name()
+                ),
+            ));
+        }
+    }
+    if let Some(DegreeError::Missing { kind, membership }) =
+        missing_degree(membership, has(Field::Indeterminacy), has(Field::Falsity))
+    {
+        return Err(error(
+            header_line,
+            None,
+            format!("missing column `{kind}` ({membership} rule requires it)"),
+        ));
+    }
+    let dimension = if has(Field::Z) { 3 } else { 2 };
+    let has_parameters = columns.contains(&Column::Parameter);
+    let has_weights = has(Field::Weight);
+    let mut table = DataTable {
+        file: file.to_owned(),
+        dimension,
+        positions: Vec::new(),
+        degrees: Vec::new(),
+        parameters: has_parameters.then(Vec::new),
+        weights: has_weights.then(Vec::new),
+        names: Vec::new(),
+        lines: Vec::new(),
+    };
+    while let Some((line, record)) = next()? {
+        let at = Some(line);
+        if record.len() != columns.len() {
+            return Err(error(
+                at,
+                None,
+                format!(
+                    "the row has {} cells but the header has {} (every row needs one cell per \
+                     column)",
+                    record.len(),
+                    columns.len()
+                ),
+            ));
+        }
+        let mut values = [None::<f64>; Field::ALL.len()];
+        let mut parameter = None;
+        let mut name = None;
+        for ((&column, cell), heading) in columns.iter().zip(record.iter()).zip(header.iter()) {
+            if column == Column::Field(Field::Name) {
+                name = (!cell.is_empty()).then(|| cell.to_owned());
+                continue;
+            }
+            let value = parse_number(cell)
+                .map_err(|m| error(at, Some(format!("column `{heading}`")), m))?;
+            match column {
+                Column::Parameter => parameter = Some(value),
+                Column::Field(Field::Weight) if value <= 0.0 => {
+                    return Err(error(
+                        at,
+                        Some(format!("column `{heading}`")),
+                        weight_message(value),
+                    ))
+                }
+                Column::Field(field) => values[field.index()] = Some(value),
+            }
+        }
+        let get = |f: Field| values[f.index()];
+        let degrees = Degrees::with_membership(
+            membership,
+            get(Field::Truth).unwrap_or_default(),
+            get(Field::Indeterminacy),
+            get(Field::Falsity),
+        )
+        .map_err(|e| error(at, None, e.to_string()))?;
+        table.positions.push([
+            get(Field::X).unwrap_or_default(),
+            get(Field::Y).unwrap_or_default(),
+            get(Field::Z).unwrap_or_default(),
+        ]);
+        table.degrees.push(degrees);
+        if let (Some(list), Some(value)) = (&mut table.parameters, parameter) {
+            list.push(value);
+        }
+        if let (Some(list), Some(value)) = (&mut table.weights, get(Field::Weight)) {
+            list.push(value);
+        }
+        table.names.push(name);
+        table.lines.push(line);
+    }
+    if table.is_empty() {
+        return Err(error(
+            None,
+            None,
+            "no data points (the header row is not followed by any data row)".to_owned(),
+        ));
+    }
+    Ok(table)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn read(text: &str, membership: Membership) -> Result<DataTable, String> {
+        read_data("d.csv", text.as_bytes(), membership).map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn reads_columns_in_any_order_with_comments() {
+        let table = read(
+            "# survey\nname,parameter,F,I,T,z,y,x,weight\n\nA,0,0.1,0.2,0.7,3,2,1,0.5\n\
+             # gap\n,0.5,0,0,1,6,5,4,2\n",
+            Membership::Neutrosophic,
+        )
+        .unwrap();
+        assert_eq!(table.dimension(), 3);
+        assert_eq!(table.positions(), &[[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]);
+        assert_eq!(table.degrees()[0].to_array(), [0.7, 0.2, 0.1]);
+        assert_eq!(table.parameters(), Some(&[0.0, 0.5][..]));
+        assert_eq!(table.weights(), Some(&[0.5, 2.0][..]));
+        assert_eq!(table.names(), &[Some("A".to_owned()), None]);
+        assert_eq!((table.line(0), table.line(1)), (4, 6));
+        let data = table.fit_data::<3>().unwrap();
+        assert_eq!(data.len(), 2);
+    }
+
+    #[test]
+    fn intuitionistic_data_needs_no_indeterminacy_column() {
+        let table = read(
+            "x,y,truth,falsity\n0,0,0.6,0.3\n",
+            Membership::Intuitionistic,
+        )
+        .unwrap();
+        let [t, i, f] = table.degrees()[0].to_array();
+        assert_eq!((t, f), (0.6, 0.3));
+        assert!((i - 0.1).abs() < 1e-15);
+    }
+
+    #[test]
+    fn errors_are_located() {
+        let cases: &[(&str, &str)] = &[
+            ("", "d.csv: empty file (expected a header row such as `x,y,truth,indeterminacy,falsity`)"),
+            ("x,y,truth,indeterminacy,falsity\n", "d.csv: no data points (the header row is not followed by any data row)"),
+            ("x,truth,indeterminacy,falsity\n1,0,0,0\n", "d.csv:1: missing column `y` (every data point needs x, y and its truth)"),
+            ("x,y,truth,indeterminacy\n1,2,0,0\n", "d.csv:1: missing column `falsity` (neutrosophic rule requires it)"),
+            ("x,y,t,truth,I,F\n", "d.csv:1: column 4 `truth` repeats column 3 `t` (each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity)"),
+            ("x,y,T,I,F,u\n", "d.csv:1: unknown column `u` (known columns: x, y, z, truth (T), indeterminacy (I), falsity (F), weight, name, parameter)"),
+            ("x,y,T,I,F\n1,2,0.5,0.5\n", "d.csv:2: the row has 4 cells but the header has 5 (every row needs one cell per column)"),
+            ("x,y,T,I,F\n1,nan,0.5,0.5,0\n", "d.csv:2: column `y`: value `nan` is not a finite number (NaN and infinities are not allowed)"),
+            ("x,y,T,I,F\n1,2,1.5,0.5,0\n", "d.csv:2: truth = 1.5 is outside [0, 1] (every degree must be in [0, 1])"),
+            ("x,y,T,I,F,weight\n1,2,0.5,0.5,0,1\n1,2,0.5,0.5,0,-2\n", "d.csv:3: column `weight`: weight = -2 is not positive (a data weight scales how strongly the point pulls the curve: it must be a positive finite number)"),
+            ("x,y,T,I,F,parameter\n1,2,0.5,0.5,0,inf\n", "d.csv:2: column `parameter`: value `inf` is not a finite number (NaN and infinities are not allowed)"),
+        ];
+        for (text, want) in cases {
+            assert_eq!(
+                read(text, Membership::Neutrosophic).unwrap_err(),
+                *want,
+                "{text:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn fit_errors_name_the_line() {
+        let table = read(
+            "x,y,T,I,F,parameter\n0,0,1,0,0,0\n# note\n1,1,1,0,0,0.5\n2,0,1,0,0,0.25\n",
+            Membership::Neutrosophic,
+        )
+        .unwrap();
+        let error = table.fit_data::<2>().unwrap_err();
+        assert_eq!(
+            table.locate(&error).to_string(),
+            "d.csv:5: column `parameter`: parameter = 0.25 is less than the previous point's \
+             0.5 (parameters must be non-decreasing, in the order of the rows)"
+        );
+    }
+}
