@@ -80,7 +80,15 @@ fn degrees_jumping_between_bounds_stay_valid_and_are_reported() {
     fs::write(dir.path().join("d.csv"), data).unwrap();
     let (code, _, stderr) = run(
         dir.path(),
-        &["fit", "d.csv", "--interpolate", "-o", "m.toml", "--report", "json"],
+        &[
+            "fit",
+            "d.csv",
+            "--interpolate",
+            "-o",
+            "m.toml",
+            "--report",
+            "json",
+        ],
     );
     assert_eq!(code, 0, "{stderr}");
     let report: serde_json::Value = serde_json::from_str(stderr.trim()).unwrap();
@@ -91,8 +99,14 @@ fn degrees_jumping_between_bounds_stay_valid_and_are_reported() {
         assert!(bound == 0.0 || bound == 1.0, "{entry}");
     }
     // The positions still interpolate; the degrees give way where they must.
-    assert!(report["max_error"]["x"].as_f64().unwrap() < 1e-12, "{report}");
-    assert!(report["max_error"]["truth"].as_f64().unwrap() > 0.0, "{report}");
+    assert!(
+        report["max_error"]["x"].as_f64().unwrap() < 1e-12,
+        "{report}"
+    );
+    assert!(
+        report["max_error"]["truth"].as_f64().unwrap() > 0.0,
+        "{report}"
+    );
     let (code, _, stderr) = run(dir.path(), &["check", "m.toml"]);
     assert_eq!(code, 0, "{stderr}");
     let (code, table, _) = run(dir.path(), &["eval", "m.toml", "--samples", "401"]);
