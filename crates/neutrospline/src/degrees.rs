@@ -426,6 +426,53 @@ impl Degrees {
         }
     }
 
+    /// The score `s = (2 + T - I - F) / 3`, in `[0, 1]`: 1 fully true, 0 fully false
+    /// (docs/model.md section 7). Affine in the degrees, so the score of a curve at `t` is the
+    /// blend of its control points' scores.
+    ///
+    /// ```
+    /// use neutrospline::Degrees;
+    /// let d = Degrees::new(0.7, 0.1, 0.2)?;
+    /// assert!((d.score() - 0.8).abs() < 1e-15);
+    /// assert!((d.accuracy() - 0.5).abs() < 1e-15);
+    /// assert_eq!(d.certainty(), 0.7);
+    /// # Ok::<(), neutrospline::DegreeError>(())
+    /// ```
+    pub fn score(&self) -> f64 {
+        (2.0 + self.truth - self.indeterminacy - self.falsity) / 3.0
+    }
+
+    /// The accuracy `a = T - F`, in `[-1, 1]` (docs/model.md section 7).
+    pub fn accuracy(&self) -> f64 {
+        self.truth - self.falsity
+    }
+
+    /// The certainty `c = T`, in `[0, 1]` (docs/model.md section 7).
+    pub const fn certainty(&self) -> f64 {
+        self.truth
+    }
+
+    /// The ranking of docs/model.md section 7: by score, then accuracy, then certainty (a
+    /// total order: the degrees are finite).
+    ///
+    /// ```
+    /// use std::cmp::Ordering;
+    /// use neutrospline::Degrees;
+    /// let a = Degrees::new(0.5, 0.25, 0.25)?; // score 2/3, accuracy 0.25
+    /// let b = Degrees::new(0.25, 0.0, 0.25)?; // score 2/3, accuracy 0
+    /// let c = Degrees::new(0.75, 0.5, 0.0)?; // score 0.75
+    /// assert_eq!(a.score(), b.score());
+    /// assert_eq!(a.rank_cmp(&b), Ordering::Greater);
+    /// assert_eq!(c.rank_cmp(&a), Ordering::Greater);
+    /// # Ok::<(), neutrospline::DegreeError>(())
+    /// ```
+    pub fn rank_cmp(&self, other: &Degrees) -> core::cmp::Ordering {
+        self.score()
+            .total_cmp(&other.score())
+            .then(self.accuracy().total_cmp(&other.accuracy()))
+            .then(self.certainty().total_cmp(&other.certainty()))
+    }
+
     /// `[truth, indeterminacy, falsity]`.
     pub const fn to_array(&self) -> [f64; 3] {
         [self.truth, self.indeterminacy, self.falsity]
@@ -463,6 +510,31 @@ impl fmt::Display for Degrees {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn scores_have_their_closed_forms_and_ranges() {
+        // (T, I, F) -> (score, accuracy, certainty), by hand.
+        let cases = [
+            ([1.0, 0.0, 0.0], [1.0, 1.0, 1.0]),
+            ([0.0, 1.0, 1.0], [0.0, -1.0, 0.0]),
+            ([0.5, 0.5, 0.5], [0.5, 0.0, 0.5]),
+            ([0.25, 0.5, 0.75], [1.0 / 3.0, -0.5, 0.25]),
+        ];
+        for (degrees, [score, accuracy, certainty]) in cases {
+            let d = Degrees::from_array(degrees).unwrap();
+            assert!((d.score() - score).abs() < 1e-15, "{d}");
+            assert_eq!(d.accuracy(), accuracy);
+            assert_eq!(d.certainty(), certainty);
+        }
+        // Intuitionistic: the score is (1 + 2T) / 3 and does not see F.
+        let i = Degrees::intuitionistic(0.4, 0.5).unwrap();
+        assert!((i.score() - (1.0 + 0.8) / 3.0).abs() < 1e-15);
+        // The order: score first, then accuracy, then certainty.
+        let low = Degrees::new(0.2, 0.5, 0.5).unwrap();
+        let high = Degrees::new(0.9, 0.0, 0.1).unwrap();
+        assert_eq!(low.rank_cmp(&high), core::cmp::Ordering::Less);
+        assert_eq!(high.rank_cmp(&high), core::cmp::Ordering::Equal);
+    }
 
     #[test]
     fn degrees_new_accepts_bounds() {

@@ -71,11 +71,7 @@ pub(super) fn run<const D: usize>(
         DataWeights::Given => data.weights().map(<[f64]>::to_vec).ok_or_else(|| {
             FitError::Option("data weights were asked for but the data has none".into())
         })?,
-        DataWeights::Score => data
-            .degrees()
-            .iter()
-            .map(|d| (2.0 + d.truth() - d.indeterminacy() - d.falsity()) / 3.0)
-            .collect(),
+        DataWeights::Score => data.degrees().iter().map(Degrees::score).collect(),
     };
     let target = match (&options.knots, options.target) {
         (_, Some(target)) => target,
