@@ -287,6 +287,7 @@ pub fn check_shape(shape: &Shape) {
     let extras = Extras {
         derivative: true,
         normal: shape.is_surface(),
+        scores: true,
     };
     let sampler = shape.sampler(extras);
     let params: Vec<Param> = match shape {

@@ -38,6 +38,16 @@ pub struct Extras {
     pub derivative: bool,
     /// The unit normal (surfaces).
     pub normal: bool,
+    /// The score, accuracy and certainty of the degrees (docs/model.md section 7).
+    pub scores: bool,
+}
+
+/// Column names of the scores.
+const SCORES: [&str; 3] = ["score", "accuracy", "certainty"];
+
+/// The score, accuracy and certainty of a point's degrees.
+fn scores(degrees: &neutrospline::Degrees) -> [f64; 3] {
+    [degrees.score(), degrees.accuracy(), degrees.certainty()]
 }
 
 /// A row of a table: `None` is a value that does not exist (a normal where the surface is
@@ -151,6 +161,9 @@ impl Table for Shape {
             vec!["t".to_owned()]
         };
         columns.extend(names.iter().map(|n| (*n).to_owned()));
+        if extras.scores {
+            columns.extend(SCORES.map(str::to_owned));
+        }
         if extras.derivative {
             if self.is_surface() {
                 for direction in ["du", "dv"] {
@@ -168,8 +181,8 @@ impl Table for Shape {
 
     fn sampler(&self, extras: Extras) -> Sampler<'_> {
         match self {
-            Shape::Planar(c) => Sampler::Planar(CurveSampler::new(c, extras.derivative)),
-            Shape::Spatial(c) => Sampler::Spatial(CurveSampler::new(c, extras.derivative)),
+            Shape::Planar(c) => Sampler::Planar(CurveSampler::new(c, extras)),
+            Shape::Spatial(c) => Sampler::Spatial(CurveSampler::new(c, extras)),
             Shape::Surface(s) => Sampler::Surface(s, extras),
         }
     }
@@ -210,13 +223,15 @@ impl Sampler<'_> {
 pub struct CurveSampler<'a, const D: usize> {
     curve: &'a AnyCurve<D>,
     derivative: Option<CurveDerivative<D>>,
+    scores: bool,
 }
 
 impl<'a, const D: usize> CurveSampler<'a, D> {
-    fn new(curve: &'a AnyCurve<D>, derivative: bool) -> Self {
+    fn new(curve: &'a AnyCurve<D>, extras: Extras) -> Self {
         CurveSampler {
             curve,
-            derivative: derivative.then(|| curve.derivative()),
+            derivative: extras.derivative.then(|| curve.derivative()),
+            scores: extras.scores,
         }
     }
 
@@ -226,6 +241,9 @@ impl<'a, const D: usize> CurveSampler<'a, D> {
         row.push(t);
         row.extend(p.position);
         row.extend(p.degrees.to_array());
+        if self.scores {
+            row.extend(scores(&p.degrees));
+        }
         if let Some(derivative) = &self.derivative {
             push_rates(
                 &mut row,
@@ -258,6 +276,9 @@ fn surface_row(surface: &Surface, extras: Extras, u: f64, v: f64) -> anyhow::Res
     values.extend([u, v]);
     values.extend(p.position);
     values.extend(p.degrees.to_array());
+    if extras.scores {
+        values.extend(scores(&p.degrees));
+    }
     if extras.derivative {
         let d = surface
             .partial_derivatives(u, v)
@@ -301,11 +322,31 @@ mod tests {
         assert_eq!(
             c.columns(Extras {
                 derivative: true,
-                normal: true
+                normal: true,
+                scores: false,
             })
             .join(","),
             "t,x,y,truth,indeterminacy,falsity,dx,dy,dtruth,dindeterminacy,dfalsity"
         );
+        assert_eq!(
+            c.columns(Extras {
+                scores: true,
+                ..Extras::default()
+            })
+            .join(","),
+            "t,x,y,truth,indeterminacy,falsity,score,accuracy,certainty"
+        );
+        // (T, I, F) = (0.5, 0.25, 0) everywhere: score 0.75, accuracy 0.5, certainty 0.5.
+        let row = c
+            .sampler(Extras {
+                scores: true,
+                ..Extras::default()
+            })
+            .row(Param::T(3.0))
+            .unwrap();
+        for (value, want) in row[6..].iter().zip([0.75, 0.5, 0.5]) {
+            assert!((value.unwrap() - want).abs() < 1e-15, "{row:?}");
+        }
         let d = Degrees::new(0.5, 0.25, 0.0).unwrap();
         let s = Shape::Surface(
             Surface::bezier(
@@ -323,7 +364,8 @@ mod tests {
         assert_eq!(
             s.columns(Extras {
                 derivative: true,
-                normal: true
+                normal: true,
+                scores: false,
             })
             .join(","),
             "u,v,x,y,z,truth,indeterminacy,falsity,\
@@ -334,6 +376,7 @@ mod tests {
             .sampler(Extras {
                 derivative: false,
                 normal: true,
+                scores: false,
             })
             .row(Param::Uv(0.5, 0.5))
             .unwrap();

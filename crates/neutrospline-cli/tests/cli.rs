@@ -133,6 +133,27 @@ fn eval_example1_at_half() {
 }
 
 #[test]
+fn eval_scores_are_the_blend_of_the_control_scores() {
+    let out = run_in(
+        &examples_dir(),
+        &["eval", "example1.toml", "--at", "0,0.5,1", "--scores"],
+        None,
+    );
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let (header, rows) = parse_csv(&out.stdout);
+    assert_eq!(
+        header.join(","),
+        format!("{HEADER_2D},score,accuracy,certainty")
+    );
+    // Control scores (2 + T - I - F) / 3 of Table 1: 1.6/3, 2.6/3, 2.4/3, 1.4/3; at t = 1/2
+    // the Bernstein weights are 1/8, 3/8, 3/8, 1/8: score (1.6 + 7.8 + 7.2 + 1.4) / 24 = 0.75,
+    // accuracy (0.2 + 2.1 + 1.5 - 0.2) / 8 = 0.45, certainty = truth = 0.625.
+    assert_close(&rows[0][6..], &[1.6 / 3.0, 0.2, 0.3]);
+    assert_close(&rows[1][6..], &[0.75, 0.45, 0.625]);
+    assert_close(&rows[2][6..], &[1.4 / 3.0, -0.2, 0.2]);
+}
+
+#[test]
 fn eval_derivative_columns_and_values() {
     let out = run_in(
         &examples_dir(),

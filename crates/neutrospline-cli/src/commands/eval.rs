@@ -16,9 +16,11 @@ use crate::shape::{Extras, Param, Shape, Table};
 /// Arguments of `eval`.
 #[derive(Debug, clap::Args)]
 #[command(after_help = "Columns:\n  \
-curves    t, x, y[, z], truth, indeterminacy, falsity; with --derivative the rates d/dt\n            \
+curves    t, x, y[, z], truth, indeterminacy, falsity; with --scores score, accuracy,\n            \
+certainty; with --derivative the rates d/dt\n            \
 dx, dy[, dz], dtruth, dindeterminacy, dfalsity\n  \
-surfaces  u, v, x, y, z, truth, indeterminacy, falsity; with --derivative the partial\n            \
+surfaces  u, v, x, y, z, truth, indeterminacy, falsity; with --scores score, accuracy,\n            \
+certainty; with --derivative the partial\n            \
 derivatives dx_du, dy_du, dz_du, dtruth_du, dindeterminacy_du, dfalsity_du, then\n            \
 dx_dv, ..., dfalsity_dv; with --normal the unit normal nx, ny, nz (empty in CSV, null\n            \
 in JSON, where the surface is degenerate)\n\
@@ -60,6 +62,10 @@ pub struct EvalArgs {
     /// Add the first derivatives (curves: d/dt; surfaces: d/du and d/dv; see Columns below)
     #[arg(long)]
     pub derivative: bool,
+
+    /// Add the score, accuracy and certainty of the degrees: (2 + T - I - F) / 3, T - F, T
+    #[arg(long)]
+    pub scores: bool,
 
     /// Surfaces: add the unit normal (S_u x S_v normalised) as columns nx, ny, nz
     #[arg(long)]
@@ -190,6 +196,7 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
     let extras = Extras {
         derivative: args.derivative,
         normal: args.normal,
+        scores: args.scores,
     };
     let columns = shape.columns(extras);
     let sampler = shape.sampler(extras);
