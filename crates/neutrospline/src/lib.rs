@@ -83,6 +83,7 @@ mod any_curve;
 pub mod batch;
 mod bernstein;
 mod bezier;
+pub mod color;
 mod curve;
 mod degrees;
 mod derivative;
