@@ -92,6 +92,7 @@ mod knots;
 mod layout;
 mod point;
 mod relation;
+pub mod sample;
 mod spline;
 mod spline_curve;
 #[cfg(feature = "proptest")]
