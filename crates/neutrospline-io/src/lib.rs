@@ -14,6 +14,10 @@
 //! - Writing: [`to_toml_string`], [`to_json_string`], [`to_csv_string`] and [`save`], which
 //!   replaces a file atomically ([`AtomicFile`]). Whatever is written reads back to an equal
 //!   model, numbers to the last bit.
+//! - Exporting to CAD and 3-D programs: [`export`] and [`export_file`] write DXF (a curve as
+//!   one exact SPLINE entity, a surface as a POLYFACE mesh), glTF 2.0 (`.glb`, `.gltf`), PLY
+//!   and OBJ (sampled polylines and triangle meshes), with the degrees kept where the format
+//!   can carry them ([`ExportFormat`], [`ExportOptions`]).
 //!
 //! ```
 //! use neutrospline_io::{parse, to_json_string, Format, ReadOptions};
@@ -42,7 +46,9 @@
 mod atomic;
 mod build;
 mod csv;
+mod dxf_xdata;
 mod error;
+mod export;
 mod format;
 mod model;
 mod number;
@@ -57,6 +63,10 @@ mod write;
 
 pub use atomic::AtomicFile;
 pub use error::{InputError, ReadError, UnsupportedFormat, WriteError};
+pub use export::{
+    export, export_file, ColorBy, ExportError, ExportFormat, ExportOptions, MAX_CURVE_SAMPLES,
+    MAX_SURFACE_SAMPLES,
+};
 pub use format::{
     Format, Limits, DEFAULT_MAX_CONTROL_POINTS, DEFAULT_MAX_FILE_SIZE, MAX_CSV_LINE, MAX_INTEGER,
 };
