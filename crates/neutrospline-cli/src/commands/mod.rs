@@ -5,6 +5,7 @@ pub mod bench;
 pub mod check;
 pub mod eval;
 pub mod example;
+pub mod export;
 pub mod options;
 pub mod plot;
 
