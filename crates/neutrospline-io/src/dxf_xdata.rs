@@ -19,9 +19,6 @@
 //! caret itself) and `\U+XXXX` for a backslash and every character outside ASCII (UTF-16
 //! surrogate pairs beyond U+FFFF), as DXF R2000 writes text. Reals are written in the shortest
 //! form that reads back to the same `f64`, so the degrees come back to the last bit.
-//!
-//! The reading half (`read`, `decode_text`) is compiled for the tests, which read every
-//! exported DXF file back.
 
 use neutrospline::{Degrees, Membership};
 
@@ -100,7 +97,6 @@ pub(crate) fn encode_text(text: &str) -> Vec<String> {
     pieces
 }
 
-#[cfg(test)]
 /// The text of escaped pieces ([`encode_text`]); a `\U+` not followed by four hexadecimal
 /// digits, and a lone surrogate, are kept as written.
 pub(crate) fn decode_text(pieces: &[&str]) -> String {
@@ -189,11 +185,9 @@ impl ModelInfo {
     }
 }
 
-#[cfg(test)]
 /// One tag of the extended data as read: group code, value, line of the group code.
 pub(crate) type XTag<'a> = (u16, &'a str, usize);
 
-#[cfg(test)]
 /// Reads [`ModelInfo::to_values`] back. `tags` follow `1001 NEUTROSPLINE`; `fallback_line` is
 /// where an error is reported when the data ends early.
 ///
@@ -285,14 +279,12 @@ pub(crate) fn read(tags: &[XTag<'_>], fallback_line: usize) -> Result<ModelInfo,
     Ok(info)
 }
 
-#[cfg(test)]
 struct Reader<'a, 'b> {
     tags: &'b [XTag<'a>],
     next: usize,
     fallback_line: usize,
 }
 
-#[cfg(test)]
 impl<'a> Reader<'a, '_> {
     fn take(&mut self, code: u16, what: &str) -> Result<(usize, &'a str), (usize, String)> {
         match self.tags.get(self.next) {

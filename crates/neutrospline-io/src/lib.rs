@@ -18,6 +18,9 @@
 //!   one exact SPLINE entity, a surface as a POLYFACE mesh), glTF 2.0 (`.glb`, `.gltf`), PLY
 //!   and OBJ (sampled polylines and triangle meshes), with the degrees kept where the format
 //!   can carry them ([`ExportFormat`], [`ExportOptions`]).
+//! - Importing curves from CAD programs: [`load_dxf`] and [`parse_dxf`] read the SPLINE
+//!   entities of a DXF file exactly, with the degrees the exporter keeps in their extended data
+//!   (a DXF export reads back to an equal model, numbers to the last bit).
 //!
 //! ```
 //! use neutrospline_io::{parse, to_json_string, Format, ReadOptions};
@@ -46,6 +49,7 @@
 mod atomic;
 mod build;
 mod csv;
+mod dxf_import;
 mod dxf_xdata;
 mod error;
 mod export;
@@ -62,6 +66,7 @@ mod walker;
 mod write;
 
 pub use atomic::AtomicFile;
+pub use dxf_import::{load_dxf, parse_dxf};
 pub use error::{InputError, ReadError, UnsupportedFormat, WriteError};
 pub use export::{
     export, export_file, ColorBy, ExportError, ExportFormat, ExportOptions, MAX_CURVE_SAMPLES,

@@ -5,41 +5,7 @@
 
 use crate::dxf_xdata::{self, ModelInfo, XTag};
 
-/// One group: its code, its value and the line of its code (1-based).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) struct Group<'a> {
-    pub code: u16,
-    pub value: &'a str,
-    pub line: usize,
-}
-
-/// The groups of a DXF text: alternate lines of a group code (an integer, spaces allowed
-/// around it) and a value.
-///
-/// # Errors
-/// A line and a message for a group code that is not an integer or a code without a value.
-pub(super) fn groups(text: &str) -> Result<Vec<Group<'_>>, (usize, String)> {
-    let lines: Vec<&str> = text.lines().collect();
-    if !lines.len().is_multiple_of(2) {
-        return Err((lines.len(), "a group code without a value".to_owned()));
-    }
-    lines
-        .chunks_exact(2)
-        .enumerate()
-        .map(|(k, pair)| {
-            let line = 2 * k + 1;
-            let code = pair[0]
-                .trim()
-                .parse::<u16>()
-                .map_err(|_| (line, format!("group code `{}` is not an integer", pair[0])))?;
-            Ok(Group {
-                code,
-                value: pair[1],
-                line,
-            })
-        })
-        .collect()
-}
+pub(super) use crate::dxf_import::{groups, Group};
 
 /// An entity: its type (`SPLINE`, `POLYLINE`, `VERTEX`, ...) and its groups after `0 TYPE`,
 /// extended data included.
@@ -178,31 +144,5 @@ impl Spline {
         assert_eq!(entity.one::<usize>(73), spline.control_points.len());
         assert_eq!(entity.one::<usize>(74), 0);
         spline
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn groups_locate_bad_codes() {
-        let g = groups("  0\nSECTION\n  2\nENTITIES\n").unwrap();
-        assert_eq!(
-            g[1],
-            Group {
-                code: 2,
-                value: "ENTITIES",
-                line: 3
-            }
-        );
-        assert_eq!(
-            groups("  0\nA\nx\nB\n").unwrap_err(),
-            (3, "group code `x` is not an integer".to_owned())
-        );
-        assert_eq!(
-            groups("  0\n").unwrap_err(),
-            (1, "a group code without a value".to_owned())
-        );
     }
 }
