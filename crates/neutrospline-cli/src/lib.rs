@@ -1,5 +1,5 @@
-//! The `neutrospline` command: evaluate, check, draw, export and demonstrate neutrosophic
-//! curves (Bézier, B-spline, NURBS) and tensor-product surfaces.
+//! The `neutrospline` command: evaluate, check, draw, export, import and demonstrate
+//! neutrosophic curves (Bézier, B-spline, NURBS) and tensor-product surfaces.
 //!
 //! A thin layer over the `neutrospline` library: it parses arguments, reads files through
 //! `neutrospline-io`, calls the library, writes tables and maps errors to exit codes (0
@@ -22,7 +22,7 @@ use clap::{Parser, Subcommand};
 
 use commands::{
     bench::BenchArgs, check::CheckArgs, eval::EvalArgs, example::ExampleArgs, export::ExportArgs,
-    plot::PlotArgs,
+    import::ImportArgs, plot::PlotArgs,
 };
 
 /// Evaluate and check neutrosophic curves and surfaces (Bezier, B-spline, NURBS): control
@@ -63,6 +63,9 @@ enum Command {
     /// Export a curve or surface to CAD and 3-D programs: DXF (exact splines), glTF, PLY or
     /// OBJ, keeping the degrees where the format can carry them
     Export(ExportArgs),
+    /// Import the SPLINE curves of a DXF file as model files, with the degrees `export` keeps
+    /// in the file or the given default degrees
+    Import(ImportArgs),
     /// Run the paper's Example 1 from built-in data: print its control points and curve, and
     /// with --out DIR write the paper's five figures and the curve table
     Example(ExampleArgs),
@@ -77,6 +80,7 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         Command::Check(args) => commands::check::run(args),
         Command::Plot(args) => commands::plot::run(args),
         Command::Export(args) => commands::export::run(args),
+        Command::Import(args) => commands::import::run(args),
         Command::Example(args) => commands::example::run(args),
         Command::Bench(args) => commands::bench::run(args, &mut std::io::stdout().lock()),
     }

@@ -6,6 +6,7 @@ pub mod check;
 pub mod eval;
 pub mod example;
 pub mod export;
+pub mod import;
 pub mod options;
 pub mod plot;
 
