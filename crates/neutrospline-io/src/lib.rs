@@ -20,7 +20,10 @@
 //!   can carry them ([`ExportFormat`], [`ExportOptions`]).
 //! - Importing curves from CAD programs: [`load_dxf`] and [`parse_dxf`] read the SPLINE
 //!   entities of a DXF file exactly, with the degrees the exporter keeps in their extended data
-//!   (a DXF export reads back to an equal model, numbers to the last bit).
+//!   (a DXF export reads back to an equal model, numbers to the last bit); [`load_svg`] and
+//!   [`parse_svg`] read the path data of an SVG file's `<path>` elements (lines, Bézier
+//!   segments, elliptical arcs as exact rational quadratic pieces), `<polyline>`s and
+//!   `<polygon>`s as curves.
 //!
 //! ```
 //! use neutrospline_io::{parse, to_json_string, Format, ReadOptions};
@@ -61,6 +64,7 @@ mod parsed;
 mod read;
 mod settings;
 mod shape;
+mod svg_import;
 mod tree;
 mod walker;
 mod write;
@@ -81,4 +85,5 @@ pub use options::ReadOptions;
 pub use read::{load, parse, read_csv};
 pub use settings::{Kind, KnotRule, KnotSpec};
 pub use shape::Shape;
+pub use svg_import::{load_svg, parse_svg};
 pub use write::{save, to_csv_string, to_json_string, to_string, to_toml_string};
