@@ -63,8 +63,8 @@ enum Command {
     /// Export a curve or surface to CAD and 3-D programs: DXF (exact splines), glTF, PLY or
     /// OBJ, keeping the degrees where the format can carry them
     Export(ExportArgs),
-    /// Import the SPLINE curves of a DXF file as model files, with the degrees `export` keeps
-    /// in the file or the given default degrees
+    /// Import curves as model files: the SPLINEs of a DXF file (with the degrees `export`
+    /// keeps in it) or the paths of an SVG file, with the given default degrees
     Import(ImportArgs),
     /// Run the paper's Example 1 from built-in data: print its control points and curve, and
     /// with --out DIR write the paper's five figures and the curve table

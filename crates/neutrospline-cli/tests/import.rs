@@ -160,7 +160,7 @@ fn import_chooses_among_several_curves_with_default_degrees() {
 
 #[test]
 fn import_refusals_have_exact_messages_and_write_nothing() {
-    let cases: [(&str, String, &[&str], i32, &str); 7] = [
+    let cases: [(&str, String, &[&str], i32, &str); 9] = [
         (
             "a.dxf",
             dxf(&quadratic("2").replace(" 71\n2\n", "")),
@@ -190,11 +190,25 @@ fn import_refusals_have_exact_messages_and_write_nothing() {
             "error: a.dxf:9: the ENTITIES section has no SPLINE entity (it holds CIRCLE)",
         ),
         (
-            "a.svg",
+            "a.txt",
             "<svg/>".to_owned(),
             &[],
             2,
-            "error: a.svg: unsupported file extension `.svg` (accepted: .dxf)",
+            "error: a.txt: unsupported file extension `.txt` (accepted: .dxf, .svg)",
+        ),
+        (
+            "a.svg",
+            "<svg>\n<path d=\"M 0 0 Q 1 1\"/>\n</svg>".to_owned(),
+            &[],
+            1,
+            "error: a.svg:2: <path> (element 1): d: a number is missing at character 12 (the data ends)",
+        ),
+        (
+            "a.svg",
+            "<svg><rect width=\"3\" height=\"4\"/></svg>".to_owned(),
+            &[],
+            1,
+            "error: a.svg: the file has no curve to import (no drawn <path>, <polyline> or <polygon> that draws a segment)",
         ),
         (
             "a.dxf",
@@ -231,4 +245,72 @@ fn import_refusals_have_exact_messages_and_write_nothing() {
         stderr.starts_with("error: none.dxf: cannot read: "),
         "{stderr}"
     );
+}
+
+/// The numbers of every `points="..."` of the `<polyline>` elements of an SVG text, as points.
+fn polylines(svg: &str) -> Vec<Vec<[f64; 2]>> {
+    svg.match_indices("<polyline")
+        .map(|(k, _)| {
+            let tag = &svg[k..k + svg[k..].find('>').unwrap()];
+            let start = tag.find("points=\"").unwrap() + 8;
+            let text = &tag[start..start + tag[start..].find('"').unwrap()];
+            let numbers: Vec<f64> = text
+                .split(|c: char| c == ',' || c.is_whitespace())
+                .filter(|s| !s.is_empty())
+                .map(|s| s.parse().unwrap())
+                .collect();
+            numbers.chunks_exact(2).map(|p| [p[0], p[1]]).collect()
+        })
+        .collect()
+}
+
+#[test]
+fn import_of_a_plot_gives_curves_through_the_drawn_points() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = example("example1.toml");
+    let args = [
+        "plot",
+        path.to_str().unwrap(),
+        "-o",
+        "p.svg",
+        "--view",
+        "plane",
+    ];
+    assert_eq!(run_in(dir.path(), &args).0, 0);
+    let svg = std::fs::read_to_string(dir.path().join("p.svg")).unwrap();
+    let drawn = polylines(&svg);
+    assert!(
+        !drawn.is_empty() && drawn.iter().any(|p| p.len() > 20),
+        "{drawn:?}"
+    );
+    let (code, _, stderr) = run_in(
+        dir.path(),
+        &["import", "p.svg", "-o", "c.json", "--all", "--truth", "0.5"],
+    );
+    assert_eq!((code, stderr.as_str()), (0, ""));
+    let curves: Vec<neutrospline_io::Model> = files(dir.path())
+        .iter()
+        .filter(|name| name.starts_with("c-"))
+        .map(|name| load(dir.path().join(name), &ReadOptions::default()).unwrap())
+        .collect();
+    for points in &drawn {
+        // Some imported curve is the polyline: a degree-1 B-spline whose value at knot k is
+        // the k-th drawn point, exactly.
+        let found = curves.iter().any(|model| {
+            let neutrospline_io::Shape::Planar(curve) = model.shape() else {
+                return false;
+            };
+            curve.degree() == 1
+                && neutrospline::ControlPolygon::len(curve) == points.len()
+                && points.iter().enumerate().all(|(k, p)| {
+                    let q = neutrospline::Evaluate::evaluate(curve, k as f64).unwrap();
+                    q.position == *p && q.degrees.truth() == 0.5
+                })
+        });
+        assert!(
+            found,
+            "no imported curve through the {} drawn points",
+            points.len()
+        );
+    }
 }

@@ -1,5 +1,5 @@
-//! `neutrospline import IN.dxf -o MODEL.toml`: the SPLINE entities of a DXF file as model
-//! files, through `neutrospline-io`'s DXF reader.
+//! `neutrospline import IN.dxf|IN.svg -o MODEL.toml`: the SPLINE entities of a DXF file, or
+//! the paths of an SVG file, as model files, through `neutrospline-io`'s readers.
 
 use std::path::{Path, PathBuf};
 
@@ -10,7 +10,7 @@ use crate::input::UsageError;
 use crate::output;
 
 /// The extensions `import` reads.
-const ACCEPTED: &str = ".dxf";
+const ACCEPTED: &str = ".dxf, .svg";
 
 /// Arguments of `import`.
 #[derive(Debug, clap::Args)]
@@ -23,7 +23,7 @@ it takes --truth, --indeterminacy and --falsity for every control point. A splin
 points only is refused."
 )]
 pub struct ImportArgs {
-    /// The file to read: IN.dxf
+    /// The file to read: IN.dxf or IN.svg
     #[arg(value_name = "IN")]
     pub input: PathBuf,
 
@@ -92,7 +92,7 @@ pub fn run(args: &ImportArgs) -> anyhow::Result<()> {
         .input
         .extension()
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
-    if extension.as_deref() != Some("dxf") {
+    if !matches!(extension.as_deref(), Some("dxf" | "svg")) {
         let shown = args.input.display();
         return Err(UsageError(match extension {
             Some(ext) => {
@@ -108,8 +108,12 @@ pub fn run(args: &ImportArgs) -> anyhow::Result<()> {
         .map_err(|e| UsageError(format!("--truth, --indeterminacy, --falsity: {e}")))?;
     let limits = crate::limits::current().file_limits();
     // The messages name the file and the cause already: no error chain.
-    let models = neutrospline_io::load_dxf(&args.input, defaults, &limits)
-        .map_err(|e| anyhow::Error::msg(e.to_string()))?;
+    let models = if extension.as_deref() == Some("svg") {
+        neutrospline_io::load_svg(&args.input, defaults, &limits)
+    } else {
+        neutrospline_io::load_dxf(&args.input, defaults, &limits)
+    }
+    .map_err(|e| anyhow::Error::msg(e.to_string()))?;
     let shown = args.input.display();
     let chosen: Vec<(PathBuf, &Model)> = match (args.index, args.all) {
         (_, true) => models
