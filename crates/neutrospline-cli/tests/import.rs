@@ -239,6 +239,21 @@ fn import_refusals_have_exact_messages_and_write_nothing() {
         assert_eq!(files(dir.path()), [name], "{args:?}: a file was written");
     }
     let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("big.svg"),
+        "<svg><path d='M 0 0 L 1 1'/></svg>",
+    )
+    .unwrap();
+    let args = ["--max-file-size", "20", "import", "big.svg", "-o", "m.toml"];
+    let (code, _, stderr) = run_in(dir.path(), &args);
+    assert_eq!(
+        (code, stderr.as_str()),
+        (
+            1,
+            "error: big.svg: the file is larger than 20 bytes, the limit for a file read whole \
+             (raise it with --max-file-size or NEUTROSPLINE_MAX_FILE_SIZE)\n"
+        )
+    );
     let (code, _, stderr) = run_in(dir.path(), &["import", "none.dxf", "-o", "m.toml"]);
     assert_eq!(code, 1);
     assert!(

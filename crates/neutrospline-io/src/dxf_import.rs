@@ -23,7 +23,7 @@ use neutrospline::{
 };
 
 use crate::dxf_xdata::{self, ModelInfo, XTag};
-use crate::format::{too_large, too_many_points};
+use crate::format::{too_large_drawing, too_many_points};
 use crate::{InputError, Kind, Limits, Model, ReadError};
 
 /// One group: its code, its value and the line of its code (1-based).
@@ -556,7 +556,7 @@ pub fn load_dxf(
         .read_to_end(&mut bytes)
         .map_err(cannot)?;
     if bytes.len() as u64 > limit {
-        return Err(InputError::new(&shown, None, None, too_large(limit)).into());
+        return Err(InputError::new(&shown, None, None, too_large_drawing(limit)).into());
     }
     parse_dxf(&shown, &bytes, defaults, limits)
 }
@@ -564,6 +564,8 @@ pub fn load_dxf(
 #[cfg(test)]
 mod tests {
     use std::path::PathBuf;
+
+    use proptest::prelude::*;
 
     use neutrospline::{Evaluate, Membership};
 
@@ -753,5 +755,33 @@ mod tests {
             error.contains(": NEUTROSPLINE extended data: truth = 1.5 is outside [0, 1]"),
             "{error}"
         );
+    }
+
+    proptest! {
+        /// Any groups in a SPLINE entity (and in its extended data) give models or a message,
+        /// never a panic.
+        #[test]
+        fn dxf_never_panics(
+            groups in proptest::collection::vec(
+                (
+                    prop_oneof![Just("10"), Just("20"), Just("30"), Just("40"), Just("41"),
+                                Just("70"), Just("71"), Just("72"), Just("73"), Just("74"),
+                                Just("11"), Just("1001"), Just("1000"), Just("1040"),
+                                Just("1070"), Just("1071"), Just("0"), Just("x")],
+                    prop_oneof![Just("0".to_owned()), Just("1".to_owned()), Just("3".to_owned()),
+                                Just("-1".to_owned()), Just("NEUTROSPLINE".to_owned()),
+                                Just("neutrospline 1".to_owned()), Just("kind".to_owned()),
+                                Just("degrees".to_owned()), Just("bezier".to_owned()),
+                                Just("SPLINE".to_owned()), "[0-9.e-]{1,6}"],
+                ),
+                0..40,
+            ),
+        ) {
+            let body: String = groups.iter().map(|(c, v)| format!("{c}\n{v}\n")).collect();
+            let text = dxf(&format!("  0\nSPLINE\n{body}"));
+            let _ = parse_dxf("p.dxf", text.as_bytes(), defaults(), &Limits::default());
+            let with_quadratic = dxf(&format!("{QUADRATIC}1001\nNEUTROSPLINE\n{body}"));
+            let _ = parse_dxf("p.dxf", with_quadratic.as_bytes(), defaults(), &Limits::default());
+        }
     }
 }

@@ -32,7 +32,7 @@ use neutrospline::{
     AnyCurve, BSpline, Bezier, ControlPoint, ControlPolygon, Degrees, Elevate, KnotVector, Nurbs,
 };
 
-use crate::format::{too_large, too_many_points};
+use crate::format::{too_large_drawing, too_many_points};
 use crate::{InputError, Limits, Model, ReadError};
 
 /// An affine map of the plane, SVG's `matrix(a b c d e f)`: (x, y) -> (a x + c y + e,
@@ -387,9 +387,10 @@ fn transform(text: &str) -> Result<Matrix, String> {
         let open = rest
             .find('(')
             .ok_or_else(|| format!("`{rest}` is not a transform"))?;
-        let close = rest
-            .find(')')
-            .ok_or_else(|| format!("`{rest}` is not closed"))?;
+        let close = open
+            + rest[open..]
+                .find(')')
+                .ok_or_else(|| format!("`{rest}` is not closed"))?;
         let name = rest[..open].trim().trim_start_matches(',').trim();
         let mut numbers = Numbers::new(&rest[open + 1..close]);
         let mut args = Vec::new();
@@ -868,7 +869,7 @@ pub fn load_svg(
         .read_to_end(&mut bytes)
         .map_err(cannot)?;
     if bytes.len() as u64 > limit {
-        return Err(InputError::new(&shown, None, None, too_large(limit)).into());
+        return Err(InputError::new(&shown, None, None, too_large_drawing(limit)).into());
     }
     parse_svg(&shown, &bytes, defaults, limits)
 }
@@ -876,6 +877,7 @@ pub fn load_svg(
 #[cfg(test)]
 mod tests {
     use neutrospline::{CurveKind, Evaluate};
+    use proptest::prelude::*;
 
     use super::*;
     use crate::{Kind, Shape};
@@ -1113,5 +1115,24 @@ mod tests {
         assert_eq!(message("<svg><g transform='spin(3)'><path d='M0 0 L1 1'/></g></svg>"), "f.svg:1: <g> transform: `spin` is not a transform (known: matrix, translate, scale, rotate, skewX, skewY)");
         assert_eq!(message("<svg><rect width='3' height='4'/></svg>"), "f.svg: the file has no curve to import (no drawn <path>, <polyline> or <polygon> that draws a segment)");
         assert_eq!(message("<svg></g></svg>"), "f.svg:1: `</g>` closes `<svg>`");
+        assert_eq!(
+            message("<svg><path transform=')scale(2' d='M0 0 L1 1'/></svg>"),
+            "f.svg:1: <path> transform: `)scale(2` is not closed"
+        );
+    }
+
+    proptest! {
+        /// Any path data, transform or markup gives curves or a message, never a panic.
+        #[test]
+        fn svg_never_panics(
+            d in "[MmLlHhVvCcSsQqTtAaZzX0-9.eE+, #-]{0,40}",
+            transform in "[a-zXY() 0-9.,-]{0,20}",
+            markup in "[<>/='\"a-z !?\\[\\]&#;-]{0,30}",
+        ) {
+            let svg = format!("<svg><g transform='{transform}'><path d='{d}'/></g>{markup}</svg>");
+            let _ = parse_svg("p.svg", svg.as_bytes(), defaults(), &Limits::default());
+            let svg = format!("<svg><path d='{d}'/>{markup}<polyline points='{d}'/></svg>");
+            let _ = parse_svg("p.svg", svg.as_bytes(), defaults(), &Limits::default());
+        }
     }
 }
