@@ -1,6 +1,7 @@
 //! Independent readers accept the exports: `scripts/readers/check_exports.py` exports the
 //! examples with this binary and reads them with ezdxf (DXF: the SPLINE entities evaluated by
-//! ezdxf agree with `eval` to 1e-12 of scale, positions and degrees), plyfile (PLY: the `eval`
+//! ezdxf agree with `eval` to 1e-12 of scale, positions and degrees; splines that ezdxf writes
+//! import to curves that `eval` evaluates as ezdxf does), plyfile (PLY: the `eval`
 //! values exactly), pygltflib (glTF: the `eval` values in float32 exactly) and the Khronos glTF
 //! validator (no errors).
 //!
