@@ -18,18 +18,25 @@ parameters:
 - pygltflib reads .glb and .gltf files: the accessors of POSITION, _TRUTH, _INDETERMINACY and
   _FALSITY hold the eval values rounded to float32, exactly; the Khronos glTF validator
   (npm `gltf-validator`) reports no errors.
+- A real viewer: three.js (npm `three`) loads the .glb of the example surface in headless
+  Chromium and draws it with its vertex colours, blue-dominant where the truth is low and
+  green-dominant where it is high (viridis). Skipped when Chromium is not installed, unless
+  NEUTROSPLINE_REQUIRE_BROWSER=1.
 
 Usage: check_exports.py BIN EXAMPLES_DIR WORK_DIR NODE_MODULES_DIR
 Exit status 0 when every check passes, 1 on a failed check, 77 when a reader is missing.
 """
 
 import csv
+import functools
+import http.server
 import io
 import json
-import math
 import os
+import shutil
 import subprocess
 import sys
+import threading
 import tomllib  # Python 3.11 or later
 
 MISSING = 77
@@ -46,9 +53,10 @@ except ImportError as error:
 
 BIN, EXAMPLES, WORK, NODE_MODULES = sys.argv[1:5]
 VALIDATOR = os.path.join(NODE_MODULES, "gltf-validator")
-if not os.path.isdir(VALIDATOR):
-    print(f"missing reader: the glTF validator is not in {NODE_MODULES}", file=sys.stderr)
-    sys.exit(MISSING)
+for package in ["gltf-validator", "three"]:
+    if not os.path.isdir(os.path.join(NODE_MODULES, package)):
+        print(f"missing reader: npm package {package} is not in {NODE_MODULES}", file=sys.stderr)
+        sys.exit(MISSING)
 
 CHECKS = 0
 
@@ -309,6 +317,100 @@ def check_ezdxf_import():
         print(f"ok  {os.path.basename(model)}: imported from ezdxf, eval within {worst:.1e} of ezdxf")
 
 
+VIEWER = """<!doctype html>
+<html><head><style>body { margin: 0; background: #fff; }</style>
+<script type="importmap">{"imports": {"three": "./three/build/three.module.js",
+  "three/addons/": "./three/examples/jsm/"}}</script></head>
+<body><pre id="result">pending</pre><script type="module">
+import * as THREE from "three";
+import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
+const out = document.getElementById("result");
+const renderer = new THREE.WebGLRenderer({ preserveDrawingBuffer: true });
+renderer.setSize(400, 300);
+renderer.setClearColor(0xffffff);
+document.body.appendChild(renderer.domElement);
+const scene = new THREE.Scene();
+scene.add(new THREE.AmbientLight(0xffffff, 1.5));
+const light = new THREE.DirectionalLight(0xffffff, 2);
+light.position.set(3, 5, 4);
+scene.add(light);
+new GLTFLoader().load("./model.glb", (gltf) => {
+  scene.add(gltf.scene);
+  const box = new THREE.Box3().setFromObject(gltf.scene);
+  const c = box.getCenter(new THREE.Vector3());
+  const s = box.getSize(new THREE.Vector3()).length();
+  const camera = new THREE.PerspectiveCamera(40, 4 / 3, s / 100, s * 10);
+  camera.position.set(c.x + 0.6 * s, c.y + 0.6 * s, c.z + 0.9 * s);
+  camera.lookAt(c);
+  renderer.render(scene, camera);
+  const gl = renderer.getContext();
+  const pixels = new Uint8Array(400 * 300 * 4);
+  gl.readPixels(0, 0, 400, 300, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+  let drawn = 0, green = 0, blue = 0;
+  for (let k = 0; k < pixels.length; k += 4) {
+    const [r, g, b] = [pixels[k], pixels[k + 1], pixels[k + 2]];
+    if (r > 250 && g > 250 && b > 250) continue;
+    drawn++;
+    if (g > r + 20 && g > b + 20) green++;
+    if (b > r + 20 && b > g + 5) blue++;
+  }
+  out.textContent = JSON.stringify({ drawn, green, blue });
+}, undefined, (error) => { out.textContent = JSON.stringify({ error: String(error) }); });
+</script></body></html>
+"""
+
+
+def check_browser():
+    """three.js draws the exported surface in headless Chromium, in its vertex colours."""
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    if chromium is None:
+        if os.environ.get("NEUTROSPLINE_REQUIRE_BROWSER") == "1":
+            check(False, "NEUTROSPLINE_REQUIRE_BROWSER=1 but no chromium on the PATH")
+        print("skipped: the three.js view (chromium is not installed)")
+        return
+    site = os.path.join(WORK, "site")
+    os.makedirs(site, exist_ok=True)
+    export("surface.toml", os.path.join("site", "model.glb"))
+    with open(os.path.join(site, "index.html"), "w") as f:
+        f.write(VIEWER)
+    link = os.path.join(site, "three")
+    if not os.path.exists(link):
+        os.symlink(os.path.abspath(os.path.join(NODE_MODULES, "three")), link)
+    handler = functools.partial(QuietHandler, directory=site)
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        url = f"http://127.0.0.1:{server.server_address[1]}/index.html"
+        result = subprocess.run(
+            [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
+             "--enable-unsafe-swiftshader", "--no-first-run", "--disable-background-networking",
+             "--disable-component-update", "--disable-sync", "--virtual-time-budget=10000",
+             f"--user-data-dir={os.path.join(WORK, 'profile')}", "--dump-dom", url],
+            capture_output=True, text=True, timeout=120,
+        )
+    finally:
+        server.shutdown()
+    dom = result.stdout
+    start = dom.find('<pre id="result">')
+    check(start >= 0, f"chromium printed no page: {result.stderr[-2000:]}")
+    text = dom[start + len('<pre id="result">'):dom.find("</pre>", start)]
+    check(text != "pending", "three.js did not finish drawing the model")
+    counts = json.loads(text)
+    check("error" not in counts, f"three.js could not load the export: {counts}")
+    check(counts["drawn"] > 0.1 * 400 * 300, f"the surface covers too little of the view: {counts}")
+    check(counts["green"] > 1000 and counts["blue"] > 1000, f"the vertex colours are not viridis: {counts}")
+    print(f"ok  surface.glb in three.js (headless Chromium): {counts['drawn']} pixels drawn, "
+          f"{counts['green']} green-dominant (high truth), {counts['blue']} blue-dominant (low truth)")
+
+
+class QuietHandler(http.server.SimpleHTTPRequestHandler):
+    """Serves the viewer's files without a log line per request."""
+
+    def log_message(self, format, *args):
+        pass
+
+
 def main():
     os.makedirs(WORK, exist_ok=True)
     for model in ["example1.toml", "helix3d.toml", "bspline.toml", "nurbs-circle.toml"]:
@@ -323,6 +425,7 @@ def main():
     check_gltf("helix3d.toml", 9, "helix3d.gltf")
     check_gltf("surface.toml", 8, "surface.glb")
     check_gltf("nurbs-surface.json", 6, "nurbs-surface.gltf")
+    check_browser()
     print(f"{CHECKS} checks passed")
 
 

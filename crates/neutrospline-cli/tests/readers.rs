@@ -2,8 +2,9 @@
 //! examples with this binary and reads them with ezdxf (DXF: the SPLINE entities evaluated by
 //! ezdxf agree with `eval` to 1e-12 of scale, positions and degrees; splines that ezdxf writes
 //! import to curves that `eval` evaluates as ezdxf does), plyfile (PLY: the `eval`
-//! values exactly), pygltflib (glTF: the `eval` values in float32 exactly) and the Khronos glTF
-//! validator (no errors).
+//! values exactly), pygltflib (glTF: the `eval` values in float32 exactly), the Khronos glTF
+//! validator (no errors) and three.js in headless Chromium (the surface drawn in its viridis
+//! vertex colours).
 //!
 //! Runs when the readers are installed (`scripts/readers/install`, which `scripts/check` runs).
 //! CI sets `NEUTROSPLINE_REQUIRE_READERS=1`, which turns a missing reader into a failure
