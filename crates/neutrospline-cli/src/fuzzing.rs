@@ -7,6 +7,9 @@
 //!   written in every format it reads back to an equal model (`neutrospline-io`'s writers).
 //! - [`evaluate`]: control points, knots, weights and parameters decoded from the bytes are
 //!   given to the core directly; whatever the core accepts must satisfy docs/model.md section 4.
+//! - [`dxf_model`], [`svg_model`]: importing never panics; an error names the file; every curve
+//!   imported satisfies [`check_shape`], writes as TOML, JSON and CSV to files that read back
+//!   equal, and exported to DXF imports back to an equal model.
 //!
 //! The properties checked for a valid shape ([`check_shape`]): every evaluated degree lies in
 //! \[0, 1\] and within the range of its control values, positions are finite and inside the
@@ -21,7 +24,10 @@ use neutrospline::{
     Evaluate, EvaluateSurface, KnotVector, Membership, Nurbs, Surface,
 };
 
-use neutrospline_io::{Format, Kind, KnotRule, KnotSpec, Model, ReadError, ReadOptions};
+use neutrospline_io::{
+    ExportFormat, ExportOptions, Format, Kind, KnotRule, KnotSpec, Limits, Model, ReadError,
+    ReadOptions,
+};
 
 use crate::shape::{Extras, Param, Shape, Table};
 
@@ -91,20 +97,72 @@ fn model(format: Format, data: &[u8], options: &ReadOptions) {
             check_shape(model.shape());
             check_round_trip(&model, format);
         }
-        Err(ReadError::Input(e)) => {
+        Err(e) => check_input_error(&e),
+    }
+}
+
+/// A reader's error for bad content: it names the file and fits on one line.
+fn check_input_error(error: &ReadError) {
+    match error {
+        ReadError::Input(e) => {
             assert_eq!(e.file, FILE);
             assert!(!e.message.is_empty());
             // One line on stderr, whatever the file holds.
             assert!(!e.to_string().contains(['\n', '\r']), "{e}");
         }
-        Err(e) => panic!("not an input error: {e}"),
+        e => panic!("not an input error: {e}"),
+    }
+}
+
+/// The degrees the importers give control points without their own.
+fn import_defaults() -> Degrees {
+    Degrees::new(0.75, 0.125, 0.25).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Fuzzes the DXF importer.
+pub fn dxf_model(data: &[u8]) {
+    imported(
+        "DXF",
+        neutrospline_io::parse_dxf(FILE, data, import_defaults(), &Limits::default()),
+    );
+}
+
+/// Fuzzes the SVG importer.
+pub fn svg_model(data: &[u8]) {
+    imported(
+        "SVG",
+        neutrospline_io::parse_svg(FILE, data, import_defaults(), &Limits::default()),
+    );
+}
+
+/// The checks of the curves an importer read from `read_as` (the first few of them).
+fn imported(read_as: &str, result: Result<Vec<Model>, ReadError>) {
+    let models = match result {
+        Ok(models) => models,
+        Err(e) => return check_input_error(&e),
+    };
+    for model in models.iter().take(8) {
+        if model.shape().control_count() > MAX_EVAL_POINTS {
+            continue;
+        }
+        check_shape(model.shape());
+        check_round_trip(model, read_as);
+        let dxf = neutrospline_io::export(model, ExportFormat::Dxf, &ExportOptions::new())
+            .unwrap_or_else(|e| panic!("{read_as} read, DXF export: {e}"));
+        let back = neutrospline_io::parse_dxf(FILE, &dxf, import_defaults(), &Limits::default())
+            .unwrap_or_else(|e| panic!("{read_as} read, DXF written, read back: {e}"));
+        assert_eq!(
+            back,
+            std::slice::from_ref(model),
+            "{read_as} read, DXF written"
+        );
     }
 }
 
 /// A model that was read writes in every format to a file that reads back to the same model
 /// (CSV: with the options [`Model::csv_read_options`] gives, without the name
 /// and description; control point names that a CSV cell cannot hold are refused).
-fn check_round_trip(model: &Model, read_as: Format) {
+fn check_round_trip(model: &Model, read_as: impl std::fmt::Display) {
     if model.shape().control_count() > MAX_EVAL_POINTS {
         return;
     }

@@ -1,5 +1,5 @@
-//! The `neutrospline` command: evaluate, check and demonstrate neutrosophic curves (Bézier,
-//! B-spline, NURBS) and tensor-product surfaces.
+//! The `neutrospline` command: evaluate, check, draw, export, import and demonstrate
+//! neutrosophic curves (Bézier, B-spline, NURBS) and tensor-product surfaces.
 //!
 //! A thin layer over the `neutrospline` library: it parses arguments, reads files through
 //! `neutrospline-io`, calls the library, writes tables and maps errors to exit codes (0
@@ -22,7 +22,7 @@ use clap::{Parser, Subcommand};
 
 use commands::{
     bench::BenchArgs, bench_fit::BenchFitArgs, check::CheckArgs, eval::EvalArgs,
-    example::ExampleArgs, fit::FitArgs, plot::PlotArgs,
+    example::ExampleArgs, export::ExportArgs, fit::FitArgs, import::ImportArgs, plot::PlotArgs,
 };
 
 /// Evaluate and check neutrosophic curves and surfaces (Bezier, B-spline, NURBS): control
@@ -64,6 +64,12 @@ enum Command {
     /// least squares, the degrees kept within their bounds; the model to standard output or
     /// -o, the error report to standard error
     Fit(FitArgs),
+    /// Export a curve or surface to CAD and 3-D programs: DXF (exact splines), glTF, PLY or
+    /// OBJ, keeping the degrees where the format can carry them
+    Export(ExportArgs),
+    /// Import curves as model files: the SPLINEs of a DXF file (with the degrees `export`
+    /// keeps in it) or the paths of an SVG file, with the given default degrees
+    Import(ImportArgs),
     /// Run the paper's Example 1 from built-in data: print its control points and curve, and
     /// with --out DIR write the paper's five figures and the curve table
     Example(ExampleArgs),
@@ -82,6 +88,8 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         Command::Check(args) => commands::check::run(args),
         Command::Plot(args) => commands::plot::run(args),
         Command::Fit(args) => commands::fit::run(args),
+        Command::Export(args) => commands::export::run(args),
+        Command::Import(args) => commands::import::run(args),
         Command::Example(args) => commands::example::run(args),
         Command::Bench(args) => commands::bench::run(args, &mut std::io::stdout().lock()),
         Command::BenchFit(args) => commands::bench_fit::run(args, &mut std::io::stdout().lock()),

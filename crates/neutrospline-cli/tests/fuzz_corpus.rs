@@ -42,3 +42,13 @@ fn fuzz_corpus_json_model() {
 fn fuzz_corpus_evaluate() {
     replay("evaluate", neutrospline_cli::fuzzing::evaluate);
 }
+
+#[test]
+fn fuzz_corpus_dxf_model() {
+    replay("dxf_model", neutrospline_cli::fuzzing::dxf_model);
+}
+
+#[test]
+fn fuzz_corpus_svg_model() {
+    replay("svg_model", neutrospline_cli::fuzzing::svg_model);
+}

@@ -120,6 +120,14 @@ pub(crate) fn too_large(limit: u64) -> String {
     )
 }
 
+/// The message for a DXF or SVG file larger than `limit` bytes.
+pub(crate) fn too_large_drawing(limit: u64) -> String {
+    format!(
+        "the file is larger than {limit} bytes, the limit for a file read whole (raise it with \
+         --max-file-size or NEUTROSPLINE_MAX_FILE_SIZE)"
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -68,27 +68,24 @@ pub(crate) enum Marker {
     Diamond,
 }
 
-/// Viridis, sampled at 0, 0.1, ..., 1.
-const VIRIDIS: [Color; 11] = [
-    Color(0x44, 0x01, 0x54),
-    Color(0x48, 0x24, 0x75),
-    Color(0x41, 0x44, 0x87),
-    Color(0x35, 0x5f, 0x8d),
-    Color(0x2a, 0x78, 0x8e),
-    Color(0x21, 0x91, 0x8c),
-    Color(0x22, 0xa8, 0x84),
-    Color(0x44, 0xbf, 0x70),
-    Color(0x7a, 0xd1, 0x51),
-    Color(0xbd, 0xdf, 0x26),
-    Color(0xfd, 0xe7, 0x25),
-];
+/// The stops of the core's colour map ([`neutrospline::color::VIRIDIS`]), as colours.
+const VIRIDIS: [Color; 11] = {
+    let mut out = [Color(0, 0, 0); 11];
+    let mut i = 0;
+    while i < out.len() {
+        let [r, g, b] = neutrospline::color::VIRIDIS[i];
+        out[i] = Color(r, g, b);
+        i += 1;
+    }
+    out
+};
 
-/// The colour of degree value `v` in \[0, 1\] (viridis; out-of-range values are clamped for
-/// display, NaN shows as 0).
+/// The colour of degree value `v` in \[0, 1\]: the core's [`neutrospline::color::viridis`],
+/// the same colours as the exported meshes (out-of-range values are clamped for display, NaN
+/// shows as 0).
 pub(crate) fn colormap(v: f64) -> Color {
-    let v = unit(v) * 10.0;
-    let i = (v.floor() as usize).min(9);
-    VIRIDIS[i].mix(VIRIDIS[i + 1], v - i as f64)
+    let [r, g, b] = neutrospline::color::viridis(v);
+    Color(r, g, b)
 }
 
 /// The colour map's stops, for gradients.

@@ -87,6 +87,7 @@ mod any_curve;
 pub mod batch;
 mod bernstein;
 mod bezier;
+pub mod color;
 mod curve;
 mod degrees;
 mod derivative;
@@ -96,6 +97,7 @@ mod knots;
 mod layout;
 mod point;
 mod relation;
+pub mod sample;
 mod spline;
 mod spline_curve;
 #[cfg(feature = "proptest")]

@@ -6,7 +6,9 @@ pub mod bench_fit;
 pub mod check;
 pub mod eval;
 pub mod example;
+pub mod export;
 pub mod fit;
+pub mod import;
 pub mod options;
 pub mod plot;
 

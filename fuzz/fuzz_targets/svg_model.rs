@@ -1,0 +1,7 @@
+//! Fuzz target `svg_model`: the body is `neutrospline_cli::fuzzing::svg_model`, which the corpus replay
+//! test `crates/neutrospline-cli/tests/fuzz_corpus.rs` also runs on stable.
+#![no_main]
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| {
+    neutrospline_cli::fuzzing::svg_model(data);
+});

@@ -1,0 +1,437 @@
+#!/usr/bin/env python3
+"""Independent readers check `neutrospline export`.
+
+Exports the repository's examples with the binary given, then reads every file with a reader
+that shares no code with neutrospline and compares against `neutrospline eval` at the same
+parameters:
+
+- ezdxf reads each DXF file (auditor: no errors), its SPLINE entity has the model's degree,
+  knots, weights and control points, and ezdxf's own B-spline evaluation of it gives the eval
+  positions to 1e-12 of the bounding box's diagonal; the same evaluation of the control points'
+  truth, indeterminacy and falsity (from the NEUTROSPLINE extended data) gives the eval degrees
+  to 1e-12. A surface's POLYFACE mesh has the sample grid's vertices, with their degrees.
+- plyfile reads binary and ASCII PLY files: the properties and counts the README states, the
+  eval positions and degrees exactly (doubles).
+- ezdxf writes DXF R2000 splines (open and rational, plane and spatial) that
+  `neutrospline import` reads back: `eval` of the imported curves agrees with ezdxf's
+  evaluation to 1e-12 of scale, with the default degrees given on the command line.
+- pygltflib reads .glb and .gltf files: the accessors of POSITION, _TRUTH, _INDETERMINACY and
+  _FALSITY hold the eval values rounded to float32, exactly; the Khronos glTF validator
+  (npm `gltf-validator`) reports no errors.
+- A real viewer: three.js (npm `three`) loads the .glb of the example surface in headless
+  Chromium and draws it with its vertex colours, blue-dominant where the truth is low and
+  green-dominant where it is high (viridis). Skipped when Chromium is not installed, unless
+  NEUTROSPLINE_REQUIRE_BROWSER=1.
+
+Usage: check_exports.py BIN EXAMPLES_DIR WORK_DIR NODE_MODULES_DIR
+Exit status 0 when every check passes, 1 on a failed check, 77 when a reader is missing.
+"""
+
+import csv
+import functools
+import http.server
+import io
+import json
+import os
+import shutil
+import subprocess
+import sys
+import threading
+import tomllib  # Python 3.11 or later
+
+MISSING = 77
+
+try:
+    import ezdxf
+    import numpy as np
+    import pygltflib
+    from ezdxf.math import BSpline
+    from plyfile import PlyData
+except ImportError as error:
+    print(f"missing reader: {error}", file=sys.stderr)
+    sys.exit(MISSING)
+
+BIN, EXAMPLES, WORK, NODE_MODULES = sys.argv[1:5]
+VALIDATOR = os.path.join(NODE_MODULES, "gltf-validator")
+for package in ["gltf-validator", "three"]:
+    if not os.path.isdir(os.path.join(NODE_MODULES, package)):
+        print(f"missing reader: npm package {package} is not in {NODE_MODULES}", file=sys.stderr)
+        sys.exit(MISSING)
+
+CHECKS = 0
+
+
+def check(condition, message):
+    global CHECKS
+    CHECKS += 1
+    if not condition:
+        raise AssertionError(message)
+
+
+def run(*args):
+    result = subprocess.run([BIN, *args], capture_output=True, text=True)
+    check(result.returncode == 0, f"neutrospline {' '.join(args)}: {result.stderr}")
+    return result.stdout
+
+
+def export(model, out, *options):
+    path = os.path.join(WORK, out)
+    run("export", os.path.join(EXAMPLES, model), "-o", path, *options)
+    return path
+
+
+def eval_table(model, samples):
+    """The rows of `neutrospline eval MODEL --samples N` as dictionaries of floats."""
+    text = run("eval", os.path.join(EXAMPLES, model), "--samples", str(samples))
+    return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(io.StringIO(text))]
+
+
+def model_info(model):
+    """The model file's own data (TOML or JSON), read without neutrospline."""
+    path = os.path.join(EXAMPLES, model)
+    if path.endswith(".json"):
+        with open(path) as f:
+            return json.load(f)
+    with open(path, "rb") as f:
+        return tomllib.load(f)
+
+
+def degree_of(point, *names):
+    for name in names:
+        if name in point:
+            return float(point[name])
+    return 0.0
+
+
+def control_rows(model):
+    info = model_info(model)
+    rows = []
+    for p in info["control_points"]:
+        rows.append(
+            (
+                [float(p["x"]), float(p["y"]), float(p.get("z", 0.0))],
+                [
+                    degree_of(p, "truth", "T"),
+                    degree_of(p, "indeterminacy", "I"),
+                    degree_of(p, "falsity", "F"),
+                ],
+                float(p.get("weight", 1.0)),
+            )
+        )
+    return info, rows
+
+
+def check_dxf_curve(model):
+    path = export(model, model.rsplit(".", 1)[0] + ".dxf")
+    doc = ezdxf.readfile(path)
+    auditor = doc.audit()
+    check(not auditor.errors, f"{path}: ezdxf audit: {[e.message for e in auditor.errors]}")
+    entities = list(doc.modelspace())
+    check([e.dxftype() for e in entities] == ["SPLINE"], f"{path}: one SPLINE")
+    spline = entities[0]
+    info, rows = control_rows(model)
+    n = len(rows)
+    check(spline.dxf.degree == info.get("degree", n - 1), f"{path}: degree")
+    knots = list(spline.knots)
+    if info["kind"] == "bezier":
+        check(knots == [0.0] * n + [1.0] * n, f"{path}: a Bezier curve's clamped knots")
+    else:
+        check(knots == [float(k) for k in info["knots"]], f"{path}: knots")
+    weights = list(spline.weights)
+    expected_weights = [w for _, _, w in rows] if info["kind"] == "nurbs" else []
+    check(weights == expected_weights, f"{path}: weights {weights}")
+    points = [list(p) for p in spline.control_points]
+    check(points == [p for p, _, _ in rows], f"{path}: control points")
+    # The degrees of the extended data: after "degrees", the count, then the triples.
+    xdata = [(tag.code, tag.value) for tag in spline.get_xdata("NEUTROSPLINE")]
+    at = xdata.index((1000, "degrees"))
+    check(xdata[at + 1] == (1071, n), f"{path}: degree count")
+    degrees = [v for _, v in xdata[at + 2 : at + 2 + 3 * n]]
+    check(degrees == [d for _, triple, _ in rows for d in triple], f"{path}: XDATA degrees")
+    # ezdxf's evaluation of the positions and of the degrees against eval.
+    table = eval_table(model, 41)
+    kwargs = {"order": spline.dxf.degree + 1, "knots": knots}
+    if weights:
+        kwargs["weights"] = weights
+    position_curve = BSpline(points, **kwargs)
+    degree_curve = BSpline([triple for _, triple, _ in rows], **kwargs)
+    lo = np.min([p for p, _, _ in rows], axis=0)
+    hi = np.max([p for p, _, _ in rows], axis=0)
+    scale = float(np.linalg.norm(hi - lo))
+    worst_position = worst_degree = 0.0
+    for row in table:
+        x = position_curve.point(row["t"])
+        d = degree_curve.point(row["t"])
+        expected = [row["x"], row["y"], row.get("z", 0.0)]
+        worst_position = max(worst_position, max(abs(a - b) for a, b in zip(x, expected)))
+        got = [d.x, d.y, d.z]
+        want = [row["truth"], row["indeterminacy"], row["falsity"]]
+        worst_degree = max(worst_degree, max(abs(a - b) for a, b in zip(got, want)))
+    check(worst_position <= 1e-12 * scale, f"{path}: ezdxf positions off by {worst_position}")
+    check(worst_degree <= 1e-12, f"{path}: ezdxf degrees off by {worst_degree}")
+    print(f"ok  {os.path.basename(path)}: ezdxf SPLINE degree {spline.dxf.degree}, "
+          f"{len(knots)} knots, {len(weights)} weights; positions within {worst_position:.1e}, "
+          f"degrees within {worst_degree:.1e} of eval")
+
+
+def check_dxf_mesh():
+    path = export("surface.toml", "surface-mesh.dxf", "--mesh", "--samples", "6")
+    doc = ezdxf.readfile(path)
+    auditor = doc.audit()
+    check(not auditor.errors, f"{path}: ezdxf audit: {[e.message for e in auditor.errors]}")
+    entities = list(doc.modelspace())
+    check([e.dxftype() for e in entities] == ["POLYLINE"], f"{path}: one POLYLINE")
+    mesh = entities[0]
+    check(mesh.is_poly_face_mesh, f"{path}: a polyface mesh")
+    vertices = [v for v in mesh.vertices if v.is_poly_face_mesh_vertex]
+    faces = list(mesh.faces())
+    check((len(vertices), len(faces)) == (36, 50), f"{path}: {len(vertices)} vertices, {len(faces)} faces")
+    table = eval_table("surface.toml", 6)
+    expected = {(r["x"], r["y"], r["z"]): (r["truth"], r["indeterminacy"], r["falsity"]) for r in table}
+    for v in vertices:
+        location = tuple(v.dxf.location)
+        check(location in expected, f"{path}: vertex {location} is not an eval sample")
+        xdata = [tag.value for tag in v.get_xdata("NEUTROSPLINE")]
+        check(tuple(xdata[-3:]) == expected[location], f"{path}: degrees of vertex {location}")
+    print(f"ok  {os.path.basename(path)}: ezdxf POLYFACE mesh, 36 vertices with their degrees, 50 faces")
+
+
+PLY_CURVE = ["x", "y", "z", "red", "green", "blue", "truth", "indeterminacy", "falsity"]
+
+
+def check_ply(model, samples, *options):
+    suffix = "-ascii" if "--ascii" in options else ""
+    path = export(model, model.rsplit(".", 1)[0] + suffix + ".ply", "--samples", str(samples), *options)
+    ply = PlyData.read(path)
+    check(ply.text == ("--ascii" in options), f"{path}: text or binary")
+    vertex = ply["vertex"]
+    names = [p.name for p in vertex.properties]
+    table = eval_table(model, samples)
+    surface = "u" in table[0]
+    expected_names = PLY_CURVE[:3] + (["nx", "ny", "nz"] if surface else []) + PLY_CURVE[3:]
+    check(names == expected_names, f"{path}: properties {names}")
+    check(vertex.count == len(table), f"{path}: {vertex.count} vertices")
+    for k, row in enumerate(table):
+        got = [float(vertex[name][k]) for name in ["x", "y", "z", "truth", "indeterminacy", "falsity"]]
+        want = [row["x"], row["y"], row.get("z", 0.0), row["truth"], row["indeterminacy"], row["falsity"]]
+        check(got == want, f"{path}: vertex {k}: {got} != {want}")
+    if surface:
+        faces = ply["face"]
+        check(faces.count == 2 * (samples - 1) ** 2, f"{path}: {faces.count} faces")
+        check(all(len(f) == 3 for f in faces["vertex_indices"]), f"{path}: triangles")
+    else:
+        edges = ply["edge"]
+        check(edges.count == samples - 1, f"{path}: {edges.count} edges")
+        check(list(edges["vertex1"]) == list(range(samples - 1)), f"{path}: edges")
+    print(f"ok  {os.path.basename(path)}: plyfile, {vertex.count} vertices equal to eval")
+
+
+def accessor_values(gltf, index):
+    accessor = gltf.accessors[index]
+    view = gltf.bufferViews[accessor.bufferView]
+    data = gltf.binary_blob() if gltf.buffers[0].uri is None else gltf.get_data_from_buffer_uri(gltf.buffers[0].uri)
+    components = {"SCALAR": 1, "VEC3": 3}[accessor.type]
+    start = view.byteOffset + (accessor.byteOffset or 0)
+    values = np.frombuffer(data, dtype="<f4", count=accessor.count * components, offset=start)
+    return values.reshape(accessor.count, components)
+
+
+def check_gltf(model, samples, out):
+    path = export(model, out, "--samples", str(samples))
+    gltf = pygltflib.GLTF2().load(path)
+    primitive = gltf.meshes[0].primitives[0]
+    table = eval_table(model, samples)
+    surface = "u" in table[0]
+    check(primitive.mode == (4 if surface else 3), f"{path}: mode {primitive.mode}")
+    attributes = primitive.attributes
+    positions = accessor_values(gltf, attributes.POSITION)
+    want = np.array([[r["x"], r["y"], r.get("z", 0.0)] for r in table], dtype=np.float32)
+    check(np.array_equal(positions, want), f"{path}: POSITION")
+    custom = {"_TRUTH": "truth", "_INDETERMINACY": "indeterminacy", "_FALSITY": "falsity"}
+    for attribute, column in custom.items():
+        values = accessor_values(gltf, getattr(attributes, attribute))[:, 0]
+        check(np.array_equal(values, np.array([r[column] for r in table], dtype=np.float32)), f"{path}: {attribute}")
+    if surface:
+        check(attributes.NORMAL is not None, f"{path}: NORMAL")
+    check(gltf.asset.extras.get("kind") == model_info(model)["kind"], f"{path}: asset.extras")
+    report = json.loads(
+        subprocess.run(
+            ["node", "-e", VALIDATE, path],
+            capture_output=True,
+            text=True,
+            check=True,
+            env={**os.environ, "NODE_PATH": NODE_MODULES},
+        ).stdout
+    )
+    issues = report["issues"]
+    errors = [m for m in issues["messages"] if m["severity"] == 0]
+    check(issues["numErrors"] == 0, f"{path}: glTF validator errors: {errors}")
+    print(f"ok  {os.path.basename(path)}: pygltflib, {len(table)} vertices equal to eval in float32; "
+          f"glTF validator: {issues['numErrors']} errors, {issues['numWarnings']} warnings")
+
+
+VALIDATE = """
+const validator = require('gltf-validator');
+const fs = require('fs');
+const path = process.argv[1];
+validator.validateBytes(new Uint8Array(fs.readFileSync(path)))
+  .then((report) => console.log(JSON.stringify(report)))
+  .catch((error) => { console.error(error); process.exit(1); });
+"""
+
+
+def check_ezdxf_import():
+    """Splines written by ezdxf, imported by neutrospline, evaluated by both."""
+    doc = ezdxf.new("R2000")
+    msp = doc.modelspace()
+    plane = [(0, 0, 0), (1, 2, 0), (3, 3, 0), (4, 1, 0), (6, 0, 0)]
+    spatial = [(1, 0, 0), (1, 0.5, 0.25), (0.5, 1, 0.5), (0, 1, 0.75), (-0.5, 1, 1)]
+    weights = [1, 0.5, 2, 0.75, 1]
+    knots = [0, 0, 0, 0, 0.4, 1, 1, 1, 1]
+    splines = [
+        msp.add_open_spline(plane, degree=3, knots=knots),
+        msp.add_rational_spline(spatial, weights, degree=2, knots=[0, 0, 0, 0.25, 0.5, 1, 1, 1]),
+    ]
+    path = os.path.join(WORK, "ezdxf.dxf")
+    doc.saveas(path)
+    out = os.path.join(WORK, "ezdxf.json")
+    run("import", path, "-o", out, "--all", "--truth", "0.5", "--indeterminacy", "0.25", "--falsity", "0.125")
+    for k, spline in enumerate(splines, start=1):
+        model = os.path.join(WORK, f"ezdxf-{k}.json")
+        with open(model) as f:
+            data = json.load(f)
+        check(data["kind"] == ("nurbs" if k == 2 else "bspline"), f"{model}: kind {data['kind']}")
+        tool = spline.construction_tool()
+        ts = [i / 20 for i in range(21)]
+        text = run("eval", model, "--at", ",".join(repr(t) for t in ts))
+        rows = [{key: float(v) for key, v in row.items()} for row in csv.DictReader(io.StringIO(text))]
+        points = [list(p) for p in spline.control_points]
+        scale = float(np.linalg.norm(np.max(points, axis=0) - np.min(points, axis=0)))
+        worst = 0.0
+        for row in rows:
+            x = tool.point(row["t"])
+            worst = max(worst, abs(x.x - row["x"]), abs(x.y - row["y"]), abs(x.z - row.get("z", 0.0)))
+            check((row["truth"], row["indeterminacy"], row["falsity"]) == (0.5, 0.25, 0.125), f"{model}: degrees")
+        check(("z" in rows[0]) == (k == 2), f"{model}: a plane curve has no z")
+        check(worst <= 1e-12 * scale, f"{model}: eval off ezdxf by {worst}")
+        print(f"ok  {os.path.basename(model)}: imported from ezdxf, eval within {worst:.1e} of ezdxf")
+
+
+VIEWER = """<!doctype html>
+<html><head><style>body { margin: 0; background: #fff; }</style>
+<script type="importmap">{"imports": {"three": "./three/build/three.module.js",
+  "three/addons/": "./three/examples/jsm/"}}</script></head>
+<body><pre id="result">pending</pre><script type="module">
+import * as THREE from "three";
+import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
+const out = document.getElementById("result");
+const renderer = new THREE.WebGLRenderer({ preserveDrawingBuffer: true });
+renderer.setSize(400, 300);
+renderer.setClearColor(0xffffff);
+document.body.appendChild(renderer.domElement);
+const scene = new THREE.Scene();
+scene.add(new THREE.AmbientLight(0xffffff, 1.5));
+const light = new THREE.DirectionalLight(0xffffff, 2);
+light.position.set(3, 5, 4);
+scene.add(light);
+new GLTFLoader().load("./model.glb", (gltf) => {
+  scene.add(gltf.scene);
+  const box = new THREE.Box3().setFromObject(gltf.scene);
+  const c = box.getCenter(new THREE.Vector3());
+  const s = box.getSize(new THREE.Vector3()).length();
+  const camera = new THREE.PerspectiveCamera(40, 4 / 3, s / 100, s * 10);
+  camera.position.set(c.x + 0.6 * s, c.y + 0.6 * s, c.z + 0.9 * s);
+  camera.lookAt(c);
+  renderer.render(scene, camera);
+  const gl = renderer.getContext();
+  const pixels = new Uint8Array(400 * 300 * 4);
+  gl.readPixels(0, 0, 400, 300, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+  let drawn = 0, green = 0, blue = 0;
+  for (let k = 0; k < pixels.length; k += 4) {
+    const [r, g, b] = [pixels[k], pixels[k + 1], pixels[k + 2]];
+    if (r > 250 && g > 250 && b > 250) continue;
+    drawn++;
+    if (g > r + 20 && g > b + 20) green++;
+    if (b > r + 20 && b > g + 5) blue++;
+  }
+  out.textContent = JSON.stringify({ drawn, green, blue });
+}, undefined, (error) => { out.textContent = JSON.stringify({ error: String(error) }); });
+</script></body></html>
+"""
+
+
+def check_browser():
+    """three.js draws the exported surface in headless Chromium, in its vertex colours."""
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    if chromium is None:
+        if os.environ.get("NEUTROSPLINE_REQUIRE_BROWSER") == "1":
+            check(False, "NEUTROSPLINE_REQUIRE_BROWSER=1 but no chromium on the PATH")
+        print("skipped: the three.js view (chromium is not installed)")
+        return
+    site = os.path.join(WORK, "site")
+    os.makedirs(site, exist_ok=True)
+    export("surface.toml", os.path.join("site", "model.glb"))
+    with open(os.path.join(site, "index.html"), "w") as f:
+        f.write(VIEWER)
+    link = os.path.join(site, "three")
+    if not os.path.exists(link):
+        os.symlink(os.path.abspath(os.path.join(NODE_MODULES, "three")), link)
+    handler = functools.partial(QuietHandler, directory=site)
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        url = f"http://127.0.0.1:{server.server_address[1]}/index.html"
+        result = subprocess.run(
+            [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
+             "--enable-unsafe-swiftshader", "--no-first-run", "--disable-background-networking",
+             "--disable-component-update", "--disable-sync", "--virtual-time-budget=10000",
+             f"--user-data-dir={os.path.join(WORK, 'profile')}", "--dump-dom", url],
+            capture_output=True, text=True, timeout=120,
+        )
+    finally:
+        server.shutdown()
+    dom = result.stdout
+    start = dom.find('<pre id="result">')
+    check(start >= 0, f"chromium printed no page: {result.stderr[-2000:]}")
+    text = dom[start + len('<pre id="result">'):dom.find("</pre>", start)]
+    check(text != "pending", "three.js did not finish drawing the model")
+    counts = json.loads(text)
+    check("error" not in counts, f"three.js could not load the export: {counts}")
+    check(counts["drawn"] > 0.1 * 400 * 300, f"the surface covers too little of the view: {counts}")
+    check(counts["green"] > 1000 and counts["blue"] > 1000, f"the vertex colours are not viridis: {counts}")
+    print(f"ok  surface.glb in three.js (headless Chromium): {counts['drawn']} pixels drawn, "
+          f"{counts['green']} green-dominant (high truth), {counts['blue']} blue-dominant (low truth)")
+
+
+class QuietHandler(http.server.SimpleHTTPRequestHandler):
+    """Serves the viewer's files without a log line per request."""
+
+    def log_message(self, format, *args):
+        pass
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    for model in ["example1.toml", "helix3d.toml", "bspline.toml", "nurbs-circle.toml"]:
+        check_dxf_curve(model)
+    check_dxf_mesh()
+    check_ezdxf_import()
+    check_ply("example1.toml", 21)
+    check_ply("helix3d.toml", 17, "--ascii")
+    check_ply("surface.toml", 7)
+    check_ply("nurbs-surface.json", 5, "--ascii")
+    check_gltf("example1.toml", 33, "example1.glb")
+    check_gltf("helix3d.toml", 9, "helix3d.gltf")
+    check_gltf("surface.toml", 8, "surface.glb")
+    check_gltf("nurbs-surface.json", 6, "nurbs-surface.gltf")
+    check_browser()
+    print(f"{CHECKS} checks passed")
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except AssertionError as error:
+        print(f"FAILED: {error}", file=sys.stderr)
+        sys.exit(1)
