@@ -240,7 +240,13 @@ fn degenerate(out: &std::path::Path) -> Result<(), Box<dyn Error>> {
         ),
     ];
     for (tag, model) in &models {
-        for view in [View::Controls, View::Truth, View::All, View::Plane] {
+        for view in [
+            View::Controls,
+            View::Truth,
+            View::All,
+            View::Plane,
+            View::Score,
+        ] {
             let options = PlotOptions::default();
             let svg = render_svg(model, view, &options)?;
             let png = svg_to_png(&svg, options.width(), options.height())?;

@@ -1,13 +1,12 @@
 //! The pieces of a 3-D curve in its box: the shadow on the floor, drop lines, the control
-//! polygon and points, the curve coloured by one degree, and the panel that combines them
-//! (the single-degree views and each panel of `all`).
-
-use neutrospline::DegreeKind;
+//! polygon and points, the curve coloured by one quantity (a degree or the score), and the
+//! panel that combines them (the single-quantity views and each panel of `all`).
 
 use crate::axes3::Axes3;
 use crate::callout::{obstacles_of, Obstacle};
 use crate::ctx::Ctx;
 use crate::layout::{ColorBar, Entry, Legend, Rect};
+use crate::quantity::Quantity;
 use crate::scene::{flat, Scene, Shape, CHUNK, DATA, FLOOR, OVER};
 use crate::svg::{Color, Style, SvgWriter};
 use crate::theme::{self, marker_style, Marker, Theme};
@@ -105,8 +104,8 @@ pub(crate) fn control_polygon_3d(
     ctrl
 }
 
-/// A 3-D curve coloured by one degree: a dark casing under coloured segments.
-fn coloured_curve(scene: &mut Scene, ctx: &Ctx, axes: &Axes3, kind: DegreeKind) -> Vec<(f64, f64)> {
+/// A 3-D curve coloured by one quantity: a dark casing under coloured segments.
+fn coloured_curve(scene: &mut Scene, ctx: &Ctx, axes: &Axes3, q: Quantity) -> Vec<(f64, f64)> {
     let th = &ctx.theme;
     let pts: Vec<(f64, f64, f64)> = ctx.curve.iter().map(|p| axes.screen(p.pos)).collect();
     scene.polyline(
@@ -115,10 +114,10 @@ fn coloured_curve(scene: &mut Scene, ctx: &Ctx, axes: &Axes3, kind: DegreeKind) 
         CHUNK,
         &Style::stroke(theme::CRISP, th.curve_w() + 3.0 * th.s).with_class("curve casing"),
     );
-    let class = format!("curve {}", kind.name());
+    let class = format!("curve {}", q.name());
     if pts.len() == 1 {
         let p = pts[0];
-        let c = theme::colormap(ctx.curve[0].deg[kind.index()]);
+        let c = theme::colormap(q.at(&ctx.curve[0]));
         scene.push(
             OVER,
             p.2,
@@ -129,7 +128,7 @@ fn coloured_curve(scene: &mut Scene, ctx: &Ctx, axes: &Axes3, kind: DegreeKind) 
         );
     }
     for k in 0..pts.len().saturating_sub(1) {
-        let v = (ctx.curve[k].deg[kind.index()] + ctx.curve[k + 1].deg[kind.index()]) / 2.0;
+        let v = (q.at(&ctx.curve[k]) + q.at(&ctx.curve[k + 1])) / 2.0;
         let (a, b) = (pts[k], pts[k + 1]);
         scene.push(
             OVER,
@@ -143,8 +142,8 @@ fn coloured_curve(scene: &mut Scene, ctx: &Ctx, axes: &Axes3, kind: DegreeKind) 
     flat(&pts)
 }
 
-/// The control points as markers coloured by the degree `kind`.
-fn colour_markers(scene: &mut Scene, ctx: &Ctx, ctrl: &[(f64, f64, f64)], kind: DegreeKind) {
+/// The control points as markers coloured by the quantity `q`.
+fn colour_markers(scene: &mut Scene, ctx: &Ctx, ctrl: &[(f64, f64, f64)], q: Quantity) {
     let th = &ctx.theme;
     for (p, c) in ctrl.iter().zip(ctx.controls) {
         scene.push(
@@ -154,15 +153,18 @@ fn colour_markers(scene: &mut Scene, ctx: &Ctx, ctrl: &[(f64, f64, f64)], kind: 
                 Marker::Circle,
                 (p.0, p.1),
                 th.marker_r(),
-                marker_style(th, theme::colormap(c.deg[kind.index()])).with_class("control-point"),
+                marker_style(th, theme::colormap(q.at(c))).with_class("control-point"),
             ),
         );
     }
 }
 
-/// The legend of a 3-D curve coloured by a degree: control polygon, shadow, and the colour
-/// bar labelled `bar`.
-pub(crate) fn coloured_legend(th: &Theme, bar: &str) -> Legend {
+/// The legend of a 3-D curve coloured by a quantity: control polygon, shadow, and the colour
+/// bar labelled `bar`; the note says the colour is the `noun` ("degree" or "score") and adds
+/// `notes`.
+pub(crate) fn coloured_legend(th: &Theme, bar: &str, noun: &str, notes: Vec<String>) -> Legend {
+    let mut all_notes = vec![format!("Curve and points coloured by the {noun}.")];
+    all_notes.extend(notes);
     Legend {
         entries: vec![
             Entry::polygon(
@@ -174,7 +176,7 @@ pub(crate) fn coloured_legend(th: &Theme, bar: &str) -> Legend {
             ),
             Entry::line(theme::SHADOW, th.crisp_w(), None, "shadow on the floor"),
         ],
-        notes: vec!["Curve and points coloured by the degree.".to_string()],
+        notes: all_notes,
         colorbar: Some(ColorBar {
             label: bar.to_string(),
             length: 0.62,
@@ -182,20 +184,20 @@ pub(crate) fn coloured_legend(th: &Theme, bar: &str) -> Legend {
     }
 }
 
-/// One box of a 3-D model coloured by `kind`, drawn into `svg`.
+/// One box of a 3-D model coloured by `q`, drawn into `svg`.
 pub(crate) fn coloured_panel(
     svg: &mut SvgWriter,
     ctx: &Ctx,
     area: Rect,
-    kind: DegreeKind,
+    q: Quantity,
     avoid: Option<Rect>,
 ) {
     let th = &ctx.theme;
     let (axes, mut scene) = shadowed_box(svg, ctx, area, avoid);
     let mut obstacles = drop_lines(&mut scene, ctx, &axes);
     let ctrl = control_polygon_3d(&mut scene, ctx, &axes, theme::CONSTRUCTION);
-    let curve = coloured_curve(&mut scene, ctx, &axes, kind);
-    colour_markers(&mut scene, ctx, &ctrl, kind);
+    let curve = coloured_curve(&mut scene, ctx, &axes, q);
+    colour_markers(&mut scene, ctx, &ctrl, q);
     scene.draw(svg);
     obstacles.extend(obstacles_of(&curve, th.curve_w()));
     obstacles.extend(obstacles_of(&flat(&ctrl), 0.0));

@@ -5,7 +5,7 @@
 #[non_exhaustive]
 pub enum PlotError {
     /// A view name that [`View`](crate::View) does not know.
-    #[error("unknown view \"{name}\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, data)")]
+    #[error("unknown view \"{name}\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, data)")]
     UnknownView {
         /// The name given.
         name: String,

@@ -2,8 +2,9 @@
 //!
 //! Figures of neutrosophic curves and surfaces as SVG and PNG: the paper's figures 1-5
 //! (control points; truth, indeterminacy and falsity curves; all three together), a flat
-//! `plane` view, the same six views for tensor-product surfaces, and a `data` view of a curve
-//! next to the measured points it was fitted to.
+//! `plane` view, a `score` view (the score of the degrees drawn like a degree), the same seven
+//! views for tensor-product surfaces, and a `data` view of a curve next to the measured points
+//! it was fitted to.
 //!
 //! ## The public items
 //! - [`PlotModel`]: what to draw: a curve (any kind implementing [`neutrospline::Evaluate`],
@@ -18,8 +19,8 @@
 //!   as associated constants ([`PlotOptions::DEFAULT_WIDTH`], [`PlotOptions::MAX_SAMPLES`],
 //!   [`PlotOptions::MIN_SIDE`], ...).
 //! - [`View`]: which figure to draw (`controls`, `truth`, `indeterminacy`, `falsity`, `all`,
-//!   `plane`, `data`); parsed from and displayed as those names. It is `#[non_exhaustive]`:
-//!   views may be added, so a `match` on it needs a wildcard arm.
+//!   `plane`, `score`, `data`); parsed from and displayed as those names. It is
+//!   `#[non_exhaustive]`: views may be added, so a `match` on it needs a wildcard arm.
 //! - [`render_svg`] draws one view of a model with options; [`render_png`] draws and
 //!   rasterizes it, [`svg_to_png`] rasterizes an SVG document.
 //! - [`PlotError`]: every error of the above; [`FONT_FAMILY`]: the bundled font's family name.
@@ -53,11 +54,17 @@
 //! - `plane`: a flat view: the crisp curve with three lanes along it, one per degree (truth,
 //!   indeterminacy, falsity from the left of the direction of travel), each filled to a width
 //!   proportional to the degree (a full grey lane is 1).
+//! - `score`: like `truth`, with the score `(2 + T - I - F) / 3` of the degrees
+//!   ([`neutrospline::Degrees::score`], in \[0, 1\]) as the height: the space curve
+//!   `(x(t), y(t), score(t))` with its control polygon lifted to the control points' scores,
+//!   above the crisp curve on the score = 0 plane. The score is affine in the degrees and every
+//!   basis is non-negative with unit sum, so the score of the curve is exactly the curve of
+//!   the control points' scores.
 //!
 //! For 3-D models (positions x, y, z) the three spatial axes are taken, so:
-//! - `truth`, `indeterminacy`, `falsity`: the 3-D curve coloured by that degree (viridis,
-//!   0 to 1) with a colour bar, control polygon, points coloured alike, drop lines and the
-//!   curve's shadow on the floor of the box;
+//! - `truth`, `indeterminacy`, `falsity`, `score`: the 3-D curve coloured by that degree or
+//!   the score (viridis, 0 to 1) with a colour bar, control polygon, points coloured alike,
+//!   drop lines and the curve's shadow on the floor of the box;
 //! - `all`: three such panels, one per degree, sharing the colour bar: in a 2 x 2 grid with
 //!   the legend in the fourth cell, or in a row or a column with the legend beside them,
 //!   whichever draws the panels largest for the figure's size (every panel and the legend keep
@@ -70,13 +77,13 @@
 //! For surfaces (positions x, y, z; a `rows x cols` control net), sampled on an `N x N`
 //! grid ([`PlotOptions::with_samples`], default [`PlotOptions::DEFAULT_SURFACE_SAMPLES`] = 40
 //! per direction, at most [`PlotOptions::MAX_SURFACE_SAMPLES`]):
-//! - `truth`, `indeterminacy`, `falsity`: the surface as a mesh of `(N - 1)^2` quads coloured
-//!   by that degree (viridis, 0 to 1, with a colour bar), shaded by its normals (Lambert
-//!   lighting from the upper left that darkens a face by at most a third, so the colour
-//!   stays readable), drawn far to near (painter's algorithm) with about eight iso-parameter
-//!   lines each way and a dark boundary; the control net as a dashed grey wire with its
-//!   points coloured by the degree, in full where it lies in front of the surface and faint
-//!   where the surface hides it;
+//! - `truth`, `indeterminacy`, `falsity`, `score`: the surface as a mesh of `(N - 1)^2` quads
+//!   coloured by that degree or the score (viridis, 0 to 1, with a colour bar), shaded by
+//!   its normals (Lambert lighting from the upper left that darkens a face by at most a
+//!   third, so the colour stays readable), drawn far to near (painter's algorithm) with about
+//!   eight iso-parameter lines each way and a dark boundary; the control net as a dashed grey
+//!   wire with its points coloured alike, in full where it lies in front of the surface and
+//!   faint where the surface hides it;
 //! - `all`: three such panels, arranged like the curves';
 //! - `controls`: the net over the surface in neutral grey; each control point drawn as a
 //!   small box of three bars (its truth, indeterminacy and falsity; a full bar is 1),
@@ -127,20 +134,23 @@
 //! dispatch, `views::figure`, the only `match` on [`View`] that draws: each view is one
 //! module of `views` that draws its three cases (a 2-D curve, a 3-D curve, a surface) and its
 //! default title:
-//! - `views::controls`: `controls`; `views::degree`: `truth`, `indeterminacy`, `falsity`;
+//! - `views::controls`: `controls`; `views::single`: `truth`, `indeterminacy`, `falsity` and
+//!   `score` (one body for the four: a `quantity::Quantity` is a degree or the score);
 //!   `views::all`: `all`; `views::plane`: `plane`; `views::data`: `data` (the one view that
 //!   draws the model's data overlay: `render_svg` gives it the data points and the curve
 //!   points their whiskers go to, and no control points).
 //!
 //! They draw with shared helpers, which never import a view module:
 //! - figure pieces: `curve3d` (a 3-D curve in its box: shadow, drop lines, control polygon,
-//!   the curve coloured by a degree), `lifted` (2-D curves with a degree as the height),
-//!   `mesh` (a surface as a shaded mesh), `net` (a surface's control net, faint where the
-//!   surface hides it), `glyph` (degree glyphs of a surface's control points), `callout`
-//!   (callouts and point names placed clear of the drawing), `panels` (the three-panel
-//!   figures);
+//!   the curve coloured by a quantity), `lifted` (2-D curves with a quantity as the height),
+//!   `mesh` (a surface as a shaded mesh coloured by a quantity), `net` (a surface's control
+//!   net, faint where the surface hides it), `glyph` (degree glyphs of a surface's control
+//!   points), `callout` (callouts and point names placed clear of the drawing), `panels` (the
+//!   three-panel figures);
 //! - layout and axes: `layout` (rectangles, text, legends, colour bars, title and caption),
 //!   `axes2` (2-D axes at equal scale), `axes3` (the 3-D box), `ticks`, `camera`;
+//! - what is drawn: `quantity` (a degree or the score: its name, colour and value from a
+//!   point's degrees, taken by `lifted`, `curve3d` and `mesh`);
 //! - geometry: `nearest` (the point of a curve nearest to a given point: dense samples, then
 //!   a golden-section search);
 //! - output: `scene` (depth-sorted drawing), `svg` (the SVG writer), `theme` (sizes and
@@ -187,6 +197,7 @@ mod options;
 mod overlay;
 mod panels;
 mod png;
+mod quantity;
 mod render;
 mod scene;
 mod svg;

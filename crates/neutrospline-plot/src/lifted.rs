@@ -1,9 +1,8 @@
-//! 2-D models seen in 3-D: a degree becomes the height above the x-y plane, as in the paper's
-//! figures 2-5. Each space curve `(x(t), y(t), degree(t))` is drawn with its lifted control
-//! polygon above the crisp curve and control polygon on the degree = 0 floor, with drop lines
-//! from the control points (the single-degree views and `all`).
-
-use neutrospline::DegreeKind;
+//! 2-D models seen in 3-D: a quantity (a degree, or the score) becomes the height above the
+//! x-y plane, as in the paper's figures 2-5. Each space curve `(x(t), y(t), q(t))` is drawn
+//! with its lifted control polygon (the control points' values of the quantity) above the
+//! crisp curve and control polygon on the q = 0 floor, with drop lines from the control
+//! points (the single-quantity views and `all`).
 
 use crate::axes3::{box_lengths, Axes3};
 use crate::callout::obstacles_of;
@@ -11,6 +10,7 @@ use crate::ctx::Ctx;
 use crate::curve3d::drop_line;
 use crate::layout::{Entry, Legend, LegendPlace};
 use crate::model::Pt;
+use crate::quantity::Quantity;
 use crate::scene::{flat, Scene, Shape, CHUNK, DATA, FLOOR};
 use crate::svg::Style;
 use crate::theme::{self, marker_style, Marker};
@@ -24,25 +24,27 @@ pub(crate) struct Look {
     pub curtain: bool,
     /// The width of the lifted control polygons.
     pub polygon_w: f64,
-    /// The marker of the lifted control points of a degree.
-    pub marker: fn(DegreeKind) -> Marker,
+    /// The marker of the lifted control points of a quantity.
+    pub marker: fn(Quantity) -> Marker,
 }
 
-/// Paper Fig. 2-5: the space curves (x, y, degree) of `kinds` above the crisp curve, with
-/// the legend `entries` (the view's curves and control polygons; the crisp curve and control
-/// polygon are added after them).
+/// Paper Fig. 2-5: the space curves (x, y, q) of the quantities `kinds` above the crisp
+/// curve, with the legend `entries` (the view's curves and control polygons; the crisp curve
+/// and control polygon are added after them) and `notes`.
 pub(crate) fn figure(
     ctx: &Ctx,
-    kinds: &[DegreeKind],
+    kinds: &[Quantity],
     mut entries: Vec<Entry>,
+    notes: Vec<String>,
     look: &Look,
 ) -> String {
     let th = &ctx.theme;
+    let floor = kinds.first().map_or("degree", |q| q.noun());
     entries.push(Entry::line(
         theme::CRISP,
         th.crisp_w(),
         None,
-        "crisp curve (degree 0)",
+        &format!("crisp curve ({floor} 0)"),
     ));
     entries.push(Entry::line(
         theme::SHADOW,
@@ -52,7 +54,7 @@ pub(crate) fn figure(
     ));
     let legend = Legend {
         entries,
-        notes: Vec::new(),
+        notes,
         colorbar: None,
     };
     let frame = ctx.frame(legend, LegendPlace::Corner);
@@ -114,7 +116,7 @@ pub(crate) fn figure(
         .map(|p| {
             let top = kinds
                 .iter()
-                .map(|k| theme::unit(p.deg[k.index()]))
+                .map(|q| theme::unit(q.at(p)))
                 .fold(0.0, f64::max);
             s3(p, top)
         })
@@ -123,12 +125,11 @@ pub(crate) fn figure(
         obstacles.extend(drop_line(&mut scene, th, *a, *b));
     }
     for &kind in kinds {
-        let k = kind.index();
-        let c = theme::degree_color(kind);
+        let c = kind.color();
         let lifted: Vec<(f64, f64, f64)> = ctx
             .curve
             .iter()
-            .map(|p| s3(p, theme::unit(p.deg[k])))
+            .map(|p| s3(p, theme::unit(kind.at(p))))
             .collect();
         if look.curtain {
             // A translucent curtain between the space curve and its shadow.
@@ -152,7 +153,7 @@ pub(crate) fn figure(
         let lifted_ctrl: Vec<(f64, f64, f64)> = ctx
             .controls
             .iter()
-            .map(|p| s3(p, theme::unit(p.deg[k])))
+            .map(|p| s3(p, theme::unit(kind.at(p))))
             .collect();
         scene.polyline(
             DATA,

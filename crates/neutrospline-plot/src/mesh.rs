@@ -1,16 +1,15 @@
-//! A sampled surface drawn as a mesh of quads: each face painted by a degree (viridis) or a
-//! neutral grey and shaded by its normal, with iso-parameter lines and a dark boundary, all
-//! depth-sorted; a surface that shows no area is drawn as a coloured curve or a point. Also
-//! the panel of the single-degree views and of each panel of `all`: the mesh coloured by one
-//! degree with the control net over it.
-
-use neutrospline::DegreeKind;
+//! A sampled surface drawn as a mesh of quads: each face painted by a quantity (a degree or
+//! the score; viridis) or a neutral grey and shaded by its normal, with iso-parameter lines
+//! and a dark boundary, all depth-sorted; a surface that shows no area is drawn as a coloured
+//! curve or a point. Also the panel of the single-quantity views and of each panel of `all`:
+//! the mesh coloured by one quantity with the control net over it.
 
 use crate::axes3::Axes3;
 use crate::ctx::Ctx;
 use crate::layout::{ColorBar, Entry, Legend, Rect, Swatch};
 use crate::model::Mesh;
 use crate::net::draw_net;
+use crate::quantity::Quantity;
 use crate::scene::{Scene, Shape, DATA};
 use crate::svg::{Color, Style, SvgWriter};
 use crate::theme::{self, Marker, Theme};
@@ -82,10 +81,10 @@ fn shaded(base: Color, k: f64) -> Color {
     base.mix(Color(0, 0, 0), SHADE * (1.0 - k))
 }
 
-/// How faces are painted: by a degree, or a neutral grey.
+/// How faces are painted: by a quantity (a degree or the score), or a neutral grey.
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Paint {
-    Degree(DegreeKind),
+    By(Quantity),
     Neutral,
 }
 
@@ -108,7 +107,7 @@ fn add_mesh(scene: &mut Scene, th: &Theme, axes: &Axes3, mesh: &Mesh, paint: Pai
             let c = [(a, b), (a + 1, b), (a + 1, b + 1), (a, b + 1)];
             let q = c.map(|(i, j)| at(i, j));
             let base = match paint {
-                Paint::Degree(kind) => theme::colormap(mesh.cell_degree(a, b, kind)),
+                Paint::By(q) => theme::colormap(mesh.cell_value(a, b, q)),
                 Paint::Neutral => theme::SURFACE,
             };
             let fill = shaded(base, lambert(axes, face_normal(mesh, c)));
@@ -234,9 +233,14 @@ fn net_entry(th: &Theme, fill: Color) -> Entry {
     Entry::polygon(th, theme::CONSTRUCTION, Marker::Circle, fill, "control net")
 }
 
-/// The legend of a mesh coloured by a degree: surface, control net, and the colour bar
-/// labelled `bar`.
-pub(crate) fn degree_legend(th: &Theme, bar: &str) -> Legend {
+/// The legend of a mesh coloured by a quantity: surface, control net, and the colour bar
+/// labelled `bar`; the note says the colour is the `noun` ("degree" or "score") and adds
+/// `notes`.
+pub(crate) fn quantity_legend(th: &Theme, bar: &str, noun: &str, notes: Vec<String>) -> Legend {
+    let mut all_notes = vec![format!(
+        "Surface and control points coloured by the {noun}; shading shows the shape."
+    )];
+    all_notes.extend(notes);
     Legend {
         entries: vec![
             Entry {
@@ -247,10 +251,7 @@ pub(crate) fn degree_legend(th: &Theme, bar: &str) -> Legend {
             },
             net_entry(th, theme::colormap(0.55)),
         ],
-        notes: vec![
-            "Surface and control points coloured by the degree; shading shows the shape."
-                .to_string(),
-        ],
+        notes: all_notes,
         colorbar: Some(ColorBar {
             label: bar.to_string(),
             length: 0.62,
@@ -258,20 +259,20 @@ pub(crate) fn degree_legend(th: &Theme, bar: &str) -> Legend {
     }
 }
 
-/// One box with the mesh coloured by `kind` and the control net.
+/// One box with the mesh coloured by `q` and the control net.
 pub(crate) fn mesh_panel(
     svg: &mut SvgWriter,
     ctx: &Ctx,
     mesh: &Mesh,
     grid: (usize, usize),
     area: Rect,
-    kind: DegreeKind,
+    q: Quantity,
     avoid: Option<Rect>,
 ) {
     let th = &ctx.theme;
     let axes = ctx.draw_box(svg, area, avoid);
-    draw_mesh(svg, th, &axes, mesh, Paint::Degree(kind));
-    let colour = |k: usize| theme::colormap(ctx.controls[k].deg[kind.index()]);
+    draw_mesh(svg, th, &axes, mesh, Paint::By(q));
+    let colour = |k: usize| theme::colormap(q.at(&ctx.controls[k]));
     draw_net(svg, ctx, &axes, mesh, grid, theme::CONSTRUCTION, &colour);
 }
 

@@ -6,12 +6,13 @@ use std::sync::Arc;
 
 use neutrospline::{
     uniform_parameter, AnyCurve, Bezier, ControlPoint, ControlPolygon, CurveKind, CurvePoint,
-    DegreeKind, Evaluate, EvaluateSurface, NeutrosophicPoint, Surface, SurfaceKind,
+    Evaluate, EvaluateSurface, NeutrosophicPoint, Surface, SurfaceKind,
 };
 
 use crate::error::PlotError;
 use crate::nearest::nearest;
 use crate::overlay::DataOverlay;
+use crate::quantity::Quantity;
 
 /// A point as the renderer uses it: position padded to 3-D (z = 0 for planar models) and
 /// the degrees `[truth, indeterminacy, falsity]`.
@@ -169,12 +170,12 @@ impl Mesh {
         self.normals[a * self.n + b]
     }
 
-    /// The degree `kind` of the cell between samples `(a, b)` and `(a + 1, b + 1)`: the mean
-    /// of its four corners.
-    pub(crate) fn cell_degree(&self, a: usize, b: usize, kind: DegreeKind) -> f64 {
+    /// The quantity `q` (a degree or the score) of the cell between samples `(a, b)` and
+    /// `(a + 1, b + 1)`: the mean of its four corners.
+    pub(crate) fn cell_value(&self, a: usize, b: usize, q: Quantity) -> f64 {
         [(a, b), (a + 1, b), (a + 1, b + 1), (a, b + 1)]
             .iter()
-            .map(|&(i, j)| self.at(i, j).deg[kind.index()])
+            .map(|&(i, j)| q.at(self.at(i, j)))
             .sum::<f64>()
             / 4.0
     }

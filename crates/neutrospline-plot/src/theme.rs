@@ -29,6 +29,8 @@ pub(crate) const KNOT: Color = Color(0xff, 0xff, 0xff);
 /// Residual whiskers from data points to the curve (Paul Tol's vibrant red: apart from the
 /// viridis fills of the points and from the grey curve).
 pub(crate) const RESIDUAL: Color = Color(0xcc, 0x33, 0x11);
+/// The lifted score curve (Paul Tol's bright green: apart from the three degree colours).
+pub(crate) const SCORE: Color = Color(0x22, 0x88, 0x33);
 /// Background of the degree lanes of the plane view.
 pub(crate) const TRACK: Color = Color(0xe6, 0xe8, 0xeb);
 

@@ -9,7 +9,7 @@ use crate::error::PlotError;
 
 /// Which figure to draw. Names (for [`FromStr`] and [`Display`](fmt::Display)) are the
 /// lowercase variant names: `controls`, `truth`, `indeterminacy`, `falsity`, `all`, `plane`,
-/// `data`.
+/// `score`, `data`.
 ///
 /// | view | 2-D model (the paper's figures) | 3-D model | surface |
 /// |---|---|---|---|
@@ -17,6 +17,7 @@ use crate::error::PlotError;
 /// | `truth`, `indeterminacy`, `falsity` | Fig. 2-4: space curve `(x, y, degree)` with its control polygon above the crisp curve (its shadow on the degree = 0 plane) | the 3-D curve coloured by that degree, with a colour bar and its shadow on the floor | the shaded mesh coloured by that degree, with the control net and a colour bar |
 /// | `all` | Fig. 5: the three space curves in one box | three panels, one per degree, sharing a colour bar | three meshes, one per degree, sharing a colour bar |
 /// | `plane` | crisp curve with three bands along it whose widths are the degrees | the same bands along the curve's projection in the 3-D box | three heat maps of the degrees over the parameter domain (u, v), with knot lines |
+/// | `score` | the space curve `(x, y, score)` like Fig. 2-4, the score `(2 + T - I - F) / 3` of the degrees ([`neutrospline::Degrees::score`]) as the height, its control polygon lifted to the control points' scores | the 3-D curve coloured by the score, with a colour bar | the shaded mesh coloured by the score, with the control net and a colour bar |
 /// | `data` | the curve fitted to measured data ([`PlotModel::with_data`](crate::PlotModel::with_data)) as a line on x-y axes, the data points as markers coloured by one degree (viridis, with a colour bar), a residual whisker from each point to its point of the curve | the same in the 3-D box, with the curve's shadow on the floor | none: an error ([`PlotError::DataOnSurface`]) |
 ///
 /// ```
@@ -47,32 +48,39 @@ pub enum View {
     All,
     /// A flat view: the three degrees as bands along the crisp curve.
     Plane,
+    /// The score of the degrees, `(2 + T - I - F) / 3` (docs/model.md section 7), drawn like
+    /// a degree: as the height of the space curve of a 2-D model, as the colour of a 3-D
+    /// curve or a surface. It is affine in the degrees, so the score of the curve is the
+    /// curve of the control points' scores.
+    Score,
     /// Measured data points next to the curve fitted to them, with residual whiskers
     /// ([`PlotModel::with_data`](crate::PlotModel::with_data)).
     Data,
 }
 
 impl View {
-    /// Every view, in the paper's order, then `plane` and `data`.
-    pub const ALL: [View; 7] = [
+    /// Every view, in the paper's order, then `plane`, `score` and `data`.
+    pub const ALL: [View; 8] = [
         View::Controls,
         View::Truth,
         View::Indeterminacy,
         View::Falsity,
         View::All,
         View::Plane,
+        View::Score,
         View::Data,
     ];
 
     /// The views that draw any model (every view but `data`, which needs data points), in
     /// the order of [`View::ALL`].
-    pub const MODEL: [View; 6] = [
+    pub const MODEL: [View; 7] = [
         View::Controls,
         View::Truth,
         View::Indeterminacy,
         View::Falsity,
         View::All,
         View::Plane,
+        View::Score,
     ];
 
     /// The view's name, as parsed and displayed.
@@ -84,6 +92,7 @@ impl View {
             View::Falsity => "falsity",
             View::All => "all",
             View::Plane => "plane",
+            View::Score => "score",
             View::Data => "data",
         }
     }
@@ -148,14 +157,20 @@ mod tests {
         let err = "Truth".parse::<View>().unwrap_err();
         assert_eq!(
             err.to_string(),
-            "unknown view \"Truth\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, data)"
+            "unknown view \"Truth\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, data)"
         );
+        // The message lists every view, in the order of `View::ALL`.
+        let names: Vec<&str> = View::ALL.iter().map(|v| v.name()).collect();
+        assert!(err
+            .to_string()
+            .ends_with(&format!("(expected one of: {})", names.join(", "))));
     }
 
     #[test]
     fn view_degree_kinds() {
         assert_eq!(View::Falsity.degree(), Some(DegreeKind::Falsity));
         assert_eq!(View::All.degree(), None);
+        assert_eq!(View::Score.degree(), None);
         assert_eq!(View::from(DegreeKind::Indeterminacy), View::Indeterminacy);
     }
 }

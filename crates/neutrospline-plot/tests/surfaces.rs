@@ -134,6 +134,7 @@ fn surfaces_degree_views_draw_mesh_net_and_colour_bar() {
         (View::Truth, "truth"),
         (View::Indeterminacy, "indeterminacy"),
         (View::Falsity, "falsity"),
+        (View::Score, "score"),
     ] {
         let svg = render_svg(&model, view, &small()).unwrap();
         let mesh = group(&svg, "mesh");

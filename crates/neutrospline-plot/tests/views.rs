@@ -84,8 +84,8 @@ fn check_svg(svg: &str, width: u32, height: u32) {
 
 #[test]
 fn views_names_parse() {
-    assert_eq!(View::ALL.len(), 7);
-    assert_eq!(View::MODEL, View::ALL[..6]);
+    assert_eq!(View::ALL.len(), 8);
+    assert_eq!(View::MODEL, View::ALL[..7]);
     for (name, view) in [
         ("controls", View::Controls),
         ("truth", View::Truth),
@@ -93,6 +93,7 @@ fn views_names_parse() {
         ("falsity", View::Falsity),
         ("all", View::All),
         ("plane", View::Plane),
+        ("score", View::Score),
         ("data", View::Data),
     ] {
         assert_eq!(name.parse::<View>().unwrap(), view);

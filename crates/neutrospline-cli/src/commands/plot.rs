@@ -56,6 +56,8 @@ indeterminacy  the same for indeterminacy (paper Fig. 3)\n  \
 falsity        the same for falsity (paper Fig. 4)\n  \
 all            the three together (paper Fig. 5)\n  \
 plane          the crisp curve with three bands along it whose widths follow the degrees\n  \
+score          the space curve (x(t), y(t), score(t)) above the crisp curve, score =\n                 \
+(2 + T - I - F) / 3 (3-D models and surfaces: coloured by the score)\n  \
 data           the data points of --data coloured by a degree over the curve, with residual\n                 \
 whiskers (curves only)\n\
 The format follows the extension of OUT: .svg or .png.")]
@@ -68,8 +70,8 @@ pub struct PlotArgs {
     #[arg(short = 'o', long = "output", value_name = "OUT")]
     pub output: PathBuf,
 
-    /// Which view to draw: controls, truth, indeterminacy, falsity, all, plane, data (default:
-    /// data with --data, else all)
+    /// Which view to draw: controls, truth, indeterminacy, falsity, all, plane, score, data
+    /// (default: data with --data, else all)
     #[arg(long, value_name = "VIEW", value_parser = parse_view)]
     pub view: Option<View>,
 

@@ -12,9 +12,10 @@ use crate::ctx::Ctx;
 use crate::curve3d::{coloured_legend, coloured_panel};
 use crate::layout::{Entry, Legend, Rect, Swatch};
 use crate::lifted::{self, Look};
-use crate::mesh::{degree_legend, mesh_panel};
+use crate::mesh::{mesh_panel, quantity_legend};
 use crate::model::Mesh;
 use crate::panels;
+use crate::quantity::Quantity;
 use crate::svg::SvgWriter;
 use crate::theme;
 
@@ -55,22 +56,23 @@ impl Figure for All {
             axis: "degree",
             curtain: false,
             polygon_w: th.thin_w(),
-            marker: theme::degree_marker,
+            marker: Quantity::marker,
         };
-        lifted::figure(ctx, &DegreeKind::ALL, entries, &look)
+        let kinds = DegreeKind::ALL.map(Quantity::from);
+        lifted::figure(ctx, &kinds, entries, Vec::new(), &look)
     }
 
     fn curve_3d(&self, ctx: &Ctx) -> String {
-        let legend = coloured_legend(&ctx.theme, "degree");
+        let legend = coloured_legend(&ctx.theme, "degree", "degree", Vec::new());
         boxes(ctx, legend, &|svg, area, kind| {
-            coloured_panel(svg, ctx, area, kind, None);
+            coloured_panel(svg, ctx, area, kind.into(), None);
         })
     }
 
     fn surface(&self, ctx: &Ctx, mesh: &Mesh, grid: (usize, usize)) -> String {
-        let legend = degree_legend(&ctx.theme, "degree");
+        let legend = quantity_legend(&ctx.theme, "degree", "degree", Vec::new());
         boxes(ctx, legend, &|svg, area, kind| {
-            mesh_panel(svg, ctx, mesh, grid, area, kind, None);
+            mesh_panel(svg, ctx, mesh, grid, area, kind.into(), None);
         })
     }
 }

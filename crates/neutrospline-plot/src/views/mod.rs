@@ -8,13 +8,14 @@
 mod all;
 mod controls;
 mod data;
-mod degree;
 mod plane;
+mod single;
 
 use neutrospline::DegreeKind;
 
 use crate::ctx::Ctx;
 use crate::model::Mesh;
+use crate::quantity::Quantity;
 use crate::view::View;
 
 /// How one view is drawn: its default title and its figure of each kind of model.
@@ -43,11 +44,12 @@ pub(crate) trait Figure {
 pub(crate) fn figure(view: View) -> &'static dyn Figure {
     match view {
         View::Controls => &controls::Controls,
-        View::Truth => &degree::Degree(DegreeKind::Truth),
-        View::Indeterminacy => &degree::Degree(DegreeKind::Indeterminacy),
-        View::Falsity => &degree::Degree(DegreeKind::Falsity),
+        View::Truth => &single::Single(Quantity::Degree(DegreeKind::Truth)),
+        View::Indeterminacy => &single::Single(Quantity::Degree(DegreeKind::Indeterminacy)),
+        View::Falsity => &single::Single(Quantity::Degree(DegreeKind::Falsity)),
         View::All => &all::All,
         View::Plane => &plane::Plane,
+        View::Score => &single::Single(Quantity::Score),
         View::Data => &data::Data,
     }
 }

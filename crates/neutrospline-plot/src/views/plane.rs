@@ -234,7 +234,7 @@ fn heat_map(svg: &mut SvgWriter, th: &Theme, mesh: &Mesh, axes: &Axes2, kind: De
     let bleed = 1.0;
     for a in 0..n.saturating_sub(1) {
         for b in 0..n.saturating_sub(1) {
-            let v = mesh.cell_degree(a, b, kind);
+            let v = mesh.cell_value(a, b, kind.into());
             let (x0, y1) = axes.map(mesh.u[a], mesh.v[b]);
             let (x1, y0) = axes.map(mesh.u[a + 1], mesh.v[b + 1]);
             svg.rect(
