@@ -346,6 +346,8 @@ pub fn check_shape(shape: &Shape) {
         derivative: true,
         normal: shape.is_surface(),
         scores: true,
+        geometry: !shape.is_surface(),
+        ..Extras::default()
     };
     let sampler = shape.sampler(extras);
     let params: Vec<Param> = match shape {

@@ -5,9 +5,11 @@
 use std::fmt;
 use std::ops::Range;
 
+use std::cell::Cell;
+
 use neutrospline::{
-    AnyCurve, CurveDerivative, Derivative, DerivativeValue, EvalError, Evaluate, EvaluateSurface,
-    KnotVector, Surface,
+    AnyCurve, CurveDerivative, CurveGeometry, Derivative, DerivativeValue, EvalError, Evaluate,
+    EvaluateSurface, GeometryError, KnotVector, Surface, DEFAULT_ACCURACY,
 };
 pub use neutrospline_io::Shape;
 
@@ -32,7 +34,7 @@ impl fmt::Display for Param {
 }
 
 /// Which extra columns a table has.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Extras {
     /// First derivatives (curves: d/dt; surfaces: d/du and d/dv).
     pub derivative: bool,
@@ -40,7 +42,26 @@ pub struct Extras {
     pub normal: bool,
     /// The score, accuracy and certainty of the degrees (docs/model.md section 7).
     pub scores: bool,
+    /// Curves: the arc length from the start of the domain and the curvature.
+    pub geometry: bool,
+    /// The relative accuracy of the arc length (`geometry` only).
+    pub accuracy: f64,
 }
+
+impl Default for Extras {
+    fn default() -> Self {
+        Extras {
+            derivative: false,
+            normal: false,
+            scores: false,
+            geometry: false,
+            accuracy: DEFAULT_ACCURACY,
+        }
+    }
+}
+
+/// Column names of the geometry along a curve.
+const GEOMETRY: [&str; 2] = ["arc_length", "curvature"];
 
 /// Column names of the scores.
 const SCORES: [&str; 3] = ["score", "accuracy", "certainty"];
@@ -99,7 +120,8 @@ pub trait Table {
     /// Curves: `t`, then `x, y[, z], truth, indeterminacy, falsity`, and with `derivative`
     /// the same names prefixed by `d` (`dx, ..., dfalsity`). Surfaces: `u, v, x, y, z, truth,
     /// indeterminacy, falsity`; with `derivative` each channel's `d<name>_du` then
-    /// `d<name>_dv`; with `normal` `nx, ny, nz`.
+    /// `d<name>_dv`; with `normal` `nx, ny, nz`. Curves with `geometry` end with
+    /// `arc_length, curvature`.
     fn columns(&self, extras: Extras) -> Vec<String>;
 
     /// A sampler producing one row per parameter, in the order of [`Table::columns`].
@@ -176,6 +198,9 @@ impl Table for Shape {
         if extras.normal && self.is_surface() {
             columns.extend(["nx", "ny", "nz"].map(str::to_owned));
         }
+        if extras.geometry && !self.is_surface() {
+            columns.extend(GEOMETRY.map(str::to_owned));
+        }
         columns
     }
 
@@ -224,6 +249,11 @@ pub struct CurveSampler<'a, const D: usize> {
     curve: &'a AnyCurve<D>,
     derivative: Option<CurveDerivative<D>>,
     scores: bool,
+    /// The accuracy of the arc length, when the geometry columns are asked for.
+    geometry: Option<f64>,
+    /// The last parameter and its arc length: a row at a larger parameter adds the length
+    /// from there (each part to the relative accuracy, so their sum is too).
+    last_length: Cell<Option<(f64, f64)>>,
 }
 
 impl<'a, const D: usize> CurveSampler<'a, D> {
@@ -232,7 +262,22 @@ impl<'a, const D: usize> CurveSampler<'a, D> {
             curve,
             derivative: extras.derivative.then(|| curve.derivative()),
             scores: extras.scores,
+            geometry: extras.geometry.then_some(extras.accuracy),
+            last_length: Cell::new(None),
         }
+    }
+
+    /// The arc length from the start of the domain to `t`.
+    fn arc_length(&self, t: f64, accuracy: f64) -> Result<f64, GeometryError> {
+        let start = self.curve.domain().start;
+        let length = match self.last_length.get() {
+            Some((previous, length)) if previous <= t => {
+                length + self.curve.arc_length(previous..t, accuracy)?
+            }
+            _ => self.curve.arc_length(start..t, accuracy)?,
+        };
+        self.last_length.set(Some((t, length)));
+        Ok(length)
     }
 
     fn row(&self, t: f64) -> anyhow::Result<Row> {
@@ -250,7 +295,17 @@ impl<'a, const D: usize> CurveSampler<'a, D> {
                 &derivative.evaluate(t).map_err(explain("derivative"))?,
             );
         }
-        Ok(row.into_iter().map(Some).collect())
+        let mut row: Row = row.into_iter().map(Some).collect();
+        if let Some(accuracy) = self.geometry {
+            row.push(Some(self.arc_length(t, accuracy)?));
+            // No curvature where the curve stands still (|C'| = 0): an empty cell.
+            row.push(match self.curve.curvature(t) {
+                Ok(kappa) => Some(kappa),
+                Err(GeometryError::Stationary { .. }) => None,
+                Err(e) => return Err(e.into()),
+            });
+        }
+        Ok(row)
     }
 }
 
@@ -324,6 +379,7 @@ mod tests {
                 derivative: true,
                 normal: true,
                 scores: false,
+                ..Extras::default()
             })
             .join(","),
             "t,x,y,truth,indeterminacy,falsity,dx,dy,dtruth,dindeterminacy,dfalsity"
@@ -366,6 +422,7 @@ mod tests {
                 derivative: true,
                 normal: true,
                 scores: false,
+                ..Extras::default()
             })
             .join(","),
             "u,v,x,y,z,truth,indeterminacy,falsity,\
@@ -377,6 +434,7 @@ mod tests {
                 derivative: false,
                 normal: true,
                 scores: false,
+                ..Extras::default()
             })
             .row(Param::Uv(0.5, 0.5))
             .unwrap();

@@ -403,6 +403,104 @@ fn eval_usage_errors_exit_2() {
 }
 
 #[test]
+fn eval_geometry_columns() {
+    let dir = examples_dir();
+    let out = run_in(
+        &dir,
+        &["eval", "nurbs-circle.toml", "--geometry", "--samples", "5"],
+        None,
+    );
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let mut lines = out.stdout.lines();
+    assert_eq!(
+        lines.next(),
+        Some("t,x,y,truth,indeterminacy,falsity,arc_length,curvature")
+    );
+    // The unit circle: arc length 2 pi t, curvature 1.
+    for (k, line) in lines.enumerate() {
+        let cells: Vec<f64> = line.split(',').map(|c| c.parse().unwrap()).collect();
+        let t = k as f64 / 4.0;
+        assert_eq!(cells[0], t);
+        let want = 2.0 * std::f64::consts::PI * t;
+        assert!((cells[6] - want).abs() <= 1e-12 * want.max(1.0), "{line}");
+        assert!((cells[7] - 1.0).abs() <= 1e-12, "{line}");
+    }
+    // --at in any order, a looser accuracy, JSON.
+    let out = run_in(
+        &dir,
+        &[
+            "eval",
+            "example1.toml",
+            "--geometry",
+            "--accuracy",
+            "1e-6",
+            "--at",
+            "1,0.5",
+            "--format",
+            "json",
+        ],
+        None,
+    );
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let rows: serde_json::Value = serde_json::from_str(&out.stdout).unwrap();
+    let length = |i: usize| rows[i]["arc_length"].as_f64().unwrap();
+    // mpmath: 8.786730707839524 and 4.066732096133451.
+    assert!(
+        (length(0) - 8.786730707839524).abs() < 1e-5,
+        "{}",
+        out.stdout
+    );
+    assert!(
+        (length(1) - 4.066732096133451).abs() < 1e-5,
+        "{}",
+        out.stdout
+    );
+    // A cusp has no curvature: an empty cell.
+    let cusp = "x,y,truth,indeterminacy,falsity\n0,0,0.5,0.2,0.1\n1,1,0.5,0.2,0.1\n\
+                0,1,0.5,0.2,0.1\n1,0,0.5,0.2,0.1\n";
+    let out = run_in(
+        Path::new("."),
+        &["eval", "-", "--geometry", "--at", "0.5"],
+        Some(cusp.as_bytes()),
+    );
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let row = out.stdout.lines().nth(1).unwrap();
+    assert!(
+        row.starts_with("0.5,0.5,0.75,") && row.ends_with(','),
+        "{row}"
+    );
+}
+
+#[test]
+fn eval_geometry_usage_errors_exit_2() {
+    let dir = examples_dir();
+    for (args, message) in [
+        (
+            &["eval", "surface.toml", "--geometry"][..],
+            "error: --geometry applies only to curves (surface.toml holds a bezier-surface; \
+             arc length and curvature are measured along a curve)\n",
+        ),
+        (
+            &["eval", "example1.toml", "--geometry", "--accuracy", "0"],
+            "error: invalid value '0' for '--accuracy <E>': `0` is not a positive finite \
+             number (a relative accuracy such as 1e-12)\n\nFor more information, try '--help'.\n",
+        ),
+        (
+            &["eval", "example1.toml", "--geometry", "--accuracy", "-1e-9"],
+            "error: invalid value '-1e-9' for '--accuracy <E>': `-1e-9` is not a positive \
+             finite number (a relative accuracy such as 1e-12)\n\nFor more information, try '--help'.\n",
+        ),
+    ] {
+        let out = run_in(&dir, args, None);
+        assert_eq!((out.code, out.stderr.as_str()), (2, message), "{args:?}");
+        assert!(out.stdout.is_empty());
+    }
+    let out = run_in(&dir, &["eval", "example1.toml", "--accuracy", "1e-6"], None);
+    assert_eq!(out.code, 2, "{}", out.stderr);
+    assert!(out.stderr.contains("--geometry"), "{}", out.stderr);
+}
+
+#[test]
 fn eval_unsupported_extension_exits_2() {
     let dir = dir_with(&[("curve.txt", EXAMPLE1_CSV.as_bytes())]);
     let out = run_in(dir.path(), &["eval", "curve.txt"], None);
@@ -627,8 +725,42 @@ fn check_prints_summary() {
         out.stdout,
         "example1.toml: valid\nkind: bezier\nname: Example 1\ndegree: 3\ndimension: 2\n\
          control points: 4\nmembership: neutrosophic\ndomain: [0, 1]\ntruth: 0.2..0.8\n\
-         indeterminacy: 0.1..0.6\nfalsity: 0.1..0.4\n"
+         indeterminacy: 0.1..0.6\nfalsity: 0.1..0.4\n\
+         length: 8.78673070784\naverage truth: 0.486657146182\n\
+         average indeterminacy: 0.304139343158\naverage falsity: 0.209203510661\n\
+         average score: 0.657771430788\n"
     );
+    // The length and averages above, and the circle's below, are mpmath's rounded to 12
+    // digits (scripts/reference/make_arc_length_reference.py prints them).
+    let out = run_in(&examples_dir(), &["check", "nurbs-circle.toml"], None);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert!(
+        out.stdout.ends_with(
+            "length: 6.28318530718\naverage truth: 0.55\naverage indeterminacy: 0.3\n\
+             average falsity: 0.3\naverage score: 0.65\n"
+        ),
+        "{}",
+        out.stdout
+    );
+    // Above degree 30 check does not measure, and says so.
+    let points: String = (0..32)
+        .map(|k| format!("{k},{},0.5,0.1,0.1\n", k % 3))
+        .collect();
+    let csv = format!("x,y,truth,indeterminacy,falsity\n{points}");
+    let out = run_in(Path::new("."), &["check", "-"], Some(csv.as_bytes()));
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert!(
+        out.stdout.ends_with(
+            "length: not measured (check measures curves of at most 1000 control points and \
+             degree 30; `eval --geometry` gives the arc length)\n"
+        ),
+        "{}",
+        out.stdout
+    );
+    // Surfaces have no length line.
+    let out = run_in(&examples_dir(), &["check", "surface.toml"], None);
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert!(!out.stdout.contains("length"), "{}", out.stdout);
     let out = run_in(&examples_dir(), &["check", "helix3d.toml"], None);
     assert_eq!(out.code, 0, "{}", out.stderr);
     assert!(out.stdout.contains("dimension: 3\n"), "{}", out.stdout);

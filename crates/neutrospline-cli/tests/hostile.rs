@@ -623,6 +623,14 @@ fn hostile_huge_values_overflow_is_an_error() {
     assert_eq!(text.lines().nth(2), Some("0.5,0,0.5,0.5,0.1,0.1"));
     let out = run(dir.path(), &["check", "c.csv"]);
     assert_eq!(out.status.code(), Some(0));
+    // The length overflows: said in one line, the file is still valid.
+    let text = String::from_utf8_lossy(&out.stdout);
+    let last = text.lines().last().unwrap_or_default();
+    assert!(
+        last.starts_with("length: not measurable (the value at t = ")
+            && last.ends_with("overflows a 64-bit float (control values too large))"),
+        "{text}"
+    );
 
     let cases: &[(&[&str], &str)] = &[
         (

@@ -605,7 +605,9 @@ fn check_summaries() {
          control points: 9\nmembership: neutrosophic\n\
          knots: 0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1 (12 knots, given, clamped)\n\
          domain: [0, 1]\nweights: 0.7071067811865476..1\ntruth: 0.1..0.9\n\
-         indeterminacy: 0.1..0.5\nfalsity: 0..0.8\n"
+         indeterminacy: 0.1..0.5\nfalsity: 0..0.8\n\
+         length: 6.28318530718\naverage truth: 0.55\naverage indeterminacy: 0.3\n\
+         average falsity: 0.3\naverage score: 0.65\n"
     );
     assert_eq!(
         ok(&dir, &["check", "nurbs-surface.json"]),

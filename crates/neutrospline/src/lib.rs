@@ -55,6 +55,10 @@
 //!   [`Derivative`] (the derivative is again
 //!   evaluable and differentiable), [`Split`] (split and subsegment), [`Elevate`],
 //!   [`Bounded`] (tight and control bounding boxes).
+//! - Geometry along a curve, one body for every kind: [`CurveGeometry`] (arc length by
+//!   adaptive Gauss-Legendre quadrature on the pieces, curvature, unit tangent and normal, the
+//!   arc-length averages of the degrees and the score in [`ArcAverages`]), errors
+//!   [`GeometryError`].
 //! - Surfaces: [`Surface`] (Bézier, B-spline, NURBS), [`EvaluateSurface`], partial
 //!   derivatives, normals and iso-parameter curves.
 //! - Batch evaluation into flat arrays, SIMD with run-time dispatch and threads:
@@ -67,7 +71,7 @@
 //! - The paper's Example 1: [`example1`], [`EXAMPLE1_TABLE`], [`EXAMPLE1_NAMES`].
 //!
 //! Geometry operations are infallible or return a typed error at the input boundary
-//! ([`CurveError`], [`EvalError`], [`KnotError`], [`SurfaceError`], [`DegreeError`],
+//! ([`CurveError`], [`EvalError`], [`GeometryError`], [`KnotError`], [`SurfaceError`], [`DegreeError`],
 //! [`RelationError`]); nothing here reads or writes files (the `neutrospline-io` crate does).
 //!
 //! ## Feature flags
@@ -93,6 +97,7 @@ mod degrees;
 mod derivative;
 mod example;
 pub mod fit;
+mod geometry;
 mod knots;
 mod layout;
 mod point;
@@ -116,6 +121,9 @@ pub use degrees::{
 };
 pub use derivative::CurveDerivative;
 pub use example::{example1, EXAMPLE1_NAMES, EXAMPLE1_TABLE};
+pub use geometry::{
+    ArcAverages, CurveGeometry, GeometryError, DEFAULT_ACCURACY, FINEST_ACCURACY, MAX_SUBINTERVALS,
+};
 pub use knots::{KnotError, KnotVector};
 pub use point::{
     Affine, BoundingBox, ControlPoint, CurvePoint, DerivativeValue, Interval, NeutrosophicPoint,

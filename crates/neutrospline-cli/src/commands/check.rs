@@ -1,6 +1,7 @@
-//! `neutrospline check FILE`: validate a file and summarise the curve or surface.
+//! `neutrospline check FILE`: validate a file and summarise the curve or surface (for curves
+//! with the length and the arc-length averages of the degrees).
 
-use neutrospline::{EvaluateSurface, KnotVector};
+use neutrospline::{AnyCurve, CurveGeometry, EvaluateSurface, GeometryError, KnotVector};
 use neutrospline_io::{KnotRule, KnotSource};
 
 use crate::commands::options::ModelArgs;
@@ -15,7 +16,10 @@ use crate::shape::Shape;
 any), degree (curves) or degree_u and degree_v (surfaces), dimension, control points (with \
 rows x columns for surfaces), membership, knots (B-spline and NURBS; knots_u and knots_v for \
 surfaces), domain (domain_u and domain_v), weights (NURBS: min..max), and the truth, \
-indeterminacy and falsity ranges (min..max over the control points).\n\
+indeterminacy and falsity ranges (min..max over the control points); for curves then the \
+length and the arc-length averages (1/L) * integral of q |C'(t)| dt of truth, indeterminacy, \
+falsity and score (2 + T - I - F) / 3, to 12 significant digits (relative accuracy 1e-12; \
+curves of at most 1000 control points and degree 30).\n\
 Model options: a CSV file lists control points only, so these give its kind, degree, knots and \
 grid; with a TOML/JSON file an option fills in a key the file leaves out, and must agree with \
 the file where it declares the key."
@@ -57,6 +61,46 @@ fn knots_line(knots: &KnotVector, source: Option<KnotSource>) -> String {
     format!("{} ({} knots, {source})", shown.join(", "), values.len())
 }
 
+/// `value` rounded to 12 significant digits, in shortest form: the quadrature's accuracy.
+fn twelve_digits(value: f64) -> String {
+    let rounded: f64 = format!("{value:.11e}").parse().unwrap_or(value);
+    number(rounded)
+}
+
+/// `check` measures curves of at most this many control points (larger ones say so: the
+/// quadrature's cost grows with the number of pieces and the degree).
+const MEASURED_CONTROL_POINTS: usize = 1000;
+/// `check` measures curves of at most this polynomial degree.
+const MEASURED_DEGREE: usize = 30;
+
+/// The lines `length: L`, then `average truth: ...` and the others; for a curve of length
+/// zero, or one whose length cannot be measured (its speed overflows a 64-bit float), one
+/// line that says so instead of the averages (the file is still valid).
+fn geometry_lines<const D: usize>(curve: &AnyCurve<D>) -> Vec<String> {
+    use neutrospline::ControlPolygon;
+    if curve.len() > MEASURED_CONTROL_POINTS || curve.degree() > MEASURED_DEGREE {
+        return vec![format!(
+            "length: not measured (check measures curves of at most {MEASURED_CONTROL_POINTS} \
+             control points and degree {MEASURED_DEGREE}; `eval --geometry` gives the arc length)"
+        )];
+    }
+    match curve.arc_averages(neutrospline::DEFAULT_ACCURACY) {
+        Ok(a) => vec![
+            format!("length: {}", twelve_digits(a.length)),
+            format!("average truth: {}", twelve_digits(a.truth)),
+            format!("average indeterminacy: {}", twelve_digits(a.indeterminacy)),
+            format!("average falsity: {}", twelve_digits(a.falsity)),
+            format!("average score: {}", twelve_digits(a.score)),
+        ],
+        Err(GeometryError::ZeroLength) => vec![
+            "length: 0".to_owned(),
+            "averages: none (the curve has length zero: all its control positions coincide)"
+                .to_owned(),
+        ],
+        Err(e) => vec![format!("length: not measurable ({e})")],
+    }
+}
+
 fn domain_line(domain: std::ops::Range<f64>) -> String {
     format!("[{}, {}]", number(domain.start), number(domain.end))
 }
@@ -74,6 +118,11 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
     let sources = model.knot_sources().to_vec();
     let source = |i: usize| sources.get(i).copied();
     let shape = model.into_shape();
+    let geometry = match &shape {
+        Shape::Planar(c) => geometry_lines(c),
+        Shape::Spatial(c) => geometry_lines(c),
+        Shape::Surface(_) => Vec::new(),
+    };
     output::emit(None, |w| {
         writeln!(w, "{file}: valid")?;
         writeln!(w, "kind: {}", shape.kind())?;
@@ -131,6 +180,9 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
             .zip(shape.degree_ranges())
         {
             writeln!(w, "{label}: {}..{}", number(range.min), number(range.max))?;
+        }
+        for line in &geometry {
+            writeln!(w, "{line}")?;
         }
         Ok(())
     })

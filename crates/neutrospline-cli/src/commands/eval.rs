@@ -18,7 +18,8 @@ use crate::shape::{Extras, Param, Shape, Table};
 #[command(after_help = "Columns:\n  \
 curves    t, x, y[, z], truth, indeterminacy, falsity; with --scores score, accuracy,\n            \
 certainty; with --derivative the rates d/dt\n            \
-dx, dy[, dz], dtruth, dindeterminacy, dfalsity\n  \
+dx, dy[, dz], dtruth, dindeterminacy, dfalsity; with --geometry arc_length (from the\n            \
+start of the domain) and curvature (empty in CSV, null in JSON, where |C'(t)| = 0)\n  \
 surfaces  u, v, x, y, z, truth, indeterminacy, falsity; with --scores score, accuracy,\n            \
 certainty; with --derivative the partial\n            \
 derivatives dx_du, dy_du, dz_du, dtruth_du, dindeterminacy_du, dfalsity_du, then\n            \
@@ -71,6 +72,24 @@ pub struct EvalArgs {
     #[arg(long)]
     pub normal: bool,
 
+    /// Curves: add the arc length from the start of the domain (adaptive Gauss-Legendre
+    /// quadrature on the curve's pieces) and the curvature |C' x C''| / |C'|^3 as columns
+    /// arc_length, curvature
+    #[arg(long)]
+    pub geometry: bool,
+
+    /// The relative accuracy of the arc length with --geometry (a positive number; values
+    /// below 1.8e-15 act as 1.8e-15)
+    #[arg(
+        long,
+        value_name = "E",
+        default_value_t = neutrospline::DEFAULT_ACCURACY,
+        value_parser = parse_accuracy,
+        allow_hyphen_values = true,
+        requires = "geometry"
+    )]
+    pub accuracy: f64,
+
     /// Output format: csv (a header row, then one row per parameter) or json (an array of
     /// objects keyed by column name)
     #[arg(long, value_enum, value_name = "FORMAT", default_value_t = TableFormat::Csv)]
@@ -89,6 +108,17 @@ pub struct EvalArgs {
 /// The parameters given with `--at`, each with its text for messages.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AtList(pub Vec<(Param, String)>);
+
+/// Parses `--accuracy`: a positive finite number.
+fn parse_accuracy(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(e) if e > 0.0 && e.is_finite() => Ok(e),
+        Ok(_) => Err(format!(
+            "`{text}` is not a positive finite number (a relative accuracy such as 1e-12)"
+        )),
+        Err(_) => Err(format!("`{text}` is not a number")),
+    }
+}
 
 /// Parses a finite number of `--at`.
 fn parse_value(item: &str) -> Result<f64, String> {
@@ -174,7 +204,8 @@ fn row_count(args: &EvalArgs, shape: &Shape) -> u64 {
 /// Evaluates and writes the table.
 ///
 /// # Errors
-/// An invalid file, a usage error (`--at` outside the domain, `--normal` for a curve), an
+/// An invalid file, a usage error (`--at` outside the domain, `--normal` for a curve,
+/// `--geometry` for a surface), an
 /// evaluation error, or a write error.
 pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
     let shape = input::read_model(&args.file, &args.model)?.into_shape();
@@ -182,6 +213,14 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
     if args.normal && !shape.is_surface() {
         return Err(UsageError(format!(
             "--normal applies only to surfaces ({file} holds a {} curve)",
+            shape.kind()
+        ))
+        .into());
+    }
+    if args.geometry && shape.is_surface() {
+        return Err(UsageError(format!(
+            "--geometry applies only to curves ({file} holds a {}; arc length and curvature \
+             are measured along a curve)",
             shape.kind()
         ))
         .into());
@@ -197,6 +236,8 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         derivative: args.derivative,
         normal: args.normal,
         scores: args.scores,
+        geometry: args.geometry,
+        accuracy: args.accuracy,
     };
     let columns = shape.columns(extras);
     let sampler = shape.sampler(extras);
@@ -277,6 +318,23 @@ mod tests {
         assert_eq!(
             parse_at("0.5,0.5:0.5").unwrap_err(),
             "`0.5` and `0.5:0.5` mix single parameters and pairs (give T1,T2,... for a curve or U:V,U:V,... for a surface)"
+        );
+    }
+
+    #[test]
+    fn parse_accuracy_accepts_positive_numbers_only() {
+        assert_eq!(parse_accuracy("1e-9"), Ok(1e-9));
+        for text in ["0", "-1e-12", "inf", "NaN"] {
+            assert_eq!(
+                parse_accuracy(text).unwrap_err(),
+                format!(
+                    "`{text}` is not a positive finite number (a relative accuracy such as 1e-12)"
+                )
+            );
+        }
+        assert_eq!(
+            parse_accuracy("fine").unwrap_err(),
+            "`fine` is not a number"
         );
     }
 
