@@ -112,8 +112,30 @@ impl<R: BufRead> Records<R> {
     }
 }
 
+impl<R: BufRead> Records<R> {
+    /// The next record split into trimmed cells, with the line it starts on; errors located
+    /// in `file`.
+    pub(crate) fn next_cells(
+        &mut self,
+        file: &str,
+    ) -> Result<Option<(usize, ::csv::StringRecord)>, InputError> {
+        let at = |line: usize, message: String| InputError::new(file, Some(line), None, message);
+        let Some((line, bytes)) = self.next_record().map_err(|(line, m)| at(line, m))? else {
+            return Ok(None);
+        };
+        let text = std::str::from_utf8(bytes).map_err(|e| {
+            at(
+                line + line_of(bytes, e.valid_up_to()) - 1,
+                "invalid UTF-8 (the file must be UTF-8 encoded)".to_owned(),
+            )
+        })?;
+        let cells = cells(text).map_err(|m| at(line, m))?;
+        Ok(Some((line, cells)))
+    }
+}
+
 /// Splits one record (UTF-8, line ends removed) into trimmed cells.
-pub(crate) fn cells(record: &str) -> Result<::csv::StringRecord, String> {
+fn cells(record: &str) -> Result<::csv::StringRecord, String> {
     let mut reader = ::csv::ReaderBuilder::new()
         .has_headers(false)
         .trim(::csv::Trim::All)
@@ -146,23 +168,7 @@ pub(crate) fn parse_reader(
     };
     let mut records = Records::new(reader);
     // The next record as text and cells, with its line.
-    let mut next = || -> Result<Option<(usize, ::csv::StringRecord)>, InputError> {
-        let Some((line, bytes)) = records
-            .next_record()
-            .map_err(|(line, m)| error(Some(line), None, m))?
-        else {
-            return Ok(None);
-        };
-        let text = std::str::from_utf8(bytes).map_err(|e| {
-            error(
-                Some(line + line_of(bytes, e.valid_up_to()) - 1),
-                None,
-                "invalid UTF-8 (the file must be UTF-8 encoded)".to_owned(),
-            )
-        })?;
-        let cells = cells(text).map_err(|m| error(Some(line), None, m))?;
-        Ok(Some((line, cells)))
-    };
+    let mut next = || records.next_cells(file);
 
     let Some((header_line, header)) = next()? else {
         return Err(error(

@@ -33,8 +33,9 @@ use std::path::Path;
 use neutrospline::fit::{FitData, FitError};
 use neutrospline::{DegreeError, Degrees, Membership};
 
-use crate::csv::{cells, Records};
-use crate::parsed::{duplicate_rule, line_of, missing_degree, parse_number, Field};
+use crate::csv::Records;
+use crate::parsed::{duplicate_rule, missing_degree, parse_number, Field};
+use crate::read::open_file;
 use crate::{InputError, ReadError};
 
 /// The columns of a data table: a control-point field or the point's parameter.
@@ -224,16 +225,7 @@ fn weight_message(value: f64) -> String {
 /// # Errors
 /// The file cannot be read, or is invalid: see [`read_data`].
 pub fn load_data(path: impl AsRef<Path>, membership: Membership) -> Result<DataTable, ReadError> {
-    let path = path.as_ref();
-    let shown = path.display().to_string();
-    let cannot = |error: std::io::Error| ReadError::Io {
-        path: shown.clone(),
-        error,
-    };
-    let file = std::fs::File::open(path).map_err(cannot)?;
-    if file.metadata().map_err(cannot)?.is_dir() {
-        return Err(ReadError::IsDirectory { path: shown });
-    }
+    let (file, shown) = open_file(path.as_ref())?;
     read_data(&shown, std::io::BufReader::new(file), membership)
 }
 
@@ -252,23 +244,7 @@ pub fn read_data(
         InputError::new(file, line, field, message).into()
     };
     let mut records = Records::new(reader);
-    let mut next = || -> Result<Option<(usize, ::csv::StringRecord)>, ReadError> {
-        let Some((line, bytes)) = records
-            .next_record()
-            .map_err(|(line, m)| error(Some(line), None, m))?
-        else {
-            return Ok(None);
-        };
-        let text = std::str::from_utf8(bytes).map_err(|e| {
-            error(
-                Some(line + line_of(bytes, e.valid_up_to()) - 1),
-                None,
-                "invalid UTF-8 (the file must be UTF-8 encoded)".to_owned(),
-            )
-        })?;
-        let cells = cells(text).map_err(|m| error(Some(line), None, m))?;
-        Ok(Some((line, cells)))
-    };
+    let mut next = || records.next_cells(file);
     let Some((header_line, header)) = next()? else {
         return Err(error(
             None,

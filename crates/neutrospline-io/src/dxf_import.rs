@@ -15,7 +15,6 @@
 //! Without extended data, a spline whose control points all have `z = 0` is a plane curve, and
 //! its kind is `nurbs` when it has weights, `bspline` otherwise.
 
-use std::io::Read as _;
 use std::path::Path;
 
 use neutrospline::{
@@ -24,6 +23,7 @@ use neutrospline::{
 
 use crate::dxf_xdata::{self, ModelInfo, XTag};
 use crate::format::{too_large_drawing, too_many_points};
+use crate::read::read_whole;
 use crate::{InputError, Kind, Limits, Model, ReadError};
 
 /// One group: its code, its value and the line of its code (1-based).
@@ -540,24 +540,7 @@ pub fn load_dxf(
     defaults: Degrees,
     limits: &Limits,
 ) -> Result<Vec<Model>, ReadError> {
-    let path = path.as_ref();
-    let shown = path.display().to_string();
-    let cannot = |error: std::io::Error| ReadError::Io {
-        path: shown.clone(),
-        error,
-    };
-    let file = std::fs::File::open(path).map_err(cannot)?;
-    if file.metadata().map_err(cannot)?.is_dir() {
-        return Err(ReadError::IsDirectory { path: shown });
-    }
-    let limit = limits.max_file_size;
-    let mut bytes = Vec::new();
-    file.take(limit.saturating_add(1))
-        .read_to_end(&mut bytes)
-        .map_err(cannot)?;
-    if bytes.len() as u64 > limit {
-        return Err(InputError::new(&shown, None, None, too_large_drawing(limit)).into());
-    }
+    let (shown, bytes) = read_whole(path.as_ref(), limits.max_file_size, too_large_drawing)?;
     parse_dxf(&shown, &bytes, defaults, limits)
 }
 

@@ -98,6 +98,42 @@ pub fn load(path: impl AsRef<Path>, options: &ReadOptions) -> Result<Model, Read
     parse(&shown, format, &bytes, options)
 }
 
+/// Opens `path` for reading, refusing a directory: the file and the path as messages show it.
+pub(crate) fn open_file(path: &Path) -> Result<(std::fs::File, String), ReadError> {
+    let shown = path.display().to_string();
+    let cannot = |error: std::io::Error| ReadError::Io {
+        path: shown.clone(),
+        error,
+    };
+    let file = std::fs::File::open(path).map_err(cannot)?;
+    if file.metadata().map_err(cannot)?.is_dir() {
+        return Err(ReadError::IsDirectory { path: shown });
+    }
+    Ok((file, shown))
+}
+
+/// Reads the file at `path` whole, at most `limit` bytes (one more byte read at most: a file
+/// may grow while it is read); a larger file is refused with `too_large(limit)`. Returns the
+/// path as messages show it and the bytes.
+pub(crate) fn read_whole(
+    path: &Path,
+    limit: u64,
+    too_large: fn(u64) -> String,
+) -> Result<(String, Vec<u8>), ReadError> {
+    let (file, shown) = open_file(path)?;
+    let mut bytes = Vec::new();
+    file.take(limit.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(|error| ReadError::Io {
+            path: shown.clone(),
+            error,
+        })?;
+    if bytes.len() as u64 > limit {
+        return Err(InputError::new(&shown, None, None, too_large(limit)).into());
+    }
+    Ok((shown, bytes))
+}
+
 /// Refuses a model with more control points than the limit, then builds the shape.
 fn build(parsed: Parsed, options: &ReadOptions) -> Result<Model, ReadError> {
     let limit = options.limits.max_control_points;

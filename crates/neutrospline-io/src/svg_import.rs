@@ -25,7 +25,6 @@
 //! Elements inside `<defs>`, `<clipPath>`, `<mask>`, `<marker>`, `<pattern>` and `<symbol>`
 //! are not drawn where they stand and are not read.
 
-use std::io::Read as _;
 use std::path::Path;
 
 use neutrospline::{
@@ -33,6 +32,7 @@ use neutrospline::{
 };
 
 use crate::format::{too_large_drawing, too_many_points};
+use crate::read::read_whole;
 use crate::{InputError, Limits, Model, ReadError};
 
 /// An affine map of the plane, SVG's `matrix(a b c d e f)`: (x, y) -> (a x + c y + e,
@@ -853,24 +853,7 @@ pub fn load_svg(
     defaults: Degrees,
     limits: &Limits,
 ) -> Result<Vec<Model>, ReadError> {
-    let path = path.as_ref();
-    let shown = path.display().to_string();
-    let cannot = |error: std::io::Error| ReadError::Io {
-        path: shown.clone(),
-        error,
-    };
-    let file = std::fs::File::open(path).map_err(cannot)?;
-    if file.metadata().map_err(cannot)?.is_dir() {
-        return Err(ReadError::IsDirectory { path: shown });
-    }
-    let limit = limits.max_file_size;
-    let mut bytes = Vec::new();
-    file.take(limit.saturating_add(1))
-        .read_to_end(&mut bytes)
-        .map_err(cannot)?;
-    if bytes.len() as u64 > limit {
-        return Err(InputError::new(&shown, None, None, too_large_drawing(limit)).into());
-    }
+    let (shown, bytes) = read_whole(path.as_ref(), limits.max_file_size, too_large_drawing)?;
     parse_svg(&shown, &bytes, defaults, limits)
 }
 
