@@ -411,6 +411,42 @@ impl PlotModel {
         })
     }
 
+    /// The figure model of a model file's shape ([`neutrospline_io::Model`]), with its control
+    /// points' names when the file gives any (`P{i}` for the unnamed ones): what
+    /// `neutrospline plot`, the Python package and the studio draw.
+    ///
+    /// ```
+    /// use neutrospline_io::{parse, Format, ReadOptions};
+    /// use neutrospline_plot::PlotModel;
+    /// let text = "kind = \"bezier\"\n[[control_points]]\nname = \"A\"\nx = 0\ny = 0\ntruth = 1\n\
+    ///             indeterminacy = 0\nfalsity = 0\n[[control_points]]\nx = 1\ny = 1\ntruth = 0\n\
+    ///             indeterminacy = 0\nfalsity = 1\n";
+    /// let model = parse("line.toml", Format::Toml, text.as_bytes(), &ReadOptions::default())?;
+    /// let figure = PlotModel::from_model(&model)?;
+    /// assert_eq!(figure.names(), ["A", "P1"]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`PlotModel::from_any`] and [`PlotModel::from_surface`].
+    pub fn from_model(model: &neutrospline_io::Model) -> Result<PlotModel, PlotError> {
+        use neutrospline_io::Shape;
+        let figure = match model.shape() {
+            Shape::Planar(c) => PlotModel::from_any(c)?,
+            Shape::Spatial(c) => PlotModel::from_any(c)?,
+            Shape::Surface(s) => PlotModel::from_surface(s)?,
+        };
+        let names = model.point_names();
+        if names.iter().all(Option::is_none) {
+            return Ok(figure);
+        }
+        let names = names
+            .iter()
+            .enumerate()
+            .map(|(i, n)| n.clone().unwrap_or_else(|| format!("P{i}")));
+        figure.with_names(names)
+    }
+
     /// Names the control points, in order (one name each, shown next to each point).
     ///
     /// # Errors

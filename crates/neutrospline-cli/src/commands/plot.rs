@@ -8,7 +8,6 @@ use crate::commands::fit::{read_data, ColorByArg};
 use crate::commands::options::ModelArgs;
 use crate::input::{self, UsageError};
 use crate::output;
-use crate::shape::Shape;
 
 /// The figure formats, chosen by the output file's extension.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -117,26 +116,6 @@ pub struct PlotArgs {
     pub model: ModelArgs,
 }
 
-/// The plot model of a shape, with the control points' names when the file gives any.
-///
-/// # Errors
-/// A shape the plot crate cannot draw (for example non-finite samples).
-pub fn plot_model(shape: &Shape, names: &[Option<String>]) -> anyhow::Result<PlotModel> {
-    let model = match shape {
-        Shape::Planar(c) => PlotModel::from_any(c)?,
-        Shape::Spatial(c) => PlotModel::from_any(c)?,
-        Shape::Surface(s) => PlotModel::from_surface(s)?,
-    };
-    if names.iter().all(Option::is_none) {
-        return Ok(model);
-    }
-    let names = names
-        .iter()
-        .enumerate()
-        .map(|(i, n)| n.clone().unwrap_or_else(|| format!("P{i}")));
-    Ok(model.with_names(names)?)
-}
-
 /// Renders `model` as `format` and writes it atomically to `path`.
 ///
 /// # Errors
@@ -174,7 +153,7 @@ pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
     options.validate().map_err(|e| UsageError(e.to_string()))?;
     let model = input::read_model(&args.file, &args.model)?;
     let membership = model.membership();
-    let names = model.point_names().to_vec();
+    let mut plot = PlotModel::from_model(&model)?;
     let description = model.description().map(str::to_owned);
     let shape = model.into_shape();
     if shape.is_surface() && args.samples.is_some() {
@@ -193,7 +172,6 @@ pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
     } else {
         View::All
     });
-    let mut plot = plot_model(&shape, &names)?;
     match (&args.data, view) {
         (Some(file), View::Data) => {
             let table = read_data(file, membership)?;

@@ -1,0 +1,49 @@
+"""neutrospline: neutrosophic Bézier, B-spline and NURBS curves and surfaces.
+
+Control points carry three degrees, truth, indeterminacy and falsity, blended along the curve
+as extra coordinates. Arrays go in and out as numpy float64 arrays; evaluation runs in the
+same batch engine as the ``neutrospline`` command line, with the GIL released; models are
+saved and loaded in the command line's TOML, JSON and CSV formats; figures are the command
+line's, as SVG text, files, or inline in Jupyter.
+
+>>> import neutrospline as ns
+>>> curve = ns.example1()
+>>> curve(0.5).round(12).tolist()  # x, y, truth, indeterminacy, falsity
+[4.625, 4.0, 0.625, 0.2, 0.175]
+"""
+
+from ._neutrospline import (
+    BSpline,
+    Bezier,
+    Curve,
+    ModelError,
+    Nurbs,
+    Surface,
+    accuracy,
+    certainty,
+    check_relation,
+    example1,
+    fit,
+    instruction_set,
+    largest_relation,
+    load,
+    score,
+)
+
+__all__ = [
+    "BSpline",
+    "Bezier",
+    "Curve",
+    "ModelError",
+    "Nurbs",
+    "Surface",
+    "accuracy",
+    "certainty",
+    "check_relation",
+    "example1",
+    "fit",
+    "instruction_set",
+    "largest_relation",
+    "load",
+    "score",
+]

@@ -1,0 +1,267 @@
+"""Type stubs of the extension module ``neutrospline._neutrospline``."""
+
+import os
+from typing import Any, Literal, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+ArrayLike = npt.ArrayLike
+FloatArray = npt.NDArray[np.float64]
+PathLike = Union[str, "os.PathLike[str]"]
+Membership = Literal["neutrosophic", "intuitionistic", "fuzzy"]
+ViewName = Literal[
+    "all", "controls", "truth", "indeterminacy", "falsity", "plane", "score", "data"
+]
+Triple = Tuple[float, float, float]
+
+instruction_set: str
+
+class ModelError(ValueError): ...
+
+class Curve:
+    def evaluate(self, t: ArrayLike, out: Optional[FloatArray] = None) -> FloatArray: ...
+    def __call__(self, t: ArrayLike, out: Optional[FloatArray] = None) -> FloatArray: ...
+    def sample(self, count: int, out: Optional[FloatArray] = None) -> FloatArray: ...
+    def derivative(self, order: int = 1) -> "Curve": ...
+    def split(self, t: float) -> Tuple["Curve", "Curve"]: ...
+    def elevate(self, times: int = 1) -> "Curve": ...
+    def insert_knot(self, u: float, times: int = 1) -> "Curve": ...
+    def bounding_box(self) -> FloatArray: ...
+    def length(self, accuracy: float = 1e-12) -> float: ...
+    def arc_length(self, t0: float, t1: float, accuracy: float = 1e-12) -> float: ...
+    def curvature(self, t: ArrayLike) -> Union[float, FloatArray]: ...
+    @property
+    def domain(self) -> Tuple[float, float]: ...
+    @property
+    def kind(self) -> Literal["bezier", "bspline", "nurbs"]: ...
+    @property
+    def degree(self) -> int: ...
+    @property
+    def dimension(self) -> int: ...
+    @property
+    def order(self) -> int: ...
+    @property
+    def membership(self) -> Membership: ...
+    @property
+    def name(self) -> Optional[str]: ...
+    @property
+    def description(self) -> Optional[str]: ...
+    @property
+    def point_names(self) -> list[Optional[str]]: ...
+    @property
+    def positions(self) -> FloatArray: ...
+    @property
+    def degrees(self) -> FloatArray: ...
+    @property
+    def weights(self) -> Optional[FloatArray]: ...
+    @property
+    def knots(self) -> Optional[FloatArray]: ...
+    def save(self, path: PathLike) -> None: ...
+    def to_svg(
+        self,
+        view: ViewName = "all",
+        width: Optional[int] = None,
+        height: Optional[int] = None,
+        title: Optional[str] = None,
+        caption: Optional[str] = None,
+    ) -> str: ...
+    def save_figure(
+        self,
+        path: PathLike,
+        view: ViewName = "all",
+        width: Optional[int] = None,
+        height: Optional[int] = None,
+        title: Optional[str] = None,
+        caption: Optional[str] = None,
+    ) -> None: ...
+    def _repr_svg_(self) -> str: ...
+    def __len__(self) -> int: ...
+    def __eq__(self, value: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, int]]: ...
+
+class Bezier(Curve):
+    def __init__(
+        self,
+        positions: ArrayLike,
+        degrees: ArrayLike,
+        membership: Membership = "neutrosophic",
+        *,
+        name: Optional[str] = None,
+        description: Optional[str] = None,
+        point_names: Optional[Sequence[Optional[str]]] = None,
+    ) -> None: ...
+    @staticmethod
+    def from_nodes(
+        nodes: ArrayLike, degrees: ArrayLike, membership: Membership = "neutrosophic"
+    ) -> "Bezier": ...
+
+class BSpline(Curve):
+    def __init__(
+        self,
+        positions: ArrayLike,
+        degrees: ArrayLike,
+        degree: int = 3,
+        knots: Optional[ArrayLike] = None,
+        membership: Membership = "neutrosophic",
+        *,
+        name: Optional[str] = None,
+        description: Optional[str] = None,
+        point_names: Optional[Sequence[Optional[str]]] = None,
+    ) -> None: ...
+
+class Nurbs(Curve):
+    def __init__(
+        self,
+        positions: ArrayLike,
+        degrees: ArrayLike,
+        weights: ArrayLike,
+        degree: int = 3,
+        knots: Optional[ArrayLike] = None,
+        membership: Membership = "neutrosophic",
+        *,
+        name: Optional[str] = None,
+        description: Optional[str] = None,
+        point_names: Optional[Sequence[Optional[str]]] = None,
+    ) -> None: ...
+
+class Surface:
+    @staticmethod
+    def bezier(
+        positions: ArrayLike,
+        degrees: ArrayLike,
+        membership: Membership = "neutrosophic",
+        *,
+        name: Optional[str] = None,
+        description: Optional[str] = None,
+    ) -> "Surface": ...
+    @staticmethod
+    def bspline(
+        positions: ArrayLike,
+        degrees: ArrayLike,
+        degree: Union[int, Tuple[int, int], None] = None,
+        knots_u: Optional[ArrayLike] = None,
+        knots_v: Optional[ArrayLike] = None,
+        membership: Membership = "neutrosophic",
+        *,
+        name: Optional[str] = None,
+        description: Optional[str] = None,
+    ) -> "Surface": ...
+    @staticmethod
+    def nurbs(
+        positions: ArrayLike,
+        degrees: ArrayLike,
+        weights: ArrayLike,
+        degree: Union[int, Tuple[int, int], None] = None,
+        knots_u: Optional[ArrayLike] = None,
+        knots_v: Optional[ArrayLike] = None,
+        membership: Membership = "neutrosophic",
+        *,
+        name: Optional[str] = None,
+        description: Optional[str] = None,
+    ) -> "Surface": ...
+    def evaluate(
+        self, u: ArrayLike, v: ArrayLike, out: Optional[FloatArray] = None
+    ) -> FloatArray: ...
+    def __call__(
+        self, u: ArrayLike, v: ArrayLike, out: Optional[FloatArray] = None
+    ) -> FloatArray: ...
+    def normal(self, u: ArrayLike, v: ArrayLike) -> FloatArray: ...
+    @property
+    def domain(self) -> Tuple[Tuple[float, float], Tuple[float, float]]: ...
+    @property
+    def kind(self) -> Literal["bezier", "bspline", "nurbs"]: ...
+    @property
+    def degree(self) -> Tuple[int, int]: ...
+    @property
+    def dimension(self) -> int: ...
+    @property
+    def membership(self) -> Membership: ...
+    @property
+    def name(self) -> Optional[str]: ...
+    @property
+    def description(self) -> Optional[str]: ...
+    @property
+    def positions(self) -> FloatArray: ...
+    @property
+    def degrees(self) -> FloatArray: ...
+    @property
+    def weights(self) -> Optional[FloatArray]: ...
+    @property
+    def knots_u(self) -> FloatArray: ...
+    @property
+    def knots_v(self) -> FloatArray: ...
+    def bounding_box(self) -> FloatArray: ...
+    def save(self, path: PathLike) -> None: ...
+    def to_svg(
+        self,
+        view: ViewName = "all",
+        width: Optional[int] = None,
+        height: Optional[int] = None,
+        title: Optional[str] = None,
+        caption: Optional[str] = None,
+    ) -> str: ...
+    def save_figure(
+        self,
+        path: PathLike,
+        view: ViewName = "all",
+        width: Optional[int] = None,
+        height: Optional[int] = None,
+        title: Optional[str] = None,
+        caption: Optional[str] = None,
+    ) -> None: ...
+    def _repr_svg_(self) -> str: ...
+    def __eq__(self, value: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, int]]: ...
+
+Model = Union[Bezier, BSpline, Nurbs, Surface]
+
+KnotOption = Union[str, ArrayLike]
+
+def load(
+    path: PathLike,
+    *,
+    kind: Optional[str] = None,
+    degree: Optional[int] = None,
+    knots: Optional[KnotOption] = None,
+    membership: Optional[Membership] = None,
+    rows: Optional[int] = None,
+    cols: Optional[int] = None,
+    degree_u: Optional[int] = None,
+    degree_v: Optional[int] = None,
+    knots_u: Optional[KnotOption] = None,
+    knots_v: Optional[KnotOption] = None,
+) -> Model: ...
+def example1() -> Bezier: ...
+def score(degrees: ArrayLike) -> Union[float, FloatArray]: ...
+def accuracy(degrees: ArrayLike) -> Union[float, FloatArray]: ...
+def certainty(degrees: ArrayLike) -> Union[float, FloatArray]: ...
+def largest_relation(
+    m: Sequence[Tuple[float, Triple]],
+    n: Sequence[Tuple[float, Triple]],
+    pairs: Optional[Sequence[Tuple[float, float]]] = None,
+) -> Tuple[FloatArray, FloatArray]: ...
+def check_relation(
+    positions: ArrayLike,
+    degrees: ArrayLike,
+    m: Sequence[Tuple[float, Triple]],
+    n: Sequence[Tuple[float, Triple]],
+) -> None: ...
+def fit(
+    data: Union[ArrayLike, PathLike],
+    degrees: Optional[ArrayLike] = None,
+    *,
+    parameters: Optional[ArrayLike] = None,
+    weights: Union[None, Literal["score", "column"], ArrayLike] = None,
+    degree: int = 3,
+    control_points: Optional[int] = None,
+    tolerance: Optional[float] = None,
+    interpolate: bool = False,
+    closed: bool = False,
+    parametrization: Literal["uniform", "chord-length", "centripetal"] = "chord-length",
+    smoothing: float = 0.0,
+    kind: Literal["bspline", "bezier"] = "bspline",
+    membership: Membership = "neutrosophic",
+    name: Optional[str] = None,
+) -> Tuple[Union[Bezier, BSpline], dict[str, Any]]: ...
+def _restore(text: str, order: int) -> Model: ...

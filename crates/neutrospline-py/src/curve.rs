@@ -1,0 +1,1079 @@
+//! The curve classes: one base `Curve` holding the state and every method, and the kinds
+//! `Bezier`, `BSpline` and `Nurbs` that add only their constructors. A curve is immutable;
+//! operations return new curves (of the class the result is: a Bézier curve with a knot
+//! inserted is a B-spline).
+
+use std::path::PathBuf;
+
+use neutrospline::{
+    AnyCurve, BSpline as BSplineCurve, BatchOptions, BatchParams, Bezier as BezierCurve, Bounded,
+    BoundingBox, ControlPoint, ControlPolygon, CurveBatch, CurveDerivative, CurveError,
+    CurveGeometry, CurveKind, Degrees, Derivative, Elevate, EvalError, Evaluate, KnotVector,
+    Membership, Nurbs as NurbsCurve, Split,
+};
+use neutrospline_io::{Model, Shape};
+use pyo3::prelude::*;
+use pyo3::types::PyTuple;
+use pyo3::PyClassInitializer;
+
+use crate::arrays::{readonly_array, vector, Output, Params, Writer};
+use crate::errors::{invalid, invalid_at};
+use crate::model::{self, FigureRequest, Meta, PointArrays};
+
+/// Parameters evaluated per block when the output is not Fortran-ordered: the block is
+/// evaluated column by column into cache-resident scratch, then written row by row.
+const BLOCK: usize = 1 << 14;
+
+/// A curve of either dimension.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Planarity<C2, C3> {
+    Planar(C2),
+    Spatial(C3),
+}
+
+/// Applies `$body` to the curve of either dimension bound as `$c`.
+macro_rules! on_dim {
+    ($value:expr, $c:ident => $body:expr) => {
+        match $value {
+            Planarity::Planar($c) => $body,
+            Planarity::Spatial($c) => $body,
+        }
+    };
+}
+
+/// A model curve with its prepared batch evaluator.
+#[derive(Clone, Debug)]
+pub struct Prepared<const D: usize> {
+    pub curve: AnyCurve<D>,
+    batch: CurveBatch<D>,
+}
+
+impl<const D: usize> Prepared<D> {
+    fn new(curve: AnyCurve<D>) -> Self {
+        let batch = CurveBatch::new(&curve);
+        Prepared { curve, batch }
+    }
+}
+
+/// What a Python curve is.
+#[derive(Clone, Debug)]
+pub enum State {
+    /// A curve of a model: control points with degrees, saved and drawn as a model.
+    Model {
+        model: Model,
+        curve: Planarity<Prepared<2>, Prepared<3>>,
+    },
+    /// The derivative of order `order` of the curve of `base`: evaluable and differentiable;
+    /// its values are rates of change, not degrees.
+    Derivative {
+        base: Model,
+        order: usize,
+        derivative: Planarity<CurveDerivative<2>, CurveDerivative<3>>,
+    },
+}
+
+impl State {
+    /// The state of a curve model (`None` for a surface).
+    pub fn of_model(model: Model) -> Option<State> {
+        let curve = match model.shape() {
+            Shape::Planar(c) => Planarity::Planar(Prepared::new(c.clone())),
+            Shape::Spatial(c) => Planarity::Spatial(Prepared::new(c.clone())),
+            Shape::Surface(_) => return None,
+        };
+        Some(State::Model { model, curve })
+    }
+
+    /// The derivative of order `order` (>= 1) of the curve of `base`.
+    fn derivative_of(base: Model, order: usize) -> Option<State> {
+        fn nth<const D: usize>(curve: &AnyCurve<D>, order: usize) -> CurveDerivative<D> {
+            let mut derivative = curve.derivative();
+            for _ in 1..order {
+                derivative = derivative.derivative();
+            }
+            derivative
+        }
+        let derivative = match base.shape() {
+            Shape::Planar(c) => Planarity::Planar(nth(c, order)),
+            Shape::Spatial(c) => Planarity::Spatial(nth(c, order)),
+            Shape::Surface(_) => return None,
+        };
+        Some(State::Derivative {
+            base,
+            order,
+            derivative,
+        })
+    }
+
+    fn base(&self) -> &Model {
+        match self {
+            State::Model { model, .. } => model,
+            State::Derivative { base, .. } => base,
+        }
+    }
+
+    fn kind(&self) -> CurveKind {
+        match self.base().shape() {
+            Shape::Planar(c) => c.kind(),
+            Shape::Spatial(c) => c.kind(),
+            Shape::Surface(_) => CurveKind::Bezier,
+        }
+    }
+
+    fn dimension(&self) -> usize {
+        self.base().shape().dimension()
+    }
+
+    fn order(&self) -> usize {
+        match self {
+            State::Model { .. } => 0,
+            State::Derivative { order, .. } => *order,
+        }
+    }
+}
+
+/// A neutrosophic curve: the base class of `Bezier`, `BSpline` and `Nurbs`.
+///
+/// Evaluating gives one row per parameter with the columns `x, y[, z], truth,
+/// indeterminacy, falsity` (the command line's `eval` columns).
+#[pyclass(subclass, frozen, module = "neutrospline")]
+pub struct Curve {
+    pub(crate) state: State,
+}
+
+/// A Bézier curve: `C(t) = sum_i B_i^n(t) P_i` over t in [0, 1], the degrees blended as extra
+/// coordinates.
+///
+/// >>> import neutrospline as ns
+/// >>> curve = ns.Bezier([[1, 3], [3, 6], [6, 5], [4, 1]],
+/// ...                   [[0.3, 0.6, 0.1], [0.8, 0.1, 0.2], [0.5, 0.4, 0.3], [0.3, 0.4, 0.6]])
+/// >>> curve(0.5).round(12).tolist()
+/// [4.0, 4.625, 0.5625, 0.3125, 0.275]
+#[pyclass(extends = Curve, frozen, module = "neutrospline")]
+pub struct Bezier;
+
+/// A B-spline curve: `C(t) = sum_i N_{i,p}(t) P_i` on a knot vector (clamped uniform unless
+/// `knots` are given).
+///
+/// >>> import neutrospline as ns
+/// >>> curve = ns.BSpline([[0, 0], [1, 2], [3, 2], [4, 0]], [[0.2, 0.2, 0.2]] * 4, degree=2)
+/// >>> curve.knots.tolist()
+/// [0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0]
+/// >>> curve(0.5).tolist()
+/// [2.0, 2.0, 0.2, 0.2, 0.2]
+#[pyclass(extends = Curve, frozen, module = "neutrospline")]
+pub struct BSpline;
+
+/// A NURBS curve: `C(t) = sum_i N_{i,p}(t) w_i P_i / sum_i N_{i,p}(t) w_i`, positive weights.
+///
+/// >>> import neutrospline as ns
+/// >>> quarter = ns.Nurbs([[1, 0], [1, 1], [0, 1]], [[1, 0, 0]] * 3, [1, 2 ** -0.5, 1], degree=2)
+/// >>> x, y = quarter(0.5)[:2]
+/// >>> round(float(x * x + y * y), 15)
+/// 1.0
+#[pyclass(extends = Curve, frozen, module = "neutrospline")]
+pub struct Nurbs;
+
+/// The Python object of the right class for `state`.
+pub fn into_py(py: Python<'_>, state: State) -> PyResult<Py<PyAny>> {
+    let kind = state.kind();
+    let base = PyClassInitializer::from(Curve { state });
+    Ok(match kind {
+        CurveKind::Bezier => Py::new(py, base.add_subclass(Bezier))?.into_any(),
+        CurveKind::BSpline => Py::new(py, base.add_subclass(BSpline))?.into_any(),
+        CurveKind::Nurbs => Py::new(py, base.add_subclass(Nurbs))?.into_any(),
+    })
+}
+
+/// The Python object of a curve model.
+pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
+    match State::of_model(model) {
+        Some(state) => into_py(py, state),
+        None => Err(invalid("a surface is not a curve")),
+    }
+}
+
+/// What the constructors read: the arrays, the kind's settings and the names.
+struct Construction<'a, 'py> {
+    positions: &'a Bound<'py, PyAny>,
+    degrees: &'a Bound<'py, PyAny>,
+    weights: Option<&'a Bound<'py, PyAny>>,
+    degree: Option<usize>,
+    knots: Option<&'a Bound<'py, PyAny>>,
+    membership: &'a str,
+    meta: Meta,
+}
+
+impl Construction<'_, '_> {
+    /// Builds the curve of `kind` and its model.
+    fn build(self, kind: CurveKind) -> PyResult<Curve> {
+        let membership = model::membership(self.membership)?;
+        let arrays = PointArrays::read(self.positions, self.degrees, membership, false)?;
+        let weights = self
+            .weights
+            .map(|w| crate::arrays::float_array(w, "weights"))
+            .transpose()?
+            .map(|w| w.as_array().iter().copied().collect::<Vec<f64>>());
+        let knots = self
+            .knots
+            .map(|k| crate::arrays::float_array(k, "knots"))
+            .transpose()?
+            .map(|k| k.as_array().iter().copied().collect::<Vec<f64>>());
+        let settings = Settings {
+            kind,
+            weights,
+            degree: self.degree,
+            knots,
+        };
+        let shape: Shape = if arrays.dimension == 2 {
+            settings.curve(arrays.points::<2>())?.into()
+        } else {
+            settings.curve(arrays.points::<3>())?.into()
+        };
+        let model = model::model(shape, membership, self.meta)?;
+        Ok(Curve {
+            state: State::of_model(model).expect("a curve shape"),
+        })
+    }
+}
+
+/// The kind's settings of a constructor.
+struct Settings {
+    kind: CurveKind,
+    weights: Option<Vec<f64>>,
+    degree: Option<usize>,
+    knots: Option<Vec<f64>>,
+}
+
+impl Settings {
+    fn curve<const D: usize>(&self, points: Vec<ControlPoint<D>>) -> PyResult<AnyCurve<D>> {
+        let count = points.len();
+        let knots = || -> PyResult<KnotVector> {
+            let degree = self.degree.unwrap_or(3);
+            match &self.knots {
+                Some(knots) => KnotVector::new(knots.clone(), degree, count),
+                None => KnotVector::clamped_uniform(degree, count),
+            }
+            .map_err(|e| invalid_at("knots", e))
+        };
+        let curve: Result<AnyCurve<D>, CurveError> = match self.kind {
+            CurveKind::Bezier => BezierCurve::new(points).map(Into::into),
+            CurveKind::BSpline => BSplineCurve::new(points, knots()?).map(Into::into),
+            CurveKind::Nurbs => {
+                let weights = self.weights.clone().unwrap_or_default();
+                NurbsCurve::new(points, weights, knots()?).map(Into::into)
+            }
+        };
+        curve.map_err(invalid)
+    }
+}
+
+#[pymethods]
+impl Bezier {
+    /// A Bézier curve from `positions` (shape (n, 2) or (n, 3)) and `degrees` (shape (n, 3):
+    /// truth, indeterminacy, falsity; (n, 2) truth, falsity under the intuitionistic rule;
+    /// (n,) truth under the fuzzy rule).
+    #[new]
+    #[pyo3(signature = (positions, degrees, membership = "neutrosophic", *, name = None, description = None, point_names = None))]
+    fn new(
+        positions: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        membership: &str,
+        name: Option<String>,
+        description: Option<String>,
+        point_names: Option<Vec<Option<String>>>,
+    ) -> PyResult<PyClassInitializer<Self>> {
+        let curve = Construction {
+            positions,
+            degrees,
+            weights: None,
+            degree: None,
+            knots: None,
+            membership,
+            meta: Meta {
+                name,
+                description,
+                point_names,
+            },
+        }
+        .build(CurveKind::Bezier)?;
+        Ok(PyClassInitializer::from(curve).add_subclass(Bezier))
+    }
+
+    /// A Bézier curve from the `bezier` package's node layout: `nodes` of shape
+    /// (dimension, n), one column per control point; `degrees` as for `Bezier(...)`.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> curve = ns.Bezier.from_nodes([[0.0, 0.5, 1.0], [0.0, 1.0, 0.0]], [[1, 0, 0]] * 3)
+    /// >>> curve(0.5)[:2].tolist()
+    /// [0.5, 0.5]
+    #[staticmethod]
+    #[pyo3(signature = (nodes, degrees, membership = "neutrosophic"))]
+    fn from_nodes(
+        py: Python<'_>,
+        nodes: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        membership: &str,
+    ) -> PyResult<Py<PyAny>> {
+        let nodes = crate::arrays::float_array(nodes, "nodes")?;
+        let transposed = nodes.as_array().reversed_axes().to_owned();
+        let positions = numpy::PyArray::from_owned_array(py, transposed);
+        let curve = Construction {
+            positions: positions.as_any(),
+            degrees,
+            weights: None,
+            degree: None,
+            knots: None,
+            membership,
+            meta: Meta::default(),
+        }
+        .build(CurveKind::Bezier)?;
+        into_py(py, curve.state)
+    }
+}
+
+#[pymethods]
+impl BSpline {
+    /// A B-spline curve of `degree` from `positions` and `degrees` (as for `Bezier`), on
+    /// `knots` (n + degree + 1 non-decreasing values) or clamped uniform knots on [0, 1].
+    #[new]
+    #[pyo3(signature = (positions, degrees, degree = 3, knots = None, membership = "neutrosophic", *, name = None, description = None, point_names = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        positions: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        degree: usize,
+        knots: Option<&Bound<'_, PyAny>>,
+        membership: &str,
+        name: Option<String>,
+        description: Option<String>,
+        point_names: Option<Vec<Option<String>>>,
+    ) -> PyResult<PyClassInitializer<Self>> {
+        let curve = Construction {
+            positions,
+            degrees,
+            weights: None,
+            degree: Some(degree),
+            knots,
+            membership,
+            meta: Meta {
+                name,
+                description,
+                point_names,
+            },
+        }
+        .build(CurveKind::BSpline)?;
+        Ok(PyClassInitializer::from(curve).add_subclass(BSpline))
+    }
+}
+
+#[pymethods]
+impl Nurbs {
+    /// A NURBS curve of `degree` from `positions`, `degrees` (as for `Bezier`) and one
+    /// positive `weights` value per control point, on `knots` or clamped uniform knots.
+    #[new]
+    #[pyo3(signature = (positions, degrees, weights, degree = 3, knots = None, membership = "neutrosophic", *, name = None, description = None, point_names = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        positions: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        weights: &Bound<'_, PyAny>,
+        degree: usize,
+        knots: Option<&Bound<'_, PyAny>>,
+        membership: &str,
+        name: Option<String>,
+        description: Option<String>,
+        point_names: Option<Vec<Option<String>>>,
+    ) -> PyResult<PyClassInitializer<Self>> {
+        let curve = Construction {
+            positions,
+            degrees,
+            weights: Some(weights),
+            degree: Some(degree),
+            knots,
+            membership,
+            meta: Meta {
+                name,
+                description,
+                point_names,
+            },
+        }
+        .build(CurveKind::Nurbs)?;
+        Ok(PyClassInitializer::from(curve).add_subclass(Nurbs))
+    }
+}
+
+/// The message of an evaluation error, naming the first bad parameter `t[k]`.
+fn parameter_error(ts: &[f64], scalar: bool, domain: &std::ops::Range<f64>, e: EvalError) -> PyErr {
+    if scalar {
+        return invalid_at("t", e);
+    }
+    let bad = ts
+        .iter()
+        .position(|t| !t.is_finite() || *t < domain.start || *t > domain.end);
+    match bad {
+        Some(k) => invalid_at(format!("t[{k}]"), e),
+        None => invalid_at("t", e),
+    }
+}
+
+/// Evaluates a model curve through the batch engine: straight into a Fortran-ordered output,
+/// by cache-sized blocks into any other.
+fn evaluate_batch<const D: usize>(
+    py: Python<'_>,
+    batch: &CurveBatch<D>,
+    ts: &[f64],
+    writer: &mut Writer<'_>,
+) -> Result<(), EvalError> {
+    let options = BatchOptions::default();
+    if ts.is_empty() {
+        return Ok(());
+    }
+    if let Some(columns) = writer.columns() {
+        return py.detach(|| batch.evaluate(BatchParams::Values(ts), columns, &options));
+    }
+    let mut view = writer.view();
+    py.detach(|| {
+        let mut scratch = vec![0.0; (D + 3) * BLOCK.min(ts.len())];
+        for (b, block) in ts.chunks(BLOCK).enumerate() {
+            let m = block.len();
+            let scratch = &mut scratch[..(D + 3) * m];
+            batch.evaluate(BatchParams::Values(block), scratch, &options)?;
+            for c in 0..D + 3 {
+                for k in 0..m {
+                    view[[b * BLOCK + k, c]] = scratch[c * m + k];
+                }
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Evaluates `value` at every parameter into the rows of `writer`.
+fn evaluate_rows(
+    py: Python<'_>,
+    ts: &[f64],
+    writer: &mut Writer<'_>,
+    columns: usize,
+    value: impl Fn(f64) -> Result<[f64; 6], EvalError> + Send + Sync,
+) -> Result<(), EvalError> {
+    let mut view = writer.view();
+    py.detach(|| {
+        for (k, &t) in ts.iter().enumerate() {
+            let row = value(t)?;
+            for (c, &v) in row[..columns].iter().enumerate() {
+                view[[k, c]] = v;
+            }
+        }
+        Ok(())
+    })
+}
+
+/// The row `x, y[, z], truth, indeterminacy, falsity` of a derivative value (the first
+/// `D + 3` of the six values).
+fn derivative_row<const D: usize>(v: neutrospline::DerivativeValue<D>) -> [f64; 6] {
+    let mut row = [0.0; 6];
+    row[..D].copy_from_slice(&v.position);
+    row[D..D + 3].copy_from_slice(&[v.truth, v.indeterminacy, v.falsity]);
+    row
+}
+
+/// The bounding box as rows `min`, `max` of the columns `x, y[, z], truth, indeterminacy,
+/// falsity`.
+fn box_rows<const D: usize>(b: &BoundingBox<D>) -> Vec<f64> {
+    let intervals: Vec<_> = b
+        .position
+        .iter()
+        .copied()
+        .chain([b.truth, b.indeterminacy, b.falsity])
+        .collect();
+    intervals
+        .iter()
+        .map(|i| i.min)
+        .chain(intervals.iter().map(|i| i.max))
+        .collect()
+}
+
+/// Control points with degrees re-derived under `membership` (the intuitionistic
+/// indeterminacy `1 - truth - falsity` recomputed after blending, which rounds).
+fn under_rule<const D: usize>(curve: AnyCurve<D>, membership: Membership) -> PyResult<AnyCurve<D>> {
+    if membership != Membership::Intuitionistic {
+        return Ok(curve);
+    }
+    let points: Vec<ControlPoint<D>> = curve
+        .control_points()
+        .into_iter()
+        .map(|p| {
+            let [t, _, f] = p.degrees.to_array();
+            let d = Degrees::with_membership(membership, t, None, Some(f)).map_err(invalid)?;
+            Ok(ControlPoint::new(p.position, d))
+        })
+        .collect::<PyResult<_>>()?;
+    let rebuilt: Result<AnyCurve<D>, CurveError> = match &curve {
+        AnyCurve::Bezier(_) => BezierCurve::new(points).map(Into::into),
+        AnyCurve::BSpline(c) => BSplineCurve::new(points, c.knots().clone()).map(Into::into),
+        AnyCurve::Nurbs(c) => NurbsCurve::new(
+            points,
+            c.weights().map(<[f64]>::to_vec).unwrap_or_default(),
+            c.knots().clone(),
+        )
+        .map(Into::into),
+    };
+    rebuilt.map_err(invalid)
+}
+
+/// A Bézier curve as the B-spline it is (clamped knots `0^(n+1) 1^(n+1)`).
+fn bezier_as_bspline<const D: usize>(curve: &BezierCurve<D>) -> PyResult<BSplineCurve<D>> {
+    let points = curve.control_points();
+    let n = points.len();
+    let knots = KnotVector::clamped_uniform(n - 1, n).map_err(invalid)?;
+    BSplineCurve::new(points, knots).map_err(invalid)
+}
+
+impl Curve {
+    fn model(&self) -> PyResult<(&Model, &Planarity<Prepared<2>, Prepared<3>>)> {
+        match &self.state {
+            State::Model { model, curve } => Ok((model, curve)),
+            State::Derivative { order, .. } => Err(invalid(format!(
+                "this is a derivative (order {order}): its values are rates of change, not \
+                 degrees in [0, 1], so it is not a model; apply this to the curve itself"
+            ))),
+        }
+    }
+
+    /// A new curve object from a curve derived from this one's (same metadata).
+    fn derived<const D: usize>(&self, py: Python<'_>, curve: AnyCurve<D>) -> PyResult<Py<PyAny>>
+    where
+        Shape: From<AnyCurve<D>>,
+    {
+        let (model, _) = self.model()?;
+        let curve = under_rule(curve, model.membership())?;
+        let model = model::derived(model, curve)?;
+        model_into_py(py, model)
+    }
+
+    fn evaluate_impl(
+        &self,
+        py: Python<'_>,
+        t: &Bound<'_, PyAny>,
+        out: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Py<PyAny>> {
+        let params = Params::read(t, "t")?;
+        let scalar = matches!(params, Params::Scalar(_));
+        let ts = params.values();
+        let columns = self.state.dimension() + 3;
+        let output = Output::new(py, if scalar { None } else { out }, ts.len(), columns)?;
+        let mut writer = output.write()?;
+        let domain = self.domain_range();
+        let result = match &self.state {
+            State::Model { curve, .. } => {
+                on_dim!(curve, c => evaluate_batch(py, &c.batch, ts, &mut writer))
+            }
+            State::Derivative { derivative, .. } => on_dim!(derivative, d => {
+                evaluate_rows(py, ts, &mut writer, columns, |t| d.evaluate(t).map(derivative_row))
+            }),
+        };
+        drop(writer);
+        result.map_err(|e| parameter_error(ts, scalar, &domain, e))?;
+        output.finish(scalar)
+    }
+
+    fn domain_range(&self) -> std::ops::Range<f64> {
+        match &self.state {
+            State::Model { curve, .. } => on_dim!(curve, c => c.curve.domain()),
+            State::Derivative { derivative, .. } => on_dim!(derivative, d => d.domain()),
+        }
+    }
+}
+
+#[pymethods]
+impl Curve {
+    /// Evaluates at `t` (a float, or a 1-D array of any float dtype and strides): an array of
+    /// shape (len(t), dimension + 3), columns x, y[, z], truth, indeterminacy, falsity (a
+    /// 1-D row for a float `t`). The result is Fortran-ordered (each column contiguous);
+    /// with `out` (float64, that shape) it is written there and `out` is returned, without
+    /// allocating. The GIL is released while the engine runs.
+    ///
+    /// >>> import numpy as np, neutrospline as ns
+    /// >>> curve = ns.example1()
+    /// >>> curve.evaluate(np.array([0.0, 1.0])).tolist()
+    /// [[1.0, 3.0, 0.3, 0.6, 0.1], [9.0, 5.0, 0.2, 0.4, 0.4]]
+    #[pyo3(signature = (t, out = None))]
+    fn evaluate(
+        &self,
+        py: Python<'_>,
+        t: &Bound<'_, PyAny>,
+        out: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Py<PyAny>> {
+        self.evaluate_impl(py, t, out)
+    }
+
+    /// `curve(t)` is `curve.evaluate(t)`.
+    #[pyo3(signature = (t, out = None))]
+    fn __call__(
+        &self,
+        py: Python<'_>,
+        t: &Bound<'_, PyAny>,
+        out: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Py<PyAny>> {
+        self.evaluate_impl(py, t, out)
+    }
+
+    /// Evaluates at `count` evenly spaced parameters over the domain, both ends included
+    /// (`t_k = a + k (b - a) / (count - 1)`, exactly `a` and `b` at the ends); `out` as for
+    /// `evaluate`.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> ns.example1().sample(3)[:, 0].tolist()
+    /// [1.0, 4.625, 9.0]
+    #[pyo3(signature = (count, out = None))]
+    fn sample(
+        &self,
+        py: Python<'_>,
+        count: usize,
+        out: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Py<PyAny>> {
+        let domain = self.domain_range();
+        let columns = self.state.dimension() + 3;
+        let output = Output::new(py, out, count, columns)?;
+        let mut writer = output.write()?;
+        if let (State::Model { curve, .. }, Some(columns), true) =
+            (&self.state, writer.columns(), count > 0)
+        {
+            let options = BatchOptions::default();
+            let result = on_dim!(curve, c => py.detach(|| {
+                c.batch.evaluate(BatchParams::Uniform(count), columns, &options)
+            }));
+            drop(writer);
+            result.map_err(invalid)?;
+            return output.finish(false);
+        }
+        drop(writer);
+        let ts: Vec<f64> = (0..count)
+            .map(|k| neutrospline::uniform_parameter(k, count, domain.clone()))
+            .collect();
+        let t = vector(py, ts);
+        self.evaluate_impl(py, t.as_any(), Some(output.array().as_any()))
+    }
+
+    /// The derivative of order `order` (default 1) as a curve of the same class: evaluable
+    /// (rates of change of the coordinates and of the degrees) and differentiable again.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> ns.example1().derivative()(0.0).tolist()
+    /// [6.0, 9.0, 1.5, -1.5, 0.0]
+    #[pyo3(signature = (order = 1))]
+    fn derivative(&self, py: Python<'_>, order: usize) -> PyResult<Py<PyAny>> {
+        if order == 0 {
+            return Err(invalid_at(
+                "order",
+                "0 is not a derivative order (give 1 or more)",
+            ));
+        }
+        let state = State::derivative_of(self.state.base().clone(), self.state.order() + order)
+            .ok_or_else(|| invalid("a surface has no curve derivative"))?;
+        into_py(py, state)
+    }
+
+    /// Splits at `t` inside the domain: two curves of the same class, on `[a, t]` and `[t, b]`
+    /// (Bézier curves re-parametrised to [0, 1]), that together trace this one.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> left, right = ns.example1().split(0.5)
+    /// >>> import numpy as np
+    /// >>> np.allclose(left(1.0), ns.example1()(0.5), rtol=0, atol=1e-15), np.allclose(right(0.0), left(1.0), rtol=0, atol=1e-15)
+    /// (True, True)
+    fn split<'py>(&self, py: Python<'py>, t: f64) -> PyResult<Bound<'py, PyTuple>> {
+        let (_, curve) = self.model()?;
+        let (left, right) = on_dim!(curve, c => {
+            let (left, right) = c.curve.split(t).map_err(|e| invalid_at("t", e))?;
+            (self.derived(py, left)?, self.derived(py, right)?)
+        });
+        PyTuple::new(py, [left, right])
+    }
+
+    /// Raises the degree `times` times (default once); the curve is unchanged.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> ns.example1().elevate().degree
+    /// 4
+    #[pyo3(signature = (times = 1))]
+    fn elevate(&self, py: Python<'_>, times: usize) -> PyResult<Py<PyAny>> {
+        let (_, curve) = self.model()?;
+        on_dim!(curve, c => {
+            let mut elevated = c.curve.clone();
+            for _ in 0..times {
+                elevated = elevated.elevate();
+            }
+            self.derived(py, elevated)
+        })
+    }
+
+    /// Inserts the knot `u` `times` times (default once); the curve is unchanged. A Bézier
+    /// curve becomes the B-spline it is, with the knot inserted.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> spline = ns.example1().insert_knot(0.5)
+    /// >>> type(spline).__name__, spline.knots.tolist()
+    /// ('BSpline', [0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 1.0])
+    #[pyo3(signature = (u, times = 1))]
+    fn insert_knot(&self, py: Python<'_>, u: f64, times: usize) -> PyResult<Py<PyAny>> {
+        let (_, curve) = self.model()?;
+        on_dim!(curve, c => {
+            let mut spline = c.curve.clone();
+            for _ in 0..times {
+                spline = match spline {
+                    AnyCurve::Bezier(b) => bezier_as_bspline(&b)?.insert_knot(u).map(AnyCurve::from),
+                    AnyCurve::BSpline(s) => s.insert_knot(u).map(AnyCurve::from),
+                    AnyCurve::Nurbs(s) => s.insert_knot(u).map(AnyCurve::from),
+                }
+                .map_err(|e| invalid_at("u", e))?;
+            }
+            self.derived(py, spline)
+        })
+    }
+
+    /// The tight bounding box of the curve: an array of shape (2, dimension + 3), the rows
+    /// the minimum and the maximum of each column (x, y[, z], truth, indeterminacy, falsity).
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> ns.example1().bounding_box()[:, 0].tolist()
+    /// [1.0, 9.0]
+    fn bounding_box<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let (_, curve) = self.model()?;
+        let (rows, columns) = on_dim!(curve, c => {
+            let b = c.curve.bounding_box();
+            (box_rows(&b), b.position.len() + 3)
+        });
+        readonly_array(py, rows, &[2, columns])
+    }
+
+    /// The length of the curve, to the relative `accuracy` (adaptive Gauss-Legendre on the
+    /// pieces).
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> round(ns.example1().length(), 12)
+    /// 8.78673070784
+    #[pyo3(signature = (accuracy = neutrospline::DEFAULT_ACCURACY))]
+    fn length(&self, accuracy: f64) -> PyResult<f64> {
+        let (_, curve) = self.model()?;
+        let domain = self.domain_range();
+        on_dim!(curve, c => c.curve.arc_length(domain, accuracy)).map_err(invalid)
+    }
+
+    /// The arc length from `t0` to `t1`, to the relative `accuracy`.
+    #[pyo3(signature = (t0, t1, accuracy = neutrospline::DEFAULT_ACCURACY))]
+    fn arc_length(&self, t0: f64, t1: f64, accuracy: f64) -> PyResult<f64> {
+        let (_, curve) = self.model()?;
+        on_dim!(curve, c => c.curve.arc_length(t0..t1, accuracy)).map_err(invalid)
+    }
+
+    /// The curvature at `t` (a float or a 1-D array): `|C' x C''| / |C'|^3` in the plane
+    /// (signed: positive turning left), its magnitude in space; NaN where the curve stops
+    /// (`C' = 0`).
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> circle = ns.load("examples/nurbs-circle.toml")
+    /// >>> round(float(circle.curvature(0.3)), 12)
+    /// 1.0
+    fn curvature(&self, py: Python<'_>, t: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let (_, curve) = self.model()?;
+        let params = Params::read(t, "t")?;
+        let ts = params.values();
+        let mut values = Vec::with_capacity(ts.len());
+        for (k, &t) in ts.iter().enumerate() {
+            let value = match on_dim!(curve, c => c.curve.curvature(t)) {
+                Ok(kappa) => kappa,
+                Err(neutrospline::GeometryError::Stationary { .. }) => f64::NAN,
+                Err(e) => return Err(invalid_at(format!("t[{k}]"), e)),
+            };
+            values.push(value);
+        }
+        match params {
+            Params::Scalar(_) => Ok(values[0].into_pyobject(py)?.into_any().unbind()),
+            Params::Array(_) => Ok(vector(py, values).into_any().unbind()),
+        }
+    }
+
+    /// The parameter domain `(a, b)`.
+    #[getter]
+    fn domain(&self) -> (f64, f64) {
+        let d = self.domain_range();
+        (d.start, d.end)
+    }
+
+    /// `"bezier"`, `"bspline"` or `"nurbs"`.
+    #[getter]
+    fn kind(&self) -> &'static str {
+        self.state.kind().name()
+    }
+
+    /// The polynomial degree (of the derivative, for a derivative).
+    #[getter]
+    fn degree(&self) -> usize {
+        match &self.state {
+            State::Model { curve, .. } => on_dim!(curve, c => c.curve.degree()),
+            State::Derivative { derivative, .. } => on_dim!(derivative, d => d.degree()),
+        }
+    }
+
+    /// 2 or 3.
+    #[getter]
+    fn dimension(&self) -> usize {
+        self.state.dimension()
+    }
+
+    /// The derivative order: 0 for a curve, k for its k-th derivative.
+    #[getter]
+    fn order(&self) -> usize {
+        self.state.order()
+    }
+
+    /// The membership rule: `"neutrosophic"`, `"intuitionistic"` or `"fuzzy"`.
+    #[getter]
+    fn membership(&self) -> &'static str {
+        self.state.base().membership().name()
+    }
+
+    /// The model's name, if any.
+    #[getter]
+    fn name(&self) -> Option<String> {
+        self.state.base().name().map(str::to_owned)
+    }
+
+    /// The model's description, if any.
+    #[getter]
+    fn description(&self) -> Option<String> {
+        self.state.base().description().map(str::to_owned)
+    }
+
+    /// The control points' names (None for an unnamed one).
+    #[getter]
+    fn point_names(&self) -> PyResult<Vec<Option<String>>> {
+        let (model, curve) = self.model()?;
+        let names = model.point_names();
+        let count = on_dim!(curve, c => c.curve.len());
+        Ok(if names.is_empty() {
+            vec![None; count]
+        } else {
+            names.to_vec()
+        })
+    }
+
+    /// The control points' positions, shape (n, dimension), read-only (of a polynomial
+    /// derivative: its control values).
+    #[getter]
+    fn positions<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let (positions, _, n, d) = self.control_rows()?;
+        readonly_array(py, positions, &[n, d])
+    }
+
+    /// The control points' degrees, shape (n, 3): truth, indeterminacy, falsity, read-only.
+    #[getter]
+    fn degrees<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let (_, degrees, n, _) = self.control_rows()?;
+        readonly_array(py, degrees, &[n, 3])
+    }
+
+    /// The NURBS weights, shape (n,), read-only; None for other kinds.
+    #[getter]
+    fn weights<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        let weights = match &self.state {
+            State::Model { curve, .. } => {
+                on_dim!(curve, c => c.curve.weights().map(<[f64]>::to_vec))
+            }
+            State::Derivative { .. } => None,
+        };
+        weights
+            .map(|w| {
+                let n = w.len();
+                readonly_array(py, w, &[n])
+            })
+            .transpose()
+    }
+
+    /// The knot vector, read-only; None for a Bézier curve.
+    #[getter]
+    fn knots<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        let knots = match &self.state {
+            State::Model { curve, .. } => {
+                on_dim!(curve, c => c.curve.knots().map(|k| k.knots().to_vec()))
+            }
+            State::Derivative { derivative, .. } => {
+                on_dim!(derivative, d => d.knots().map(|k| k.knots().to_vec()))
+            }
+        };
+        knots
+            .map(|k| {
+                let n = k.len();
+                readonly_array(py, k, &[n])
+            })
+            .transpose()
+    }
+
+    /// Writes the model to `path`: TOML, JSON or CSV by the extension, replaced atomically;
+    /// `neutrospline.load(path)` gives back an equal curve.
+    fn save(&self, path: PathBuf) -> PyResult<()> {
+        let (model, _) = self.model()?;
+        model::save(model, &path)
+    }
+
+    /// The SVG text of the figure `view` (`all`, `controls`, `truth`, `indeterminacy`,
+    /// `falsity`, `plane`, `score`), as `neutrospline plot` draws it.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> svg = ns.example1().to_svg("truth")
+    /// >>> svg.startswith("<?xml") and "curve: truth</title>" in svg
+    /// True
+    #[pyo3(signature = (view = "all".to_owned(), width = None, height = None, title = None, caption = None))]
+    fn to_svg(
+        &self,
+        py: Python<'_>,
+        view: String,
+        width: Option<u32>,
+        height: Option<u32>,
+        title: Option<String>,
+        caption: Option<String>,
+    ) -> PyResult<String> {
+        let (model, _) = self.model()?;
+        let request = FigureRequest {
+            view,
+            width,
+            height,
+            title,
+            caption,
+        };
+        model::svg(py, model, request)
+    }
+
+    /// Writes the figure `view` to `path` (`.svg` or `.png`), atomically.
+    #[pyo3(signature = (path, view = "all".to_owned(), width = None, height = None, title = None, caption = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn save_figure(
+        &self,
+        py: Python<'_>,
+        path: PathBuf,
+        view: String,
+        width: Option<u32>,
+        height: Option<u32>,
+        title: Option<String>,
+        caption: Option<String>,
+    ) -> PyResult<()> {
+        let (model, _) = self.model()?;
+        let request = FigureRequest {
+            view,
+            width,
+            height,
+            title,
+            caption,
+        };
+        model::save_figure(py, model, &path, request)
+    }
+
+    /// The `all` view, shown inline by Jupyter.
+    fn _repr_svg_(&self, py: Python<'_>) -> PyResult<String> {
+        let (model, _) = self.model()?;
+        model::svg(py, model, FigureRequest::all())
+    }
+
+    /// The number of control points.
+    fn __len__(&self) -> PyResult<usize> {
+        let (_, _, n, _) = self.control_rows()?;
+        Ok(n)
+    }
+
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        let Ok(other) = other.cast::<Curve>() else {
+            return false;
+        };
+        let other = &other.get().state;
+        self.state.base() == other.base() && self.state.order() == other.order()
+    }
+
+    fn __repr__(&self) -> String {
+        let model = self.state.base();
+        let class = class_name(self.state.kind());
+        let count = model.shape().control_count();
+        let mut text = format!(
+            "{class}(control_points={count}, degree={}, dimension={}, membership='{}'",
+            match model.shape() {
+                Shape::Planar(c) => c.degree(),
+                Shape::Spatial(c) => c.degree(),
+                Shape::Surface(_) => 0,
+            },
+            self.state.dimension(),
+            model.membership().name()
+        );
+        if let Some(name) = model.name() {
+            text.push_str(&format!(", name={name:?}"));
+        }
+        text.push(')');
+        match self.state.order() {
+            0 => text,
+            k => format!("<derivative of order {k} of {text}>"),
+        }
+    }
+
+    /// Pickling: the model as exact JSON and the derivative order.
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (String, usize))> {
+        let restore = py
+            .import("neutrospline._neutrospline")?
+            .getattr("_restore")?;
+        Ok((
+            restore,
+            (model::to_state(self.state.base()), self.state.order()),
+        ))
+    }
+}
+
+impl Curve {
+    /// Positions and degrees of the control points (of a polynomial derivative: its control
+    /// values), with their count and dimension.
+    fn control_rows(&self) -> PyResult<(Vec<f64>, Vec<f64>, usize, usize)> {
+        match &self.state {
+            State::Model { curve, .. } => Ok(on_dim!(curve, c => {
+                let points = c.curve.control_points();
+                let (p, d) = model::point_rows(&points);
+                (p, d, points.len(), c.curve.start().map_or(0, |s| s.position.len()))
+            })),
+            State::Derivative {
+                derivative, order, ..
+            } => on_dim!(derivative, d => {
+                let values = d.control_values().ok_or_else(|| {
+                    invalid(format!(
+                        "the derivative (order {order}) of a NURBS curve is rational: it has no \
+                         control points of its own (evaluate it instead)"
+                    ))
+                })?;
+                let n = values.len();
+                let dim = self.state.dimension();
+                let positions = values.iter().flat_map(|v| v.position).collect();
+                let degrees = values
+                    .iter()
+                    .flat_map(|v| [v.truth, v.indeterminacy, v.falsity])
+                    .collect();
+                Ok((positions, degrees, n, dim))
+            }),
+        }
+    }
+}
+
+/// The Python class name of a kind.
+fn class_name(kind: CurveKind) -> &'static str {
+    match kind {
+        CurveKind::Bezier => "Bezier",
+        CurveKind::BSpline => "BSpline",
+        CurveKind::Nurbs => "Nurbs",
+    }
+}
+
+/// Restores a pickled curve: the model's JSON text and the derivative order.
+pub fn restore(py: Python<'_>, text: &str, order: usize) -> PyResult<Py<PyAny>> {
+    let model = model::from_state(text)?;
+    let state = if order == 0 {
+        State::of_model(model)
+    } else {
+        State::derivative_of(model, order)
+    }
+    .ok_or_else(|| invalid("a surface is not a curve"))?;
+    into_py(py, state)
+}

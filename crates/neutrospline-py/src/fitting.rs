@@ -1,0 +1,342 @@
+//! `neutrospline.fit`: the command line's `fit` from Python, on arrays or a data file.
+
+use std::path::PathBuf;
+
+use neutrospline::fit::{
+    channel_names, fit as fit_curve, DataWeights, Fit, FitData, FitError, FitKind, FitOptions,
+    FitReport, FitTarget, Parametrization,
+};
+use neutrospline::{Degrees, Membership};
+use neutrospline_io::{load_data, DataTable, Model};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList, PyTuple};
+
+use crate::arrays::{float_array, vector};
+use crate::curve;
+use crate::errors::{invalid, invalid_at};
+use crate::model::{self, PointArrays};
+
+/// Where the data comes from: arrays, or a CSV data file (its errors located by line).
+enum Source {
+    Arrays {
+        positions: Vec<f64>,
+        dimension: usize,
+        degrees: Vec<Degrees>,
+    },
+    File(DataTable),
+}
+
+/// The fitted curve of either dimension.
+enum Fitted {
+    Planar(Fit<2>),
+    Spatial(Fit<3>),
+}
+
+impl Source {
+    fn dimension(&self) -> usize {
+        match self {
+            Source::Arrays { dimension, .. } => *dimension,
+            Source::File(table) => table.dimension(),
+        }
+    }
+
+    fn len(&self) -> usize {
+        match self {
+            Source::Arrays { degrees, .. } => degrees.len(),
+            Source::File(table) => table.len(),
+        }
+    }
+
+    /// The core's data of dimension `D`, with the given parameters and weights.
+    fn data<const D: usize>(
+        &self,
+        parameters: Option<Vec<f64>>,
+        weights: Option<Vec<f64>>,
+    ) -> Result<FitData<D>, FitError> {
+        let mut data = match self {
+            Source::Arrays {
+                positions, degrees, ..
+            } => {
+                let rows = positions
+                    .chunks_exact(D)
+                    .map(|p| {
+                        let mut row = [0.0; D];
+                        row.copy_from_slice(p);
+                        row
+                    })
+                    .collect();
+                FitData::new(rows, degrees.clone())?
+            }
+            Source::File(table) => table.fit_data::<D>()?,
+        };
+        if let Some(parameters) = parameters {
+            data = data.with_parameters(parameters)?;
+        }
+        if let Some(weights) = weights {
+            data = data.with_weights(weights)?;
+        }
+        Ok(data)
+    }
+
+    /// The message of a fitting error: located in the file, or as the core says it.
+    fn message(&self, error: &FitError) -> String {
+        match self {
+            Source::Arrays { .. } => error.to_string(),
+            Source::File(table) => table.locate(error).to_string(),
+        }
+    }
+}
+
+/// Parses a parametrization name.
+fn parametrization(name: &str) -> PyResult<Parametrization> {
+    [
+        Parametrization::Uniform,
+        Parametrization::ChordLength,
+        Parametrization::Centripetal,
+    ]
+    .into_iter()
+    .find(|p| p.name() == name)
+    .ok_or_else(|| {
+        invalid_at(
+            "parametrization",
+            format!("{name:?} is not one of \"uniform\", \"chord-length\", \"centripetal\""),
+        )
+    })
+}
+
+/// Parses a fitted kind name.
+fn fit_kind(name: &str) -> PyResult<FitKind> {
+    match name {
+        "bspline" => Ok(FitKind::BSpline),
+        "bezier" => Ok(FitKind::Bezier),
+        other => Err(invalid_at(
+            "kind",
+            format!("{other:?} is not one of \"bspline\", \"bezier\""),
+        )),
+    }
+}
+
+/// The report as the dictionary of `neutrospline fit --report json`, plus the fitted
+/// parameters of the points.
+fn report_dict<'py>(
+    py: Python<'py>,
+    report: &FitReport,
+    dimension: usize,
+    parameters: &[f64],
+) -> PyResult<Bound<'py, PyDict>> {
+    let channels = |values: &[(&'static str, f64)]| -> PyResult<Bound<'py, PyDict>> {
+        let dict = PyDict::new(py);
+        for (name, (_, v)) in channel_names(dimension).iter().zip(values) {
+            dict.set_item(*name, *v)?;
+        }
+        Ok(dict)
+    };
+    let dict = PyDict::new(py);
+    dict.set_item("control_points", report.control_points)?;
+    dict.set_item("degree", report.degree)?;
+    dict.set_item("max_error", channels(&report.max_error)?)?;
+    dict.set_item("rms_error", channels(&report.rms_error)?)?;
+    dict.set_item("worst_index", report.worst_index)?;
+    dict.set_item("worst_parameter", report.worst_parameter)?;
+    dict.set_item("worst_distance", report.worst_distance)?;
+    dict.set_item("schoenberg_whitney", report.schoenberg_whitney)?;
+    dict.set_item("condition_estimate", report.condition_estimate)?;
+    let at_bound = PyList::empty(py);
+    for a in &report.at_bound {
+        let entry = PyDict::new(py);
+        entry.set_item("index", a.index)?;
+        entry.set_item("channel", a.channel)?;
+        entry.set_item("bound", a.bound)?;
+        at_bound.append(entry)?;
+    }
+    dict.set_item("at_bound", at_bound)?;
+    dict.set_item("tolerance", report.tolerance)?;
+    dict.set_item("tolerance_met", report.tolerance_met)?;
+    dict.set_item("parameters", vector(py, parameters.to_vec()))?;
+    Ok(dict)
+}
+
+/// Fits a curve to data points, as `neutrospline fit` does, and returns `(curve, report)`.
+///
+/// `data` is an array of positions of shape (m, 2) or (m, 3) with `degrees` of shape (m, 3)
+/// (or as the membership rule allows, see `Bezier`), or the path of a CSV data file (columns
+/// `x, y[, z], truth, indeterminacy, falsity[, parameter, weight, name]`, errors named by
+/// line). The target is one of `control_points=N` (least squares), `tolerance=E` (least
+/// squares refined until every position residual is at most E) and `interpolate=True`;
+/// without one, a tolerance of 1e-3 of the data's bounding-box diagonal. `weights` is None,
+/// `"score"` (each point by its score), `"column"` (the file's weight column) or one weight
+/// per point. The report is the dictionary of `neutrospline fit --report json` with the
+/// points' fitted `parameters` added.
+///
+/// >>> import numpy as np, neutrospline as ns
+/// >>> t = np.linspace(0.0, 1.0, 50)
+/// >>> positions = np.column_stack([t, t * t])
+/// >>> degrees = np.column_stack([t, 0.5 * np.ones_like(t), 1 - t])
+/// >>> curve, report = ns.fit(positions, degrees, control_points=4, degree=2, parametrization="uniform")
+/// >>> type(curve).__name__, report["control_points"], report["max_error"]["y"] < 1e-14
+/// ('BSpline', 4, True)
+#[pyfunction]
+#[pyo3(signature = (data, degrees = None, *, parameters = None, weights = None, degree = 3, control_points = None, tolerance = None, interpolate = false, closed = false, parametrization = "chord-length", smoothing = 0.0, kind = "bspline", membership = "neutrosophic", name = None))]
+#[allow(clippy::too_many_arguments)]
+pub fn fit<'py>(
+    py: Python<'py>,
+    data: &Bound<'py, PyAny>,
+    degrees: Option<&Bound<'py, PyAny>>,
+    parameters: Option<&Bound<'py, PyAny>>,
+    weights: Option<&Bound<'py, PyAny>>,
+    degree: usize,
+    control_points: Option<usize>,
+    tolerance: Option<f64>,
+    interpolate: bool,
+    closed: bool,
+    parametrization: &str,
+    smoothing: f64,
+    kind: &str,
+    membership: &str,
+    name: Option<String>,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let membership_rule = model::membership(membership)?;
+    let target = match (control_points, tolerance, interpolate) {
+        (None, None, false) => None,
+        (Some(n), None, false) => Some(FitTarget::ControlPoints(n)),
+        (None, Some(e), false) => Some(FitTarget::Tolerance(e)),
+        (None, None, true) => Some(FitTarget::Interpolate),
+        _ => {
+            return Err(invalid(
+                "control_points, tolerance and interpolate exclude each other (give one)",
+            ))
+        }
+    };
+    let source = read_source(data, degrees, membership_rule)?;
+    let description = match &source {
+        Source::File(table) => format!(
+            "Fitted to {} ({} points) by neutrospline fit",
+            table.file(),
+            table.len()
+        ),
+        Source::Arrays { .. } => format!("Fitted to {} points by neutrospline.fit", source.len()),
+    };
+    let parameters = parameters
+        .map(|p| float_array(p, "parameters"))
+        .transpose()?
+        .map(|p| p.as_array().iter().copied().collect::<Vec<f64>>())
+        .or_else(|| match &source {
+            Source::File(table) => table.parameters().map(<[f64]>::to_vec),
+            Source::Arrays { .. } => None,
+        });
+    let (data_weights, weight_values) = read_weights(weights, &source)?;
+    let mut options = FitOptions::default()
+        .with_degree(degree)
+        .with_closed(closed)
+        .with_parametrization(self::parametrization(parametrization)?)
+        .with_weights(data_weights)
+        .with_smoothing(smoothing)
+        .with_kind(fit_kind(kind)?)
+        .with_membership(membership_rule);
+    if let Some(target) = target {
+        options = options.with_target(target);
+    }
+    let fitted = py
+        .detach(|| -> Result<Fitted, FitError> {
+            Ok(if source.dimension() == 3 {
+                Fitted::Spatial(fit_curve(
+                    &source.data::<3>(parameters, weight_values)?,
+                    &options,
+                )?)
+            } else {
+                Fitted::Planar(fit_curve(
+                    &source.data::<2>(parameters, weight_values)?,
+                    &options,
+                )?)
+            })
+        })
+        .map_err(|e| invalid(source.message(&e)))?;
+    let (model, report) = match &fitted {
+        Fitted::Planar(f) => (
+            Model::new(f.curve.clone()),
+            report_dict(py, &f.report, 2, &f.parameters)?,
+        ),
+        Fitted::Spatial(f) => (
+            Model::new(f.curve.clone()),
+            report_dict(py, &f.report, 3, &f.parameters)?,
+        ),
+    };
+    let mut model = model
+        .with_membership(membership_rule)
+        .map_err(invalid)?
+        .with_description(description);
+    if let Some(name) = name {
+        model = model.with_name(name);
+    }
+    let curve = curve::model_into_py(py, model)?;
+    PyTuple::new(py, [curve, report.into_any().unbind()])
+}
+
+/// Reads the data: a path (str or os.PathLike) to a CSV data file, or arrays.
+fn read_source(
+    data: &Bound<'_, PyAny>,
+    degrees: Option<&Bound<'_, PyAny>>,
+    membership: Membership,
+) -> PyResult<Source> {
+    let is_path = data.is_instance_of::<pyo3::types::PyString>()
+        || data.hasattr("__fspath__").unwrap_or(false);
+    if is_path {
+        if degrees.is_some() {
+            return Err(invalid_at(
+                "degrees",
+                "the data file gives the degrees (its truth, indeterminacy, falsity columns)",
+            ));
+        }
+        let path: PathBuf = data.extract()?;
+        let table = load_data(&path, membership).map_err(invalid)?;
+        return Ok(Source::File(table));
+    }
+    let degrees = degrees.ok_or_else(|| {
+        invalid_at(
+            "degrees",
+            "missing: give the degrees of the data points (or a data file instead of arrays)",
+        )
+    })?;
+    let arrays = PointArrays::read(data, degrees, membership, false)?;
+    Ok(Source::Arrays {
+        positions: arrays.positions,
+        dimension: arrays.dimension,
+        degrees: arrays.degrees,
+    })
+}
+
+/// Reads `weights`: None, `"score"`, `"column"` or one weight per point.
+fn read_weights(
+    weights: Option<&Bound<'_, PyAny>>,
+    source: &Source,
+) -> PyResult<(DataWeights, Option<Vec<f64>>)> {
+    let Some(weights) = weights else {
+        return Ok((DataWeights::None, None));
+    };
+    if let Ok(text) = weights.extract::<String>() {
+        return match (text.as_str(), source) {
+            ("score", _) => Ok((DataWeights::Score, None)),
+            ("column", Source::File(table)) => match table.weights() {
+                Some(w) => Ok((DataWeights::Given, Some(w.to_vec()))),
+                None => Err(invalid_at(
+                    "weights",
+                    format!("\"column\": {} has no weight column", table.file()),
+                )),
+            },
+            ("column", Source::Arrays { .. }) => Err(invalid_at(
+                "weights",
+                "\"column\" reads a data file's weight column; with arrays, give the weights",
+            )),
+            (other, _) => Err(invalid_at(
+                "weights",
+                format!("{other:?} is not \"score\", \"column\" or an array of weights"),
+            )),
+        };
+    }
+    let values = float_array(weights, "weights")?
+        .as_array()
+        .iter()
+        .copied()
+        .collect();
+    Ok((DataWeights::Given, Some(values)))
+}

@@ -1,0 +1,291 @@
+//! Module-level functions: loading models, Example 1, the scores of degree arrays, the point
+//! relation of the paper's Def. 4, and the restoring end of pickle.
+
+use std::path::PathBuf;
+
+use neutrospline::{AxisSet, AxisSetName, Degrees, PointRelation};
+use neutrospline_io::{Format, Kind, KnotSpec, Model, ReadOptions};
+use numpy::PyUntypedArrayMethods;
+use pyo3::prelude::*;
+use pyo3::types::PyTuple;
+
+use crate::arrays::{float_array, new_array};
+use crate::curve;
+use crate::errors::{invalid, invalid_at};
+use crate::model;
+use crate::surface::Surface;
+
+/// The Python object of any model: a `Bezier`, `BSpline`, `Nurbs` or `Surface`.
+pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
+    if model.shape().is_surface() {
+        let surface = Surface::of_model(model).ok_or_else(|| invalid("not a surface"))?;
+        Ok(Py::new(py, surface)?.into_any())
+    } else {
+        curve::model_into_py(py, model)
+    }
+}
+
+/// Loads a model file: TOML, JSON or CSV by the extension, checked as `neutrospline check`
+/// checks it. Returns a `Bezier`, `BSpline`, `Nurbs` or `Surface`; an invalid file raises
+/// `ModelError` with the command line's message (file, line, field, value and rule).
+///
+/// The keyword options are the command line's `--kind`, `--degree`, `--knots`, `--membership`,
+/// `--rows`, `--cols`, `--degree-u`, `--degree-v`, `--knots-u`, `--knots-v`: a CSV table holds
+/// only the control points, so these say what it is (`knots` a rule name such as
+/// `"clamped-uniform"`, or the knot values).
+///
+/// >>> import neutrospline as ns
+/// >>> ns.load("examples/example1.toml") == ns.example1()
+/// True
+/// >>> knots = [0, 0, 0, 0, 0.2, 0.5, 0.7, 1, 1, 1, 1]
+/// >>> spline = ns.load("examples/bspline.csv", kind="bspline", degree=3, knots=knots)
+/// >>> spline.kind, spline.knots.tolist() == knots
+/// ('bspline', True)
+#[pyfunction]
+#[pyo3(signature = (path, *, kind = None, degree = None, knots = None, membership = None, rows = None, cols = None, degree_u = None, degree_v = None, knots_u = None, knots_v = None))]
+#[allow(clippy::too_many_arguments)]
+pub fn load(
+    py: Python<'_>,
+    path: PathBuf,
+    kind: Option<&str>,
+    degree: Option<usize>,
+    knots: Option<&Bound<'_, PyAny>>,
+    membership: Option<&str>,
+    rows: Option<usize>,
+    cols: Option<usize>,
+    degree_u: Option<usize>,
+    degree_v: Option<usize>,
+    knots_u: Option<&Bound<'_, PyAny>>,
+    knots_v: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Py<PyAny>> {
+    let mut options = ReadOptions::default();
+    if let Some(kind) = kind {
+        options.kind = Some(Kind::from_name(kind).ok_or_else(|| {
+            invalid_at(
+                "kind",
+                format!("{kind:?} is not a kind (one of {})", Kind::known_list()),
+            )
+        })?);
+    }
+    options.membership = membership.map(model::membership).transpose()?;
+    options.degree = degree;
+    options.rows = rows;
+    options.cols = cols;
+    options.degree_u = degree_u;
+    options.degree_v = degree_v;
+    options.knots = knots.map(|k| knot_spec(k, "knots")).transpose()?;
+    options.knots_u = knots_u.map(|k| knot_spec(k, "knots_u")).transpose()?;
+    options.knots_v = knots_v.map(|k| knot_spec(k, "knots_v")).transpose()?;
+    let model = py
+        .detach(|| neutrospline_io::load(&path, &options))
+        .map_err(invalid)?;
+    model_into_py(py, model)
+}
+
+/// A knot option: a rule name, or the knot values.
+fn knot_spec(knots: &Bound<'_, PyAny>, what: &str) -> PyResult<KnotSpec> {
+    if let Ok(text) = knots.extract::<String>() {
+        return KnotSpec::parse_option(&text).map_err(|e| invalid_at(what, e));
+    }
+    let values = float_array(knots, what)?
+        .as_array()
+        .iter()
+        .copied()
+        .collect();
+    Ok(KnotSpec::Explicit(values))
+}
+
+/// The paper's Example 1: the cubic neutrosophic Bézier curve of Table 1, with its name,
+/// description and point names C0..C3 (the model of `examples/example1.toml`).
+///
+/// >>> import neutrospline as ns
+/// >>> ns.example1()
+/// Bezier(control_points=4, degree=3, dimension=2, membership='neutrosophic', name="Example 1")
+#[pyfunction]
+pub fn example1(py: Python<'_>) -> PyResult<Py<PyAny>> {
+    let text = include_str!("../../../examples/example1.toml");
+    let model = neutrospline_io::parse(
+        "example1.toml",
+        Format::Toml,
+        text.as_bytes(),
+        &ReadOptions::default(),
+    )
+    .map_err(invalid)?;
+    curve::model_into_py(py, model)
+}
+
+/// Restores a pickled curve or surface.
+#[pyfunction]
+pub fn _restore(py: Python<'_>, text: &str, order: usize) -> PyResult<Py<PyAny>> {
+    if order == 0 {
+        model_into_py(py, model::from_state(text)?)
+    } else {
+        curve::restore(py, text, order)
+    }
+}
+
+/// Applies `measure` to every degree triple of `degrees` (shape (..., 3)), checking each.
+fn measure(
+    py: Python<'_>,
+    degrees: &Bound<'_, PyAny>,
+    measure: fn(&Degrees) -> f64,
+) -> PyResult<Py<PyAny>> {
+    let array = float_array(degrees, "degrees")?;
+    let shape = array.shape().to_vec();
+    if shape.last() != Some(&3) {
+        return Err(invalid_at(
+            "degrees",
+            format!(
+                "expected an array of shape (..., 3) (truth, indeterminacy, falsity in the last \
+                 axis), got shape {shape:?}"
+            ),
+        ));
+    }
+    let values: Vec<f64> = array.as_array().iter().copied().collect();
+    let results = values
+        .chunks_exact(3)
+        .enumerate()
+        .map(|(k, row)| {
+            Degrees::new(row[0], row[1], row[2])
+                .map(|d| measure(&d))
+                .map_err(|e| invalid_at(format!("degrees[{k}]"), e))
+        })
+        .collect::<PyResult<Vec<f64>>>()?;
+    let outer = &shape[..shape.len() - 1];
+    if outer.is_empty() {
+        Ok(results[0].into_pyobject(py)?.into_any().unbind())
+    } else {
+        Ok(new_array(py, results, outer)?.unbind())
+    }
+}
+
+/// The score `(2 + truth - indeterminacy - falsity) / 3` of degree triples (an array of shape
+/// (..., 3); a float for one triple), in [0, 1]: 1 fully true, 0 fully false.
+///
+/// >>> import neutrospline as ns
+/// >>> round(ns.score([0.7, 0.1, 0.2]), 15)
+/// 0.8
+/// >>> ns.score([[1, 0, 0], [0, 1, 1]]).tolist()
+/// [1.0, 0.0]
+#[pyfunction]
+pub fn score(py: Python<'_>, degrees: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+    measure(py, degrees, Degrees::score)
+}
+
+/// The accuracy `truth - falsity` of degree triples (shape (..., 3)), in [-1, 1].
+///
+/// >>> import neutrospline as ns
+/// >>> round(ns.accuracy([0.7, 0.1, 0.2]), 15)
+/// 0.5
+#[pyfunction]
+pub fn accuracy(py: Python<'_>, degrees: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+    measure(py, degrees, Degrees::accuracy)
+}
+
+/// The certainty `truth` of degree triples (shape (..., 3)), in [0, 1].
+///
+/// >>> import neutrospline as ns
+/// >>> ns.certainty([0.7, 0.1, 0.2])
+/// 0.7
+#[pyfunction]
+pub fn certainty(py: Python<'_>, degrees: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+    measure(py, degrees, Degrees::certainty)
+}
+
+/// An axis set of Def. 4 from pairs `(value, (truth, indeterminacy, falsity))`.
+fn axis_set(name: AxisSetName, members: &Bound<'_, PyAny>) -> PyResult<AxisSet> {
+    let what = name.to_string();
+    let pairs: Vec<(f64, (f64, f64, f64))> = members.extract().map_err(|_| {
+        invalid_at(
+            &what,
+            "expected a sequence of (value, (truth, indeterminacy, falsity)) pairs",
+        )
+    })?;
+    let members = pairs
+        .into_iter()
+        .enumerate()
+        .map(|(k, (value, (t, i, f)))| {
+            Degrees::new(t, i, f)
+                .map(|d| (value, d))
+                .map_err(|e| invalid_at(format!("{what}[{k}]"), e))
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    AxisSet::new(name, members).map_err(invalid)
+}
+
+/// The relation's entries as arrays `(positions (k, 2), degrees (k, 3))`.
+fn relation_arrays<'py>(
+    py: Python<'py>,
+    relation: &PointRelation,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let entries = relation.entries();
+    let positions = entries.iter().flat_map(|e| e.position).collect();
+    let degrees = entries.iter().flat_map(|e| e.degrees.to_array()).collect();
+    let positions = new_array(py, positions, &[entries.len(), 2])?;
+    let degrees = new_array(py, degrees, &[entries.len(), 3])?;
+    PyTuple::new(py, [positions, degrees])
+}
+
+/// The largest neutrosophic point relation of the axis sets `m` and `n` (the paper's Def. 4):
+/// each pair `(r, s)` gets the smaller of the two sets' degrees, degree by degree. The sets
+/// are sequences of `(value, (truth, indeterminacy, falsity))`; `pairs` (a sequence of
+/// `(r, s)`) restricts and orders the result, otherwise every pair of `m x n` in order.
+/// Returns `(positions, degrees)` arrays, ready for `Bezier(positions, degrees)`.
+///
+/// >>> import neutrospline as ns
+/// >>> positions, degrees = ns.largest_relation([(1.0, (0.3, 0.6, 0.1))], [(3.0, (0.5, 0.2, 0.4))])
+/// >>> positions.tolist(), degrees.tolist()
+/// ([[1.0, 3.0]], [[0.3, 0.2, 0.1]])
+#[pyfunction]
+#[pyo3(signature = (m, n, pairs = None))]
+pub fn largest_relation<'py>(
+    py: Python<'py>,
+    m: &Bound<'py, PyAny>,
+    n: &Bound<'py, PyAny>,
+    pairs: Option<Vec<(f64, f64)>>,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let m = axis_set(AxisSetName::M, m)?;
+    let n = axis_set(AxisSetName::N, n)?;
+    let relation = match pairs {
+        Some(pairs) => PointRelation::largest_on_pairs(&m, &n, &pairs).map_err(invalid)?,
+        None => PointRelation::largest(&m, &n),
+    };
+    relation_arrays(py, &relation)
+}
+
+/// Checks that the points `(positions (k, 2), degrees (k, 3))` form a neutrosophic point
+/// relation of the axis sets `m` and `n` (Def. 4): every degree of every pair at most the same
+/// degree of `m` at `r` and of `n` at `s`. Raises `ModelError` naming the first violating pair,
+/// the degree, both values and the axis set.
+///
+/// >>> import neutrospline as ns
+/// >>> m, n = [(1.0, (0.3, 0.6, 0.1))], [(3.0, (0.5, 0.2, 0.4))]
+/// >>> ns.check_relation([[1.0, 3.0]], [[0.3, 0.2, 0.1]], m, n)
+/// >>> ns.check_relation([[1.0, 3.0]], [[0.4, 0.2, 0.1]], m, n)
+/// Traceback (most recent call last):
+///   ...
+/// neutrospline.ModelError: pair 0 at (1, 3): truth = 0.4 exceeds 0.3, the truth of M at r = 1 (Def. 4: each degree of the relation must be <= the same degree of M at r and of N at s)
+#[pyfunction]
+pub fn check_relation(
+    positions: &Bound<'_, PyAny>,
+    degrees: &Bound<'_, PyAny>,
+    m: &Bound<'_, PyAny>,
+    n: &Bound<'_, PyAny>,
+) -> PyResult<()> {
+    let m = axis_set(AxisSetName::M, m)?;
+    let n = axis_set(AxisSetName::N, n)?;
+    let arrays = model::PointArrays::read(
+        positions,
+        degrees,
+        neutrospline::Membership::Neutrosophic,
+        false,
+    )?;
+    if arrays.dimension != 2 {
+        return Err(invalid_at(
+            "positions",
+            "a point relation has two coordinates (r, s) per pair",
+        ));
+    }
+    let relation = PointRelation::new(arrays.points::<2>());
+    relation.check_admissible(&m, &n).map_err(invalid)
+}

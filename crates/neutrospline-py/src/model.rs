@@ -1,0 +1,323 @@
+//! What curves and surfaces share: building a [`Model`] from arrays (positions, degrees under
+//! a membership rule, names), saving it through the formats crate, drawing it with the plot
+//! crate, and carrying it through pickle.
+
+use std::io::Write;
+use std::path::Path;
+use std::str::FromStr;
+
+use neutrospline::{ControlPoint, Degrees, Membership};
+use neutrospline_io::{AtomicFile, Format, Model, ReadOptions, Shape};
+use neutrospline_plot::{render_png, render_svg, PlotModel, PlotOptions, View};
+use numpy::{PyReadonlyArrayDyn, PyUntypedArrayMethods};
+use pyo3::exceptions::PyOSError;
+use pyo3::prelude::*;
+
+use crate::arrays::float_array;
+use crate::errors::{invalid, invalid_at, write_error};
+
+/// The name, description and point names given with the arrays.
+#[derive(Default)]
+pub struct Meta {
+    pub name: Option<String>,
+    pub description: Option<String>,
+    pub point_names: Option<Vec<Option<String>>>,
+}
+
+/// Parses a membership rule name (`neutrosophic`, `intuitionistic`, `fuzzy`).
+pub fn membership(name: &str) -> PyResult<Membership> {
+    Membership::from_str(name).map_err(|e| invalid_at("membership", e))
+}
+
+/// The model of `shape` under `membership`, with the names of `meta`.
+pub fn model(shape: impl Into<Shape>, membership: Membership, meta: Meta) -> PyResult<Model> {
+    let mut model = Model::new(shape)
+        .with_membership(membership)
+        .map_err(invalid)?;
+    if let Some(name) = meta.name {
+        model = model.with_name(name);
+    }
+    if let Some(description) = meta.description {
+        model = model.with_description(description);
+    }
+    if let Some(names) = meta.point_names {
+        model = model
+            .with_point_names(names)
+            .map_err(|e| invalid_at("point_names", e))?;
+    }
+    Ok(model)
+}
+
+/// A model like `like` (membership, name, description; point names when the count is
+/// unchanged) for a new shape derived from its shape by `split`, `elevate` and the like.
+pub fn derived(like: &Model, shape: impl Into<Shape>) -> PyResult<Model> {
+    let shape = shape.into();
+    let names = like.point_names();
+    let meta = Meta {
+        name: like.name().map(str::to_owned),
+        description: like.description().map(str::to_owned),
+        point_names: (names.len() == shape.control_count() && names.iter().any(Option::is_some))
+            .then(|| names.to_vec()),
+    };
+    model(shape, like.membership(), meta)
+}
+
+/// Control points from `positions` (`(n, dimension)`, or `rows x cols` grids when `grid`) and
+/// `degrees` (`(n, 3)` as truth, indeterminacy, falsity; `(n, 2)` as truth, falsity under
+/// the intuitionistic rule; `(n,)` or `(n, 1)` truth alone under the fuzzy rule).
+pub struct PointArrays {
+    /// The positions, point-major.
+    pub positions: Vec<f64>,
+    /// Coordinates per point.
+    pub dimension: usize,
+    /// The degrees, one triple per point.
+    pub degrees: Vec<Degrees>,
+    /// `(rows, cols)` of a grid.
+    pub grid: Option<(usize, usize)>,
+}
+
+impl PointArrays {
+    /// Reads and checks the arrays; `grid` reads `(rows, cols, 3)` positions.
+    pub fn read(
+        positions: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        membership: Membership,
+        grid: bool,
+    ) -> PyResult<PointArrays> {
+        let positions = float_array(positions, "positions")?;
+        let degree_array = float_array(degrees, "degrees")?;
+        let shape = positions.shape().to_vec();
+        let (count, dimension, grid) = match (grid, shape.as_slice()) {
+            (false, &[n, d]) if d == 2 || d == 3 => (n, d, None),
+            (true, &[rows, cols, 3]) => (rows * cols, 3, Some((rows, cols))),
+            (false, _) => {
+                return Err(invalid_at(
+                    "positions",
+                    format!(
+                        "expected an array of shape (n, 2) or (n, 3) (one row x, y[, z] per \
+                         control point), got shape {shape:?}"
+                    ),
+                ))
+            }
+            (true, _) => {
+                return Err(invalid_at(
+                    "positions",
+                    format!(
+                        "expected an array of shape (rows, cols, 3) (x, y, z of each control \
+                         point of the grid), got shape {shape:?}"
+                    ),
+                ))
+            }
+        };
+        let flat: Vec<f64> = positions.as_array().iter().copied().collect();
+        let degrees = read_degrees(&degree_array, &shape[..shape.len() - 1], membership)?;
+        debug_assert_eq!(degrees.len(), count);
+        Ok(PointArrays {
+            positions: flat,
+            dimension,
+            degrees,
+            grid,
+        })
+    }
+
+    /// The control points, with `D` equal to [`PointArrays::dimension`].
+    pub fn points<const D: usize>(&self) -> Vec<ControlPoint<D>> {
+        self.positions
+            .chunks_exact(D)
+            .zip(&self.degrees)
+            .map(|(p, &d)| {
+                let mut position = [0.0; D];
+                position.copy_from_slice(p);
+                ControlPoint::new(position, d)
+            })
+            .collect()
+    }
+}
+
+/// The degrees of `points` points (the leading shape `points`), one row each, checked under
+/// `membership`; a bad value is named as `degrees[i]` (or `degrees[i, j]` on a grid).
+fn read_degrees(
+    array: &PyReadonlyArrayDyn<'_, f64>,
+    points: &[usize],
+    membership: Membership,
+) -> PyResult<Vec<Degrees>> {
+    let shape = array.shape();
+    let columns = match membership {
+        Membership::Neutrosophic => "3 (truth, indeterminacy, falsity)",
+        Membership::Intuitionistic => "3 (truth, indeterminacy, falsity) or 2 (truth, falsity)",
+        Membership::Fuzzy => "1 (truth) or 3 (truth, 0, 0), or no last axis",
+    };
+    let width = if shape.len() == points.len() + 1 && shape[..points.len()] == *points {
+        Some(shape[points.len()])
+    } else if shape == points && membership == Membership::Fuzzy {
+        Some(1)
+    } else {
+        None
+    };
+    let allowed = match (width, membership) {
+        (Some(3), _) | (Some(2), Membership::Intuitionistic) | (Some(1), Membership::Fuzzy) => {
+            width
+        }
+        _ => None,
+    };
+    let Some(width) = allowed else {
+        return Err(invalid_at(
+            "degrees",
+            format!(
+                "expected one row per control point (leading shape {points:?}) of {columns} \
+                 columns under the {membership} rule, got shape {shape:?}"
+            ),
+        ));
+    };
+    let values: Vec<f64> = array.as_array().iter().copied().collect();
+    let cols = points.get(1).copied();
+    values
+        .chunks_exact(width)
+        .enumerate()
+        .map(|(k, row)| {
+            let (truth, indeterminacy, falsity) = match *row {
+                [t, i, f] => (t, Some(i), Some(f)),
+                [t, f] => (t, None, Some(f)),
+                [t] => (t, None, None),
+                _ => (f64::NAN, None, None),
+            };
+            Degrees::with_membership(membership, truth, indeterminacy, falsity).map_err(|e| {
+                let at = match cols {
+                    Some(c) if points.len() == 2 => format!("degrees[{}, {}]", k / c, k % c),
+                    _ => format!("degrees[{k}]"),
+                };
+                invalid_at(at, e)
+            })
+        })
+        .collect()
+}
+
+/// Positions, degrees and weights of control points as row-major values.
+pub fn point_rows<const D: usize>(points: &[ControlPoint<D>]) -> (Vec<f64>, Vec<f64>) {
+    let positions = points.iter().flat_map(|p| p.position).collect();
+    let degrees = points.iter().flat_map(|p| p.degrees.to_array()).collect();
+    (positions, degrees)
+}
+
+/// The format of `path` by its extension, for saving a model.
+fn model_format(path: &Path) -> PyResult<Format> {
+    Format::from_path(path).map_err(invalid)
+}
+
+/// Saves `model` to `path` (TOML, JSON or CSV by the extension), atomically.
+pub fn save(model: &Model, path: &Path) -> PyResult<()> {
+    model_format(path)?;
+    neutrospline_io::save(model, path).map_err(write_error)
+}
+
+/// The options of a figure: size, title and caption (the model's description by default).
+fn plot_options(
+    model: &Model,
+    width: Option<u32>,
+    height: Option<u32>,
+    title: Option<String>,
+    caption: Option<String>,
+) -> PyResult<PlotOptions> {
+    let mut options = PlotOptions::new();
+    if let Some(width) = width {
+        options = options.with_width(width);
+    }
+    if let Some(height) = height {
+        options = options.with_height(height);
+    }
+    if let Some(title) = title {
+        options = options.with_title(title);
+    }
+    if let Some(caption) = caption.or_else(|| model.description().map(str::to_owned)) {
+        options = options.with_caption(caption);
+    }
+    options.validate().map_err(invalid)?;
+    Ok(options)
+}
+
+/// What a figure is asked for.
+pub struct FigureRequest {
+    pub view: String,
+    pub width: Option<u32>,
+    pub height: Option<u32>,
+    pub title: Option<String>,
+    pub caption: Option<String>,
+}
+
+impl FigureRequest {
+    /// The `all` view at the default size.
+    pub fn all() -> FigureRequest {
+        FigureRequest {
+            view: "all".into(),
+            width: None,
+            height: None,
+            title: None,
+            caption: None,
+        }
+    }
+
+    fn prepare(self, model: &Model) -> PyResult<(PlotModel, View, PlotOptions)> {
+        let view = View::from_str(&self.view).map_err(|e| invalid_at("view", e))?;
+        let options = plot_options(model, self.width, self.height, self.title, self.caption)?;
+        let figure = PlotModel::from_model(model).map_err(invalid)?;
+        Ok((figure, view, options))
+    }
+}
+
+/// The SVG text of a figure of `model`.
+pub fn svg(py: Python<'_>, model: &Model, request: FigureRequest) -> PyResult<String> {
+    let (figure, view, options) = request.prepare(model)?;
+    py.detach(|| render_svg(&figure, view, &options))
+        .map_err(invalid)
+}
+
+/// Writes a figure of `model` to `path` (`.svg` or `.png`), atomically.
+pub fn save_figure(
+    py: Python<'_>,
+    model: &Model,
+    path: &Path,
+    request: FigureRequest,
+) -> PyResult<()> {
+    let extension = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let png = match extension.as_deref() {
+        Some("svg") => false,
+        Some("png") => true,
+        _ => {
+            return Err(invalid_at(
+                path.display(),
+                "unsupported figure extension (give .svg or .png)",
+            ))
+        }
+    };
+    let (figure, view, options) = request.prepare(model)?;
+    let bytes = py
+        .detach(|| {
+            if png {
+                render_png(&figure, view, &options)
+            } else {
+                render_svg(&figure, view, &options).map(String::into_bytes)
+            }
+        })
+        .map_err(invalid)?;
+    let failed =
+        |e: std::io::Error| PyOSError::new_err(format!("{}: cannot write: {e}", path.display()));
+    let mut file = AtomicFile::create(path).map_err(failed)?;
+    file.write_all(&bytes).map_err(failed)?;
+    file.commit().map_err(failed)
+}
+
+/// The model as JSON text (17 significant digits: the round trip is exact), for pickle.
+pub fn to_state(model: &Model) -> String {
+    neutrospline_io::to_json_string(model)
+}
+
+/// The model of [`to_state`] text.
+pub fn from_state(text: &str) -> PyResult<Model> {
+    let mut options = ReadOptions::default();
+    options.limits.max_control_points = u64::MAX;
+    options.limits.max_file_size = u64::MAX;
+    neutrospline_io::parse("<pickle>", Format::Json, text.as_bytes(), &options).map_err(invalid)
+}

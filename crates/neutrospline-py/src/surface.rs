@@ -1,0 +1,536 @@
+//! The `Surface` class: tensor-product Bézier, B-spline and NURBS surfaces in space.
+
+use std::path::PathBuf;
+
+use neutrospline::{EvaluateSurface, KnotVector, Surface as CoreSurface, SurfaceKind};
+use neutrospline_io::{Model, Shape};
+use numpy::ndarray::{ArrayView, IxDyn};
+use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
+use pyo3::prelude::*;
+
+use crate::arrays::{float_array, readonly_array};
+use crate::errors::{invalid, invalid_at};
+use crate::model::{self, FigureRequest, Meta, PointArrays};
+
+/// A neutrosophic tensor-product surface `S(u, v) = sum_i sum_j B_i(u) B_j(v) P_ij` (Bézier,
+/// B-spline or NURBS) in space, the degrees blended as extra coordinates. Build one with
+/// `Surface.bezier`, `Surface.bspline` or `Surface.nurbs` from grids of shape
+/// (rows, cols, 3).
+///
+/// >>> import neutrospline as ns
+/// >>> grid = [[[0, 0, 0], [1, 0, 0]], [[0, 1, 0], [1, 1, 1]]]
+/// >>> degrees = [[[1, 0, 0], [1, 0, 0]], [[0, 0, 1], [0, 0, 1]]]
+/// >>> patch = ns.Surface.bezier(grid, degrees)
+/// >>> patch.evaluate(0.5, 0.5).tolist()
+/// [0.5, 0.5, 0.25, 0.5, 0.0, 0.5]
+#[pyclass(frozen, module = "neutrospline")]
+pub struct Surface {
+    model: Model,
+    surface: CoreSurface,
+}
+
+impl Surface {
+    /// The surface of a surface model (`None` for a curve).
+    pub fn of_model(model: Model) -> Option<Surface> {
+        match model.shape() {
+            Shape::Surface(s) => Some(Surface {
+                surface: s.clone(),
+                model,
+            }),
+            _ => None,
+        }
+    }
+
+    /// The model.
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+}
+
+/// What the constructors read besides the grids.
+struct Settings<'a, 'py> {
+    kind: SurfaceKind,
+    weights: Option<&'a Bound<'py, PyAny>>,
+    degree: (usize, usize),
+    knots: (Option<&'a Bound<'py, PyAny>>, Option<&'a Bound<'py, PyAny>>),
+}
+
+/// Reads `degree`: one number for both directions, or `(degree_u, degree_v)`.
+fn degrees_uv(degree: &Bound<'_, PyAny>) -> PyResult<(usize, usize)> {
+    if let Ok(p) = degree.extract::<usize>() {
+        return Ok((p, p));
+    }
+    degree.extract::<(usize, usize)>().map_err(|_| {
+        invalid_at(
+            "degree",
+            format!("expected a degree or a pair (degree_u, degree_v), got {degree}"),
+        )
+    })
+}
+
+fn knot_vector(
+    knots: Option<&Bound<'_, PyAny>>,
+    degree: usize,
+    count: usize,
+    what: &str,
+) -> PyResult<KnotVector> {
+    match knots {
+        Some(k) => {
+            let values = float_array(k, what)?.as_array().iter().copied().collect();
+            KnotVector::new(values, degree, count)
+        }
+        None => KnotVector::clamped_uniform(degree, count),
+    }
+    .map_err(|e| invalid_at(what, e))
+}
+
+fn build(
+    positions: &Bound<'_, PyAny>,
+    degrees: &Bound<'_, PyAny>,
+    membership: &str,
+    settings: Settings<'_, '_>,
+    meta: Meta,
+) -> PyResult<Surface> {
+    let membership = model::membership(membership)?;
+    let arrays = PointArrays::read(positions, degrees, membership, true)?;
+    let (rows, cols) = arrays.grid.unwrap_or((0, 0));
+    let points = arrays.points::<3>();
+    let surface = match settings.kind {
+        SurfaceKind::Bezier => CoreSurface::bezier(rows, cols, points),
+        kind => {
+            let knots_u = knot_vector(settings.knots.0, settings.degree.0, rows, "knots_u")?;
+            let knots_v = knot_vector(settings.knots.1, settings.degree.1, cols, "knots_v")?;
+            if kind == SurfaceKind::Nurbs {
+                let weights = settings
+                    .weights
+                    .map(|w| float_array(w, "weights"))
+                    .transpose()?;
+                let weights = match weights {
+                    Some(w) if w.shape() == [rows, cols] => w.as_array().iter().copied().collect(),
+                    Some(w) => {
+                        return Err(invalid_at(
+                            "weights",
+                            format!(
+                                "expected an array of shape ({rows}, {cols}) (one weight per \
+                                 control point), got shape {:?}",
+                                w.shape()
+                            ),
+                        ))
+                    }
+                    None => Vec::new(),
+                };
+                CoreSurface::nurbs(rows, cols, points, weights, knots_u, knots_v)
+            } else {
+                CoreSurface::bspline(rows, cols, points, knots_u, knots_v)
+            }
+        }
+    }
+    .map_err(invalid)?;
+    let model = model::model(surface, membership, meta)?;
+    Ok(Surface::of_model(model).expect("a surface shape"))
+}
+
+/// `u` and `v` as flat parameter lists of one shape.
+fn parameters(u: &Bound<'_, PyAny>, v: &Bound<'_, PyAny>) -> PyResult<(Vec<[f64; 2]>, Vec<usize>)> {
+    let u = float_array(u, "u")?;
+    let v = float_array(v, "v")?;
+    if u.shape() != v.shape() {
+        return Err(invalid_at(
+            "v",
+            format!(
+                "u and v must have the same shape, got {:?} and {:?}",
+                u.shape(),
+                v.shape()
+            ),
+        ));
+    }
+    let shape = u.shape().to_vec();
+    let params = u
+        .as_array()
+        .iter()
+        .zip(v.as_array().iter())
+        .map(|(&u, &v)| [u, v])
+        .collect();
+    Ok((params, shape))
+}
+
+/// The position in a flat list as an index into `shape`, for messages (`[i, j]`).
+fn index_text(mut k: usize, shape: &[usize]) -> String {
+    let mut index = vec![0; shape.len()];
+    for (slot, &size) in index.iter_mut().zip(shape).rev() {
+        *slot = k % size.max(1);
+        k /= size.max(1);
+    }
+    let parts: Vec<String> = index.iter().map(ToString::to_string).collect();
+    format!("[{}]", parts.join(", "))
+}
+
+/// Writes `values` (`shape + [columns]`, row-major) into `out` or a new array.
+fn emit<'py>(
+    py: Python<'py>,
+    values: Vec<f64>,
+    shape: &[usize],
+    columns: usize,
+    out: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Py<PyAny>> {
+    let mut full = shape.to_vec();
+    full.push(columns);
+    let Some(out) = out else {
+        return Ok(crate::arrays::new_array(py, values, &full)?.unbind());
+    };
+    let array = out
+        .cast::<PyArrayDyn<f64>>()
+        .map_err(|_| invalid_at("out", format!("expected a float64 array of shape {full:?}")))?;
+    if array.shape() != full.as_slice() {
+        return Err(invalid_at(
+            "out",
+            format!("expected shape {full:?}, got {:?}", array.shape()),
+        ));
+    }
+    let source = ArrayView::from_shape(IxDyn(&full), &values).map_err(invalid)?;
+    array.try_readwrite()?.as_array_mut().assign(&source);
+    Ok(array.clone().into_any().unbind())
+}
+
+#[pymethods]
+impl Surface {
+    /// A Bézier surface from `positions` of shape (rows, cols, 3) and `degrees` of shape
+    /// (rows, cols, 3) (truth, indeterminacy, falsity; see `Bezier` for the other rules).
+    #[staticmethod]
+    #[pyo3(signature = (positions, degrees, membership = "neutrosophic", *, name = None, description = None))]
+    fn bezier(
+        positions: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        membership: &str,
+        name: Option<String>,
+        description: Option<String>,
+    ) -> PyResult<Surface> {
+        let settings = Settings {
+            kind: SurfaceKind::Bezier,
+            weights: None,
+            degree: (0, 0),
+            knots: (None, None),
+        };
+        let meta = Meta {
+            name,
+            description,
+            point_names: None,
+        };
+        build(positions, degrees, membership, settings, meta)
+    }
+
+    /// A B-spline surface of `degree` (one number, or `(degree_u, degree_v)`) on `knots_u`
+    /// and `knots_v` (clamped uniform by default).
+    #[staticmethod]
+    #[pyo3(signature = (positions, degrees, degree = None, knots_u = None, knots_v = None, membership = "neutrosophic", *, name = None, description = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn bspline(
+        positions: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        degree: Option<&Bound<'_, PyAny>>,
+        knots_u: Option<&Bound<'_, PyAny>>,
+        knots_v: Option<&Bound<'_, PyAny>>,
+        membership: &str,
+        name: Option<String>,
+        description: Option<String>,
+    ) -> PyResult<Surface> {
+        let settings = Settings {
+            kind: SurfaceKind::BSpline,
+            weights: None,
+            degree: degree.map(degrees_uv).transpose()?.unwrap_or((3, 3)),
+            knots: (knots_u, knots_v),
+        };
+        let meta = Meta {
+            name,
+            description,
+            point_names: None,
+        };
+        build(positions, degrees, membership, settings, meta)
+    }
+
+    /// A NURBS surface: as `Surface.bspline`, with positive `weights` of shape (rows, cols).
+    #[staticmethod]
+    #[pyo3(signature = (positions, degrees, weights, degree = None, knots_u = None, knots_v = None, membership = "neutrosophic", *, name = None, description = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn nurbs(
+        positions: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        weights: &Bound<'_, PyAny>,
+        degree: Option<&Bound<'_, PyAny>>,
+        knots_u: Option<&Bound<'_, PyAny>>,
+        knots_v: Option<&Bound<'_, PyAny>>,
+        membership: &str,
+        name: Option<String>,
+        description: Option<String>,
+    ) -> PyResult<Surface> {
+        let settings = Settings {
+            kind: SurfaceKind::Nurbs,
+            weights: Some(weights),
+            degree: degree.map(degrees_uv).transpose()?.unwrap_or((3, 3)),
+            knots: (knots_u, knots_v),
+        };
+        let meta = Meta {
+            name,
+            description,
+            point_names: None,
+        };
+        build(positions, degrees, membership, settings, meta)
+    }
+
+    /// Evaluates at `(u, v)` (numbers, or arrays of one shape S): an array of shape S + (6,),
+    /// columns x, y, z, truth, indeterminacy, falsity; written into `out` when given. The GIL
+    /// is released while the engine runs.
+    #[pyo3(signature = (u, v, out = None))]
+    fn evaluate(
+        &self,
+        py: Python<'_>,
+        u: &Bound<'_, PyAny>,
+        v: &Bound<'_, PyAny>,
+        out: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Py<PyAny>> {
+        let (params, shape) = parameters(u, v)?;
+        let surface = &self.surface;
+        let values = py
+            .detach(|| {
+                let mut values = Vec::with_capacity(params.len() * 6);
+                for (k, &[u, v]) in params.iter().enumerate() {
+                    let p = surface.evaluate(u, v).map_err(|e| (k, e))?;
+                    values.extend_from_slice(&p.position);
+                    values.extend_from_slice(&p.degrees.to_array());
+                }
+                Ok(values)
+            })
+            .map_err(|(k, e)| invalid_at(format!("(u, v){}", index_text(k, &shape)), e))?;
+        emit(py, values, &shape, 6, out)
+    }
+
+    /// `surface(u, v)` is `surface.evaluate(u, v)`.
+    #[pyo3(signature = (u, v, out = None))]
+    fn __call__(
+        &self,
+        py: Python<'_>,
+        u: &Bound<'_, PyAny>,
+        v: &Bound<'_, PyAny>,
+        out: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Py<PyAny>> {
+        self.evaluate(py, u, v, out)
+    }
+
+    /// The unit normal `S_u x S_v / |S_u x S_v|` at `(u, v)`: shape S + (3,), NaN where the
+    /// surface is degenerate (the partial derivatives parallel).
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> flat = ns.Surface.bezier([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], [[[1, 0, 0]] * 2] * 2)
+    /// >>> flat.normal(0.5, 0.5).tolist()
+    /// [0.0, 0.0, 1.0]
+    fn normal(
+        &self,
+        py: Python<'_>,
+        u: &Bound<'_, PyAny>,
+        v: &Bound<'_, PyAny>,
+    ) -> PyResult<Py<PyAny>> {
+        let (params, shape) = parameters(u, v)?;
+        let surface = &self.surface;
+        let values = py
+            .detach(|| {
+                let mut values = Vec::with_capacity(params.len() * 3);
+                for (k, &[u, v]) in params.iter().enumerate() {
+                    let n = surface.normal(u, v).map_err(|e| (k, e))?;
+                    values.extend_from_slice(&n.unwrap_or([f64::NAN; 3]));
+                }
+                Ok(values)
+            })
+            .map_err(|(k, e)| invalid_at(format!("(u, v){}", index_text(k, &shape)), e))?;
+        emit(py, values, &shape, 3, None)
+    }
+
+    /// The parameter domains `((u0, u1), (v0, v1))`.
+    #[getter]
+    fn domain(&self) -> ((f64, f64), (f64, f64)) {
+        let [u, v] = EvaluateSurface::domain(&self.surface);
+        ((u.start, u.end), (v.start, v.end))
+    }
+
+    /// `"bezier"`, `"bspline"` or `"nurbs"`.
+    #[getter]
+    fn kind(&self) -> &'static str {
+        self.surface.kind().name()
+    }
+
+    /// `(degree_u, degree_v)`.
+    #[getter]
+    fn degree(&self) -> (usize, usize) {
+        (self.surface.degree_u(), self.surface.degree_v())
+    }
+
+    /// 3.
+    #[getter]
+    fn dimension(&self) -> usize {
+        3
+    }
+
+    /// The membership rule.
+    #[getter]
+    fn membership(&self) -> &'static str {
+        self.model.membership().name()
+    }
+
+    /// The model's name, if any.
+    #[getter]
+    fn name(&self) -> Option<String> {
+        self.model.name().map(str::to_owned)
+    }
+
+    /// The model's description, if any.
+    #[getter]
+    fn description(&self) -> Option<String> {
+        self.model.description().map(str::to_owned)
+    }
+
+    /// The control grid's positions, shape (rows, cols, 3), read-only.
+    #[getter]
+    fn positions<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let (positions, _) = model::point_rows(&self.surface.control_points());
+        readonly_array(
+            py,
+            positions,
+            &[self.surface.rows(), self.surface.cols(), 3],
+        )
+    }
+
+    /// The control grid's degrees, shape (rows, cols, 3), read-only.
+    #[getter]
+    fn degrees<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let (_, degrees) = model::point_rows(&self.surface.control_points());
+        readonly_array(py, degrees, &[self.surface.rows(), self.surface.cols(), 3])
+    }
+
+    /// The NURBS weights, shape (rows, cols), read-only; None for other kinds.
+    #[getter]
+    fn weights<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        let shape = [self.surface.rows(), self.surface.cols()];
+        self.surface
+            .weights()
+            .map(|w| readonly_array(py, w.to_vec(), &shape))
+            .transpose()
+    }
+
+    /// The knots along u, read-only.
+    #[getter]
+    fn knots_u<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let knots = self.surface.knots_u().knots().to_vec();
+        let n = knots.len();
+        readonly_array(py, knots, &[n])
+    }
+
+    /// The knots along v, read-only.
+    #[getter]
+    fn knots_v<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let knots = self.surface.knots_v().knots().to_vec();
+        let n = knots.len();
+        readonly_array(py, knots, &[n])
+    }
+
+    /// A box holding the surface: the control grid's (the surface lies in its convex hull),
+    /// shape (2, 6), rows minimum and maximum of x, y, z, truth, indeterminacy, falsity.
+    fn bounding_box<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let b = self.surface.control_bounding_box();
+        let intervals: Vec<_> = b
+            .position
+            .iter()
+            .copied()
+            .chain([b.truth, b.indeterminacy, b.falsity])
+            .collect();
+        let rows = intervals
+            .iter()
+            .map(|i| i.min)
+            .chain(intervals.iter().map(|i| i.max))
+            .collect();
+        readonly_array(py, rows, &[2, 6])
+    }
+
+    /// Writes the model to `path` (TOML, JSON or CSV by the extension), atomically.
+    fn save(&self, path: PathBuf) -> PyResult<()> {
+        model::save(&self.model, &path)
+    }
+
+    /// The SVG text of the figure `view` (see `Curve.to_svg`).
+    #[pyo3(signature = (view = "all".to_owned(), width = None, height = None, title = None, caption = None))]
+    fn to_svg(
+        &self,
+        py: Python<'_>,
+        view: String,
+        width: Option<u32>,
+        height: Option<u32>,
+        title: Option<String>,
+        caption: Option<String>,
+    ) -> PyResult<String> {
+        let request = FigureRequest {
+            view,
+            width,
+            height,
+            title,
+            caption,
+        };
+        model::svg(py, &self.model, request)
+    }
+
+    /// Writes the figure `view` to `path` (`.svg` or `.png`), atomically.
+    #[pyo3(signature = (path, view = "all".to_owned(), width = None, height = None, title = None, caption = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn save_figure(
+        &self,
+        py: Python<'_>,
+        path: PathBuf,
+        view: String,
+        width: Option<u32>,
+        height: Option<u32>,
+        title: Option<String>,
+        caption: Option<String>,
+    ) -> PyResult<()> {
+        let request = FigureRequest {
+            view,
+            width,
+            height,
+            title,
+            caption,
+        };
+        model::save_figure(py, &self.model, &path, request)
+    }
+
+    /// The `all` view, shown inline by Jupyter.
+    fn _repr_svg_(&self, py: Python<'_>) -> PyResult<String> {
+        model::svg(py, &self.model, FigureRequest::all())
+    }
+
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other
+            .cast::<Surface>()
+            .is_ok_and(|other| other.get().model == self.model)
+    }
+
+    fn __repr__(&self) -> String {
+        let mut text = format!(
+            "Surface(kind='{}', rows={}, cols={}, degree=({}, {}), membership='{}'",
+            self.surface.kind().name(),
+            self.surface.rows(),
+            self.surface.cols(),
+            self.surface.degree_u(),
+            self.surface.degree_v(),
+            self.model.membership().name()
+        );
+        if let Some(name) = self.model.name() {
+            text.push_str(&format!(", name={name:?}"));
+        }
+        text.push(')');
+        text
+    }
+
+    /// Pickling: the model as exact JSON.
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (String, usize))> {
+        let restore = py
+            .import("neutrospline._neutrospline")?
+            .getattr("_restore")?;
+        Ok((restore, (model::to_state(&self.model), 0)))
+    }
+}

@@ -1,0 +1,465 @@
+"""The Python package against independent references: the command line's own output, scipy's
+B-splines, the `bezier` package, and closed forms; shapes, dtypes, errors, files, pickling,
+figures, threads."""
+
+import csv
+import io
+import pickle
+import subprocess
+import threading
+
+import bezier
+import numpy as np
+import pytest
+import scipy.interpolate
+
+import neutrospline as ns
+
+RNG = np.random.default_rng(20261201)
+
+
+def run_cli(cli, *args, cwd=None):
+    done = subprocess.run(
+        [str(cli), *map(str, args)], capture_output=True, text=True, cwd=cwd
+    )
+    return done
+
+
+def cli_table(cli, *args, cwd=None):
+    done = run_cli(cli, *args, cwd=cwd)
+    assert done.returncode == 0, done.stderr
+    rows = list(csv.reader(io.StringIO(done.stdout)))
+    return rows[0], np.array(rows[1:], dtype=float)
+
+
+def assert_close(got, want, scale=None, rel=1e-13):
+    got = np.asarray(got)
+    want = np.asarray(want)
+    assert got.shape == want.shape
+    scale = np.max(np.abs(want)) if scale is None else scale
+    assert np.max(np.abs(got - want), initial=0.0) <= rel * max(scale, 1.0)
+
+
+def random_degrees(n):
+    return RNG.uniform(0.0, 1.0, size=(n, 3))
+
+
+# ---- values against the command line and independent libraries ----
+
+
+@pytest.mark.parametrize(
+    "model", ["example1.toml", "bspline.toml", "nurbs-circle.toml", "helix3d.toml"]
+)
+def test_curves_match_the_command_line(cli, root, model):
+    path = root / "examples" / model
+    header, table = cli_table(cli, "eval", path, "--samples", 257)
+    curve = ns.load(path)
+    assert header[0] == "t" and len(header) == curve.dimension + 4
+    t = table[:, 0]
+    # The batch engine (SIMD kernels) against eval's output: equal to rounding.
+    assert_close(curve.sample(257), table[:, 1:], rel=1e-15)
+    assert_close(curve.evaluate(t), table[:, 1:], rel=1e-15)
+
+
+def test_bspline_against_scipy():
+    for degree, count, dimension in [(1, 5, 2), (2, 9, 3), (3, 12, 2), (5, 20, 3)]:
+        positions = RNG.uniform(-100.0, 100.0, size=(count, dimension))
+        degrees = random_degrees(count)
+        inner = np.sort(RNG.uniform(0.0, 1.0, size=count - degree - 1))
+        knots = np.concatenate([np.zeros(degree + 1), inner, np.ones(degree + 1)])
+        curve = ns.BSpline(positions, degrees, degree=degree, knots=knots)
+        reference = scipy.interpolate.BSpline(
+            knots, np.hstack([positions, degrees]), degree
+        )
+        t = np.concatenate([RNG.uniform(0.0, 1.0, 1000), [0.0, 1.0], inner])
+        want = reference(t)
+        got = curve(t)
+        assert_close(got[:, :dimension], want[:, :dimension])
+        assert_close(got[:, dimension:], want[:, dimension:], scale=1.0)
+        np.testing.assert_array_equal(curve.knots, knots)
+
+
+def test_nurbs_against_scipy_homogeneous():
+    degree, count = 3, 10
+    positions = RNG.uniform(-10.0, 10.0, size=(count, 3))
+    degrees = random_degrees(count)
+    weights = RNG.uniform(0.2, 5.0, size=count)
+    curve = ns.Nurbs(positions, degrees, weights, degree=degree)
+    knots = curve.knots
+    homogeneous = np.hstack([np.hstack([positions, degrees]) * weights[:, None], weights[:, None]])
+    reference = scipy.interpolate.BSpline(knots, homogeneous, degree)
+    t = np.linspace(0.0, 1.0, 2001)
+    h = reference(t)
+    want = h[:, :-1] / h[:, -1:]
+    got = curve(t)
+    assert_close(got[:, :3], want[:, :3], rel=1e-13)
+    assert_close(got[:, 3:], want[:, 3:], scale=1.0, rel=1e-13)
+
+
+def test_bezier_against_the_bezier_package():
+    for n in [2, 4, 8, 16]:
+        nodes = RNG.uniform(-5.0, 5.0, size=(2, n))
+        degrees = random_degrees(n)
+        curve = ns.Bezier.from_nodes(nodes, degrees)
+        assert curve == ns.Bezier(nodes.T, degrees)
+        s = np.linspace(0.0, 1.0, 1001)
+        positions = bezier.Curve(np.asfortranarray(nodes), degree=n - 1).evaluate_multi(s)
+        blended = bezier.Curve(np.asfortranarray(degrees.T), degree=n - 1).evaluate_multi(s)
+        got = curve(s)
+        assert_close(got[:, :2], positions.T)
+        assert_close(got[:, 2:], blended.T, scale=1.0)
+        # The first derivative is the hodograph.
+        for k in [0, 500, 1000]:
+            hodograph = bezier.Curve(np.asfortranarray(nodes), degree=n - 1).evaluate_hodograph(s[k])
+            assert_close(curve.derivative()(s[k])[:2], hodograph[:, 0])
+
+
+def test_example1_closed_forms():
+    curve = ns.example1()
+    assert curve.name == "Example 1"
+    assert curve.point_names == ["C0", "C1", "C2", "C3"]
+    # C(1/2) = (P0 + 3 P1 + 3 P2 + P3) / 8 in every column.
+    p = np.hstack([curve.positions, curve.degrees])
+    assert_close(curve(0.5), (p[0] + 3 * p[1] + 3 * p[2] + p[3]) / 8, scale=1.0, rel=1e-15)
+    # The second derivative at 0 is 6 (P2 - 2 P1 + P0).
+    assert_close(curve.derivative(2)(0.0), 6 * (p[2] - 2 * p[1] + p[0]), rel=1e-15)
+    assert curve.derivative().derivative() == curve.derivative(2)
+    # The length, from scripts/reference/make_arc_length_reference.py (mpmath).
+    assert abs(curve.length() - 8.786730707839524) <= 1e-12 * 8.786730707839524
+
+
+def test_circle_closed_forms(root):
+    circle = ns.load(root / "examples" / "nurbs-circle.toml")
+    t = np.linspace(*circle.domain, 1001)
+    xy = circle(t)[:, :2]
+    assert np.max(np.abs(np.hypot(xy[:, 0], xy[:, 1]) - 1.0)) <= 1e-15
+    assert np.max(np.abs(circle.curvature(t) - 1.0)) <= 1e-12
+    assert abs(circle.length() - 2 * np.pi) <= 1e-12 * 2 * np.pi
+
+
+def test_operations_keep_the_curve():
+    curve = ns.BSpline(RNG.uniform(-1, 1, (8, 2)), random_degrees(8), degree=3)
+    t = np.linspace(0.0, 1.0, 301)
+    want = curve(t)
+    assert_close(curve.elevate(2)(t), want, scale=1.0, rel=1e-14)
+    inserted = curve.insert_knot(0.3, times=2)
+    assert len(inserted) == len(curve) + 2
+    assert_close(inserted(t), want, scale=1.0, rel=1e-14)
+    left, right = curve.split(0.4)
+    assert left.domain == (0.0, 0.4) and right.domain == (0.4, 1.0)
+    assert_close(left(t[t <= 0.4]), want[t <= 0.4], scale=1.0, rel=1e-14)
+    assert_close(right(t[t >= 0.4]), want[t >= 0.4], scale=1.0, rel=1e-14)
+    box = curve.bounding_box()
+    assert np.all(box[0] <= want.min(axis=0) + 1e-15)
+    assert np.all(box[1] >= want.max(axis=0) - 1e-15)
+    assert_close(box[0, :2], want[:, :2].min(axis=0), scale=1.0, rel=1e-3)
+
+
+def test_bezier_insert_knot_is_a_bspline():
+    curve = ns.example1()
+    spline = curve.insert_knot(0.25)
+    assert isinstance(spline, ns.BSpline) and isinstance(spline, ns.Curve)
+    t = np.linspace(0.0, 1.0, 101)
+    assert_close(spline(t), curve(t), scale=1.0, rel=1e-14)
+
+
+# ---- shapes, dtypes and the out= convention ----
+
+
+def test_shapes_and_dtypes():
+    curve = ns.example1()
+    t = np.linspace(0.0, 1.0, 11)
+    want = curve(t)
+    assert want.shape == (11, 5) and want.dtype == np.float64
+    assert want.flags["F_CONTIGUOUS"]
+    assert curve(0.5).shape == (5,)
+    np.testing.assert_array_equal(curve(0.5), want[5])
+    np.testing.assert_array_equal(curve(list(t)), want)
+    np.testing.assert_array_equal(curve(t.astype(np.float32)), curve(t.astype(np.float32).astype(float)))
+    strided = np.linspace(0.0, 1.0, 21)[::2]
+    assert not strided.flags["C_CONTIGUOUS"]
+    np.testing.assert_array_equal(curve(strided), want)
+    frozen = t.copy()
+    frozen.flags.writeable = False
+    np.testing.assert_array_equal(curve(frozen), want)
+    assert curve(np.empty(0)).shape == (0, 5)
+    assert curve.sample(0).shape == (0, 5)
+
+
+def test_out_is_written_in_place():
+    curve = ns.example1()
+    t = np.linspace(0.0, 1.0, 50_001)
+    want = curve(t)
+    fortran = np.empty((t.size, 5), order="F")
+    assert curve.evaluate(t, out=fortran) is fortran
+    np.testing.assert_array_equal(fortran, want)
+    c_order = np.zeros((t.size, 5))
+    assert curve(t, out=c_order) is c_order
+    np.testing.assert_array_equal(c_order, want)
+    view = np.zeros((t.size, 10))[:, ::2]
+    curve(t, out=view)
+    np.testing.assert_array_equal(view, want)
+    sampled = np.empty((t.size, 5), order="F")
+    assert curve.sample(t.size, out=sampled) is sampled
+    np.testing.assert_array_equal(sampled, curve.sample(t.size))
+    assert_close(sampled, want, rel=1e-15)
+    with pytest.raises(ns.ModelError, match=r"out: expected shape \(50001, 5\), got \[50001, 4\]"):
+        curve(t, out=np.empty((t.size, 4)))
+    with pytest.raises(ns.ModelError, match="out: expected a float64 array"):
+        curve(t, out=np.empty((t.size, 5), dtype=np.float32))
+    readonly = np.empty((t.size, 5))
+    readonly.flags.writeable = False
+    with pytest.raises(ns.ModelError, match="out: cannot write into the array"):
+        curve(t, out=readonly)
+
+
+def test_bad_parameters_are_named():
+    curve = ns.example1()
+    with pytest.raises(ValueError, match=r"^t\[2\]: parameter t = NaN is not a finite number$"):
+        curve([0.0, 0.5, np.nan, 0.7])
+    with pytest.raises(ns.ModelError, match=r"^t\[1\]: parameter t = 1.5 is outside the domain \[0, 1\]$"):
+        curve([0.0, 1.5])
+    with pytest.raises(ns.ModelError, match=r"^t: expected a number or a 1-D array"):
+        curve(np.zeros((2, 2)))
+    with pytest.raises(ns.ModelError, match="^t: not an array of numbers"):
+        curve("half")
+
+
+def test_bad_models_have_the_command_line_messages(cli, tmp_path):
+    with pytest.raises(ns.ModelError) as caught:
+        ns.Bezier([[0, 0], [1, 1]], [[0.2, 0.2, 0.2], [1.2, 0.0, 0.0]])
+    assert str(caught.value) == (
+        "degrees[1]: truth = 1.2 is outside [0, 1] (every degree must be in [0, 1])"
+    )
+    assert isinstance(caught.value, ValueError)
+    with pytest.raises(ns.ModelError, match=r"^positions: expected an array of shape \(n, 2\) or \(n, 3\)"):
+        ns.Bezier([[0, 0, 0, 0]], [[0, 0, 0]])
+    with pytest.raises(ns.ModelError, match="^knots: "):
+        ns.BSpline([[0, 0], [1, 1], [2, 0]], [[0, 0, 0]] * 3, degree=2, knots=[0, 0, 0, 1, 0.5, 1])
+    with pytest.raises(ns.ModelError, match="weight = -1 is not a positive finite number"):
+        ns.Nurbs([[0, 0], [1, 1], [2, 0]], [[0, 0, 0]] * 3, [1, -1, 1], degree=2)
+    with pytest.raises(ns.ModelError, match="^membership: "):
+        ns.Bezier([[0, 0]], [[0, 0, 0]], membership="crisp")
+    bad = tmp_path / "bad.toml"
+    bad.write_text(
+        'kind = "bezier"\n[[control_points]]\nx = 0\ny = 0\ntruth = 1.5\n'
+        "indeterminacy = 0\nfalsity = 0\n"
+    )
+    with pytest.raises(ns.ModelError) as caught:
+        ns.load(bad)
+    done = run_cli(cli, "check", bad)
+    assert done.returncode == 1
+    assert done.stderr.strip() == f"error: {caught.value}"
+
+
+def test_membership_rules():
+    intuitionistic = ns.Bezier([[0, 0], [1, 0]], [[0.5, 0.2], [0.1, 0.7]], membership="intuitionistic")
+    np.testing.assert_allclose(intuitionistic.degrees, [[0.5, 0.3, 0.2], [0.1, 0.2, 0.7]], rtol=0, atol=1e-15)
+    fuzzy = ns.BSpline([[0, 0], [1, 0], [2, 1]], [0.2, 0.4, 0.9], degree=2, membership="fuzzy")
+    assert fuzzy.membership == "fuzzy"
+    np.testing.assert_array_equal(fuzzy.degrees[:, 1:], 0.0)
+    with pytest.raises(ns.ModelError, match="intuitionistic rule"):
+        ns.Bezier([[0, 0]], [[0.6, 0.6]], membership="intuitionistic")
+    # Operations keep the rule: the intuitionistic indeterminacy is re-derived after blending.
+    left, _ = intuitionistic.elevate(3).split(0.3)
+    np.testing.assert_allclose(left.degrees.sum(axis=1), 1.0, rtol=0, atol=1e-15)
+
+
+# ---- scores and relations ----
+
+
+def test_scores_vectorised():
+    d = random_degrees(24).reshape(2, 3, 4, 3)
+    t, i, f = d[..., 0], d[..., 1], d[..., 2]
+    assert_close(ns.score(d), (2 + t - i - f) / 3, scale=1.0, rel=1e-15)
+    assert_close(ns.accuracy(d), t - f, scale=1.0, rel=1e-15)
+    np.testing.assert_array_equal(ns.certainty(d), t)
+    assert ns.score(d).shape == (2, 3, 4)
+    assert ns.score([1, 0, 0]) == 1.0
+    with pytest.raises(ns.ModelError, match=r"^degrees\[1\]: falsity = -0.5 is outside \[0, 1\]"):
+        ns.score([[0, 0, 0], [0, 0, -0.5]])
+    with pytest.raises(ns.ModelError, match=r"shape \(\.\.\., 3\)"):
+        ns.score([[0, 0]])
+
+
+def test_point_relation_of_def_4():
+    m = [(1.0, (0.3, 0.6, 0.1)), (2.0, (0.9, 0.1, 0.5))]
+    n = [(3.0, (0.5, 0.2, 0.4)), (4.0, (0.2, 0.8, 0.0))]
+    positions, degrees = ns.largest_relation(m, n)
+    np.testing.assert_array_equal(positions, [[1, 3], [1, 4], [2, 3], [2, 4]])
+    np.testing.assert_array_equal(
+        degrees, [[0.3, 0.2, 0.1], [0.2, 0.6, 0.0], [0.5, 0.1, 0.4], [0.2, 0.1, 0.0]]
+    )
+    ns.check_relation(positions, degrees, m, n)
+    pairs_positions, pairs_degrees = ns.largest_relation(m, n, pairs=[(2.0, 4.0), (1.0, 3.0)])
+    np.testing.assert_array_equal(pairs_degrees, degrees[[3, 0]])
+    worse = degrees.copy()
+    worse[2, 1] = 0.15
+    with pytest.raises(ns.ModelError, match=r"^pair 2 at \(2, 3\): indeterminacy = 0.15 exceeds 0.1, the indeterminacy of M"):
+        ns.check_relation(positions, worse, m, n)
+    curve = ns.Bezier(positions, degrees)
+    assert len(curve) == 4
+
+
+# ---- files, pickling, equality ----
+
+
+@pytest.mark.parametrize("extension", ["toml", "json", "csv"])
+def test_save_and_load_round_trip(tmp_path, root, extension):
+    models = [
+        ns.example1(),
+        ns.load(root / "examples" / "nurbs-circle.toml"),
+        ns.BSpline(RNG.uniform(-1, 1, (7, 3)), random_degrees(7), degree=2, name="spline"),
+    ]
+    if extension != "csv":
+        models.append(ns.load(root / "examples" / "nurbs-surface.json"))
+    for k, model in enumerate(models):
+        path = tmp_path / f"model{k}.{extension}"
+        model.save(path)
+        if extension == "csv":
+            options = {"kind": model.kind, "membership": model.membership}
+            if model.knots is not None:
+                options.update(degree=model.degree, knots=model.knots)
+            back = ns.load(path, **options)
+        else:
+            back = ns.load(path)
+        assert type(back) is type(model)
+        if extension == "csv":
+            # A CSV table holds the control points, knots and weights, not the names.
+            for field in ["positions", "degrees", "weights", "knots", "membership"]:
+                np.testing.assert_array_equal(getattr(back, field), getattr(model, field))
+        else:
+            assert back == model
+    with pytest.raises(ns.ModelError, match="model.txt"):
+        ns.example1().save(tmp_path / "model.txt")
+    assert not (tmp_path / "model.txt").exists()
+
+
+def test_pickle_round_trip(root):
+    objects = [
+        ns.example1(),
+        ns.example1().derivative(2),
+        ns.load(root / "examples" / "nurbs-circle.toml"),
+        ns.load(root / "examples" / "nurbs-circle.toml").derivative(),
+        ns.load(root / "examples" / "surface.toml"),
+    ]
+    for obj in objects:
+        back = pickle.loads(pickle.dumps(obj))
+        assert back == obj and type(back) is type(obj)
+    assert ns.example1() != ns.example1().elevate()
+    assert ns.example1() != "Example 1"
+
+
+def test_surface_against_the_command_line(cli, root):
+    path = root / "examples" / "surface.toml"
+    surface = ns.load(path)
+    assert isinstance(surface, ns.Surface)
+    u = np.array([0.0, 0.25, 0.5, 1.0])
+    v = np.array([0.0, 0.75, 0.5, 1.0])
+    at = ",".join(f"{a}:{b}" for a, b in zip(u, v))
+    _, table = cli_table(cli, "eval", path, "--at", at, "--normal")
+    got = surface(u, v)
+    np.testing.assert_array_equal(got, table[:, 2:8])
+    np.testing.assert_allclose(surface.normal(u, v), table[:, 8:11], rtol=0, atol=1e-15)
+    grid_u, grid_v = np.meshgrid(u, v)
+    assert surface(grid_u, grid_v).shape == (4, 4, 6)
+    out = np.empty((4, 4, 6))
+    assert surface.evaluate(grid_u, grid_v, out=out) is out
+    with pytest.raises(ns.ModelError, match=r"^\(u, v\)\[1\]: parameter"):
+        surface([0.0, 2.0], [0.0, 0.0])
+
+
+def test_surfaces_from_grids():
+    grid = RNG.uniform(-1, 1, (4, 5, 3))
+    degrees = RNG.uniform(0, 1, (4, 5, 3))
+    weights = RNG.uniform(0.5, 2.0, (4, 5))
+    patch = ns.Surface.nurbs(grid, degrees, weights, degree=(2, 3))
+    assert patch.degree == (2, 3) and patch.positions.shape == (4, 5, 3)
+    np.testing.assert_array_equal(patch.weights, weights)
+    corner = patch(0.0, 0.0)
+    np.testing.assert_allclose(corner, np.concatenate([grid[0, 0], degrees[0, 0]]), rtol=0, atol=1e-15)
+    with pytest.raises(ns.ModelError, match=r"^degrees\[2, 3\]: truth = 2 is outside"):
+        bad = degrees.copy()
+        bad[2, 3, 0] = 2.0
+        ns.Surface.bspline(grid, bad)
+
+
+# ---- figures ----
+
+
+def test_figures_are_the_command_lines(cli, root, tmp_path):
+    path = root / "examples" / "example1.toml"
+    for view in ["all", "truth", "plane", "score"]:
+        out = tmp_path / f"{view}.svg"
+        done = run_cli(cli, "plot", path, "--view", view, "-o", out)
+        assert done.returncode == 0, done.stderr
+        assert ns.load(path).to_svg(view) == out.read_text()
+    curve = ns.load(path)
+    assert curve._repr_svg_() == curve.to_svg("all")
+    png = tmp_path / "figure.png"
+    curve.save_figure(png, view="controls", width=640, height=480)
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    with pytest.raises(ns.ModelError, match="^view: "):
+        curve.to_svg("sideways")
+    with pytest.raises(ns.ModelError, match="unsupported figure extension"):
+        curve.save_figure(tmp_path / "figure.gif")
+    with pytest.raises(ns.ModelError, match="derivative"):
+        curve.derivative().to_svg()
+
+
+# ---- fitting ----
+
+
+def test_fit_matches_the_command_line(cli, root, tmp_path):
+    data = root / "examples" / "data" / "survey.csv"
+    out = tmp_path / "fitted.toml"
+    done = run_cli(cli, "fit", "examples/data/survey.csv", "--control-points", 8, "-o", out, cwd=root)
+    assert done.returncode == 0, done.stderr
+    want = ns.load(out)
+    curve, report = ns.fit(str(data), control_points=8)
+    np.testing.assert_array_equal(curve.positions, want.positions)
+    np.testing.assert_array_equal(curve.degrees, want.degrees)
+    np.testing.assert_array_equal(curve.knots, want.knots)
+    assert report["control_points"] == 8 and report["degree"] == 3
+    assert set(report["max_error"]) == {"x", "y", "truth", "indeterminacy", "falsity"}
+    points = [line for line in data.read_text().splitlines() if line[:1].isdigit() or line[:1] == "-"]
+    assert len(points) == 80
+    assert report["parameters"].shape == (80,)
+    assert report["parameters"][0] == 0.0 and report["parameters"][-1] == 1.0
+
+
+def test_fit_interpolates_and_reports():
+    t = np.linspace(0.0, 1.0, 40)
+    positions = np.column_stack([np.cos(3 * t), np.sin(3 * t), t])
+    degrees = np.column_stack([t, 0.5 * (1 - t), 1 - t])
+    curve, report = ns.fit(positions, degrees, interpolate=True)
+    got = curve(report["parameters"])
+    np.testing.assert_allclose(got[:, :3], positions, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(got[:, 3:], degrees, rtol=0, atol=1e-12)
+    with pytest.raises(ns.ModelError, match="exclude each other"):
+        ns.fit(positions, degrees, interpolate=True, control_points=5)
+    with pytest.raises(ns.ModelError, match="^degrees: missing"):
+        ns.fit(positions)
+    with pytest.raises(ns.ModelError, match="^parametrization: "):
+        ns.fit(positions, degrees, parametrization="arc")
+
+
+# ---- threads ----
+
+
+def test_four_threads_give_the_same_results():
+    curve = ns.BSpline(RNG.uniform(-1, 1, (64, 2)), random_degrees(64), degree=3)
+    t = RNG.uniform(0.0, 1.0, 400_000)
+    want = curve(t)
+    results = [None] * 4
+
+    def work(k):
+        results[k] = curve(t)
+
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(4)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    for got in results:
+        np.testing.assert_array_equal(got, want)
