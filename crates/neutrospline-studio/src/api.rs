@@ -113,6 +113,7 @@ impl Handler for Studio {
             "/studio.js" => Response::new(200, "text/javascript; charset=utf-8", STUDIO_JS),
             "/studio.css" => Response::new(200, "text/css; charset=utf-8", STUDIO_CSS),
             "/api/state" => self.state(),
+            "/favicon.ico" => Response::new(204, "image/x-icon", Vec::new()),
             "/api/render" => post(&render),
             "/api/export" => post(&export),
             "/api/open" => post(&open),
@@ -194,23 +195,22 @@ fn with_model(model_json: &str, rest: Value, status: u16) -> Response {
 /// A 422 answer for a refused model or file: the message as the CLI prints it after
 /// `error: `, and its field and line for the page to point at.
 fn refused(error: &ReadError, shown_without_file: bool) -> Response {
-    let (message, field, line) = match error {
-        ReadError::Input(e) if shown_without_file => (
-            match &e.field {
-                Some(f) => format!("{f}: {}", e.message),
-                None => e.message.clone(),
+    let (message, detail, field, line) = match error {
+        ReadError::Input(e) => (
+            match (&e.field, shown_without_file) {
+                (Some(f), true) => format!("{f}: {}", e.message),
+                (None, true) => e.message.clone(),
+                (_, false) => e.to_string(),
             },
+            Some(e.message.clone()),
             e.field.clone(),
             e.line,
         ),
-        ReadError::Input(e) => (e.to_string(), e.field.clone(), e.line),
-        ReadError::Format(e) => (e.describe(Format::ACCEPTED), None, None),
-        e => (e.to_string(), None, None),
+        ReadError::Format(e) => (e.describe(Format::ACCEPTED), None, None, None),
+        e => (e.to_string(), None, None, None),
     };
-    Response::json(
-        422,
-        json!({ "error": { "message": message, "field": field, "line": line } }).to_string(),
-    )
+    let error = json!({ "message": message, "detail": detail, "field": field, "line": line });
+    Response::json(422, json!({ "error": error }).to_string())
 }
 
 /// The model in `body["model"]`: the text of a `.json` model.
