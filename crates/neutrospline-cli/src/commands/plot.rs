@@ -2,7 +2,7 @@
 
 use std::path::{Path, PathBuf};
 
-use neutrospline_plot::{render_png, render_svg, DataOverlay, PlotModel, PlotOptions, View};
+use neutrospline_plot::{render_png, render_svg, PlotModel, PlotOptions, View};
 
 use crate::commands::fit::{read_data, ColorByArg};
 use crate::commands::options::ModelArgs;
@@ -117,24 +117,14 @@ pub struct PlotArgs {
     pub model: ModelArgs,
 }
 
-/// The plot model of a shape, with the control points' names when the file gives any.
+/// The plot model of a shape, with the control points' names when the file gives any: the
+/// studio's code path too ([`neutrospline_studio::plot_model`]), so that its exported figures
+/// are this command's bytes.
 ///
 /// # Errors
 /// A shape the plot crate cannot draw (for example non-finite samples).
 pub fn plot_model(shape: &Shape, names: &[Option<String>]) -> anyhow::Result<PlotModel> {
-    let model = match shape {
-        Shape::Planar(c) => PlotModel::from_any(c)?,
-        Shape::Spatial(c) => PlotModel::from_any(c)?,
-        Shape::Surface(s) => PlotModel::from_surface(s)?,
-    };
-    if names.iter().all(Option::is_none) {
-        return Ok(model);
-    }
-    let names = names
-        .iter()
-        .enumerate()
-        .map(|(i, n)| n.clone().unwrap_or_else(|| format!("P{i}")));
-    Ok(model.with_names(names)?)
+    Ok(neutrospline_studio::plot_model(shape, names)?)
 }
 
 /// Renders `model` as `format` and writes it atomically to `path`.
@@ -206,14 +196,7 @@ pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
                     shape.dimension()
                 ));
             }
-            let mut overlay = DataOverlay::new(
-                table.positions().to_vec(),
-                table.degrees().iter().map(|d| d.to_array()).collect(),
-            )
-            .with_color_by(args.color_by.into());
-            if let Some(parameters) = table.parameters() {
-                overlay = overlay.with_parameters(parameters.to_vec());
-            }
+            let overlay = neutrospline_studio::data_overlay(&table, args.color_by.into());
             plot = plot
                 .with_data(overlay)
                 .map_err(|e| anyhow::anyhow!("{}: {e}", table.file()))?;
