@@ -899,6 +899,8 @@
     timings: state.timings,
     renders: () => state.renders,
     camera: () => clone(state.camera),
+    // The map from model x, y to the plane view's pixels: [sx, sy, ox, oy] (null for 3-D).
+    frame: () => (state.handles && state.handles.frame ? state.handles.frame.slice() : null),
     idle: () => (inFlight || pending ? new Promise((r) => idleWaiters.push(r)) : Promise.resolve()),
     undo,
     redo,

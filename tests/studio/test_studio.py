@@ -1,0 +1,249 @@
+"""End-to-end tests of `neutrospline studio` in headless Chromium: open a file, drag a control
+point, refuse truth = 1.2 with the CLI's message, switch to a B-spline, undo, save, export the
+SVG and PNG that `neutrospline plot` writes, refuse foreign origins; and time a drag of a
+degree-20 curve. Screenshots of every step go to the output folder."""
+
+import json
+import math
+import os
+import shutil
+import socket
+import statistics
+import subprocess
+import urllib.error
+import urllib.request
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLE = ROOT / "examples" / "example1.json"
+
+
+def open_page(page, studio):
+    page.goto(studio.url)
+    page.wait_for_function("window.studio && window.studio.renders() > 0")
+    idle(page)
+
+
+def idle(page):
+    page.evaluate("window.studio.idle()")
+
+
+def model(page):
+    return page.evaluate("window.studio.model()")
+
+
+def shot(page, out_dir, name):
+    page.screenshot(path=str(out_dir / f"{name}.png"), full_page=True)
+
+
+def drag_handle(page, index, dx, dy, steps=10):
+    handle = page.locator(f'[data-point-index="{index}"]')
+    box = handle.bounding_box()
+    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for k in range(1, steps + 1):
+        page.mouse.move(x + dx * k / steps, y + dy * k / steps)
+    page.mouse.up()
+    idle(page)
+
+
+def request(studio, path, headers=None, body=None):
+    req = urllib.request.Request(
+        f"http://127.0.0.1:{studio.port}{path}", data=body, headers=headers or {}
+    )
+    try:
+        with urllib.request.urlopen(req, timeout=10) as response:
+            return response.status, response.read()
+    except urllib.error.HTTPError as e:
+        return e.code, e.read()
+
+
+def test_edit_save_and_export(start_studio, page, binary, out_dir, tmp_path):
+    file = tmp_path / "example1.json"
+    shutil.copy(EXAMPLE, file)
+    studio = start_studio(file)
+    open_page(page, studio)
+    shot(page, out_dir, "01-open")
+    assert page.locator("[data-point-index]").count() == 4
+    assert model(page)["control_points"][1] == {
+        "name": "C1", "x": 3, "y": 6, "truth": 0.8, "indeterminacy": 0.1, "falsity": 0.1
+    }
+
+    # Drag C1 right by 80 and down by 60 screen pixels.
+    curve_before = page.locator("#views [data-view=plane] polyline.curve").get_attribute("points")
+    table_before = page.locator("#table-host tbody tr").nth(5).inner_text()
+    sx, sy, _, _ = page.evaluate("window.studio.frame()")
+    svg_box = page.locator("#views [data-view=plane] svg").bounding_box()
+    per_pixel = 1600 / svg_box["width"]  # figure pixels per screen pixel
+    drag_handle(page, 1, 80, 60)
+    moved = model(page)["control_points"][1]
+    assert math.isclose(moved["x"], 3 + 80 * per_pixel / sx, abs_tol=0.02), moved
+    assert math.isclose(moved["y"], 6 + 60 * per_pixel / sy, abs_tol=0.02), moved
+    assert moved["x"] > 3.5 and moved["y"] < 5.5
+    assert page.locator("#views [data-view=plane] polyline.curve").get_attribute("points") != curve_before
+    assert page.locator("#table-host tbody tr").nth(5).inner_text() != table_before
+    assert page.locator("#point-fields input[name=x]").input_value() == str(moved["x"])
+    assert "moved point 1" in page.locator("[role=status]").inner_text()
+    shot(page, out_dir, "02-dragged")
+
+    # Truth 1.2 is refused with the reader's message, which `neutrospline check` prints too.
+    page.fill("input[name=truth]", "1.2")
+    page.press("input[name=truth]", "Enter")
+    idle(page)
+    message = "control_points[1]: truth = 1.2 is outside [0, 1] (every degree must be in [0, 1])"
+    assert page.locator("[role=alert]").inner_text() == message
+    assert page.locator('[data-error-for="truth"]').inner_text() == message
+    assert model(page)["control_points"][1]["truth"] == 0.8
+    bad = json.loads(EXAMPLE.read_text())
+    bad["control_points"][1]["truth"] = 1.2
+    (tmp_path / "bad.json").write_text(json.dumps(bad, indent=2))
+    check = subprocess.run([binary, "check", tmp_path / "bad.json"], capture_output=True, text=True)
+    assert check.returncode == 1
+    assert check.stderr.strip().endswith(message), check.stderr
+    shot(page, out_dir, "03-truth-refused")
+
+    # B-spline: degree 3, clamped uniform knots written out.
+    page.select_option("#model-kind", "bspline")
+    idle(page)
+    m = model(page)
+    assert (m["kind"], m["degree"], m["knots"]) == ("bspline", 3, [0, 0, 0, 0, 1, 1, 1, 1])
+    assert m["control_points"][1]["x"] == moved["x"]
+    shot(page, out_dir, "04-bspline")
+
+    # Undo (Ctrl+Z) goes back to the dragged Bézier curve; redo and undo again.
+    page.locator("h1").click()
+    page.keyboard.press("Control+z")
+    idle(page)
+    assert model(page)["kind"] == "bezier"
+    page.keyboard.press("Control+Shift+z")
+    idle(page)
+    assert model(page)["kind"] == "bspline"
+    page.keyboard.press("Control+z")
+    idle(page)
+    m = model(page)
+    assert m["kind"] == "bezier" and m["control_points"][1] == moved
+    shot(page, out_dir, "05-undone")
+
+    # Save writes the started file: the original model with C1 moved, as the JSON writer writes it.
+    page.click("#save")
+    page.wait_for_function("document.querySelector('[role=status]').textContent.startsWith('saved')")
+    expected = json.loads(EXAMPLE.read_text())
+    expected["degree"] = 3
+    expected["control_points"][1]["x"] = moved["x"]
+    expected["control_points"][1]["y"] = moved["y"]
+    saved = json.loads(file.read_text())
+    assert saved == expected
+    assert saved == model(page)
+    assert subprocess.run([binary, "check", file], capture_output=True).returncode == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.json", "example1.json"]
+
+    # Export SVG and PNG: the bytes `neutrospline plot` writes for the same model and view.
+    for view in ["plane", "all"]:
+        page.select_option("#export-view", view)
+        for fmt in ["svg", "png"]:
+            with page.expect_download() as info:
+                page.click(f"#export-{fmt}")
+            exported = out_dir / f"exported-{view}.{fmt}"
+            info.value.save_as(exported)
+            reference = tmp_path / f"plot-{view}.{fmt}"
+            subprocess.run(
+                [binary, "plot", file, "--view", view, "-o", reference], check=True
+            )
+            assert exported.read_bytes() == reference.read_bytes(), f"{view} {fmt}"
+    shot(page, out_dir, "06-saved-exported")
+
+
+def test_foreign_requests_are_refused(start_studio, page, out_dir):
+    studio = start_studio()
+    open_page(page, studio)
+    assert model(page)["name"] == "Example 1"
+    own = f"http://127.0.0.1:{studio.port}"
+    body = json.dumps({"model": json.dumps(model(page)), "views": ["plane"]}).encode()
+    json_type = {"Content-Type": "application/json"}
+    assert request(studio, "/api/render", {"Origin": own, **json_type}, body)[0] == 200
+    status, answer = request(studio, "/api/render", {"Origin": "http://evil.example", **json_type}, body)
+    assert status == 403
+    assert json.loads(answer)["error"]["message"] == "refused: Origin `http://evil.example` is not this studio"
+    status, _ = request(studio, "/", {"Host": f"rebound.example:{studio.port}"})
+    assert status == 403
+    # Without a file there is nothing to save to.
+    status, answer = request(studio, "/api/save", {"Origin": own, **json_type}, body)
+    assert status == 409
+    # A body over 16 MiB is refused from its Content-Length, before it is sent.
+    with socket.create_connection(("127.0.0.1", studio.port), timeout=10) as s:
+        s.sendall(
+            f"POST /api/open HTTP/1.1\r\nHost: 127.0.0.1:{studio.port}\r\n"
+            f"Content-Type: application/json\r\nContent-Length: {16 * 1024 * 1024 + 1}\r\n\r\n".encode()
+        )
+        answer = s.recv(4096).decode()
+    assert answer.startswith("HTTP/1.1 413 "), answer
+    assert "larger than the limit of 16777216 bytes" in answer
+    # A page on another origin cannot read the studio's answers either (no CORS headers).
+    other = page.context.new_page()
+    other.goto("about:blank")
+    outcome = other.evaluate(
+        """async (url) => {
+            try { const r = await fetch(url + 'api/state'); return 'read ' + r.status; }
+            catch (e) { return 'blocked'; }
+        }""",
+        studio.url,
+    )
+    assert outcome == "blocked"
+    # The page still works after all that.
+    page.fill("input[name=falsity]", "2")
+    page.press("input[name=falsity]", "Enter")
+    idle(page)
+    assert "falsity = 2 is outside [0, 1]" in page.locator("[role=alert]").inner_text()
+    shot(page, out_dir, "07-example-refusals")
+
+
+def degree20(path):
+    points = []
+    for k in range(21):
+        t = k / 20
+        points.append({
+            "x": 10 * t,
+            "y": 3 * math.sin(2 * math.pi * t) + (2 if k % 2 else 0),
+            "truth": round(0.5 + 0.4 * math.sin(3 * t), 3),
+            "indeterminacy": round(0.3 * t, 3),
+            "falsity": round(0.2 + 0.1 * math.cos(5 * t), 3),
+        })
+    path.write_text(json.dumps({"kind": "bezier", "name": "degree 20", "control_points": points}))
+
+
+def test_drag_degree_20_redraws_quickly(start_studio, page, out_dir, tmp_path):
+    file = tmp_path / "degree20.json"
+    degree20(file)
+    studio = start_studio(file)
+    open_page(page, studio)
+    assert page.locator("[data-point-index]").count() == 21
+    page.evaluate("window.studio.timings.length = 0")
+    handle = page.locator('[data-point-index="10"]')
+    box = handle.bounding_box()
+    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for k in range(1, 61):
+        page.mouse.move(x + 2 * k, y + 40 * math.sin(k / 10))
+        page.wait_for_timeout(16)  # one move per display frame, as a hand makes them
+    page.mouse.up()
+    idle(page)
+    timings = page.evaluate("window.studio.timings")
+    totals = sorted(t["total"] for t in timings)
+    summary = {
+        "frames": len(totals),
+        "views_per_frame": timings[-1]["views"],
+        "median_ms": statistics.median(totals),
+        "p90_ms": totals[int(0.9 * (len(totals) - 1))],
+        "max_ms": totals[-1],
+        "median_server_ms": statistics.median(t["server"] for t in timings),
+        "median_dom_ms": statistics.median(t["dom"] for t in timings),
+    }
+    (out_dir / "drag-degree20.json").write_text(json.dumps({"summary": summary, "frames": timings}, indent=1))
+    print("drag, degree 20:", summary)
+    shot(page, out_dir, "08-degree20-dragged")
+    assert summary["frames"] >= 10
+    budget = os.environ.get("STUDIO_DRAG_BUDGET_MS")
+    if budget:
+        assert summary["median_ms"] <= float(budget), summary
