@@ -176,7 +176,10 @@ def test_foreign_requests_are_refused(start_studio, page, out_dir):
             f"POST /api/open HTTP/1.1\r\nHost: 127.0.0.1:{studio.port}\r\n"
             f"Content-Type: application/json\r\nContent-Length: {16 * 1024 * 1024 + 1}\r\n\r\n".encode()
         )
-        answer = s.recv(4096).decode()
+        answer = b""
+        while chunk := s.recv(4096):
+            answer += chunk
+        answer = answer.decode()
     assert answer.startswith("HTTP/1.1 413 "), answer
     assert "larger than the limit of 16777216 bytes" in answer
     # A page on another origin cannot read the studio's answers either (no CORS headers).
@@ -230,20 +233,33 @@ def test_drag_degree_20_redraws_quickly(start_studio, page, out_dir, tmp_path):
     page.mouse.up()
     idle(page)
     timings = page.evaluate("window.studio.timings")
-    totals = sorted(t["total"] for t in timings)
+    frames = [t for t in timings if t["preview"]]
+    final = [t for t in timings if not t["preview"]]
+
+    def stats(key, rows):
+        values = sorted(t[key] for t in rows)
+        return {
+            "median": round(statistics.median(values), 1),
+            "p90": round(values[int(0.9 * (len(values) - 1))], 1),
+            "max": round(values[-1], 1),
+        }
+
     summary = {
-        "frames": len(totals),
-        "views_per_frame": timings[-1]["views"],
-        "median_ms": statistics.median(totals),
-        "p90_ms": totals[int(0.9 * (len(totals) - 1))],
-        "max_ms": totals[-1],
-        "median_server_ms": statistics.median(t["server"] for t in timings),
-        "median_dom_ms": statistics.median(t["dom"] for t in timings),
+        "moves": 60,
+        "frames": len(frames),
+        "views_per_frame": frames[-1]["views"],
+        "latency_ms": stats("latency", frames),
+        "work_ms": stats("work", frames),
+        "server_ms": stats("server", frames),
+        "fetch_ms": stats("fetch", frames),
+        "dom_ms": stats("dom", frames),
+        "final_full_quality_work_ms": round(final[-1]["work"], 1) if final else None,
+        "load_average": os.getloadavg(),
     }
     (out_dir / "drag-degree20.json").write_text(json.dumps({"summary": summary, "frames": timings}, indent=1))
-    print("drag, degree 20:", summary)
+    print("drag, degree 20:", json.dumps(summary))
     shot(page, out_dir, "08-degree20-dragged")
     assert summary["frames"] >= 10
     budget = os.environ.get("STUDIO_DRAG_BUDGET_MS")
     if budget:
-        assert summary["median_ms"] <= float(budget), summary
+        assert summary["work_ms"]["median"] <= float(budget), summary

@@ -20,11 +20,11 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+use commands::studio::StudioArgs;
 use commands::{
     bench::BenchArgs, bench_fit::BenchFitArgs, check::CheckArgs, eval::EvalArgs,
     example::ExampleArgs, export::ExportArgs, fit::FitArgs, import::ImportArgs, plot::PlotArgs,
 };
-use commands::studio::StudioArgs;
 
 /// Evaluate and check neutrosophic curves and surfaces (Bezier, B-spline, NURBS): control
 /// points carrying truth, indeterminacy and falsity degrees.

@@ -125,7 +125,11 @@ fn studio_refuses_bad_arguments() {
     );
     let dir = tempfile::tempdir().unwrap();
     let bad = dir.path().join("bad.csv");
-    std::fs::write(&bad, "x,y,truth,indeterminacy,falsity\n1,2,1.2,0,0\n1,3,0,0,0\n").unwrap();
+    std::fs::write(
+        &bad,
+        "x,y,truth,indeterminacy,falsity\n1,2,1.2,0,0\n1,3,0,0,0\n",
+    )
+    .unwrap();
     let out = bin()
         .args(["studio", "--no-open"])
         .arg(&bad)

@@ -24,8 +24,7 @@ use std::time::Instant;
 
 use neutrospline::fit::{fit, DataWeights, FitKind, FitOptions, FitTarget, Parametrization};
 use neutrospline::{
-    uniform_parameter, AnyCurve, ControlPolygon, DegreeKind, Evaluate, EvaluateSurface,
-    Membership,
+    uniform_parameter, AnyCurve, ControlPolygon, DegreeKind, Evaluate, EvaluateSurface, Membership,
 };
 use neutrospline_io::{format_number, DataTable, Format, Model, ReadError, ReadOptions, Shape};
 use neutrospline_plot::{render_png, render_svg, PlotModel, PlotOptions, View};
@@ -107,9 +106,9 @@ impl Handler for Studio {
             }
             "/" | "/index.html" => Response::new(200, "text/html; charset=utf-8", INDEX_HTML)
                 .with_header(
-                    "Content-Security-Policy",
-                    "default-src 'self'; img-src 'self' data: blob:; style-src 'self' 'unsafe-inline'",
-                ),
+                "Content-Security-Policy",
+                "default-src 'self'; img-src 'self' data: blob:; style-src 'self' 'unsafe-inline'",
+            ),
             "/studio.js" => Response::new(200, "text/javascript; charset=utf-8", STUDIO_JS),
             "/studio.css" => Response::new(200, "text/css; charset=utf-8", STUDIO_CSS),
             "/api/state" => self.state(),
@@ -283,7 +282,10 @@ fn prepare(model: &Model, body: &Value) -> Result<(PlotModel, Option<String>), R
         return Ok((plot, None));
     };
     if model.shape().is_surface() {
-        return Ok((plot, Some("data points are drawn over curves only".to_owned())));
+        return Ok((
+            plot,
+            Some("data points are drawn over curves only".to_owned()),
+        ));
     }
     if table.dimension() != model.shape().dimension() {
         let message = format!(
@@ -317,7 +319,16 @@ fn render(body: &Value) -> Result<Response, Response> {
         .map(|v| v.iter().filter_map(Value::as_str).map(parse_view).collect())
         .unwrap_or_else(|| Ok(Vec::new()))?;
     let (azimuth, elevation) = camera(body);
-    let options = figure_options(&model, azimuth, elevation);
+    let mut options = figure_options(&model, azimuth, elevation);
+    // A preview while a point is dragged: fewer samples along a curve (the figure after the
+    // drag, and every export, use the default).
+    if let Some(n) = body["samples"].as_u64() {
+        if !model.shape().is_surface() {
+            let n = usize::try_from(n).unwrap_or(usize::MAX);
+            options = options
+                .with_samples(n.clamp(PlotOptions::MIN_SAMPLES, PlotOptions::DEFAULT_SAMPLES));
+        }
+    }
     let (plot, data_error) = prepare(&model, body)?;
     let mut figures = Map::new();
     let mut errors = Map::new();
@@ -384,12 +395,19 @@ fn table(shape: &Shape, at: &str) -> Result<(Vec<String>, Vec<Vec<String>>), Str
     } else {
         vec!["t".into()]
     };
-    columns.extend(["x", "y", "z"][..shape.dimension()].iter().map(|s| (*s).into()));
+    columns.extend(
+        ["x", "y", "z"][..shape.dimension()]
+            .iter()
+            .map(|s| (*s).into()),
+    );
     columns.extend(["truth", "indeterminacy", "falsity"].map(String::from));
     let number = |item: &str| -> Result<f64, String> {
         match item.trim().parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
-            Ok(_) => Err(format!("parameter `{}` is not a finite number", item.trim())),
+            Ok(_) => Err(format!(
+                "parameter `{}` is not a finite number",
+                item.trim()
+            )),
             Err(_) => Err(format!("parameter `{}` is not a number", item.trim())),
         }
     };
@@ -502,8 +520,8 @@ fn open(body: &Value) -> Result<Response, Response> {
 
 fn data(body: &Value) -> Result<Response, Response> {
     let membership = membership(body, Membership::Neutrosophic)?;
-    let table = data_table(body, membership)?
-        .ok_or_else(|| Response::error(400, "no data given"))?;
+    let table =
+        data_table(body, membership)?.ok_or_else(|| Response::error(400, "no data given"))?;
     Ok(Response::json(
         200,
         json!({ "name": table.file(), "points": table.len(), "dimension": table.dimension() })
@@ -514,7 +532,11 @@ fn data(body: &Value) -> Result<Response, Response> {
 /// `fit`'s options from the page: the same names and defaults as `neutrospline fit`.
 fn fit_options(o: &Value, membership: Membership) -> Result<FitOptions, Response> {
     let bad = |m: String| Response::error(422, &m);
-    let count = |key: &str| o[key].as_u64().map(|v| usize::try_from(v).unwrap_or(usize::MAX));
+    let count = |key: &str| {
+        o[key]
+            .as_u64()
+            .map(|v| usize::try_from(v).unwrap_or(usize::MAX))
+    };
     let mut options = FitOptions::default()
         .with_degree(count("degree").unwrap_or(3))
         .with_closed(o["closed"].as_bool().unwrap_or(false))
@@ -563,7 +585,8 @@ fn fit_data(body: &Value) -> Result<Response, Response> {
     let table = data_table(&body["data"], membership)?
         .ok_or_else(|| Response::error(400, "no data given"))?;
     let options = fit_options(&body["options"], membership)?;
-    let located = |e: neutrospline::fit::FitError| Response::error(422, &table.locate(&e).to_string());
+    let located =
+        |e: neutrospline::fit::FitError| Response::error(422, &table.locate(&e).to_string());
     let (model, report) = if table.dimension() == 3 {
         let f = fit(&table.fit_data::<3>().map_err(located)?, &options).map_err(located)?;
         (Model::new(f.curve), f.report)

@@ -165,8 +165,8 @@ pub(crate) fn read_request(
         if head.len() > MAX_HEAD {
             return Err(refuse(431, "the request head is larger than 64 KiB"));
         }
-        let text = String::from_utf8(line)
-            .map_err(|_| refuse(400, "the request head is not UTF-8"))?;
+        let text =
+            String::from_utf8(line).map_err(|_| refuse(400, "the request head is not UTF-8"))?;
         let text = text.trim_end_matches(['\r', '\n']).to_owned();
         if text.is_empty() {
             if lines.is_empty() {
@@ -345,7 +345,8 @@ fn connection(stream: TcpStream, port: u16, handler: &impl Handler, max_body: us
             Ok(Some(r)) => r,
             Ok(None) => return,
             Err(refusal) => {
-                let _ = Response::error(refusal.status, &refusal.message).write_to(&mut writer, true);
+                let _ =
+                    Response::error(refusal.status, &refusal.message).write_to(&mut writer, true);
                 return;
             }
         };
@@ -404,7 +405,10 @@ mod tests {
         let e = request("POST / HTTP/1.1\r\nTransfer-Encoding: chunked\r\n\r\n", 100).unwrap_err();
         assert_eq!(e.status, 411);
         let e = request("GARBAGE\r\n\r\n", 100).unwrap_err();
-        assert_eq!((e.status, e.message.as_str()), (400, "malformed request line"));
+        assert_eq!(
+            (e.status, e.message.as_str()),
+            (400, "malformed request line")
+        );
         let huge = format!("GET / HTTP/1.1\r\nX: {}\r\n\r\n", "a".repeat(70_000));
         assert_eq!(request(&huge, 100).unwrap_err().status, 431);
     }
@@ -423,10 +427,16 @@ mod tests {
 
     #[test]
     fn check_origin_accepts_only_this_server() {
-        assert_eq!(check_origin(&with_headers(&[("host", "127.0.0.1:4000")]), 4000), Ok(()));
+        assert_eq!(
+            check_origin(&with_headers(&[("host", "127.0.0.1:4000")]), 4000),
+            Ok(())
+        );
         assert_eq!(
             check_origin(
-                &with_headers(&[("host", "localhost:4000"), ("origin", "http://localhost:4000")]),
+                &with_headers(&[
+                    ("host", "localhost:4000"),
+                    ("origin", "http://localhost:4000")
+                ]),
                 4000
             ),
             Ok(())
@@ -441,7 +451,10 @@ mod tests {
         );
         assert_eq!(
             check_origin(
-                &with_headers(&[("host", "127.0.0.1:4000"), ("origin", "http://evil.example")]),
+                &with_headers(&[
+                    ("host", "127.0.0.1:4000"),
+                    ("origin", "http://evil.example")
+                ]),
                 4000
             )
             .unwrap_err(),

@@ -33,9 +33,7 @@ mod figure;
 mod http;
 
 pub use api::Studio;
-pub use figure::{
-    control_markers, data_overlay, figure_options, handles, plot_model, Handles,
-};
+pub use figure::{control_markers, data_overlay, figure_options, handles, plot_model, Handles};
 pub use http::{check_origin, Handler, Request, Response, Server, MAX_BODY};
 
 /// Asks the desktop to open `url` in the default browser (`xdg-open`, or `open` on macOS),

@@ -76,7 +76,10 @@ fn example_with(edit: impl FnOnce(&mut Value)) -> String {
 fn server_refuses_foreign_host_and_origin() {
     let port = example_server();
     assert_eq!(get(port, "/", &host(port)).0, 200);
-    assert_eq!(get(port, "/", &format!("Host: localhost:{port}\r\n")).0, 200);
+    assert_eq!(
+        get(port, "/", &format!("Host: localhost:{port}\r\n")).0,
+        200
+    );
     let (status, _, body) = get(port, "/", &format!("Host: attacker.example:{port}\r\n"));
     assert_eq!(status, 403);
     assert_eq!(
@@ -151,7 +154,8 @@ fn render_draws_what_the_plot_crate_draws() {
     );
     // The handles sit on the control points, at one scale on x and y.
     let frame: Vec<f64> = serde_json::from_value(answer["handles"]["frame"].clone()).unwrap();
-    let pixels: Vec<[f64; 2]> = serde_json::from_value(answer["handles"]["pixels"].clone()).unwrap();
+    let pixels: Vec<[f64; 2]> =
+        serde_json::from_value(answer["handles"]["pixels"].clone()).unwrap();
     for (p, px) in curve.control_points().iter().zip(&pixels) {
         assert!((frame[2] + frame[0] * p.position[0] - px[0]).abs() < 0.01);
         assert!((frame[3] + frame[1] * p.position[1] - px[1]).abs() < 0.01);
@@ -164,7 +168,14 @@ fn render_draws_what_the_plot_crate_draws() {
     );
     assert_eq!(
         table["rows"][5],
-        json!(["0.5", "4.625", "4", "0.625", "0.19999999999999998", "0.17500000000000002"])
+        json!([
+            "0.5",
+            "4.625",
+            "4",
+            "0.625",
+            "0.19999999999999998",
+            "0.17500000000000002"
+        ])
     );
     let at_03 = curve.evaluate(0.3).unwrap();
     let (_, answer, _) = post(
@@ -323,7 +334,11 @@ fn save_writes_only_the_started_file_atomically() {
         .unwrap()
         .spawn();
     let edited: Value = {
-        let (_, state, _) = post(port, "/api/render", &json!({ "model": neutrospline_io::to_json_string(&neutrospline_io::load(&file, &ReadOptions::default()).unwrap()) }));
+        let (_, state, _) = post(
+            port,
+            "/api/render",
+            &json!({ "model": neutrospline_io::to_json_string(&neutrospline_io::load(&file, &ReadOptions::default()).unwrap()) }),
+        );
         let mut m = state["model"].clone();
         m["control_points"][3]["y"] = json!(1.5);
         m
@@ -377,7 +392,10 @@ fn save_errors_leave_the_server_running() {
     let (status, answer, _) = post(port, "/api/save", &json!({ "model": EXAMPLE1_JSON }));
     assert_eq!(status, 500);
     let message = answer["error"]["message"].as_str().unwrap();
-    assert!(message.starts_with(&file.display().to_string()), "{message}");
+    assert!(
+        message.starts_with(&file.display().to_string()),
+        "{message}"
+    );
     assert_eq!(get(port, "/api/state", &host(port)).0, 200);
     // Without a file there is nothing to save to.
     let port = example_server();
@@ -393,7 +411,11 @@ fn data_and_fit_use_the_readers_and_the_fit() {
     )
     .unwrap();
     let data = json!({ "name": "survey.csv", "text": text });
-    let (status, answer, _) = post(port, "/api/data", &json!({ "name": "survey.csv", "text": text }));
+    let (status, answer, _) = post(
+        port,
+        "/api/data",
+        &json!({ "name": "survey.csv", "text": text }),
+    );
     assert_eq!(status, 200);
     assert_eq!(answer["points"], 80);
     let (status, answer, _) = post(
@@ -403,7 +425,10 @@ fn data_and_fit_use_the_readers_and_the_fit() {
     );
     assert_eq!(status, 200, "{answer}");
     assert_eq!(answer["report"]["control_points"], 12);
-    assert_eq!(answer["model"]["control_points"].as_array().unwrap().len(), 12);
+    assert_eq!(
+        answer["model"]["control_points"].as_array().unwrap().len(),
+        12
+    );
     assert_eq!(
         answer["model"]["description"],
         "Fitted to survey.csv (80 points) by neutrospline fit"
@@ -415,8 +440,12 @@ fn data_and_fit_use_the_readers_and_the_fit() {
         &json!({ "model": answer["model"].to_string(), "views": ["data"], "data": data }),
     );
     assert_eq!(status, 200);
-    assert!(answer["figures"]["data"].as_str().unwrap().contains("class=\"residual\""));
-    let bad = json!({ "name": "bad.csv", "text": "x,y,truth,indeterminacy,falsity\n1,2,1.5,0,0\n" });
+    assert!(answer["figures"]["data"]
+        .as_str()
+        .unwrap()
+        .contains("class=\"residual\""));
+    let bad =
+        json!({ "name": "bad.csv", "text": "x,y,truth,indeterminacy,falsity\n1,2,1.5,0,0\n" });
     let (status, answer, _) = post(port, "/api/data", &bad);
     assert_eq!(status, 422);
     assert_eq!(

@@ -11,9 +11,11 @@ use crate::input::{self, UsageError};
 
 /// Arguments of `studio`.
 #[derive(Debug, clap::Args)]
-#[command(after_help = "The studio listens on 127.0.0.1 only and refuses requests whose Host or \
+#[command(
+    after_help = "The studio listens on 127.0.0.1 only and refuses requests whose Host or \
 Origin is not its own. \"Save\" writes FILE (atomically) and no other file; without FILE the \
-page opens the paper's Example 1 and saving downloads the model. Stop it with Ctrl+C.")]
+page opens the paper's Example 1 and saving downloads the model. Stop it with Ctrl+C."
+)]
 pub struct StudioArgs {
     /// The model to open: .toml, .json or .csv (default: the paper's Example 1)
     #[arg(value_name = "FILE")]

@@ -9,6 +9,9 @@
   const TURNABLE = ['truth', 'indeterminacy', 'falsity', 'all', 'score'];
   const DEGREES = ['truth', 'indeterminacy', 'falsity'];
   const DEFAULT_CAMERA = { azimuth: -55, elevation: 25 };
+  // Samples along the curve while a point is dragged (the figure after the drag uses the
+  // plot's default, as exports do).
+  const PREVIEW_SAMPLES = 80;
 
   const $ = (sel) => document.querySelector(sel);
   const clone = (v) => JSON.parse(JSON.stringify(v));
@@ -122,8 +125,9 @@
     pending = {
       model: model || state.model,
       commit: !!(how && how.commit) || !!(previous && previous.commit),
+      preview: !!(how && how.preview) && !(previous && previous.commit),
       message: (how && how.message) || (previous && previous.message) || '',
-      t0: (previous && how && how.coalesce) ? previous.t0 : performance.now(),
+      t0: performance.now(),
       onRefused: how && how.onRefused,
     };
     if (!inFlight) pump();
@@ -135,28 +139,35 @@
       pending = null;
       inFlight = true;
       const t0 = job.t0;
+      let tSent = t0;
       let result;
       try {
-        result = await postJson('/api/render', Object.assign({
+        const request = {
           model: JSON.stringify(job.model, null, 1),
           views: shownViews(),
           at: state.at,
-        }, extra()));
+        };
+        if (job.preview) request.samples = PREVIEW_SAMPLES;
+        tSent = performance.now();
+        result = await postJson('/api/render', Object.assign(request, extra()));
       } catch (e) {
         result = { ok: false, status: 0, value: { error: { message: `the studio server cannot be reached (${e.message})` } } };
       }
       if (result.ok) {
-        const tServer = performance.now();
+        const tAnswer = performance.now();
         accept(result.value, job);
+        // The layout the next paint needs, done now so that it is measured.
+        void $('#views').offsetHeight;
         const tDom = performance.now();
-        if (!pending) {
-          await new Promise((r) => requestAnimationFrame(() => r()));
-        }
+        // latency: from the input event to the views laid out anew; work: from the request
+        // to the same point (without the wait for a request already in flight).
         state.timings.push({
-          total: performance.now() - t0,
-          dom: tDom - t0,
-          roundTrip: tServer - t0,
+          latency: tDom - t0,
+          work: tDom - tSent,
+          fetch: tAnswer - tSent,
           server: result.value.ms,
+          dom: tDom - tAnswer,
+          preview: job.preview,
           views: Object.keys(result.value.figures).length,
         });
       } else {
@@ -316,7 +327,7 @@
       m.control_points[drag.k].y = drag.y + (p.y - drag.start.y) / sy;
       drag.moved = true;
       drag.last = m.control_points[drag.k];
-      propose(m, {});
+      propose(m, { preview: true });
     });
     const end = (event) => {
       if (!drag || event.pointerId !== drag.pointerId) return;
@@ -346,7 +357,7 @@
       const scale = 360 / Math.max(200, host.clientWidth);
       state.camera.azimuth = wrap(turn.camera.azimuth - (event.clientX - turn.x) * scale);
       state.camera.elevation = Math.max(-90, Math.min(90, turn.camera.elevation + (event.clientY - turn.y) * scale));
-      propose(null, { coalesce: true });
+      propose(null, { coalesce: true, preview: true });
     });
     const end = () => {
       if (turn) status(`camera: azimuth ${fmt(state.camera.azimuth)}°, elevation ${fmt(state.camera.elevation)}°`);
@@ -516,6 +527,7 @@
       commit,
       message: commit ? `point ${state.selected}: ${key} = ${value}` : '',
       coalesce: !commit,
+      preview: !commit,
     });
   }
 
