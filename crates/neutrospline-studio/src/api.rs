@@ -332,13 +332,13 @@ fn render(body: &Value) -> Result<Response, Response> {
     let (plot, data_error) = prepare(&model, body)?;
     let mut figures = Map::new();
     let mut errors = Map::new();
-    for view in views {
-        match render_svg(&plot, view, &options) {
+    for (view, drawn) in render_views(&plot, &views, &options) {
+        match drawn {
             Ok(svg) => {
                 figures.insert(view.name().to_owned(), Value::String(svg));
             }
             Err(e) => {
-                errors.insert(view.name().to_owned(), Value::String(e.to_string()));
+                errors.insert(view.name().to_owned(), Value::String(e));
             }
         }
     }
@@ -371,6 +371,41 @@ fn render(body: &Value) -> Result<Response, Response> {
         }),
         200,
     ))
+}
+
+/// Draws `views` on up to [`std::thread::available_parallelism`] threads (a drag redraws
+/// every view shown), in the order given.
+fn render_views(
+    plot: &PlotModel,
+    views: &[View],
+    options: &PlotOptions,
+) -> Vec<(View, Result<String, String>)> {
+    let draw = |v: View| (v, render_svg(plot, v, options).map_err(|e| e.to_string()));
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    if views.len() < 2 || threads < 2 {
+        return views.iter().map(|&v| draw(v)).collect();
+    }
+    let chunk = views.len().div_ceil(threads);
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = views
+            .chunks(chunk)
+            .map(|part| {
+                let draw = &draw;
+                scope.spawn(move || part.iter().map(|&v| draw(v)).collect::<Vec<_>>())
+            })
+            .collect();
+        handles
+            .into_iter()
+            .zip(views.chunks(chunk))
+            .flat_map(|(h, part)| {
+                h.join().unwrap_or_else(|_| {
+                    part.iter()
+                        .map(|&v| (v, Err("internal error while drawing".to_owned())))
+                        .collect()
+                })
+            })
+            .collect()
+    })
 }
 
 /// What the page shows about the model besides the figures.

@@ -379,18 +379,35 @@
   // ------------------------------------------------------------------------------------------
   // Table
 
+  function cellText(cell) {
+    const v = Number(cell);
+    return Number.isFinite(v) ? String(Math.round(v * 1e6) / 1e6) : cell;
+  }
+
   function drawTable(table) {
     const host = $('#table-host');
-    host.innerHTML = '';
-    if (!table) return;
+    if (!table) { host.innerHTML = ''; return; }
     if (table.error) {
+      host.innerHTML = '';
       const p = document.createElement('p');
       p.className = 'field-error';
       p.textContent = table.error;
       host.appendChild(p);
       return;
     }
+    // Same columns and row count: only the cells change (no new layout of the table).
+    const old = host.querySelector('table');
+    if (old && old.dataset.shape === `${table.columns.join(',')}/${table.rows.length}`) {
+      const cells = old.tBodies[0].rows;
+      table.rows.forEach((row, i) => row.forEach((cell, j) => {
+        const text = cellText(cell);
+        if (cells[i].cells[j].textContent !== text) cells[i].cells[j].textContent = text;
+      }));
+      return;
+    }
+    host.innerHTML = '';
     const t = document.createElement('table');
+    t.dataset.shape = `${table.columns.join(',')}/${table.rows.length}`;
     const head = t.createTHead().insertRow();
     for (const c of table.columns) {
       const th = document.createElement('th');
@@ -400,10 +417,7 @@
     const body = t.createTBody();
     for (const row of table.rows) {
       const tr = body.insertRow();
-      for (const cell of row) {
-        const v = Number(cell);
-        tr.insertCell().textContent = Number.isFinite(v) ? String(Math.round(v * 1e6) / 1e6) : cell;
-      }
+      for (const cell of row) tr.insertCell().textContent = cellText(cell);
     }
     host.appendChild(t);
   }
