@@ -278,3 +278,92 @@ def drag_and_time(page, index, moves=60):
         "load_average": os.getloadavg(),
     }
     return {"summary": summary, "frames": timings}
+
+
+def test_points_rules_files_data_and_camera(start_studio, page, out_dir, tmp_path):
+    file = tmp_path / "example1.json"
+    shutil.copy(EXAMPLE, file)
+    studio = start_studio(file)
+    open_page(page, studio)
+
+    # Add after the last point, insert after the selected one, delete.
+    page.click("#add-point")
+    idle(page)
+    m = model(page)
+    assert (len(m["control_points"]), m["degree"]) == (5, 4)
+    assert (m["control_points"][4]["x"], m["control_points"][4]["y"]) == (12, 8)
+    page.select_option("#point-index", "1")
+    page.click("#insert-point")
+    idle(page)
+    m = model(page)
+    assert len(m["control_points"]) == 6
+    assert (m["control_points"][2]["x"], m["control_points"][2]["y"]) == (4.5, 4)
+    assert page.locator("[data-point-index]").count() == 6
+    page.click("#delete-point")
+    idle(page)
+    assert len(model(page)["control_points"]) == 5
+
+    # Arrow keys move the selected point.
+    page.locator('[data-point-index="0"]').click()
+    page.locator("h1").click()
+    x0 = model(page)["control_points"][0]["x"]
+    page.keyboard.press("ArrowRight")
+    idle(page)
+    assert model(page)["control_points"][0]["x"] > x0
+
+    # Membership rules: intuitionistic drops the indeterminacy; fuzzy refuses nothing here.
+    page.select_option("#model-membership", "intuitionistic")
+    idle(page)
+    m = model(page)
+    assert m["membership"] == "intuitionistic"
+    assert "indeterminacy" not in m["control_points"][1]
+    assert page.locator("input[name=indeterminacy]").is_disabled()
+    page.fill("input[name=falsity]", "0.9")
+    page.press("input[name=falsity]", "Enter")
+    idle(page)
+    assert "intuitionistic rule: truth + falsity <= 1" in page.locator("[role=alert]").inner_text()
+    shot(page, out_dir, "09-intuitionistic-refused")
+    page.select_option("#model-membership", "neutrosophic")
+    idle(page)
+    assert model(page)["control_points"][1]["indeterminacy"] == 0.1
+
+    # Open a file through the picker; a broken knot list is refused next to its field.
+    page.set_input_files("#open-file", str(ROOT / "examples" / "bspline.toml"))
+    page.wait_for_function("window.studio.model().kind === 'bspline'")
+    idle(page)
+    assert page.locator("[role=status]").inner_text() == "opened bspline.toml"
+    page.fill("#model-knots", "0, 0, 0, 0, 0.7, 0.5, 0.8, 1, 1, 1, 1")
+    page.press("#model-knots", "Enter")
+    idle(page)
+    message = "knots: knot 5 = 0.5 is less than knot 4 = 0.7 (knots must be non-decreasing)"
+    assert page.locator("[role=alert]").inner_text() == message
+    assert page.locator('[data-error-for="knots"]').inner_text() == message
+    assert model(page)["knots"] == [0, 0, 0, 0, 0.2, 0.5, 0.7, 1, 1, 1, 1]
+    shot(page, out_dir, "10-knots-refused")
+
+    # Data over the curve, then a fit with `fit`'s options.
+    page.set_input_files("#data-file", str(ROOT / "examples" / "data" / "survey.csv"))
+    page.wait_for_function("document.querySelector('[data-view=data] svg') !== null")
+    idle(page)
+    assert page.locator("[data-view=data] .residual").count() == 80
+    page.click("#data-section summary")
+    page.select_option("#fit-target", "control-points")
+    page.fill("#fit-value", "12")
+    page.click("#fit")
+    page.wait_for_function("window.studio.model().control_points.length === 12")
+    idle(page)
+    assert page.locator("[role=status]").inner_text() == "fitted 12 control points to survey.csv"
+    assert "control points 12 (degree 3)" in page.locator("#fit-report").inner_text()
+    shot(page, out_dir, "11-fitted")
+
+    # Turning a 3-D view by dragging it.
+    before = page.evaluate("window.studio.camera()")
+    box = page.locator("[data-view=truth] .host").bounding_box()
+    page.mouse.move(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    page.mouse.down()
+    page.mouse.move(box["x"] + box["width"] / 2 + 60, box["y"] + box["height"] / 2 + 20, steps=6)
+    page.mouse.up()
+    idle(page)
+    after = page.evaluate("window.studio.camera()")
+    assert after["azimuth"] != before["azimuth"] and after["elevation"] > before["elevation"]
+    shot(page, out_dir, "12-turned")
