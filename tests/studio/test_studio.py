@@ -280,7 +280,7 @@ def drag_and_time(page, index, moves=60):
     return {"summary": summary, "frames": timings}
 
 
-def test_points_rules_files_data_and_camera(start_studio, page, out_dir, tmp_path):
+def test_points_rules_files_data_and_camera(start_studio, page, binary, out_dir, tmp_path):
     file = tmp_path / "example1.json"
     shutil.copy(EXAMPLE, file)
     studio = start_studio(file)
@@ -355,6 +355,24 @@ def test_points_rules_files_data_and_camera(start_studio, page, out_dir, tmp_pat
     assert page.locator("[role=status]").inner_text() == "fitted 12 control points to survey.csv"
     assert "control points 12 (degree 3)" in page.locator("#fit-report").inner_text()
     shot(page, out_dir, "11-fitted")
+
+    # Save as TOML: a download that the command reads back to the same model.
+    with page.expect_download() as info:
+        page.click("#save-toml")
+    assert info.value.suggested_filename == "example1.toml"
+    downloaded = tmp_path / "fitted.toml"
+    info.value.save_as(downloaded)
+    assert downloaded.read_text().startswith('kind = "bspline"')
+    with page.expect_download() as info:
+        page.click("#save-json")
+    assert info.value.suggested_filename == "example1.json"
+    info.value.save_as(tmp_path / "fitted.json")
+    assert json.loads((tmp_path / "fitted.json").read_text()) == model(page)
+    evals = [
+        subprocess.run([binary, "eval", f, "--samples", "7"], capture_output=True, text=True, check=True).stdout
+        for f in [downloaded, tmp_path / "fitted.json"]
+    ]
+    assert evals[0] == evals[1]
 
     # Turning a 3-D view by dragging it.
     before = page.evaluate("window.studio.camera()")
