@@ -232,16 +232,16 @@ def test_drag_degree_20_redraws_quickly(start_studio, page, out_dir, tmp_path):
     (out_dir / "drag-degree20.json").write_text(json.dumps(summaries, indent=1))
     for layout, summary in summaries.items():
         print(f"drag, degree 20, layout {layout}:", json.dumps(summary["summary"]))
-        assert summary["summary"]["frames"] >= 10
+        assert summary["summary"]["frames"] >= 5
     budget = os.environ.get("STUDIO_DRAG_BUDGET_MS")
     if budget:
         median = summaries["grid"]["summary"]["work_ms"]["median"]
         assert median <= float(budget), summaries["grid"]["summary"]
 
 
-def drag_and_time(page, index, moves=60):
-    """Drags point `index` along a wave, one move per display frame; the page's timings of
-    the preview frames, summarised."""
+def drag_and_time(page, index, moves=120):
+    """Drags point `index` along a wave; the page's timings of the preview frames,
+    summarised."""
     page.evaluate("window.studio.timings.length = 0")
     handle = page.locator(f'[data-point-index="{index}"]')
     box = handle.bounding_box()
@@ -249,8 +249,9 @@ def drag_and_time(page, index, moves=60):
     page.mouse.move(x, y)
     page.mouse.down()
     for k in range(1, moves + 1):
+        # As fast as the browser takes input: moves that come while a frame is being drawn
+        # are coalesced (the latest wins), so `interval` is the time between redraws.
         page.mouse.move(x + k, y + 30 * math.sin(k / 10))
-        page.wait_for_timeout(16)  # one move per display frame, as a hand makes them
     page.mouse.up()
     idle(page)
     timings = page.evaluate("window.studio.timings")
@@ -258,7 +259,7 @@ def drag_and_time(page, index, moves=60):
     final = [t for t in timings if not t["preview"]]
 
     def stats(key):
-        values = sorted(t[key] for t in frames)
+        values = sorted(t[key] for t in frames if t[key] is not None)
         return {
             "median": round(statistics.median(values), 1),
             "p90": round(values[int(0.9 * (len(values) - 1))], 1),
@@ -271,6 +272,7 @@ def drag_and_time(page, index, moves=60):
         "views_per_frame": frames[-1]["views"],
         "latency_ms": stats("latency"),
         "work_ms": stats("work"),
+        "interval_ms": stats("interval"),
         "server_ms": stats("server"),
         "fetch_ms": stats("fetch"),
         "dom_ms": stats("dom"),

@@ -133,40 +133,50 @@
     if (!inFlight) pump();
   }
 
+  // Sends the pending proposal; resolves to {job, result, tSent, tAnswer}.
+  async function send() {
+    const job = pending;
+    pending = null;
+    const request = {
+      model: JSON.stringify(job.model, null, 1),
+      views: shownViews(),
+      at: state.at,
+    };
+    if (job.preview) request.samples = PREVIEW_SAMPLES;
+    const tSent = performance.now();
+    let result;
+    try {
+      result = await postJson('/api/render', Object.assign(request, extra()));
+    } catch (e) {
+      result = { ok: false, status: 0, value: { error: { message: `the studio server cannot be reached (${e.message})` } } };
+    }
+    return { job, result, tSent, tAnswer: performance.now() };
+  }
+
+  // One request at a time; the next one (the latest proposal) leaves as soon as an answer
+  // is in, so that the server draws frame N + 1 while the page lays out frame N.
   async function pump() {
-    while (pending) {
-      const job = pending;
-      pending = null;
-      inFlight = true;
-      const t0 = job.t0;
-      let tSent = t0;
-      let result;
-      try {
-        const request = {
-          model: JSON.stringify(job.model, null, 1),
-          views: shownViews(),
-          at: state.at,
-        };
-        if (job.preview) request.samples = PREVIEW_SAMPLES;
-        tSent = performance.now();
-        result = await postJson('/api/render', Object.assign(request, extra()));
-      } catch (e) {
-        result = { ok: false, status: 0, value: { error: { message: `the studio server cannot be reached (${e.message})` } } };
-      }
+    inFlight = true;
+    let next = send();
+    while (next) {
+      const { job, result, tSent, tAnswer } = await next;
+      next = pending ? send() : null;
       if (result.ok) {
-        const tAnswer = performance.now();
         accept(result.value, job);
         // The layout the next paint needs, done now so that it is measured.
         void $('#views').offsetHeight;
         const tDom = performance.now();
         // latency: from the input event to the views laid out anew; work: from the request
-        // to the same point (without the wait for a request already in flight).
+        // to the same point; interval: since the previous frame was laid out.
+        const last = state.timings[state.timings.length - 1];
         state.timings.push({
-          latency: tDom - t0,
+          latency: tDom - job.t0,
           work: tDom - tSent,
           fetch: tAnswer - tSent,
           server: result.value.ms,
           dom: tDom - tAnswer,
+          at: tDom,
+          interval: last ? tDom - last.at : null,
           preview: job.preview,
           views: Object.keys(result.value.figures).length,
         });
@@ -178,8 +188,9 @@
         if (job.onRefused) job.onRefused();
         fillModelFields();
       }
-      inFlight = false;
+      if (!next && pending) next = send();
     }
+    inFlight = false;
     const waiters = idleWaiters;
     idleWaiters = [];
     waiters.forEach((w) => w());
