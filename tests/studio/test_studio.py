@@ -239,20 +239,32 @@ def test_drag_degree_20_redraws_quickly(start_studio, page, out_dir, tmp_path):
         assert median <= float(budget), summaries["grid"]["summary"]
 
 
-def drag_and_time(page, index, moves=120):
-    """Drags point `index` along a wave; the page's timings of the preview frames,
+def drag_and_time(page, index, moves=120, every_ms=16):
+    """Drags point `index` along a wave with pointer events sent from inside the page every
+    `every_ms` (a 60 Hz mouse; moves that come while a frame is being drawn are coalesced, so
+    `interval` is the time between redraws); the page's timings of the preview frames,
     summarised."""
     page.evaluate("window.studio.timings.length = 0")
-    handle = page.locator(f'[data-point-index="{index}"]')
-    box = handle.bounding_box()
-    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
-    page.mouse.move(x, y)
-    page.mouse.down()
-    for k in range(1, moves + 1):
-        # As fast as the browser takes input: moves that come while a frame is being drawn
-        # are coalesced (the latest wins), so `interval` is the time between redraws.
-        page.mouse.move(x + k, y + 30 * math.sin(k / 10))
-    page.mouse.up()
+    page.evaluate(
+        """async ([index, moves, every]) => {
+            const host = document.querySelector('[data-view=plane] .host');
+            const handle = host.querySelector(`[data-point-index="${index}"]`);
+            const box = handle.getBoundingClientRect();
+            const x = box.x + box.width / 2, y = box.y + box.height / 2;
+            const fire = (type, k, target) => target.dispatchEvent(new PointerEvent(type, {
+                clientX: x + k, clientY: y + 30 * Math.sin(k / 10), pointerId: 1,
+                pointerType: 'mouse', isPrimary: true, bubbles: true,
+                buttons: type === 'pointerup' ? 0 : 1,
+            }));
+            fire('pointerdown', 0, handle);
+            for (let k = 1; k <= moves; k++) {
+                await new Promise((r) => setTimeout(r, every));
+                fire('pointermove', k, host);
+            }
+            fire('pointerup', moves, host);
+        }""",
+        [index, moves, every_ms],
+    )
     idle(page)
     timings = page.evaluate("window.studio.timings")
     frames = [t for t in timings if t["preview"]]
@@ -268,6 +280,7 @@ def drag_and_time(page, index, moves=120):
 
     summary = {
         "moves": moves,
+        "move_every_ms": every_ms,
         "frames": len(frames),
         "views_per_frame": frames[-1]["views"],
         "latency_ms": stats("latency"),

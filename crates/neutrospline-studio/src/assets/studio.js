@@ -309,6 +309,11 @@
 
   let drag = null;
 
+  // Keeps the pointer's moves coming to `host` when it leaves it (not for synthetic events).
+  function capture(host, pointerId) {
+    try { host.setPointerCapture(pointerId); } catch (e) { /* not an active pointer */ }
+  }
+
   function attachDragging() {
     const host = panels.plane.querySelector('.host');
     host.addEventListener('pointerdown', (event) => {
@@ -323,7 +328,7 @@
         return;
       }
       event.preventDefault();
-      host.setPointerCapture(event.pointerId);
+      capture(host, event.pointerId);
       const p = svgPoint(svg, event);
       const point = state.model.control_points[k];
       drag = { k, frame, start: p, x: point.x, y: point.y, moved: false, pointerId: event.pointerId };
@@ -360,7 +365,7 @@
     host.addEventListener('pointerdown', (event) => {
       if (!isTurnable(view) || event.target.closest('[data-point-index]')) return;
       event.preventDefault();
-      host.setPointerCapture(event.pointerId);
+      capture(host, event.pointerId);
       turn = { x: event.clientX, y: event.clientY, camera: clone(state.camera), id: event.pointerId };
     });
     host.addEventListener('pointermove', (event) => {
