@@ -400,3 +400,59 @@ def test_points_rules_files_data_and_camera(start_studio, page, binary, out_dir,
     after = page.evaluate("window.studio.camera()")
     assert after["azimuth"] != before["azimuth"] and after["elevation"] > before["elevation"]
     shot(page, out_dir, "12-turned")
+
+
+def drop_file(page, selector, name, text):
+    transfer = page.evaluate_handle(
+        """([name, text]) => {
+            const dt = new DataTransfer();
+            dt.items.add(new File([text], name));
+            return dt;
+        }""",
+        [name, text],
+    )
+    page.dispatch_event(selector, "drop", {"dataTransfer": transfer})
+
+
+def test_drop_broken_file_3d_curve_and_surface(start_studio, page, binary, out_dir, tmp_path):
+    studio = start_studio()
+    open_page(page, studio)
+
+    # A broken file dropped on the page: the reader's message, as `check` prints it.
+    broken = (ROOT / "examples" / "bspline.toml").read_text().replace("degree = 3", "degree = -3")
+    (tmp_path / "broken.toml").write_text(broken)
+    drop_file(page, "#views", "broken.toml", broken)
+    page.wait_for_function("document.querySelector('[role=alert]').textContent !== ''")
+    message = page.locator("[role=alert]").inner_text()
+    assert message == "broken.toml:9: degree: expected a non-negative integer, found -3"
+    check = subprocess.run([binary, "check", tmp_path / "broken.toml"], capture_output=True, text=True)
+    assert check.stderr == f"error: {tmp_path / 'broken.toml'}:9: degree: expected a non-negative integer, found -3\n"
+    assert model(page)["name"] == "Example 1"
+    shot(page, out_dir, "13-broken-file-dropped")
+
+    # A 3-D curve dropped: handles in the plane view select points; z is edited in its field.
+    drop_file(page, "#views", "helix3d.toml", (ROOT / "examples" / "helix3d.toml").read_text())
+    page.wait_for_function("window.studio.model().name === 'helix quarter turn'")
+    idle(page)
+    assert page.locator("[data-point-index]").count() == 4
+    page.locator('[data-point-index="2"]').click()
+    assert page.locator("#point-index").input_value() == "2"
+    page.fill("input[name=z]", "0.6")
+    page.press("input[name=z]", "Enter")
+    idle(page)
+    assert model(page)["control_points"][2]["z"] == 0.6
+    shot(page, out_dir, "14-helix-3d")
+
+    # A surface: every view draws; degrees of a control point are edited; no handles to drag.
+    drop_file(page, "#views", "surface.toml", (ROOT / "examples" / "surface.toml").read_text())
+    page.wait_for_function("window.studio.model().kind === 'bezier-surface'")
+    idle(page)
+    for view in ["plane", "controls", "truth", "indeterminacy", "falsity", "all"]:
+        assert page.locator(f"[data-view={view}] svg").count() == 1, view
+    page.select_option("#point-index", "5")
+    page.fill("input[name=truth]", "0.25")
+    page.press("input[name=truth]", "Enter")
+    idle(page)
+    assert model(page)["control_points"][5]["truth"] == 0.25
+    assert page.locator("#add-point").is_disabled()
+    shot(page, out_dir, "15-surface")

@@ -760,6 +760,9 @@
     const r = await postJson('/api/open', { name, text });
     if (!r.ok) { alertMessage(r.value.error.message); return; }
     state.selected = 0;
+    $('#file-name').textContent = state.file
+      ? `${state.file} (showing ${r.value.name}; Save writes ${state.file})`
+      : `${r.value.name} (no file: save downloads)`;
     propose(r.value.model, { commit: true, message: `opened ${r.value.name}` });
   }
 
