@@ -301,7 +301,11 @@ impl<H: Handler> Server<H> {
         let port = self.port();
         let active = Arc::new(AtomicUsize::new(0));
         for stream in self.listener.incoming() {
-            let Ok(stream) = stream else { continue };
+            let Ok(stream) = stream else {
+                // Out of file descriptors, say: wait a little rather than spin.
+                std::thread::sleep(Duration::from_millis(20));
+                continue;
+            };
             if active.load(Ordering::SeqCst) >= MAX_CONNECTIONS {
                 let mut stream = stream;
                 let _ = Response::error(503, "too many connections").write_to(&mut stream, true);
