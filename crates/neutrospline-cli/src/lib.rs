@@ -20,6 +20,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+use commands::studio::StudioArgs;
 use commands::{
     bench::BenchArgs, bench_fit::BenchFitArgs, check::CheckArgs, eval::EvalArgs,
     example::ExampleArgs, export::ExportArgs, fit::FitArgs, import::ImportArgs, plot::PlotArgs,
@@ -80,6 +81,9 @@ enum Command {
     /// synthetic noisy data in-process, as one JSON object (bench/compare_fit.py compares it
     /// with scipy in the same run)
     BenchFit(BenchFitArgs),
+    /// Edit a curve live in the browser: a local server on 127.0.0.1 with the plane view,
+    /// the paper's views, the degrees and the curve table (prints the URL)
+    Studio(StudioArgs),
 }
 
 fn run(cli: &Cli) -> anyhow::Result<()> {
@@ -93,6 +97,7 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         Command::Example(args) => commands::example::run(args),
         Command::Bench(args) => commands::bench::run(args, &mut std::io::stdout().lock()),
         Command::BenchFit(args) => commands::bench_fit::run(args, &mut std::io::stdout().lock()),
+        Command::Studio(args) => commands::studio::run(args),
     }
 }
 

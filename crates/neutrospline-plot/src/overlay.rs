@@ -57,6 +57,22 @@ pub struct DataOverlay {
 }
 
 impl DataOverlay {
+    /// The data points of a data file ([`neutrospline_io::DataTable`]) for the `data` view,
+    /// coloured by `color_by`, with whiskers at the table's `parameter` column when it has one
+    /// (else to the nearest point of the curve): what `neutrospline plot --data` and the
+    /// studio draw.
+    pub fn from_table(table: &neutrospline_io::DataTable, color_by: DegreeKind) -> DataOverlay {
+        let overlay = DataOverlay::new(
+            table.positions().to_vec(),
+            table.degrees().iter().map(|d| d.to_array()).collect(),
+        )
+        .with_color_by(color_by);
+        match table.parameters() {
+            Some(parameters) => overlay.with_parameters(parameters.to_vec()),
+            None => overlay,
+        }
+    }
+
     /// Points and their degrees (truth, indeterminacy, falsity), coloured by truth, without
     /// parameters (each whisker then goes to the nearest point of the curve).
     pub fn new(positions: Vec<[f64; 3]>, degrees: Vec<[f64; 3]>) -> DataOverlay {

@@ -184,14 +184,7 @@ pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
                     shape.dimension()
                 ));
             }
-            let mut overlay = DataOverlay::new(
-                table.positions().to_vec(),
-                table.degrees().iter().map(|d| d.to_array()).collect(),
-            )
-            .with_color_by(args.color_by.into());
-            if let Some(parameters) = table.parameters() {
-                overlay = overlay.with_parameters(parameters.to_vec());
-            }
+            let overlay = DataOverlay::from_table(&table, args.color_by.into());
             plot = plot
                 .with_data(overlay)
                 .map_err(|e| anyhow::anyhow!("{}: {e}", table.file()))?;

@@ -1,0 +1,666 @@
+//! The studio's pages and JSON API. Every model the page sends is the JSON object that saving
+//! to `.json` writes, as text; it is read by `neutrospline-io` (so refusals carry the CLI's
+//! messages), drawn by `neutrospline-plot` and written back by `neutrospline-io`. The page
+//! computes no geometry of its own.
+//!
+//! | route | body | answer |
+//! |---|---|---|
+//! | `GET /`, `/studio.js`, `/studio.css` | | the page (embedded in the binary) |
+//! | `GET /api/state` | | `{model, file, canSave}`: the model the studio was started with |
+//! | `POST /api/render` | `{model, views, azimuth, elevation, at, data, colorBy}` | `{model, figures, errors, handles, table, info, ms}` |
+//! | `POST /api/export` | `{model, view, format: svg\|png, azimuth, elevation, data, colorBy}` | the figure's bytes |
+//! | `POST /api/open` | `{name, text}` | `{model}`: a TOML, JSON or CSV model read like a file |
+//! | `POST /api/convert` | `{model, format: toml\|json}` | `{text, filename}` (a download) |
+//! | `POST /api/save` | `{model}` | `{saved}`: written atomically to the file the studio was started with |
+//! | `POST /api/data` | `{name, text, membership}` | `{points, dimension}` |
+//! | `POST /api/fit` | `{data: {name, text}, membership, options}` | `{model, report}` |
+//!
+//! A refused model is answered 422 with `{"error": {"message", "field", "line"}}`.
+
+use std::path::{Path, PathBuf};
+use std::str::FromStr;
+use std::sync::Mutex;
+use std::time::Instant;
+
+use neutrospline::fit::{fit, DataWeights, FitKind, FitOptions, FitTarget, Parametrization};
+use neutrospline::{
+    uniform_parameter, AnyCurve, ControlPolygon, DegreeKind, Evaluate, EvaluateSurface, Membership,
+};
+use neutrospline_io::{format_number, DataTable, Format, Model, ReadError, ReadOptions, Shape};
+use neutrospline_plot::{render_png, render_svg, DataOverlay, PlotModel, PlotOptions, View};
+use serde_json::{json, Map, Value};
+
+use crate::figure::{figure_options, handles};
+use crate::http::{Handler, Request, Response};
+
+const INDEX_HTML: &str = include_str!("assets/index.html");
+const STUDIO_JS: &str = include_str!("assets/studio.js");
+const STUDIO_CSS: &str = include_str!("assets/studio.css");
+
+/// The paper's Example 1, opened when the studio is started without a file.
+const EXAMPLE1_JSON: &str = include_str!("../../../examples/example1.json");
+
+/// The name models sent by the page have in messages.
+const PAGE_MODEL: &str = "model";
+
+/// The studio: the model it was started with, and the one file it may write.
+pub struct Studio {
+    file: Option<PathBuf>,
+    current: Mutex<Model>,
+}
+
+impl Studio {
+    /// A studio on the paper's Example 1 (`examples/example1.json`), with no file to save to.
+    pub fn example() -> Studio {
+        // The file is part of the repository and is tested to read back; a failure here is a
+        // bug in the build, not bad input.
+        let model = neutrospline_io::parse(
+            "example1.json",
+            Format::Json,
+            EXAMPLE1_JSON.as_bytes(),
+            &ReadOptions::default(),
+        )
+        .unwrap_or_else(|_| Model::new(AnyCurve::from(neutrospline::example1())));
+        Studio {
+            file: None,
+            current: Mutex::new(model),
+        }
+    }
+
+    /// A studio on `model`, read from `file`: "save" replaces that file (atomically) and no
+    /// other.
+    pub fn with_file(model: Model, file: impl Into<PathBuf>) -> Studio {
+        Studio {
+            file: Some(file.into()),
+            current: Mutex::new(model),
+        }
+    }
+
+    /// The file "save" writes, if any.
+    pub fn file(&self) -> Option<&Path> {
+        self.file.as_deref()
+    }
+
+    fn current(&self) -> std::sync::MutexGuard<'_, Model> {
+        self.current.lock().unwrap_or_else(|e| e.into_inner())
+    }
+}
+
+impl Handler for Studio {
+    fn handle(&self, request: &Request) -> Response {
+        let post = |f: &dyn Fn(&Value) -> Result<Response, Response>| -> Response {
+            if request.method != "POST" {
+                return Response::error(405, "use POST").with_header("Allow", "POST");
+            }
+            let body: Value = match serde_json::from_slice(&request.body) {
+                Ok(v) => v,
+                Err(e) => return Response::error(400, &format!("the body is not JSON: {e}")),
+            };
+            f(&body).unwrap_or_else(|e| e)
+        };
+        match request.path.as_str() {
+            "/" | "/index.html" | "/studio.js" | "/studio.css" | "/api/state"
+                if request.method != "GET" && request.method != "HEAD" =>
+            {
+                Response::error(405, "use GET").with_header("Allow", "GET")
+            }
+            "/" | "/index.html" => Response::new(200, "text/html; charset=utf-8", INDEX_HTML)
+                .with_header(
+                "Content-Security-Policy",
+                "default-src 'self'; img-src 'self' data: blob:; style-src 'self' 'unsafe-inline'",
+            ),
+            "/studio.js" => Response::new(200, "text/javascript; charset=utf-8", STUDIO_JS),
+            "/studio.css" => Response::new(200, "text/css; charset=utf-8", STUDIO_CSS),
+            "/api/state" => self.state(),
+            "/favicon.ico" => Response::new(204, "image/x-icon", Vec::new()),
+            "/api/render" => post(&render),
+            "/api/export" => post(&export),
+            "/api/open" => post(&open),
+            "/api/convert" => post(&|b| self.convert(b)),
+            "/api/save" => post(&|b| self.save(b)),
+            "/api/data" => post(&data),
+            "/api/fit" => post(&fit_data),
+            _ => Response::error(404, &format!("no such page: {}", request.path)),
+        }
+    }
+}
+
+impl Studio {
+    fn state(&self) -> Response {
+        let model = neutrospline_io::to_json_string(&self.current());
+        let file = self.file.as_ref().map(|f| f.display().to_string());
+        with_model(
+            &model,
+            json!({ "file": file, "canSave": self.file.is_some() }),
+            200,
+        )
+    }
+
+    fn convert(&self, body: &Value) -> Result<Response, Response> {
+        let model = page_model(body)?;
+        let format = match body["format"].as_str() {
+            Some("toml") => Format::Toml,
+            Some("json") => Format::Json,
+            other => {
+                return Err(Response::error(
+                    400,
+                    &format!("format {other:?}: give \"toml\" or \"json\""),
+                ))
+            }
+        };
+        let text = neutrospline_io::to_string(&model, format)
+            .map_err(|e| Response::error(422, &e.to_string()))?;
+        let stem = self
+            .file
+            .as_deref()
+            .and_then(Path::file_stem)
+            .map_or("model".to_owned(), |s| s.to_string_lossy().into_owned());
+        let filename = format!("{stem}.{}", format.extension());
+        Ok(Response::json(
+            200,
+            json!({ "text": text, "filename": filename }).to_string(),
+        ))
+    }
+
+    fn save(&self, body: &Value) -> Result<Response, Response> {
+        let Some(path) = &self.file else {
+            return Err(Response::error(
+                409,
+                "the studio was started without a file: download the model with \
+                 \u{201c}Save as TOML\u{201d} or \u{201c}Save as JSON\u{201d}",
+            ));
+        };
+        let model = page_model(body)?;
+        let mut current = self.current();
+        neutrospline_io::save(&model, path).map_err(|e| Response::error(500, &e.to_string()))?;
+        *current = model;
+        Ok(Response::json(
+            200,
+            json!({ "saved": path.display().to_string() }).to_string(),
+        ))
+    }
+}
+
+/// `{"model": MODEL_JSON, ...rest}` (the model as the JSON writer writes it).
+fn with_model(model_json: &str, rest: Value, status: u16) -> Response {
+    let rest = rest.to_string();
+    let body = match rest.strip_prefix('{') {
+        Some("}") | None => format!("{{\"model\":{model_json}}}"),
+        Some(tail) => format!("{{\"model\":{model_json},{tail}"),
+    };
+    Response::json(status, body)
+}
+
+/// A 422 answer for a refused model or file: the message as the CLI prints it after
+/// `error: `, and its field and line for the page to point at.
+fn refused(error: &ReadError, shown_without_file: bool) -> Response {
+    let (message, detail, field, line) = match error {
+        ReadError::Input(e) => (
+            match (&e.field, shown_without_file) {
+                (Some(f), true) => format!("{f}: {}", e.message),
+                (None, true) => e.message.clone(),
+                (_, false) => e.to_string(),
+            },
+            Some(e.message.clone()),
+            e.field.clone(),
+            e.line,
+        ),
+        ReadError::Format(e) => (e.describe(Format::ACCEPTED), None, None, None),
+        e => (e.to_string(), None, None, None),
+    };
+    let error = json!({ "message": message, "detail": detail, "field": field, "line": line });
+    Response::json(422, json!({ "error": error }).to_string())
+}
+
+/// The model in `body["model"]`: the text of a `.json` model.
+fn page_model(body: &Value) -> Result<Model, Response> {
+    let text = body["model"]
+        .as_str()
+        .ok_or_else(|| Response::error(400, "`model` must be the text of a JSON model"))?;
+    neutrospline_io::parse(
+        PAGE_MODEL,
+        Format::Json,
+        text.as_bytes(),
+        &ReadOptions::default(),
+    )
+    .map_err(|e| refused(&e, true))
+}
+
+fn camera(body: &Value) -> (f64, f64) {
+    (
+        body["azimuth"]
+            .as_f64()
+            .unwrap_or(PlotOptions::DEFAULT_AZIMUTH),
+        body["elevation"]
+            .as_f64()
+            .unwrap_or(PlotOptions::DEFAULT_ELEVATION),
+    )
+}
+
+fn membership(body: &Value, default: Membership) -> Result<Membership, Response> {
+    match body["membership"].as_str() {
+        None => Ok(default),
+        Some(m) => Membership::from_str(m).map_err(|e| Response::error(400, &e.to_string())),
+    }
+}
+
+/// The data table of `data = {name, text}` (`name` is used in messages only).
+fn data_table(data: &Value, membership: Membership) -> Result<Option<DataTable>, Response> {
+    if data.is_null() {
+        return Ok(None);
+    }
+    let name = file_label(data["name"].as_str().unwrap_or("data.csv"));
+    let text = data["text"]
+        .as_str()
+        .ok_or_else(|| Response::error(400, "`data.text` must be the CSV text"))?;
+    neutrospline_io::read_data(&name, text.as_bytes(), membership)
+        .map(Some)
+        .map_err(|e| refused(&e, false))
+}
+
+/// The last component of a name the page gives (a file's name, never a path to read).
+fn file_label(name: &str) -> String {
+    Path::new(name)
+        .file_name()
+        .map_or("file".to_owned(), |n| n.to_string_lossy().into_owned())
+}
+
+/// The plot model, with the data of `body["data"]` when there is any.
+fn prepare(model: &Model, body: &Value) -> Result<(PlotModel, Option<String>), Response> {
+    let plot = PlotModel::from_model(model).map_err(|e| Response::error(422, &e.to_string()))?;
+    let table = match data_table(&body["data"], model.membership()) {
+        Ok(t) => t,
+        Err(r) => {
+            let message = serde_json::from_slice::<Value>(&r.body)
+                .ok()
+                .and_then(|v| v["error"]["message"].as_str().map(str::to_owned));
+            return Ok((plot, message));
+        }
+    };
+    let Some(table) = table else {
+        return Ok((plot, None));
+    };
+    if model.shape().is_surface() {
+        return Ok((
+            plot,
+            Some("data points are drawn over curves only".to_owned()),
+        ));
+    }
+    if table.dimension() != model.shape().dimension() {
+        let message = format!(
+            "{}: the data is {}-D but the model is {}-D (give z for a 3-D curve, or none for a \
+             2-D one)",
+            table.file(),
+            table.dimension(),
+            model.shape().dimension()
+        );
+        return Ok((plot, Some(message)));
+    }
+    let color_by = body["colorBy"]
+        .as_str()
+        .and_then(|c| DegreeKind::from_str(c).ok())
+        .unwrap_or(DegreeKind::Truth);
+    match plot
+        .clone()
+        .with_data(DataOverlay::from_table(&table, color_by))
+    {
+        Ok(p) => Ok((p, None)),
+        Err(e) => Ok((plot, Some(format!("{}: {e}", table.file())))),
+    }
+}
+
+fn parse_view(name: &str) -> Result<View, Response> {
+    View::from_str(name).map_err(|e| Response::error(400, &e.to_string()))
+}
+
+fn render(body: &Value) -> Result<Response, Response> {
+    let start = Instant::now();
+    let model = page_model(body)?;
+    let views = body["views"]
+        .as_array()
+        .map(|v| v.iter().filter_map(Value::as_str).map(parse_view).collect())
+        .unwrap_or_else(|| Ok(Vec::new()))?;
+    let (azimuth, elevation) = camera(body);
+    let mut options = figure_options(&model, azimuth, elevation);
+    // A preview while a point is dragged: fewer samples along a curve (the figure after the
+    // drag, and every export, use the default).
+    if let Some(n) = body["samples"].as_u64() {
+        if !model.shape().is_surface() {
+            let n = usize::try_from(n).unwrap_or(usize::MAX);
+            options = options
+                .with_samples(n.clamp(PlotOptions::MIN_SAMPLES, PlotOptions::DEFAULT_SAMPLES));
+        }
+    }
+    let (plot, data_error) = prepare(&model, body)?;
+    let mut figures = Map::new();
+    let mut errors = Map::new();
+    for (view, drawn) in render_views(&plot, &views, &options) {
+        match drawn {
+            Ok(svg) => {
+                figures.insert(view.name().to_owned(), Value::String(svg));
+            }
+            Err(e) => {
+                errors.insert(view.name().to_owned(), Value::String(e));
+            }
+        }
+    }
+    if let Some(e) = data_error {
+        errors.insert("data".to_owned(), Value::String(e));
+    }
+    let handles = match (model.shape(), figures.get("plane").and_then(Value::as_str)) {
+        (Shape::Planar(c), Some(svg)) => {
+            let points: Vec<[f64; 2]> = c.control_points().iter().map(|p| p.position).collect();
+            let h = handles(svg, &points);
+            json!({ "pixels": h.pixels, "frame": h.frame })
+        }
+        (_, Some(svg)) => json!({ "pixels": crate::figure::control_markers(svg), "frame": null }),
+        _ => Value::Null,
+    };
+    let table = match table(model.shape(), body["at"].as_str().unwrap_or("")) {
+        Ok((columns, rows)) => json!({ "columns": columns, "rows": rows }),
+        Err(message) => json!({ "error": message }),
+    };
+    let ms = start.elapsed().as_secs_f64() * 1e3;
+    Ok(with_model(
+        &neutrospline_io::to_json_string(&model),
+        json!({
+            "figures": figures,
+            "errors": errors,
+            "handles": handles,
+            "table": table,
+            "info": info(&model),
+            "ms": ms,
+        }),
+        200,
+    ))
+}
+
+/// Draws `views` on up to [`std::thread::available_parallelism`] threads (a drag redraws
+/// every view shown), in the order given.
+fn render_views(
+    plot: &PlotModel,
+    views: &[View],
+    options: &PlotOptions,
+) -> Vec<(View, Result<String, String>)> {
+    let draw = |v: View| (v, render_svg(plot, v, options).map_err(|e| e.to_string()));
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    if views.len() < 2 || threads < 2 {
+        return views.iter().map(|&v| draw(v)).collect();
+    }
+    let chunk = views.len().div_ceil(threads);
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = views
+            .chunks(chunk)
+            .map(|part| {
+                let draw = &draw;
+                scope.spawn(move || part.iter().map(|&v| draw(v)).collect::<Vec<_>>())
+            })
+            .collect();
+        handles
+            .into_iter()
+            .zip(views.chunks(chunk))
+            .flat_map(|(h, part)| {
+                h.join().unwrap_or_else(|_| {
+                    part.iter()
+                        .map(|&v| (v, Err("internal error while drawing".to_owned())))
+                        .collect()
+                })
+            })
+            .collect()
+    })
+}
+
+/// What the page shows about the model besides the figures.
+fn info(model: &Model) -> Value {
+    let shape = model.shape();
+    let domain = shape.curve_domain().map(|d| [d.start, d.end]);
+    json!({
+        "kind": model.kind().to_string(),
+        "dimension": shape.dimension(),
+        "surface": shape.is_surface(),
+        "domain": domain,
+    })
+}
+
+/// The table of `eval` (columns `t, x, y[, z], truth, indeterminacy, falsity`; surfaces
+/// `u, v, x, y, z, ...`) at the parameters of `at` (`T1,T2,...` or `U:V,...`), or at 11
+/// evenly spaced parameters (a 3 x 3 grid on a surface) when it is empty. Numbers as `eval`
+/// writes them.
+fn table(shape: &Shape, at: &str) -> Result<(Vec<String>, Vec<Vec<String>>), String> {
+    let mut columns: Vec<String> = if shape.is_surface() {
+        vec!["u".into(), "v".into()]
+    } else {
+        vec!["t".into()]
+    };
+    columns.extend(
+        ["x", "y", "z"][..shape.dimension()]
+            .iter()
+            .map(|s| (*s).into()),
+    );
+    columns.extend(["truth", "indeterminacy", "falsity"].map(String::from));
+    let number = |item: &str| -> Result<f64, String> {
+        match item.trim().parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(v),
+            Ok(_) => Err(format!(
+                "parameter `{}` is not a finite number",
+                item.trim()
+            )),
+            Err(_) => Err(format!("parameter `{}` is not a number", item.trim())),
+        }
+    };
+    let items: Vec<&str> = at.split(',').filter(|s| !s.trim().is_empty()).collect();
+    let cell = |v: f64| format_number(v);
+    let mut rows = Vec::new();
+    match shape {
+        Shape::Surface(s) => {
+            let [du, dv] = s.domain();
+            let params: Vec<(f64, f64)> = if items.is_empty() {
+                (0..9)
+                    .map(|k| {
+                        (
+                            uniform_parameter(k / 3, 3, du.clone()),
+                            uniform_parameter(k % 3, 3, dv.clone()),
+                        )
+                    })
+                    .collect()
+            } else {
+                items
+                    .iter()
+                    .map(|item| match item.split_once(':') {
+                        Some((u, v)) => Ok((number(u)?, number(v)?)),
+                        None => Err(format!(
+                            "`{}` is not a pair U:V (a surface is evaluated at U:V,U:V,...)",
+                            item.trim()
+                        )),
+                    })
+                    .collect::<Result<_, _>>()?
+            };
+            for (u, v) in params {
+                let p = s.evaluate(u, v).map_err(|e| e.to_string())?;
+                let mut row = vec![cell(u), cell(v)];
+                row.extend(p.position.iter().map(|&x| cell(x)));
+                row.extend(p.degrees.to_array().iter().map(|&x| cell(x)));
+                rows.push(row);
+            }
+        }
+        Shape::Planar(_) | Shape::Spatial(_) => {
+            let domain = shape.curve_domain().unwrap_or(0.0..1.0);
+            let params: Vec<f64> = if items.is_empty() {
+                (0..11)
+                    .map(|k| uniform_parameter(k, 11, domain.clone()))
+                    .collect()
+            } else {
+                items.iter().map(|i| number(i)).collect::<Result<_, _>>()?
+            };
+            for t in params {
+                let (position, degrees) = match shape {
+                    Shape::Planar(c) => {
+                        let p = c.evaluate(t).map_err(|e| e.to_string())?;
+                        (p.position.to_vec(), p.degrees)
+                    }
+                    Shape::Spatial(c) => {
+                        let p = c.evaluate(t).map_err(|e| e.to_string())?;
+                        (p.position.to_vec(), p.degrees)
+                    }
+                    Shape::Surface(_) => unreachable!("surfaces are handled above"),
+                };
+                let mut row = vec![cell(t)];
+                row.extend(position.iter().map(|&x| cell(x)));
+                row.extend(degrees.to_array().iter().map(|&x| cell(x)));
+                rows.push(row);
+            }
+        }
+    }
+    Ok((columns, rows))
+}
+
+fn export(body: &Value) -> Result<Response, Response> {
+    let model = page_model(body)?;
+    let view = parse_view(body["view"].as_str().unwrap_or("all"))?;
+    let (azimuth, elevation) = camera(body);
+    let options = figure_options(&model, azimuth, elevation);
+    let (plot, _) = prepare(&model, body)?;
+    let fail = |e: neutrospline_plot::PlotError| Response::error(422, &e.to_string());
+    match body["format"].as_str() {
+        Some("png") => Ok(Response::new(
+            200,
+            "image/png",
+            render_png(&plot, view, &options).map_err(fail)?,
+        )),
+        Some("svg") | None => Ok(Response::new(
+            200,
+            "image/svg+xml; charset=utf-8",
+            render_svg(&plot, view, &options).map_err(fail)?,
+        )),
+        Some(other) => Err(Response::error(
+            400,
+            &format!("format `{other}`: give \"svg\" or \"png\""),
+        )),
+    }
+}
+
+fn open(body: &Value) -> Result<Response, Response> {
+    let name = file_label(body["name"].as_str().unwrap_or(""));
+    let text = body["text"]
+        .as_str()
+        .ok_or_else(|| Response::error(400, "`text` must be the file's text"))?;
+    let format = Format::from_path(&name)
+        .map_err(|e| Response::error(422, &e.describe(Format::ACCEPTED)))?;
+    let model = neutrospline_io::parse(&name, format, text.as_bytes(), &ReadOptions::default())
+        .map_err(|e| refused(&e, false))?;
+    Ok(with_model(
+        &neutrospline_io::to_json_string(&model),
+        json!({ "name": name }),
+        200,
+    ))
+}
+
+fn data(body: &Value) -> Result<Response, Response> {
+    let membership = membership(body, Membership::Neutrosophic)?;
+    let table =
+        data_table(body, membership)?.ok_or_else(|| Response::error(400, "no data given"))?;
+    Ok(Response::json(
+        200,
+        json!({ "name": table.file(), "points": table.len(), "dimension": table.dimension() })
+            .to_string(),
+    ))
+}
+
+/// `fit`'s options from the page: the same names and defaults as `neutrospline fit`.
+fn fit_options(o: &Value, membership: Membership) -> Result<FitOptions, Response> {
+    let bad = |m: String| Response::error(422, &m);
+    let count = |key: &str| {
+        o[key]
+            .as_u64()
+            .map(|v| usize::try_from(v).unwrap_or(usize::MAX))
+    };
+    let mut options = FitOptions::default()
+        .with_degree(count("degree").unwrap_or(3))
+        .with_closed(o["closed"].as_bool().unwrap_or(false))
+        .with_membership(membership)
+        .with_smoothing(o["smoothing"].as_f64().unwrap_or(0.0));
+    options = options.with_parametrization(match o["parametrization"].as_str() {
+        None | Some("chord-length") => Parametrization::ChordLength,
+        Some("uniform") => Parametrization::Uniform,
+        Some("centripetal") => Parametrization::Centripetal,
+        Some(p) => return Err(bad(format!("--parametrization {p}: not a parametrization"))),
+    });
+    options = options.with_weights(match o["weights"].as_str() {
+        None | Some("none") => DataWeights::None,
+        Some("column") => DataWeights::Given,
+        Some("score") => DataWeights::Score,
+        Some(w) => return Err(bad(format!("--weights {w}: give none, column or score"))),
+    });
+    options = options.with_kind(match o["kind"].as_str() {
+        None | Some("bspline") => FitKind::BSpline,
+        Some("bezier") => FitKind::Bezier,
+        Some(k) => return Err(bad(format!("--kind {k}: give bspline or bezier"))),
+    });
+    if o["interpolate"].as_bool().unwrap_or(false) {
+        options = options.with_target(FitTarget::Interpolate);
+    } else if let Some(n) = count("controlPoints") {
+        options = options.with_target(FitTarget::ControlPoints(n));
+    } else if let Some(e) = o["tolerance"].as_f64() {
+        if !(e > 0.0 && e.is_finite()) {
+            return Err(bad(format!(
+                "--tolerance {e}: the tolerance must be a positive finite number"
+            )));
+        }
+        options = options.with_target(FitTarget::Tolerance(e));
+    }
+    let smoothing = o["smoothing"].as_f64().unwrap_or(0.0);
+    if !(smoothing >= 0.0 && smoothing.is_finite()) {
+        return Err(bad(format!(
+            "--smoothing {smoothing}: the smoothing weight must be a non-negative finite number"
+        )));
+    }
+    Ok(options)
+}
+
+fn fit_data(body: &Value) -> Result<Response, Response> {
+    let membership = membership(body, Membership::Neutrosophic)?;
+    let table = data_table(&body["data"], membership)?
+        .ok_or_else(|| Response::error(400, "no data given"))?;
+    let options = fit_options(&body["options"], membership)?;
+    let located =
+        |e: neutrospline::fit::FitError| Response::error(422, &table.locate(&e).to_string());
+    let (model, report) = if table.dimension() == 3 {
+        let f = fit(&table.fit_data::<3>().map_err(located)?, &options).map_err(located)?;
+        (Model::new(f.curve), f.report)
+    } else {
+        let f = fit(&table.fit_data::<2>().map_err(located)?, &options).map_err(located)?;
+        (Model::new(f.curve), f.report)
+    };
+    let model = model
+        .with_membership(membership)
+        .map_err(|e| Response::error(422, &e.to_string()))?
+        .with_description(format!(
+            "Fitted to {} ({} points) by neutrospline fit",
+            table.file(),
+            table.len()
+        ));
+    let channels = |values: &[(&'static str, f64)]| -> Value {
+        Value::Object(
+            values
+                .iter()
+                .map(|(n, v)| ((*n).to_owned(), json!(v)))
+                .collect(),
+        )
+    };
+    let report = json!({
+        "control_points": report.control_points,
+        "degree": report.degree,
+        "max_error": channels(&report.max_error),
+        "rms_error": channels(&report.rms_error),
+        "worst_index": report.worst_index,
+        "worst_distance": report.worst_distance,
+        "schoenberg_whitney": report.schoenberg_whitney,
+        "tolerance": report.tolerance,
+        "tolerance_met": report.tolerance_met,
+    });
+    Ok(with_model(
+        &neutrospline_io::to_json_string(&model),
+        json!({ "report": report }),
+        200,
+    ))
+}

@@ -1,0 +1,65 @@
+//! # neutrospline-studio
+//!
+//! `neutrospline studio`: a page in the browser where a neutrosophic curve is shaped and its
+//! truth, indeterminacy and falsity edited while the paper's views redraw (docs/model.md
+//! sections 4-6 for what is drawn). The page is plain HTML, CSS and JavaScript embedded in the
+//! binary; it computes nothing itself. Each edit sends the model (the JSON object a `.json`
+//! save writes) to a small HTTP server on 127.0.0.1, which reads it with `neutrospline-io`
+//! (so a refused value carries the CLI's message), draws the views shown with
+//! `neutrospline-plot` and evaluates the table with the core's traits.
+//!
+//! ## The public items
+//! - [`Studio`]: the model the studio was started with and the one file it may write;
+//!   answers the page's requests ([`Handler`]; the routes are listed in the `api` module).
+//! - [`Server`]: the HTTP/1.1 server, one thread per connection, listening on 127.0.0.1
+//!   only; it refuses requests whose `Host` or `Origin` is not its own ([`check_origin`]) and
+//!   bodies over [`MAX_BODY`].
+//! - [`figure_options`]: the options `neutrospline plot` draws a model with by default; the
+//!   figure itself is `neutrospline_plot::PlotModel::from_model` (and
+//!   `DataOverlay::from_table` for data), the command's own code path, so an exported SVG is
+//!   the command's bytes; [`handles`] and [`control_markers`] locate the control points in a
+//!   `plane` view.
+//! - [`open_browser`]: asks the desktop to open a URL, quietly.
+//!
+//! ```no_run
+//! use neutrospline_studio::{Server, Studio};
+//! let server = Server::bind(0, Studio::example())?;
+//! println!("{}", server.url());
+//! server.serve();
+//! # Ok::<(), std::io::Error>(())
+//! ```
+
+#![deny(missing_docs)]
+
+mod api;
+mod figure;
+mod http;
+
+pub use api::Studio;
+pub use figure::{control_markers, figure_options, handles, Handles};
+pub use http::{check_origin, Handler, Request, Response, Server, MAX_BODY};
+
+/// Asks the desktop to open `url` in the default browser (`xdg-open`, or `open` on macOS),
+/// without waiting and without output. Returns whether a program could be started.
+pub fn open_browser(url: &str) -> bool {
+    use std::process::{Command, Stdio};
+    let program = if cfg!(target_os = "macos") {
+        "open"
+    } else {
+        "xdg-open"
+    };
+    let child = Command::new(program)
+        .arg(url)
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn();
+    match child {
+        Ok(mut child) => {
+            // Reap it in the background so that it leaves no zombie.
+            std::thread::spawn(move || child.wait());
+            true
+        }
+        Err(_) => false,
+    }
+}
