@@ -87,7 +87,7 @@ pub fn handles(svg: &str, points: &[[f64; 2]]) -> Handles {
 mod tests {
     use super::*;
     use neutrospline::ControlPolygon;
-    use neutrospline_plot::{render_svg, View};
+    use neutrospline_plot::{render_svg, PlotModel, View};
 
     #[test]
     fn handles_map_model_to_pixels() {
