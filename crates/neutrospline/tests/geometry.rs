@@ -307,7 +307,9 @@ fn errors_are_typed() {
 
 /// The distance between two points.
 fn distance<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
-    a.iter().zip(b).fold(0.0_f64, |acc, (x, y)| acc.hypot(x - y))
+    a.iter()
+        .zip(b)
+        .fold(0.0_f64, |acc, (x, y)| acc.hypot(x - y))
 }
 
 /// The interior knots where a spline jumps (multiplicity `p + 1`): there its length does not
