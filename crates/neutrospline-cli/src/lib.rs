@@ -23,6 +23,7 @@ use clap::{Parser, Subcommand};
 use commands::{
     bench::BenchArgs, bench_fit::BenchFitArgs, check::CheckArgs, eval::EvalArgs,
     example::ExampleArgs, export::ExportArgs, fit::FitArgs, import::ImportArgs, plot::PlotArgs,
+    query::QueryArgs,
 };
 
 /// Evaluate and check neutrosophic curves and surfaces (Bezier, B-spline, NURBS): control
@@ -70,6 +71,9 @@ enum Command {
     /// Import curves as model files: the SPLINEs of a DXF file (with the degrees `export`
     /// keeps in it) or the paths of an SVG file, with the given default degrees
     Import(ImportArgs),
+    /// For every point of a CSV file, the nearest point of a curve or surface: its parameter,
+    /// the distance, the position, the degrees and the score
+    Query(QueryArgs),
     /// Run the paper's Example 1 from built-in data: print its control points and curve, and
     /// with --out DIR write the paper's five figures and the curve table
     Example(ExampleArgs),
@@ -90,6 +94,7 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         Command::Fit(args) => commands::fit::run(args),
         Command::Export(args) => commands::export::run(args),
         Command::Import(args) => commands::import::run(args),
+        Command::Query(args) => commands::query::run(args),
         Command::Example(args) => commands::example::run(args),
         Command::Bench(args) => commands::bench::run(args, &mut std::io::stdout().lock()),
         Command::BenchFit(args) => commands::bench_fit::run(args, &mut std::io::stdout().lock()),

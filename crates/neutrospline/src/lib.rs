@@ -59,6 +59,9 @@
 //!   adaptive Gauss-Legendre quadrature on the pieces, curvature, unit tangent and normal, the
 //!   arc-length averages of the degrees and the score in [`ArcAverages`]), errors
 //!   [`GeometryError`].
+//! - Nearest points: [`NearestPoint`] (`curve.nearest(point)`, the global minimum of the
+//!   distance by branch and bound on the Bernstein coefficients of the squared distance, then
+//!   safeguarded Newton), [`Projector`] for many queries, [`Nearest`], [`NearestError`].
 //! - Surfaces: [`Surface`] (Bézier, B-spline, NURBS), [`EvaluateSurface`], partial
 //!   derivatives, normals and iso-parameter curves.
 //! - Batch evaluation into flat arrays, SIMD with run-time dispatch and threads:
@@ -100,6 +103,7 @@ pub mod fit;
 mod geometry;
 mod knots;
 mod layout;
+mod nearest;
 mod point;
 mod relation;
 pub mod sample;
@@ -125,6 +129,9 @@ pub use geometry::{
     ArcAverages, CurveGeometry, GeometryError, DEFAULT_ACCURACY, FINEST_ACCURACY, MAX_SUBINTERVALS,
 };
 pub use knots::{KnotError, KnotVector};
+pub use nearest::{
+    Nearest, NearestError, NearestPoint, Projector, SurfaceNearest, SurfaceProjector, TIE_TOLERANCE,
+};
 pub use point::{
     Affine, BoundingBox, ControlPoint, CurvePoint, DerivativeValue, Interval, NeutrosophicPoint,
 };

@@ -11,6 +11,7 @@ pub mod fit;
 pub mod import;
 pub mod options;
 pub mod plot;
+pub mod query;
 
 use neutrospline::Membership;
 
