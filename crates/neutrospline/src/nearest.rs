@@ -128,15 +128,29 @@ pub struct Piece<const D: usize> {
     pub(crate) points: Vec<[f64; D]>,
     /// `None` for a polynomial piece.
     pub(crate) weights: Option<Vec<f64>>,
+    /// The curve jumps at `end` (a knot of multiplicity p + 1): the piece's last point is a
+    /// limit from the left, reached by the parameter just below `end`.
+    pub(crate) jump_at_end: bool,
 }
 
 impl<const D: usize> Piece<D> {
+    /// The parameter of the piece's last point on the curve: `end`, or the largest float
+    /// below it where the curve jumps (the curve takes the right-hand value at a knot).
+    fn end_parameter(&self) -> f64 {
+        if self.jump_at_end {
+            self.end.next_down()
+        } else {
+            self.end
+        }
+    }
+
     fn new<C: ControlPolygon<D>>(start: f64, end: f64, curve: &C, weights: Option<&[f64]>) -> Self {
         Piece {
             start,
             end,
             points: curve.control_points().iter().map(|p| p.position).collect(),
             weights: weights.map(<[f64]>::to_vec),
+            jump_at_end: false,
         }
     }
 }
@@ -248,7 +262,9 @@ where
 {
     /// Extracts and prepares the pieces of `curve`.
     pub fn new(curve: &'a C) -> Self {
-        let pieces: Vec<Prepared<D>> = curve.bezier_pieces().into_iter().map(prepare).collect();
+        let mut raw = curve.bezier_pieces();
+        mark_jumps(&mut raw);
+        let pieces: Vec<Prepared<D>> = raw.into_iter().map(prepare).collect();
         let mut low = [f64::INFINITY; D];
         let mut high = [f64::NEG_INFINITY; D];
         for p in &pieces {
@@ -300,7 +316,7 @@ where
                 distance: first,
             });
             best.offer(Candidate {
-                t: p.piece.end,
+                t: p.piece.end_parameter(),
                 distance: last,
             });
             bounds.push(box_distance(&p.low, &p.high, &point));
@@ -356,6 +372,28 @@ where
     /// the `parallel` feature on rayon's threads).
     pub fn nearest_many(&self, points: &[[f64; D]]) -> Vec<Result<Nearest<D>, NearestError>> {
         points.iter().map(|p| self.nearest(*p)).collect()
+    }
+}
+
+/// Marks the pieces after whose end the curve jumps: the next piece starts elsewhere (more
+/// than 1e-9 of the curve's size away, far above the rounding of knot insertion).
+fn mark_jumps<const D: usize>(pieces: &mut [Piece<D>]) {
+    let mut low = [f64::INFINITY; D];
+    let mut high = [f64::NEG_INFINITY; D];
+    for p in pieces.iter() {
+        for q in &p.points {
+            for a in 0..D {
+                low[a] = low[a].min(q[a]);
+                high[a] = high[a].max(q[a]);
+            }
+        }
+    }
+    let size = distance(&low, &high);
+    for k in 1..pieces.len() {
+        let last = pieces[k - 1].points[pieces[k - 1].points.len() - 1];
+        if distance(&last, &pieces[k].points[0]) > 1e-9 * size {
+            pieces[k - 1].jump_at_end = true;
+        }
     }
 }
 
@@ -687,7 +725,7 @@ fn offer_at<const D: usize>(piece: &Piece<D>, point: &[f64; D], x: f64, best: &m
     let t = if x <= 0.0 {
         piece.start
     } else if x >= 1.0 {
-        piece.end
+        piece.end_parameter()
     } else {
         piece.start + (piece.end - piece.start) * x
     };
