@@ -375,6 +375,28 @@ where
     }
 }
 
+/// The distance from `point` to a (rational) Bézier piece, by the same branch and bound
+/// (for the overlap check of intersections); infinite when it overflows.
+pub(crate) fn distance_to_piece<const D: usize>(piece: Piece<D>, point: &[f64; D]) -> f64 {
+    let n = piece.points.len() - 1;
+    let mut best = Best {
+        tie: 0.0,
+        min: f64::INFINITY,
+        near: Vec::new(),
+    };
+    for (t, q) in [(piece.start, piece.points[0]), (piece.end, piece.points[n])] {
+        best.offer(Candidate {
+            t,
+            distance: distance(&q, point),
+        });
+    }
+    let prepared = prepare(piece);
+    match search_piece(&prepared, point, &mut best) {
+        Ok(()) => best.min,
+        Err(_) => f64::INFINITY,
+    }
+}
+
 /// Marks the pieces after whose end the curve jumps: the next piece starts elsewhere (more
 /// than 1e-9 of the curve's size away, far above the rounding of knot insertion).
 fn mark_jumps<const D: usize>(pieces: &mut [Piece<D>]) {

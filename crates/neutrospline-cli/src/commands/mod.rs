@@ -9,6 +9,7 @@ pub mod example;
 pub mod export;
 pub mod fit;
 pub mod import;
+pub mod intersect;
 pub mod options;
 pub mod plot;
 pub mod query;
