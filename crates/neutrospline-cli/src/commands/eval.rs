@@ -17,16 +17,16 @@ use crate::shape::{Extras, Param, Shape, Table};
 #[derive(Debug, clap::Args)]
 #[command(after_help = "Columns:\n  \
 curves    t, x, y[, z], truth, indeterminacy, falsity; with --scores score, accuracy,\n            \
-certainty; with --derivative the rates d/dt\n            \
-dx, dy[, dz], dtruth, dindeterminacy, dfalsity (--derivative 2 adds d2x, ..., d2falsity,\n            \
---derivative 3 also d3x, ..., d3falsity); with --geometry arc_length (from the\n            \
-start of the domain) and curvature (empty in CSV, null in JSON, where |C'(t)| = 0)\n  \
+certainty; with --derivative the rates d/dt dx, dy[, dz], dtruth, dindeterminacy,\n            \
+dfalsity (--derivative 2 adds d2x, ..., d2falsity, --derivative 3 also d3x, ...,\n            \
+d3falsity); with --geometry arc_length (from the start of the domain) and curvature\n            \
+(empty in CSV, null in JSON, where |C'(t)| = 0)\n  \
 surfaces  u, v, x, y, z, truth, indeterminacy, falsity; with --scores score, accuracy,\n            \
-certainty; with --derivative the partial\n            \
-derivatives dx_du, dy_du, dz_du, dtruth_du, dindeterminacy_du, dfalsity_du, then\n            \
-dx_dv, ..., dfalsity_dv (--derivative 2 adds dx_duu, ..., dx_duv, ..., dx_dvv, ...;\n            \
---derivative 3 also _duuu, _duuv, _duvv, _dvvv); with --normal the unit normal nx, ny, nz (empty in CSV, null\n            \
-in JSON, where the surface is degenerate)\n\
+certainty; with --derivative the partial derivatives dx_du, dy_du, dz_du, dtruth_du,\n            \
+dindeterminacy_du, dfalsity_du, then dx_dv, ..., dfalsity_dv (--derivative 2 adds\n            \
+dx_duu, ..., dx_duv, ..., dx_dvv, ...; --derivative 3 also _duuu, _duuv, _duvv, _dvvv);\n            \
+with --normal the unit normal nx, ny, nz (empty in CSV, null in JSON, where the surface\n            \
+is degenerate)\n\
 The domain of a curve is [knot_p, knot_{m-p}] ([0, 1] for Bezier curves and for the default\n\
 clamped-uniform knots); `neutrospline check FILE` prints it.\n\
 Model options: a CSV file lists control points only, so these give its kind, degree, knots and\n\
