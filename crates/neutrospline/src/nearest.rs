@@ -303,23 +303,34 @@ where
             min: f64::INFINITY,
             near: Vec::new(),
         };
-        // The ends of the pieces first: they give a good bound to prune with.
+        // The ends of the pieces first: they give a good bound to prune with. Only those
+        // within the tie tolerance of the nearest end can be candidates.
         let mut bounds = Vec::with_capacity(self.pieces.len());
+        let mut ends = Vec::with_capacity(self.pieces.len());
+        let mut nearest_end = f64::INFINITY;
         for p in &self.pieces {
             let first = distance(&p.piece.points[0], &point);
             let last = distance(&p.piece.points[p.piece.points.len() - 1], &point);
             if !first.is_finite() || !last.is_finite() {
                 return Err(NearestError::Overflow);
             }
-            best.offer(Candidate {
-                t: p.piece.start,
-                distance: first,
-            });
-            best.offer(Candidate {
-                t: p.piece.end_parameter(),
-                distance: last,
-            });
+            nearest_end = nearest_end.min(first).min(last);
+            ends.push((first, last));
             bounds.push(box_distance(&p.low, &p.high, &point));
+        }
+        for (p, &(first, last)) in self.pieces.iter().zip(&ends) {
+            if first <= nearest_end + best.tie {
+                best.offer(Candidate {
+                    t: p.piece.start,
+                    distance: first,
+                });
+            }
+            if last <= nearest_end + best.tie {
+                best.offer(Candidate {
+                    t: p.piece.end_parameter(),
+                    distance: last,
+                });
+            }
         }
         // Then the pieces that can hold a nearer point, nearest box first.
         let mut order: Vec<(f64, usize)> = bounds
@@ -597,13 +608,18 @@ fn bracketed_root(c: &[f64]) -> f64 {
         } else {
             hi = x;
         }
-        let newton = x - value / slope;
+        let step = value / slope;
+        // x lies in [0, 1]: a Newton step of a few ulps of 1 is the end (when the value is
+        // rounding noise, bisecting further would only wander inside the bracket).
+        if slope != 0.0 && step.abs() <= 4.0 * f64::EPSILON {
+            return (x - step).clamp(lo, hi);
+        }
+        let newton = x - step;
         let next = if slope != 0.0 && newton > lo && newton < hi {
             newton
         } else {
             0.5 * (lo + hi)
         };
-        // x lies in [0, 1]: a step of a few ulps of 1 is the end.
         if (next - x).abs() <= 4.0 * f64::EPSILON || hi - lo <= 4.0 * f64::EPSILON {
             return next;
         }
@@ -716,8 +732,11 @@ fn search_piece<const D: usize>(
         deflate(&mut sign);
         let (changes, first_negative) = sign_changes(&sign);
         match (changes, first_negative) {
-            // Monotonic: the minimum is at an end, both ends are offered.
-            (0, _) | (1, false) => {
+            // Increasing: the minimum is at the start; decreasing: at the end.
+            (0, false) => offer_at(piece, point, lo, best),
+            (0, true) => offer_at(piece, point, hi, best),
+            // Increasing then decreasing: the minimum is at an end.
+            (1, false) => {
                 offer_at(piece, point, lo, best);
                 offer_at(piece, point, hi, best);
             }
@@ -817,6 +836,29 @@ struct Patch {
     high: [f64; 3],
     /// Coefficients of `w^2` in degrees `(2p, 2q)`, row-major (all 1 without weights).
     denominator: Vec<f64>,
+    /// The ends `[u1, v1]` reached only as limits from below: the surface jumps there (a knot
+    /// of multiplicity degree + 1 inside the domain) and takes the value beyond.
+    jump: [bool; 2],
+}
+
+impl Patch {
+    /// The parameter of the patch's far edge in direction `c` (0: u, 1: v): the edge, or the
+    /// float below it where the surface jumps.
+    fn far(&self, c: usize) -> f64 {
+        let range = if c == 0 { self.u } else { self.v };
+        if self.jump[c] {
+            range[1].next_down()
+        } else {
+            range[1]
+        }
+    }
+}
+
+/// Whether a surface with these knots jumps at `x`: an interior knot of multiplicity
+/// degree + 1.
+fn jumps_at(knots: &crate::knots::KnotVector, x: f64) -> bool {
+    let domain = knots.domain();
+    x < domain.end && knots.knots().iter().filter(|&&k| k == x).count() > knots.degree()
 }
 
 /// Tensor-product product weights `C(n,i) C(n,j) / C(2n,i+j)` of one direction.
@@ -962,7 +1004,12 @@ impl Surface {
                         w.push(per_b[b][ip].weights[a]);
                     }
                 }
-                patches.push(make_patch(u, v, points, rational.then_some(w), p, q));
+                let mut patch = make_patch(u, v, points, rational.then_some(w), p, q);
+                patch.jump = [
+                    jumps_at(self.knots_u(), u[1]),
+                    jumps_at(self.knots_v(), v[1]),
+                ];
+                patches.push(patch);
             }
         }
         patches
@@ -1045,6 +1092,7 @@ fn make_patch(
         low,
         high,
         denominator,
+        jump: [false, false],
     }
 }
 
@@ -1095,10 +1143,11 @@ impl<'a> SurfaceProjector<'a> {
                 if !d.is_finite() {
                     return Err(NearestError::Overflow);
                 }
-                best.offer(SurfaceCandidate {
-                    uv: [patch.u[a.min(1)], patch.v[b.min(1)]],
-                    distance: d,
-                });
+                let uv = [
+                    if a == 0 { patch.u[0] } else { patch.far(0) },
+                    if b == 0 { patch.v[0] } else { patch.far(1) },
+                ];
+                best.offer(SurfaceCandidate { uv, distance: d });
             }
             bounds.push(box_distance(&patch.low, &patch.high, &point));
         }
