@@ -59,7 +59,8 @@ const SAME: f64 = 1e-9;
 /// `A'(s) x B'(t) = 0`, `(A(s) - B(t)) . A'(s) = 0` is solved instead, and the point is kept
 /// when the curves are within 1e-12 of their size there. Tangential and end-point
 /// intersections are included, each reported once (a root within 1e-9 of an end of a domain
-/// is put on the end when the curves meet there). When the pairs crowd (more than 4,096
+/// is put on the end when the curves meet there; on a closed curve, whose end is its start, a
+/// root at the end is reported at the start). When the pairs crowd (more than 4,096
 /// alive), the pairs whose first sub-piece lies on the second (nine points within 1e-9 of the
 /// size, by the branch and bound of [`NearestPoint`]) are counted; if they are at least a
 /// quarter, the stretch they span is reported as [`IntersectError::Overlap`].
@@ -91,8 +92,8 @@ where
 }
 
 /// The self-intersections of a plane curve: every pair of parameters `t_a < t_b` where the
-/// curve passes through the same point, ordered by `t_a`, each once (the loop of a cubic, the
-/// seam of a closed curve whose ends meet). As [`intersections`], with sub-pieces that cannot
+/// curve passes through the same point, ordered by `t_a`, each once (the loop of a cubic). A
+/// closed curve (its end is its start) is not self-intersecting at its seam. As [`intersections`], with sub-pieces that cannot
 /// cross themselves skipped: a piece whose control-point differences `P_j - P_i` (`i < j`)
 /// all lie in an open half-plane moves monotonically in one direction.
 ///
@@ -381,7 +382,19 @@ where
 
     /// Orders, merges and evaluates the roots.
     fn collect(&self, mut roots: Vec<Root>) -> Result<Vec<Intersection>, IntersectError> {
-        let (wa, wb) = (width(&self.a.domain()), width(&self.b.domain()));
+        let (ra, rb) = (self.a.domain(), self.b.domain());
+        let (wa, wb) = (width(&ra), width(&rb));
+        // A closed curve (its end is its start) meets at its end where it meets at its start:
+        // the root is reported at the start, once.
+        let (closed_a, closed_b) = (self.closed(self.a)?, self.closed(self.b)?);
+        for r in &mut roots {
+            if closed_a && r.s == ra.end {
+                r.s = ra.start;
+            }
+            if closed_b && r.t == rb.end {
+                r.t = rb.start;
+            }
+        }
         if self.same {
             // Self-intersections: t_a < t_b, the trivial s = t dropped.
             roots = roots
@@ -417,6 +430,12 @@ where
                 })
             })
             .collect()
+    }
+
+    /// Whether `curve` ends where it starts (to 1e-12 of the size).
+    fn closed<C: Evaluate<Point = CurvePoint<2>>>(&self, curve: &C) -> Result<bool, EvalError> {
+        let (p, q) = (curve.start()?.position, curve.end()?.position);
+        Ok((p[0] - q[0]).hypot(p[1] - q[1]) <= 1e-12 * self.scale)
     }
 
     /// `A(s) - B(t)`, `A'(s)` and `B'(t)`.

@@ -223,3 +223,48 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn intersections_on_the_seam_of_closed_curves_are_reported_once() {
+    let data: Data = serde_json::from_str(include_str!("data/intersections.json")).unwrap();
+    let tangent = data
+        .cases
+        .iter()
+        .find(|c| c.name == "tangent circles")
+        .unwrap();
+    let circle = curve(&tangent.a);
+    // A closed curve does not cross itself at its seam.
+    assert!(self_intersections(&circle).unwrap().is_empty());
+    // The circle of radius 1/2 inside it, touching at (1, 0): both seams meet there; one row.
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    let d = Degrees::new(0.5, 0.5, 0.5).unwrap();
+    let ring = [
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.0, 1.0),
+        (-1.0, 1.0),
+        (-1.0, 0.0),
+        (-1.0, -1.0),
+        (0.0, -1.0),
+        (1.0, -1.0),
+        (1.0, 0.0),
+    ];
+    let points = ring
+        .iter()
+        .map(|&(x, y)| ControlPoint::new([0.5 + 0.5 * x, 0.5 * y], d))
+        .collect();
+    let weights = vec![1.0, h, 1.0, h, 1.0, h, 1.0, h, 1.0];
+    let knots = KnotVector::new(
+        vec![
+            0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0,
+        ],
+        2,
+        9,
+    )
+    .unwrap();
+    let small = AnyCurve::from(Nurbs::new(points, weights, knots).unwrap());
+    let found = intersections(&circle, &small).unwrap();
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert_eq!((found[0].parameter_a, found[0].parameter_b), (0.0, 0.0));
+    assert_eq!(found[0].point_a.position, [1.0, 0.0]);
+}
