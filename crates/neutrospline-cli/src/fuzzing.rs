@@ -343,7 +343,7 @@ pub fn check_shape(shape: &Shape) {
         Shape::Surface(s) => check_surface(s),
     }
     let extras = Extras {
-        derivative: true,
+        derivative: 3,
         normal: shape.is_surface(),
         scores: true,
         geometry: !shape.is_surface(),

@@ -23,7 +23,8 @@ use clap::{Parser, Subcommand};
 use commands::studio::StudioArgs;
 use commands::{
     bench::BenchArgs, bench_fit::BenchFitArgs, check::CheckArgs, eval::EvalArgs,
-    example::ExampleArgs, export::ExportArgs, fit::FitArgs, import::ImportArgs, plot::PlotArgs,
+    example::ExampleArgs, export::ExportArgs, fit::FitArgs, import::ImportArgs,
+    intersect::IntersectArgs, plot::PlotArgs, query::QueryArgs,
 };
 
 /// Evaluate and check neutrosophic curves and surfaces (Bezier, B-spline, NURBS): control
@@ -71,6 +72,12 @@ enum Command {
     /// Import curves as model files: the SPLINEs of a DXF file (with the degrees `export`
     /// keeps in it) or the paths of an SVG file, with the given default degrees
     Import(ImportArgs),
+    /// For every point of a CSV file, the nearest point of a curve or surface: its parameter,
+    /// the distance, the position, the degrees and the score
+    Query(QueryArgs),
+    /// Every point where two plane curves meet (or where a curve crosses itself, when B is A):
+    /// the parameters on both, the point and the degrees of each curve there
+    Intersect(IntersectArgs),
     /// Run the paper's Example 1 from built-in data: print its control points and curve, and
     /// with --out DIR write the paper's five figures and the curve table
     Example(ExampleArgs),
@@ -94,6 +101,8 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         Command::Fit(args) => commands::fit::run(args),
         Command::Export(args) => commands::export::run(args),
         Command::Import(args) => commands::import::run(args),
+        Command::Query(args) => commands::query::run(args),
+        Command::Intersect(args) => commands::intersect::run(args),
         Command::Example(args) => commands::example::run(args),
         Command::Bench(args) => commands::bench::run(args, &mut std::io::stdout().lock()),
         Command::BenchFit(args) => commands::bench_fit::run(args, &mut std::io::stdout().lock()),

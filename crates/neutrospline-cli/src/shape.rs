@@ -36,8 +36,9 @@ impl fmt::Display for Param {
 /// Which extra columns a table has.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Extras {
-    /// First derivatives (curves: d/dt; surfaces: d/du and d/dv).
-    pub derivative: bool,
+    /// The highest derivative order whose columns are added, 0 for none (curves: d/dt,
+    /// d2/dt2, ...; surfaces: the partials d/du, d/dv, then d2/du2, d2/dudv, d2/dv2, ...).
+    pub derivative: usize,
     /// The unit normal (surfaces).
     pub normal: bool,
     /// The score, accuracy and certainty of the degrees (docs/model.md section 7).
@@ -51,7 +52,7 @@ pub struct Extras {
 impl Default for Extras {
     fn default() -> Self {
         Extras {
-            derivative: false,
+            derivative: 0,
             normal: false,
             scores: false,
             geometry: false,
@@ -118,9 +119,11 @@ pub trait Table {
     /// Column names of a table of samples.
     ///
     /// Curves: `t`, then `x, y[, z], truth, indeterminacy, falsity`, and with `derivative`
-    /// the same names prefixed by `d` (`dx, ..., dfalsity`). Surfaces: `u, v, x, y, z, truth,
-    /// indeterminacy, falsity`; with `derivative` each channel's `d<name>_du` then
-    /// `d<name>_dv`; with `normal` `nx, ny, nz`. Curves with `geometry` end with
+    /// the same names prefixed by `d` (`dx, ..., dfalsity`), then for order 2 by `d2`
+    /// (`d2x, ...`), for order 3 by `d3`. Surfaces: `u, v, x, y, z, truth, indeterminacy,
+    /// falsity`; with `derivative` each channel's `d<name>_du` then `d<name>_dv`, then for
+    /// order 2 `d<name>_duu`, `d<name>_duv`, `d<name>_dvv`, for order 3 `_duuu`, `_duuv`,
+    /// `_duvv`, `_dvvv`; with `normal` `nx, ny, nz`. Curves with `geometry` end with
     /// `arc_length, curvature`.
     fn columns(&self, extras: Extras) -> Vec<String>;
 
@@ -186,13 +189,18 @@ impl Table for Shape {
         if extras.scores {
             columns.extend(SCORES.map(str::to_owned));
         }
-        if extras.derivative {
+        for order in 1..=extras.derivative {
             if self.is_surface() {
-                for direction in ["du", "dv"] {
-                    columns.extend(names.iter().map(|n| format!("d{n}_{direction}")));
+                for partial in partial_names(order) {
+                    columns.extend(names.iter().map(|n| format!("d{n}_{partial}")));
                 }
             } else {
-                columns.extend(names.iter().map(|n| format!("d{n}")));
+                let prefix = if order == 1 {
+                    "d".to_owned()
+                } else {
+                    format!("d{order}")
+                };
+                columns.extend(names.iter().map(|n| format!("{prefix}{n}")));
             }
         }
         if extras.normal && self.is_surface() {
@@ -211,6 +219,14 @@ impl Table for Shape {
             Shape::Surface(s) => Sampler::Surface(s, extras),
         }
     }
+}
+
+/// The partials of a surface of total order `order`, as column suffixes: `du, dv` for 1,
+/// `duu, duv, dvv` for 2, ..., in the order of [`Surface::mixed_partials`] (u first).
+fn partial_names(order: usize) -> Vec<String> {
+    (0..=order)
+        .map(|j| format!("d{}{}", "u".repeat(order - j), "v".repeat(j)))
+        .collect()
 }
 
 /// Evaluates a shape (and its derivatives) row by row.
@@ -244,10 +260,11 @@ impl Sampler<'_> {
     }
 }
 
-/// A curve with its derivative computed once.
+/// A curve with its derivatives computed once.
 pub struct CurveSampler<'a, const D: usize> {
     curve: &'a AnyCurve<D>,
-    derivative: Option<CurveDerivative<D>>,
+    /// The derivatives of orders 1, 2, ... asked for.
+    derivatives: Vec<CurveDerivative<D>>,
     scores: bool,
     /// The accuracy of the arc length, when the geometry columns are asked for.
     geometry: Option<f64>,
@@ -260,7 +277,16 @@ impl<'a, const D: usize> CurveSampler<'a, D> {
     fn new(curve: &'a AnyCurve<D>, extras: Extras) -> Self {
         CurveSampler {
             curve,
-            derivative: extras.derivative.then(|| curve.derivative()),
+            derivatives: (1..=extras.derivative)
+                .scan(None, |previous: &mut Option<CurveDerivative<D>>, _| {
+                    let next = match previous {
+                        Some(d) => d.derivative(),
+                        None => curve.derivative(),
+                    };
+                    *previous = Some(next.clone());
+                    Some(next)
+                })
+                .collect(),
             scores: extras.scores,
             geometry: extras.geometry.then_some(extras.accuracy),
             last_length: Cell::new(None),
@@ -289,7 +315,7 @@ impl<'a, const D: usize> CurveSampler<'a, D> {
         if self.scores {
             row.extend(scores(&p.degrees));
         }
-        if let Some(derivative) = &self.derivative {
+        for derivative in &self.derivatives {
             push_rates(
                 &mut row,
                 &derivative.evaluate(t).map_err(explain("derivative"))?,
@@ -334,12 +360,20 @@ fn surface_row(surface: &Surface, extras: Extras, u: f64, v: f64) -> anyhow::Res
     if extras.scores {
         values.extend(scores(&p.degrees));
     }
-    if extras.derivative {
+    if extras.derivative >= 1 {
         let d = surface
             .partial_derivatives(u, v)
             .map_err(explain("derivative"))?;
         push_rates(&mut values, &d.du);
         push_rates(&mut values, &d.dv);
+    }
+    for order in 2..=extras.derivative {
+        for d in surface
+            .mixed_partials(u, v, order)
+            .map_err(explain("derivative"))?
+        {
+            push_rates(&mut values, &d);
+        }
     }
     let mut row: Row = values.into_iter().map(Some).collect();
     if extras.normal {
@@ -376,7 +410,7 @@ mod tests {
         );
         assert_eq!(
             c.columns(Extras {
-                derivative: true,
+                derivative: 1,
                 normal: true,
                 scores: false,
                 ..Extras::default()
@@ -419,7 +453,7 @@ mod tests {
         );
         assert_eq!(
             s.columns(Extras {
-                derivative: true,
+                derivative: 1,
                 normal: true,
                 scores: false,
                 ..Extras::default()
@@ -431,7 +465,7 @@ mod tests {
         );
         let row = s
             .sampler(Extras {
-                derivative: false,
+                derivative: 0,
                 normal: true,
                 scores: false,
                 ..Extras::default()

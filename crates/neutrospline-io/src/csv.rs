@@ -135,7 +135,14 @@ impl<R: BufRead> Records<R> {
 }
 
 /// Splits one record (UTF-8, line ends removed) into trimmed cells.
+///
+/// A record without a quote character is split at its commas directly (what the CSV reader
+/// does with it, without building a reader per line: 100,000 lines read in a fraction of the
+/// time); quoted records go through the `csv` crate.
 fn cells(record: &str) -> Result<::csv::StringRecord, String> {
+    if !record.is_empty() && !record.contains('"') {
+        return Ok(record.split(',').map(str::trim).collect());
+    }
     let mut reader = ::csv::ReaderBuilder::new()
         .has_headers(false)
         .trim(::csv::Trim::All)
@@ -385,6 +392,31 @@ fn read_header(header: &::csv::StringRecord) -> Result<Vec<Field>, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn cells_without_quotes_split_as_the_csv_reader_does() {
+        let by_reader = |record: &str| {
+            let mut reader = ::csv::ReaderBuilder::new()
+                .has_headers(false)
+                .trim(::csv::Trim::All)
+                .flexible(true)
+                .from_reader(record.as_bytes());
+            let mut cells = ::csv::StringRecord::new();
+            reader.read_record(&mut cells).unwrap();
+            cells
+        };
+        for record in [
+            "x,y",
+            " 1 , 2.5 ,\t3",
+            ",,",
+            "a",
+            "\u{a0}x\u{a0},y",
+            "name,C0,1e-3, -0 ",
+        ] {
+            assert_eq!(cells(record).unwrap(), by_reader(record), "{record:?}");
+        }
+        assert_eq!(cells("\"a,b\",c").unwrap(), by_reader("\"a,b\",c"));
+    }
     use neutrospline::Membership;
 
     fn rule(membership: Membership) -> ReadOptions {

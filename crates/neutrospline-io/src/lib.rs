@@ -65,6 +65,7 @@ mod model;
 mod number;
 mod options;
 mod parsed;
+mod points;
 mod read;
 mod settings;
 mod shape;
@@ -87,6 +88,7 @@ pub use format::{
 pub use model::{KnotSource, Model, ModelError};
 pub use number::{format_number, push_number};
 pub use options::ReadOptions;
+pub use points::{load_points, read_points, PointTable};
 pub use read::{load, parse, read_csv};
 pub use settings::{Kind, KnotRule, KnotSpec};
 pub use shape::Shape;

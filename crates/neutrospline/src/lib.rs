@@ -59,6 +59,12 @@
 //!   adaptive Gauss-Legendre quadrature on the pieces, curvature, unit tangent and normal, the
 //!   arc-length averages of the degrees and the score in [`ArcAverages`]), errors
 //!   [`GeometryError`].
+//! - Nearest points: [`NearestPoint`] (`curve.nearest(point)`, the global minimum of the
+//!   distance by branch and bound on the Bernstein coefficients of the squared distance, then
+//!   safeguarded Newton), [`Projector`] for many queries, [`Nearest`], [`NearestError`].
+//! - Intersections of plane curves of any kinds: [`intersections`] and
+//!   [`self_intersections`] (Bézier subdivision with a Newton polish, tangential and end-point
+//!   intersections included), [`Intersection`], [`IntersectError`] (overlapping curves).
 //! - Surfaces: [`Surface`] (Bézier, B-spline, NURBS), [`EvaluateSurface`], partial
 //!   derivatives, normals and iso-parameter curves.
 //! - Batch evaluation into flat arrays, SIMD with run-time dispatch and threads:
@@ -98,8 +104,10 @@ mod derivative;
 mod example;
 pub mod fit;
 mod geometry;
+mod intersect;
 mod knots;
 mod layout;
+mod nearest;
 mod point;
 mod relation;
 pub mod sample;
@@ -124,7 +132,11 @@ pub use example::{example1, EXAMPLE1_NAMES, EXAMPLE1_TABLE};
 pub use geometry::{
     ArcAverages, CurveGeometry, GeometryError, DEFAULT_ACCURACY, FINEST_ACCURACY, MAX_SUBINTERVALS,
 };
+pub use intersect::{intersections, self_intersections, IntersectError, Intersection};
 pub use knots::{KnotError, KnotVector};
+pub use nearest::{
+    Nearest, NearestError, NearestPoint, Projector, SurfaceNearest, SurfaceProjector, TIE_TOLERANCE,
+};
 pub use point::{
     Affine, BoundingBox, ControlPoint, CurvePoint, DerivativeValue, Interval, NeutrosophicPoint,
 };

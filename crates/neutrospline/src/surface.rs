@@ -466,6 +466,113 @@ impl Surface {
             .then(|| derivative_from_row(&row))
     }
 
+    /// The mixed partial derivatives of total order `order` of position and degrees at
+    /// `(u, v)`: `order + 1` values, `d^order S / du^(order - j) dv^j` for `j = 0 ..= order`
+    /// (for order 2: `S_uu`, `S_uv`, `S_vv`).
+    ///
+    /// With the homogeneous form `H(u, v) = sum_ij N_i(u) N_j(v) w_ij (P_ij, 1)`, a
+    /// tensor-product spline whose last channel is the weight function `w`, the partials
+    /// `H^(a, b)` come from differentiating the control rows `b` times along v and the
+    /// resulting column `a` times along u (each a spline derivative). `S = H / w` then follows
+    /// from Leibniz's rule in two variables (The NURBS Book, eq. 4.20):
+    ///
+    /// ```text
+    /// S^(k,l) = ( H^(k,l) - sum_{(i,j) != (0,0), i <= k, j <= l}
+    ///             binom(k, i) binom(l, j) w^(i,j) S^(k-i, l-j) ) / w
+    /// ```
+    ///
+    /// For Bézier and B-spline surfaces `w = 1` and every derivative of it vanishes, so
+    /// `S^(k,l) = H^(k,l)`. Order 0 gives the point itself (as a [`DerivativeValue`]); the
+    /// first-order values equal [`Surface::partial_derivatives`] up to rounding. At an interior
+    /// knot the value from the right (above) is returned, as for curves.
+    ///
+    /// ```
+    /// use neutrospline::{ControlPoint, Degrees, Surface};
+    /// let d = Degrees::new(0.5, 0.25, 0.0)?;
+    /// // z = u v on the bilinear patch: S_uu = 0, S_uv = (0, 0, 1), S_vv = 0.
+    /// let grid = [[0.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 1.0]]
+    ///     .map(|p| ControlPoint::new(p, d));
+    /// let s = Surface::bezier(2, 2, grid.to_vec())?;
+    /// let second = s.mixed_partials(0.3, 0.6, 2)?;
+    /// assert_eq!(second.len(), 3);
+    /// assert_eq!(second[1].position, [0.0, 0.0, 1.0]);
+    /// assert_eq!(second[0].position, [0.0, 0.0, 0.0]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// A parameter not finite or outside its domain; [`EvalError::Overflow`] when a value is
+    /// not representable.
+    pub fn mixed_partials(
+        &self,
+        u: f64,
+        v: f64,
+        order: usize,
+    ) -> Result<Vec<DerivativeValue<3>>, EvalError> {
+        self.check(u, v)?;
+        let hs = S + 1;
+        let n = order + 1;
+        // homogeneous[a * n + b] = H^(a, b)(u, v), a, b = 0 ..= order.
+        let mut homogeneous = vec![[0.0; S + 1]; n * n];
+        let ku = self.knots_u.span(u);
+        let pu = self.knots_u.degree();
+        // column[b] holds, for the rows that matter at u, the rows' b-th v-derivative at v.
+        let mut columns = vec![vec![0.0; self.rows * hs]; n];
+        for i in ku - pu..=ku {
+            let row = Spline {
+                knots: self.knots_v.clone(),
+                stride: hs,
+                data: self.homogeneous[i * self.cols * hs..(i + 1) * self.cols * hs].to_vec(),
+                weights: None,
+            };
+            for (b, spline) in row.derivatives(order).iter().enumerate() {
+                spline.evaluate(v, &mut columns[b][i * hs..(i + 1) * hs]);
+            }
+        }
+        for (b, column) in columns.into_iter().enumerate() {
+            let column = Spline {
+                knots: self.knots_u.clone(),
+                stride: hs,
+                data: column,
+                weights: None,
+            };
+            for (a, spline) in column.derivatives(order).iter().enumerate() {
+                spline.evaluate(u, &mut homogeneous[a * n + b]);
+            }
+        }
+        // Leibniz's rule in two variables, S^(k,l) for k + l <= order.
+        let binomial =
+            |m: usize, i: usize| (0..i).fold(1.0, |acc, r| acc * (m - r) as f64 / (r + 1) as f64);
+        let w = homogeneous[0][S];
+        let mut values = vec![[0.0; S]; n * n];
+        for total in 0..=order {
+            for k in (0..=total).rev() {
+                let l = total - k;
+                let mut row = [0.0; S];
+                for c in 0..S {
+                    let mut numerator = homogeneous[k * n + l][c];
+                    for i in 0..=k {
+                        for j in 0..=l {
+                            if i + j > 0 {
+                                numerator -= binomial(k, i)
+                                    * binomial(l, j)
+                                    * homogeneous[i * n + j][S]
+                                    * values[(k - i) * n + (l - j)][c];
+                            }
+                        }
+                    }
+                    row[c] = numerator / w;
+                }
+                values[k * n + l] = row;
+            }
+        }
+        let result: Vec<[f64; S]> = (0..=order).map(|j| values[(order - j) * n + j]).collect();
+        if result.iter().flatten().any(|x| !x.is_finite()) {
+            return Err(EvalError::Overflow { t: u });
+        }
+        Ok(result.iter().map(|r| derivative_from_row(r)).collect())
+    }
+
     /// The unit normal `S_u x S_v / |S_u x S_v|`, or `None` where the surface is degenerate
     /// (the cross product vanishes, for example at a collapsed edge).
     ///

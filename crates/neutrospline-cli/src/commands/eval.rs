@@ -17,14 +17,16 @@ use crate::shape::{Extras, Param, Shape, Table};
 #[derive(Debug, clap::Args)]
 #[command(after_help = "Columns:\n  \
 curves    t, x, y[, z], truth, indeterminacy, falsity; with --scores score, accuracy,\n            \
-certainty; with --derivative the rates d/dt\n            \
-dx, dy[, dz], dtruth, dindeterminacy, dfalsity; with --geometry arc_length (from the\n            \
-start of the domain) and curvature (empty in CSV, null in JSON, where |C'(t)| = 0)\n  \
+certainty; with --derivative the rates d/dt dx, dy[, dz], dtruth, dindeterminacy,\n            \
+dfalsity (--derivative 2 adds d2x, ..., d2falsity, --derivative 3 also d3x, ...,\n            \
+d3falsity); with --geometry arc_length (from the start of the domain) and curvature\n            \
+(empty in CSV, null in JSON, where |C'(t)| = 0)\n  \
 surfaces  u, v, x, y, z, truth, indeterminacy, falsity; with --scores score, accuracy,\n            \
-certainty; with --derivative the partial\n            \
-derivatives dx_du, dy_du, dz_du, dtruth_du, dindeterminacy_du, dfalsity_du, then\n            \
-dx_dv, ..., dfalsity_dv; with --normal the unit normal nx, ny, nz (empty in CSV, null\n            \
-in JSON, where the surface is degenerate)\n\
+certainty; with --derivative the partial derivatives dx_du, dy_du, dz_du, dtruth_du,\n            \
+dindeterminacy_du, dfalsity_du, then dx_dv, ..., dfalsity_dv (--derivative 2 adds\n            \
+dx_duu, ..., dx_duv, ..., dx_dvv, ...; --derivative 3 also _duuu, _duuv, _duvv, _dvvv);\n            \
+with --normal the unit normal nx, ny, nz (empty in CSV, null in JSON, where the surface\n            \
+is degenerate)\n\
 The domain of a curve is [knot_p, knot_{m-p}] ([0, 1] for Bezier curves and for the default\n\
 clamped-uniform knots); `neutrospline check FILE` prints it.\n\
 Model options: a CSV file lists control points only, so these give its kind, degree, knots and\n\
@@ -60,9 +62,17 @@ pub struct EvalArgs {
     )]
     pub at: Option<AtList>,
 
-    /// Add the first derivatives (curves: d/dt; surfaces: d/du and d/dv; see Columns below)
-    #[arg(long)]
-    pub derivative: bool,
+    /// Add the derivatives of orders 1 to N, N = 1, 2 or 3 (alone: 1). Curves: d/dt,
+    /// d2/dt2, d3/dt3; surfaces: the partials d/du and d/dv, then the mixed partials of
+    /// order 2 and 3 (see Columns below)
+    #[arg(
+        long,
+        value_name = "N",
+        num_args = 0..=1,
+        default_missing_value = "1",
+        value_parser = parse_order
+    )]
+    pub derivative: Option<usize>,
 
     /// Add the score, accuracy and certainty of the degrees: (2 + T - I - F) / 3, T - F, T
     #[arg(long)]
@@ -108,6 +118,19 @@ pub struct EvalArgs {
 /// The parameters given with `--at`, each with its text for messages.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AtList(pub Vec<(Param, String)>);
+
+/// Parses the order of `--derivative`: 1, 2 or 3.
+fn parse_order(text: &str) -> Result<usize, String> {
+    match text.trim() {
+        "1" => Ok(1),
+        "2" => Ok(2),
+        "3" => Ok(3),
+        _ => Err(format!(
+            "`{text}` is not a derivative order 1, 2 or 3 (--derivative alone means 1; a file \
+             named right after it is read as the order: put the file first)"
+        )),
+    }
+}
 
 /// Parses `--accuracy`: a positive finite number.
 fn parse_accuracy(text: &str) -> Result<f64, String> {
@@ -233,7 +256,7 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         }
     }
     let extras = Extras {
-        derivative: args.derivative,
+        derivative: args.derivative.unwrap_or(0),
         normal: args.normal,
         scores: args.scores,
         geometry: args.geometry,
@@ -319,6 +342,17 @@ mod tests {
             parse_at("0.5,0.5:0.5").unwrap_err(),
             "`0.5` and `0.5:0.5` mix single parameters and pairs (give T1,T2,... for a curve or U:V,U:V,... for a surface)"
         );
+    }
+
+    #[test]
+    fn parse_order_accepts_1_to_3() {
+        assert_eq!(["1", "2", "3"].map(|t| parse_order(t).unwrap()), [1, 2, 3]);
+        assert_eq!(
+            parse_order("c.toml").unwrap_err(),
+            "`c.toml` is not a derivative order 1, 2 or 3 (--derivative alone means 1; a file \
+             named right after it is read as the order: put the file first)"
+        );
+        assert!(parse_order("0").is_err() && parse_order("4").is_err());
     }
 
     #[test]

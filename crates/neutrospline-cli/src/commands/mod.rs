@@ -9,8 +9,10 @@ pub mod example;
 pub mod export;
 pub mod fit;
 pub mod import;
+pub mod intersect;
 pub mod options;
 pub mod plot;
+pub mod query;
 pub mod studio;
 
 use neutrospline::Membership;

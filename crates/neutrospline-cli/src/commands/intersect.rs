@@ -1,0 +1,111 @@
+//! `neutrospline intersect A B`: every point where two plane curves meet (or where one curve
+//! crosses itself, when B is A), ordered by the parameter on A.
+
+use std::path::PathBuf;
+
+use neutrospline::{intersections, self_intersections, AnyCurve, Intersection};
+
+use crate::commands::options::ModelArgs;
+use crate::input;
+use crate::output::{self, TableFormat};
+use crate::shape::Shape;
+
+/// Arguments of `intersect`.
+#[derive(Debug, clap::Args)]
+#[command(after_help = "Columns:\n  \
+index, t_a, t_b, x, y, truth_a, indeterminacy_a, falsity_a, truth_b, indeterminacy_b, falsity_b\n\
+One row per intersection, ordered by t_a: the parameters on A and on B, the point (A's), and\n\
+the degrees of each curve there. Tangential and end-point intersections are included, each\n\
+once. When B is the same curve as A the rows are its self-intersections, t_a < t_b. Curves\n\
+that share a stretch are refused with the parameters of the stretch.\n\
+Both files must hold plane (2-D) curves, of any kinds.")]
+pub struct IntersectArgs {
+    /// The first curve: .csv, .toml or .json
+    #[arg(value_name = "A")]
+    pub a: String,
+
+    /// The second curve (the same file as A for self-intersections)
+    #[arg(value_name = "B")]
+    pub b: String,
+
+    /// Output format: csv (a header row, then one row per intersection) or json (an array of
+    /// objects keyed by column name)
+    #[arg(long, value_enum, value_name = "FORMAT", default_value_t = TableFormat::Csv)]
+    pub format: TableFormat,
+
+    /// Write to OUT instead of standard output (replaced atomically: on error the old file is
+    /// left untouched)
+    #[arg(short = 'o', long = "output", value_name = "OUT")]
+    pub output: Option<PathBuf>,
+
+    /// Shape settings for CSV files (both files).
+    #[command(flatten)]
+    pub model: ModelArgs,
+}
+
+/// The table's columns.
+const COLUMNS: [&str; 11] = [
+    "index",
+    "t_a",
+    "t_b",
+    "x",
+    "y",
+    "truth_a",
+    "indeterminacy_a",
+    "falsity_a",
+    "truth_b",
+    "indeterminacy_b",
+    "falsity_b",
+];
+
+/// The plane curve of `file`, or an error naming what it holds.
+fn plane_curve(file: &str, model: &ModelArgs) -> anyhow::Result<AnyCurve<2>> {
+    match input::read_model(file, model)?.into_shape() {
+        Shape::Planar(curve) => Ok(curve),
+        shape => {
+            let what = if shape.is_surface() {
+                format!("a {}", shape.kind())
+            } else {
+                format!("a 3-D {} curve", shape.kind())
+            };
+            Err(anyhow::Error::msg(format!(
+                "{}: holds {what} (intersect takes plane curves: positions x, y only)",
+                input::label(file)
+            )))
+        }
+    }
+}
+
+/// Reads both curves, intersects them and writes the table.
+///
+/// # Errors
+/// An invalid file, a curve that is not a plane curve, curves that overlap, or a write error.
+pub fn run(args: &IntersectArgs) -> anyhow::Result<()> {
+    let a = plane_curve(&args.a, &args.model)?;
+    let b = plane_curve(&args.b, &args.model)?;
+    let found = if a == b {
+        self_intersections(&a)
+    } else {
+        intersections(&a, &b)
+    }
+    .map_err(|e| {
+        anyhow::Error::msg(format!(
+            "{} and {}: {e}",
+            input::label(&args.a),
+            input::label(&args.b)
+        ))
+    })?;
+    let columns: Vec<String> = COLUMNS.map(str::to_owned).to_vec();
+    let rows = found.iter().enumerate().map(|(index, i)| Ok(row(index, i)));
+    output::emit(args.output.as_deref(), |w| {
+        output::write_table(w, args.format, &columns, rows)
+    })
+}
+
+fn row(index: usize, i: &Intersection) -> Vec<Option<f64>> {
+    let mut row = vec![index as f64, i.parameter_a, i.parameter_b];
+    row.extend(i.point_a.position);
+    row.extend(i.point_a.degrees.to_array());
+    row.extend(i.point_b.degrees.to_array());
+    row.into_iter().map(Some).collect()
+}

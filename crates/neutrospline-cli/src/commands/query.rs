@@ -1,0 +1,201 @@
+//! `neutrospline query MODEL POINTS.csv`: for every query point the nearest point of the curve
+//! (or surface), its parameter, the distance, and the degrees and score there.
+
+use std::path::PathBuf;
+
+use neutrospline::{AnyCurve, CurvePoint, Nearest, NearestError, NearestPoint};
+use neutrospline_io::PointTable;
+
+use crate::commands::options::ModelArgs;
+use crate::input;
+use crate::output::{self, TableFormat};
+use crate::shape::Shape;
+
+/// Arguments of `query`.
+#[derive(Debug, clap::Args)]
+#[command(after_help = "Columns:\n  \
+curves    index, t, distance, x, y[, z], truth, indeterminacy, falsity, score\n  \
+surfaces  index, u, v, distance, x, y, z, truth, indeterminacy, falsity, score\n\
+index is the query point's row (0 = the first point); t (or u, v) the parameter of the\n\
+nearest point of the model, distance the Euclidean distance to it, x, y[, z] that nearest\n\
+point, then its degrees and score (2 + truth - indeterminacy - falsity) / 3. The minimum is\n\
+global, ends included; equally near points (to 1e-13 of the model's size) report the\n\
+smallest parameter (for a surface the smallest u, then v).\n\
+POINTS.csv: a header row, then one point per row; columns x, y and (for 3-D models) z, and\n\
+an optional name; comments and quoting as in model CSV files.")]
+pub struct QueryArgs {
+    /// The model file: .csv, .toml or .json; `-` reads CSV from standard input
+    #[arg(value_name = "MODEL")]
+    pub model_file: String,
+
+    /// The query points: CSV with columns x, y[, z]
+    #[arg(value_name = "POINTS.csv")]
+    pub points: PathBuf,
+
+    /// Output format: csv (a header row, then one row per query point) or json (an array of
+    /// objects keyed by column name)
+    #[arg(long, value_enum, value_name = "FORMAT", default_value_t = TableFormat::Csv)]
+    pub format: TableFormat,
+
+    /// Write to OUT instead of standard output (replaced atomically: on error the old file is
+    /// left untouched)
+    #[arg(short = 'o', long = "output", value_name = "OUT")]
+    pub output: Option<PathBuf>,
+
+    /// Shape settings for CSV files.
+    #[command(flatten)]
+    pub model: ModelArgs,
+}
+
+/// Query points handled per parallel batch (rows are written between batches).
+const BATCH: usize = 1 << 14;
+
+/// Reads the model and the points, finds the nearest points and writes the table.
+///
+/// # Errors
+/// An invalid model or points file, points of another dimension than the model, a point
+/// whose distance overflows, or a write error.
+pub fn run(args: &QueryArgs) -> anyhow::Result<()> {
+    let shape = input::read_model(&args.model_file, &args.model)?.into_shape();
+    let model_file = input::label(&args.model_file);
+    let table = neutrospline_io::load_points(&args.points)
+        .map_err(|e| anyhow::Error::msg(e.to_string()))?;
+    let dimension = shape.dimension();
+    if table.dimension() != dimension {
+        let what = if shape.is_surface() {
+            format!("a {} (3-D)", shape.kind())
+        } else {
+            format!("a {}-D {} curve", dimension, shape.kind())
+        };
+        let columns = if dimension == 3 { "x, y, z" } else { "x, y" };
+        return Err(anyhow::Error::msg(format!(
+            "{}: {}-D points, but {model_file} holds {what} (query points need the columns \
+             {columns})",
+            table.file(),
+            table.dimension()
+        )));
+    }
+    let columns = columns(&shape);
+    match &shape {
+        Shape::Planar(curve) => emit_curve(args, &columns, curve, &table),
+        Shape::Spatial(curve) => emit_curve(args, &columns, curve, &table),
+        Shape::Surface(surface) => {
+            let projector = surface.projector();
+            let rows = batches(&table, |points: &[[f64; 3]]| {
+                projector
+                    .nearest_many(points)
+                    .into_iter()
+                    .map(|r| {
+                        r.map(|n| {
+                            let mut row = vec![n.parameter[0], n.parameter[1], n.distance];
+                            push_point(&mut row, &n.point);
+                            row
+                        })
+                    })
+                    .collect()
+            });
+            write(args, &columns, rows)
+        }
+    }
+}
+
+fn emit_curve<const D: usize>(
+    args: &QueryArgs,
+    columns: &[String],
+    curve: &AnyCurve<D>,
+    table: &PointTable,
+) -> anyhow::Result<()> {
+    let projector = curve.projector();
+    let rows = batches(table, |points: &[[f64; D]]| {
+        projector
+            .nearest_many(points)
+            .into_iter()
+            .map(|r: Result<Nearest<D>, NearestError>| {
+                r.map(|n| {
+                    let mut row = vec![n.parameter, n.distance];
+                    push_point(&mut row, &n.point);
+                    row
+                })
+            })
+            .collect()
+    });
+    write(args, columns, rows)
+}
+
+/// The rows of the table, computed a batch at a time (index, then what `solve` gives). A
+/// batch with an error yields its first error only, so that [`write`] sees an error of the
+/// first batch before it writes anything.
+fn batches<'a, const D: usize>(
+    table: &'a PointTable,
+    solve: impl Fn(&[[f64; D]]) -> Vec<Result<Vec<f64>, NearestError>> + 'a,
+) -> impl Iterator<Item = anyhow::Result<Vec<Option<f64>>>> + 'a {
+    let positions = table.positions();
+    let batches = (0..positions.len()).step_by(BATCH).map(
+        move |first| -> anyhow::Result<Vec<Vec<Option<f64>>>> {
+            let end = (first + BATCH).min(positions.len());
+            let points: Vec<[f64; D]> = positions[first..end]
+                .iter()
+                .map(|p| core::array::from_fn(|a| p[a]))
+                .collect();
+            solve(&points)
+                .into_iter()
+                .enumerate()
+                .map(|(k, result)| {
+                    let index = first + k;
+                    let values = result.map_err(|e| {
+                        anyhow::Error::msg(format!(
+                            "{}:{}: cannot find the nearest point: {e}",
+                            table.file(),
+                            table.line(index)
+                        ))
+                    })?;
+                    let mut row = Vec::with_capacity(values.len() + 1);
+                    row.push(Some(index as f64));
+                    row.extend(values.into_iter().map(Some));
+                    Ok(row)
+                })
+                .collect()
+        },
+    );
+    batches.flat_map(|batch| match batch {
+        Ok(rows) => rows.into_iter().map(Ok).collect::<Vec<_>>(),
+        Err(e) => vec![Err(e)],
+    })
+}
+
+/// Writes the table; an error in the first row is reported before anything is written.
+fn write(
+    args: &QueryArgs,
+    columns: &[String],
+    rows: impl Iterator<Item = anyhow::Result<Vec<Option<f64>>>>,
+) -> anyhow::Result<()> {
+    let mut rows = rows.peekable();
+    if let Some(Err(_)) = rows.peek() {
+        if let Some(Err(e)) = rows.next() {
+            return Err(e);
+        }
+    }
+    output::emit(args.output.as_deref(), |w| {
+        output::write_table(w, args.format, columns, rows)
+    })
+}
+
+fn push_point<const D: usize>(row: &mut Vec<f64>, p: &CurvePoint<D>) {
+    row.extend(p.position);
+    row.extend(p.degrees.to_array());
+    row.push(p.degrees.score());
+}
+
+/// `index,t,distance,x,y[,z],truth,indeterminacy,falsity,score` (`u,v` for surfaces).
+fn columns(shape: &Shape) -> Vec<String> {
+    let mut names: Vec<&str> = vec!["index"];
+    if shape.is_surface() {
+        names.extend(["u", "v"]);
+    } else {
+        names.push("t");
+    }
+    names.push("distance");
+    names.extend(&["x", "y", "z"][..shape.dimension()]);
+    names.extend(["truth", "indeterminacy", "falsity", "score"]);
+    names.into_iter().map(str::to_owned).collect()
+}

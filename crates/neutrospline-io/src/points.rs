@@ -1,0 +1,219 @@
+//! Tables of query points: positions only, one per CSV row (columns `x`, `y`, optional `z`
+//! and an optional `name`), for commands that ask questions about a model at given points
+//! (the nearest point of a curve or surface). Comments, empty lines, quoting, CRLF and a byte
+//! order mark as in control-point CSV files; line numbers in errors are physical lines.
+//!
+//! ```
+//! use neutrospline_io::read_points;
+//!
+//! let table = read_points("q.csv", "x,y\n0,0\n# a comment\n1.5,2\n".as_bytes())?;
+//! assert_eq!((table.len(), table.dimension()), (2, 2));
+//! assert_eq!(table.positions()[1], [1.5, 2.0, 0.0]);
+//! assert_eq!(table.line(1), 4);
+//!
+//! let bad = read_points("q.csv", "x,y\n0,inf\n".as_bytes()).unwrap_err();
+//! assert_eq!(
+//!     bad.to_string(),
+//!     "q.csv:2: column `y`: value `inf` is not a finite number (NaN and infinities are not allowed)"
+//! );
+//! # Ok::<(), neutrospline_io::ReadError>(())
+//! ```
+
+use std::io::BufRead;
+use std::path::Path;
+
+use crate::csv::Records;
+use crate::parsed::parse_number;
+use crate::read::open_file;
+use crate::{InputError, ReadError};
+
+/// Query points read from a CSV file, with the line each was read from.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointTable {
+    file: String,
+    dimension: usize,
+    positions: Vec<[f64; 3]>,
+    lines: Vec<usize>,
+}
+
+impl PointTable {
+    /// The file as named by the caller.
+    pub fn file(&self) -> &str {
+        &self.file
+    }
+
+    /// 2 (columns `x`, `y`) or 3 (with `z`).
+    pub fn dimension(&self) -> usize {
+        self.dimension
+    }
+
+    /// The number of points.
+    pub fn len(&self) -> usize {
+        self.positions.len()
+    }
+
+    /// Whether there are no points (never true for a table that was read).
+    pub fn is_empty(&self) -> bool {
+        self.positions.is_empty()
+    }
+
+    /// The positions, `z = 0` for 2-D points.
+    pub fn positions(&self) -> &[[f64; 3]] {
+        &self.positions
+    }
+
+    /// The physical line (1-based) point `index` was read from.
+    ///
+    /// # Panics
+    /// When `index` is not a point of the table.
+    pub fn line(&self, index: usize) -> usize {
+        self.lines[index]
+    }
+}
+
+/// The columns of a point table.
+const COLUMNS: [&str; 4] = ["x", "y", "z", "name"];
+
+/// Reads a table of query points from a CSV file.
+///
+/// # Errors
+/// The file cannot be read, or is invalid: see [`read_points`].
+pub fn load_points(path: impl AsRef<Path>) -> Result<PointTable, ReadError> {
+    let (file, shown) = open_file(path.as_ref())?;
+    read_points(&shown, std::io::BufReader::new(file))
+}
+
+/// Reads a table of query points from a CSV stream, one line at a time; `file` names it in
+/// errors.
+///
+/// # Errors
+/// A located [`InputError`]: an empty file, a missing, unknown or repeated column, a row with
+/// the wrong number of cells, a value that is not a finite number, no points; or the stream
+/// cannot be read.
+pub fn read_points(file: &str, reader: impl BufRead) -> Result<PointTable, ReadError> {
+    let error = |line: Option<usize>, field: Option<String>, message: String| -> ReadError {
+        InputError::new(file, line, field, message).into()
+    };
+    let mut records = Records::new(reader);
+    let mut next = || records.next_cells(file);
+    let Some((header_line, header)) = next()? else {
+        return Err(error(
+            None,
+            None,
+            "empty file (expected a header row such as `x,y` or `x,y,z`)".to_owned(),
+        ));
+    };
+    let header_line = Some(header_line);
+    // columns[k] = index into COLUMNS of the k-th cell.
+    let mut columns: Vec<usize> = Vec::with_capacity(header.len());
+    for (i, heading) in header.iter().enumerate() {
+        let Some(column) = COLUMNS
+            .iter()
+            .position(|c| c.eq_ignore_ascii_case(heading.trim()))
+        else {
+            return Err(error(
+                header_line,
+                None,
+                format!(
+                    "unknown column `{heading}` (known columns of query points: x, y, z, name)"
+                ),
+            ));
+        };
+        if let Some(j) = columns.iter().position(|&c| c == column) {
+            return Err(error(
+                header_line,
+                None,
+                format!(
+                    "column {} `{heading}` repeats column {} `{}` (each column may appear once)",
+                    i + 1,
+                    j + 1,
+                    header.get(j).unwrap_or_default()
+                ),
+            ));
+        }
+        columns.push(column);
+    }
+    for (k, name) in COLUMNS[..2].iter().enumerate() {
+        if !columns.contains(&k) {
+            return Err(error(
+                header_line,
+                None,
+                format!("missing column `{name}` (every query point needs x and y)"),
+            ));
+        }
+    }
+    let dimension = if columns.contains(&2) { 3 } else { 2 };
+    let mut table = PointTable {
+        file: file.to_owned(),
+        dimension,
+        positions: Vec::new(),
+        lines: Vec::new(),
+    };
+    while let Some((line, record)) = next()? {
+        let at = Some(line);
+        if record.len() != columns.len() {
+            return Err(error(
+                at,
+                None,
+                format!(
+                    "the row has {} cells but the header has {} (every row needs one cell per \
+                     column)",
+                    record.len(),
+                    columns.len()
+                ),
+            ));
+        }
+        let mut position = [0.0; 3];
+        for ((&column, cell), heading) in columns.iter().zip(record.iter()).zip(header.iter()) {
+            if column == 3 {
+                continue;
+            }
+            position[column] = parse_number(cell)
+                .map_err(|m| error(at, Some(format!("column `{heading}`")), m))?;
+        }
+        table.positions.push(position);
+        table.lines.push(line);
+    }
+    if table.is_empty() {
+        return Err(error(
+            None,
+            None,
+            "no query points (the header row is not followed by any data row)".to_owned(),
+        ));
+    }
+    Ok(table)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn read(text: &str) -> Result<PointTable, String> {
+        read_points("q.csv", text.as_bytes()).map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn point_table_reads_columns_in_any_order() {
+        let t = read("\u{feff}name,Z,y,X\r\nA,3,2,1\r\n\r\n,6,5,4\r\n").unwrap();
+        assert_eq!(t.dimension(), 3);
+        assert_eq!(t.positions(), &[[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]);
+        assert_eq!((t.line(0), t.line(1)), (2, 4));
+        assert_eq!(t.file(), "q.csv");
+    }
+
+    #[test]
+    fn point_table_errors_are_located() {
+        let cases: &[(&str, &str)] = &[
+            ("", "q.csv: empty file (expected a header row such as `x,y` or `x,y,z`)"),
+            ("x,y\n", "q.csv: no query points (the header row is not followed by any data row)"),
+            ("x,z\n1,2\n", "q.csv:1: missing column `y` (every query point needs x and y)"),
+            ("x,y,truth\n", "q.csv:1: unknown column `truth` (known columns of query points: x, y, z, name)"),
+            ("x,y,X\n", "q.csv:1: column 3 `X` repeats column 1 `x` (each column may appear once)"),
+            ("x,y\n1,2,3\n", "q.csv:2: the row has 3 cells but the header has 2 (every row needs one cell per column)"),
+            ("x,y\n1,2\n1,two\n", "q.csv:3: column `y`: value `two` is not a number"),
+        ];
+        for (text, want) in cases {
+            assert_eq!(read(text).unwrap_err(), *want, "{text:?}");
+        }
+    }
+}
