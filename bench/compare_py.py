@@ -8,6 +8,10 @@ spaced parameters, with every channel evaluated (x, y, truth, indeterminacy, fal
 
 - `curve.evaluate(t)`: the package, allocating its result;
 - `curve.evaluate(t, out=buffer)`: into a preallocated Fortran-ordered array, no allocation;
+- `curve.sample(n, out=buffer)`: the same at evenly spaced parameters the engine computes, as
+  `bench` does (no parameter array read): the cost of the binding alone;
+- `numpy.zeros((n, 5), order="F").fill(1.0)`: what a fresh output array costs by itself (the
+  kernel zeroes its 40 MB on first touch), the floor of any allocating evaluation;
 - `bezier.Curve(nodes, degree).evaluate_multi(t)`: the `bezier` package (dhermes/bezier);
 - `neutrospline bench --degree D --threads 0`: the batch engine with no Python in between
   (the same thread count as the package's default; random curves of the same degree are the
@@ -78,16 +82,21 @@ def main():
         check = np.max(np.abs(curve(t) - reference.evaluate_multi(t).T))
         allocate = best(lambda: curve.evaluate(t), args.runs)
         into = best(lambda: curve.evaluate(t, out=buffer), args.runs)
+        sampled = best(lambda: curve.sample(POINTS, out=buffer), args.runs)
+        fresh = best(lambda: np.zeros((POINTS, 5), order="F").fill(1.0), args.runs)
         package = best(lambda: reference.evaluate_multi(t), max(3, args.runs // 3))
         engine = cli_rate(binary, degree)
         rows.append({
             "degree": degree,
             "evaluate_mpts_per_s": POINTS / allocate / 1e6,
             "evaluate_out_mpts_per_s": POINTS / into / 1e6,
+            "sample_out_mpts_per_s": POINTS / sampled / 1e6,
+            "fresh_array_ms": fresh * 1e3,
             "bezier_evaluate_multi_mpts_per_s": POINTS / package / 1e6,
             "cli_bench_mpts_per_s": engine,
             "speedup_over_bezier": package / allocate,
             "out_fraction_of_bench": POINTS / into / 1e6 / engine,
+            "sample_out_fraction_of_bench": POINTS / sampled / 1e6 / engine,
             "largest_difference": float(check),
         })
     result = {
@@ -99,14 +108,17 @@ def main():
     lines = [
         f"# Python package vs bezier and `neutrospline bench` ({result['date']}, {POINTS:,} parameters, {ns.instruction_set})",
         "",
-        "| degree | evaluate(t) Mpts/s | evaluate(t, out=) Mpts/s | bezier evaluate_multi Mpts/s | neutrospline bench Mpts/s | evaluate / bezier | out= / bench | largest difference |",
-        "|---:|---:|---:|---:|---:|---:|---:|---:|",
+        "| degree | evaluate(t) Mpts/s | evaluate(t, out=) Mpts/s | sample(n, out=) Mpts/s | bezier evaluate_multi Mpts/s | neutrospline bench Mpts/s | evaluate / bezier | evaluate(out=) / bezier | evaluate(out=) / bench | sample(out=) / bench | fresh array alone ms | largest difference |",
+        "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
     ]
     for r in rows:
         lines.append(
             f"| {r['degree']} | {r['evaluate_mpts_per_s']:.1f} | {r['evaluate_out_mpts_per_s']:.1f} | "
-            f"{r['bezier_evaluate_multi_mpts_per_s']:.2f} | {r['cli_bench_mpts_per_s']:.1f} | "
-            f"{r['speedup_over_bezier']:.1f}x | {100 * r['out_fraction_of_bench']:.0f} % | {r['largest_difference']:.1e} |"
+            f"{r['sample_out_mpts_per_s']:.1f} | {r['bezier_evaluate_multi_mpts_per_s']:.2f} | "
+            f"{r['cli_bench_mpts_per_s']:.1f} | {r['speedup_over_bezier']:.1f}x | "
+            f"{r['evaluate_out_mpts_per_s'] / r['bezier_evaluate_multi_mpts_per_s']:.1f}x | "
+            f"{100 * r['out_fraction_of_bench']:.0f} % | {100 * r['sample_out_fraction_of_bench']:.0f} % | "
+            f"{r['fresh_array_ms']:.2f} | {r['largest_difference']:.1e} |"
         )
     text = "\n".join(lines) + "\n"
     print(text)

@@ -9,7 +9,7 @@ use neutrospline::{
     AnyCurve, BSpline as BSplineCurve, BatchOptions, BatchParams, Bezier as BezierCurve, Bounded,
     BoundingBox, ControlPoint, ControlPolygon, CurveBatch, CurveDerivative, CurveError,
     CurveGeometry, CurveKind, Degrees, Derivative, Elevate, EvalError, Evaluate, KnotVector,
-    Membership, Nurbs as NurbsCurve, Split,
+    Membership, NearestPoint, Nurbs as NurbsCurve, Split,
 };
 use neutrospline_io::{Model, Shape};
 use pyo3::prelude::*;
@@ -19,6 +19,7 @@ use pyo3::PyClassInitializer;
 use crate::arrays::{readonly_array, vector, Output, Params, Writer};
 use crate::errors::{invalid, invalid_at};
 use crate::model::{self, FigureRequest, Meta, PointArrays};
+use numpy::PyUntypedArrayMethods;
 
 /// Parameters evaluated per block when the output is not Fortran-ordered: the block is
 /// evaluated column by column into cache-resident scratch, then written row by row.
@@ -792,6 +793,124 @@ impl Curve {
             Params::Scalar(_) => Ok(values[0].into_pyobject(py)?.into_any().unbind()),
             Params::Array(_) => Ok(vector(py, values).into_any().unbind()),
         }
+    }
+
+    /// The nearest points of the curve to query `points` (shape (m, dimension), or one point
+    /// of shape (dimension,)): the global minimum of the distance, ends included, ties to the
+    /// smaller parameter (as `neutrospline query`). Returns `(t, distance, rows)`: the
+    /// parameters (m,), the distances (m,) and the curve's rows there (m, dimension + 3);
+    /// floats and one row for a single point.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> t, distance, row = ns.example1().nearest([4.625, 4.0])
+    /// >>> round(t, 9), distance < 1e-12
+    /// (0.5, True)
+    fn nearest<'py>(
+        &self,
+        py: Python<'py>,
+        points: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        let (_, curve) = self.model()?;
+        let dimension = self.state.dimension();
+        let array = crate::arrays::float_array(points, "points")?;
+        let single = array.ndim() == 1;
+        let shape = array.shape().to_vec();
+        if shape.last() != Some(&dimension) || array.ndim() > 2 || array.ndim() == 0 {
+            return Err(invalid_at(
+                "points",
+                format!(
+                    "expected an array of shape (m, {dimension}) or ({dimension},), got shape \
+                     {shape:?}"
+                ),
+            ));
+        }
+        let flat: Vec<f64> = array.as_array().iter().copied().collect();
+        let (t, distance, rows) = on_dim!(curve, c => {
+            let queries: Vec<_> = flat
+                .chunks_exact(dimension)
+                .map(|p| {
+                    let mut q = [0.0; 3];
+                    q[..p.len()].copy_from_slice(p);
+                    core::array::from_fn(|i| q[i])
+                })
+                .collect();
+            let found = py.detach(|| NearestPoint::projector(&c.curve).nearest_many(&queries));
+            let mut t = Vec::with_capacity(found.len());
+            let mut distance = Vec::with_capacity(found.len());
+            let mut rows = Vec::with_capacity(found.len() * (dimension + 3));
+            for (k, result) in found.into_iter().enumerate() {
+                let n = result.map_err(|e| invalid_at(format!("points[{k}]"), e))?;
+                t.push(n.parameter);
+                distance.push(n.distance);
+                rows.extend_from_slice(&n.point.position);
+                rows.extend_from_slice(&n.point.degrees.to_array());
+            }
+            (t, distance, rows)
+        });
+        if single {
+            let row = vector(py, rows).into_any();
+            return PyTuple::new(
+                py,
+                [
+                    t[0].into_pyobject(py)?.into_any(),
+                    distance[0].into_pyobject(py)?.into_any(),
+                    row,
+                ],
+            );
+        }
+        let m = t.len();
+        PyTuple::new(
+            py,
+            [
+                vector(py, t).into_any(),
+                vector(py, distance).into_any(),
+                crate::arrays::new_array(py, rows, &[m, dimension + 3])?,
+            ],
+        )
+    }
+
+    /// The intersections of this plane curve with `other` (another plane curve; omitted: the
+    /// curve's self-intersections), as `neutrospline intersect`: an array of shape (k, 10),
+    /// columns `t_a, t_b, x, y, truth_a, indeterminacy_a, falsity_a, truth_b,
+    /// indeterminacy_b, falsity_b`, ordered by `t_a`; curves that overlap raise `ModelError`.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> line = ns.Bezier([[-2, 0], [2, 0]], [[1, 0, 0], [0, 0, 1]])
+    /// >>> circle = ns.load("examples/nurbs-circle.toml")
+    /// >>> line.intersections(circle)[:, :4].round(12).tolist()
+    /// [[0.25, 0.5, -1.0, 0.0], [0.75, 0.0, 1.0, 0.0]]
+    #[pyo3(signature = (other = None))]
+    fn intersections<'py>(
+        &self,
+        py: Python<'py>,
+        other: Option<&Bound<'py, Curve>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let planar = |curve: &Curve, what: &str| -> PyResult<AnyCurve<2>> {
+            match curve.model()? {
+                (_, Planarity::Planar(c)) => Ok(c.curve.clone()),
+                (_, Planarity::Spatial(_)) => Err(invalid_at(
+                    what,
+                    "intersections are of plane curves (this one is 3-D)",
+                )),
+            }
+        };
+        let a = planar(self, "self")?;
+        let found = match other {
+            Some(other) => {
+                let b = planar(other.get(), "other")?;
+                py.detach(|| neutrospline::intersections(&a, &b))
+            }
+            None => py.detach(|| neutrospline::self_intersections(&a)),
+        }
+        .map_err(invalid)?;
+        let mut rows = Vec::with_capacity(found.len() * 10);
+        for hit in &found {
+            rows.extend_from_slice(&[hit.parameter_a, hit.parameter_b]);
+            rows.extend_from_slice(&hit.point_a.position);
+            rows.extend_from_slice(&hit.point_a.degrees.to_array());
+            rows.extend_from_slice(&hit.point_b.degrees.to_array());
+        }
+        crate::arrays::new_array(py, rows, &[found.len(), 10])
     }
 
     /// The parameter domain `(a, b)`.

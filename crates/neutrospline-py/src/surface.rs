@@ -7,6 +7,7 @@ use neutrospline_io::{Model, Shape};
 use numpy::ndarray::{ArrayView, IxDyn};
 use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::prelude::*;
+use pyo3::types::PyTuple;
 
 use crate::arrays::{float_array, readonly_array};
 use crate::errors::{invalid, invalid_at};
@@ -342,6 +343,67 @@ impl Surface {
             })
             .map_err(|(k, e)| invalid_at(format!("(u, v){}", index_text(k, &shape)), e))?;
         emit(py, values, &shape, 3, None)
+    }
+
+    /// The nearest points of the surface to query `points` (shape (m, 3), or one point of
+    /// shape (3,)): the global minimum, as `neutrospline query`. Returns `(uv, distance,
+    /// rows)`: the parameters (m, 2), the distances (m,) and the surface's rows there (m, 6);
+    /// one of each for a single point.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> flat = ns.Surface.bezier([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], [[[1, 0, 0]] * 2] * 2)
+    /// >>> uv, distance, row = flat.nearest([0.25, 0.5, 2.0])
+    /// >>> uv.round(12).tolist(), round(distance, 12)
+    /// ([0.25, 0.5], 2.0)
+    fn nearest<'py>(
+        &self,
+        py: Python<'py>,
+        points: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        let array = float_array(points, "points")?;
+        let shape = array.shape().to_vec();
+        let single = shape.len() == 1;
+        if shape.last() != Some(&3) || shape.len() > 2 {
+            return Err(invalid_at(
+                "points",
+                format!("expected an array of shape (m, 3) or (3,), got shape {shape:?}"),
+            ));
+        }
+        let queries: Vec<[f64; 3]> = array
+            .as_array()
+            .iter()
+            .copied()
+            .collect::<Vec<f64>>()
+            .chunks_exact(3)
+            .map(|p| [p[0], p[1], p[2]])
+            .collect();
+        let surface = &self.surface;
+        let found = py.detach(|| surface.projector().nearest_many(&queries));
+        let mut uv = Vec::with_capacity(found.len() * 2);
+        let mut distance = Vec::with_capacity(found.len());
+        let mut rows = Vec::with_capacity(found.len() * 6);
+        for (k, result) in found.into_iter().enumerate() {
+            let n = result.map_err(|e| invalid_at(format!("points[{k}]"), e))?;
+            uv.extend_from_slice(&n.parameter);
+            distance.push(n.distance);
+            rows.extend_from_slice(&n.point.position);
+            rows.extend_from_slice(&n.point.degrees.to_array());
+        }
+        let m = distance.len();
+        let (uv, distance, rows) = if single {
+            (
+                crate::arrays::new_array(py, uv, &[2])?,
+                distance[0].into_pyobject(py)?.into_any(),
+                crate::arrays::new_array(py, rows, &[6])?,
+            )
+        } else {
+            (
+                crate::arrays::new_array(py, uv, &[m, 2])?,
+                crate::arrays::new_array(py, distance, &[m])?,
+                crate::arrays::new_array(py, rows, &[m, 6])?,
+            )
+        };
+        PyTuple::new(py, [uv, distance, rows])
     }
 
     /// The parameter domains `((u0, u1), (v0, v1))`.

@@ -463,3 +463,47 @@ def test_four_threads_give_the_same_results():
         thread.join()
     for got in results:
         np.testing.assert_array_equal(got, want)
+
+
+# ---- nearest points and intersections, against the command line ----
+
+
+def test_nearest_matches_query(cli, root, tmp_path):
+    for model, dimension in [("bspline.toml", 2), ("nurbs-circle.toml", 2), ("helix3d.toml", 3), ("surface.toml", 3)]:
+        path = root / "examples" / model
+        shape = ns.load(path)
+        points = RNG.uniform(-3.0, 3.0, size=(40, dimension))
+        table = tmp_path / f"points{dimension}.csv"
+        header = "x,y,z" if dimension == 3 else "x,y"
+        np.savetxt(table, points, delimiter=",", header=header, comments="", fmt="%.17g")
+        columns, want = cli_table(cli, "query", path, table)
+        if isinstance(shape, ns.Surface):
+            uv, distance, rows = shape.nearest(points)
+            np.testing.assert_array_equal(uv, want[:, 1:3])
+            offset = 3
+        else:
+            t, distance, rows = shape.nearest(points)
+            np.testing.assert_array_equal(t, want[:, 1])
+            offset = 2
+        np.testing.assert_array_equal(distance, want[:, offset])
+        np.testing.assert_array_equal(rows, want[:, offset + 1 : offset + 1 + rows.shape[1]])
+    with pytest.raises(ns.ModelError, match=r"^points: expected an array of shape \(m, 2\)"):
+        ns.example1().nearest([[0.0, 0.0, 0.0]])
+
+
+def test_intersections_match_intersect(cli, root, tmp_path):
+    line = ns.Bezier([[-2, -0.5], [0, 0.7], [2, 0.1]], [[1, 0, 0], [0.5, 0.5, 0], [0, 0, 1]])
+    a = tmp_path / "line.toml"
+    line.save(a)
+    circle = root / "examples" / "nurbs-circle.toml"
+    _, want = cli_table(cli, "intersect", a, circle)
+    got = line.intersections(ns.load(circle))
+    assert got.shape == (2, 10)
+    np.testing.assert_array_equal(got, want[:, 1:])
+    loop = ns.Bezier([[0, 0], [3, 3], [-1, 3], [2, 0]], [[0.2, 0.2, 0.2]] * 4)
+    crossing = loop.intersections()
+    assert crossing.shape == (1, 10)
+    t_a, t_b = crossing[0, :2]
+    np.testing.assert_allclose(loop(t_a)[:2], loop(t_b)[:2], rtol=0, atol=1e-12)
+    with pytest.raises(ns.ModelError, match="the curves overlap"):
+        line.intersections(line)
