@@ -214,3 +214,59 @@ fn check_reports_spread_ranges_only_when_some_are_not_zero() {
     assert_eq!(code, 0);
     assert!(!out.contains("spread"), "{out}");
 }
+
+#[test]
+fn plot_band_view() {
+    let out = tempfile::tempdir().unwrap();
+    let svg = out.path().join("band.svg");
+    let svg_arg = svg.to_str().unwrap();
+    let dir = examples_dir();
+    let (code, _, err) = run(
+        &dir,
+        &[
+            "plot",
+            "fuzzy-bspline.toml",
+            "--view",
+            "band",
+            "--alpha",
+            "0,0.25,1",
+            "-o",
+            svg_arg,
+        ],
+    );
+    assert_eq!(code, 0, "{err}");
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.contains("band alpha-0\"") && text.contains("band alpha-0.25\""));
+    assert!(text.contains("curve centroid"));
+    let (code, _, err) = run(
+        &dir,
+        &[
+            "plot",
+            "fuzzy-bspline.toml",
+            "--view",
+            "band",
+            "--alpha",
+            "0,2",
+            "-o",
+            svg_arg,
+        ],
+    );
+    assert_eq!(code, 2);
+    assert_eq!(
+        err.lines().next(),
+        Some(
+            "error: invalid value '0,2' for '--alpha <A1,A2,...>': `2` is not a number in [0, 1] \
+             (alpha levels of the band view, such as 0,0.5,1)"
+        )
+    );
+    let (code, _, err) = run(
+        &dir,
+        &["plot", "surface.toml", "--view", "band", "-o", svg_arg],
+    );
+    assert_eq!(code, 1);
+    assert_eq!(
+        err,
+        "error: the band view draws curves (spreads are given per control point of a curve); \
+         surfaces have no band\n"
+    );
+}
