@@ -44,6 +44,7 @@ impl Parsed {
                 true,
             ) => vec![source(knots_u), source(knots_v)],
         };
+        let spreads = self.points.iter().map(|p| p.spread).collect();
         let names = self.points.into_iter().map(|p| p.name).collect();
         Ok(Model::from_parts(
             shape,
@@ -52,6 +53,7 @@ impl Parsed {
             self.membership,
             names,
             knot_sources,
+            spreads,
         ))
     }
 

@@ -16,7 +16,8 @@ use std::io::{BufRead, Read};
 
 use crate::format::{too_many_points, MAX_CSV_LINE};
 use crate::parsed::{
-    duplicate_rule, line_of, missing_degree, parse_number, Field, Origin, Parsed, PointRecord,
+    check_spread_value, duplicate_rule, line_of, missing_degree, parse_number, spread_from_values,
+    spread_hint, spread_keys_problem, Field, Origin, Parsed, PointRecord, SpreadKey,
 };
 use crate::settings::{Key, Kind, KnotSpec, KnotsSetting, Setting, Structure};
 use crate::{InputError, ReadOptions};
@@ -187,7 +188,7 @@ pub(crate) fn parse_reader(
     };
     let header_line = Some(header_line);
     let columns = read_header(&header).map_err(|m| error(header_line, None, m))?;
-    let has = |f: Field| columns.contains(&f);
+    let has = |f: Field| columns.contains(&Column::Field(f));
     for f in [Field::X, Field::Y] {
         if !has(f) {
             return Err(error(
@@ -241,6 +242,15 @@ pub(crate) fn parse_reader(
         ));
     }
     let dimension = if has(Field::Z) { 3 } else { 2 };
+    let mut spread_columns: [Option<&str>; 9] = [None; 9];
+    for (column, heading) in columns.iter().zip(header.iter()) {
+        if let Column::Spread(key) = column {
+            spread_columns[key.index()] = Some(heading);
+        }
+    }
+    if let Some(problem) = spread_keys_problem(&spread_columns, dimension, kind.is_surface()) {
+        return Err(error(header_line, None, format!("column {problem}")));
+    }
 
     let mut points = Vec::new();
     while let Some((line, record)) = next()? {
@@ -260,8 +270,19 @@ pub(crate) fn parse_reader(
             ));
         }
         let mut values = [None::<f64>; 8];
+        let mut spreads = [None::<f64>; 9];
         let mut name = None;
-        for ((&field, cell), heading) in columns.iter().zip(record.iter()).zip(header.iter()) {
+        for ((&column, cell), heading) in columns.iter().zip(record.iter()).zip(header.iter()) {
+            let field = match column {
+                Column::Field(field) => field,
+                Column::Spread(key) => {
+                    let value = parse_number(cell)
+                        .and_then(check_spread_value)
+                        .map_err(|m| error(line, Some(format!("column `{heading}`")), m))?;
+                    spreads[key.index()] = Some(value);
+                    continue;
+                }
+            };
             if field == Field::Name {
                 name = (!cell.is_empty()).then(|| cell.to_owned());
                 continue;
@@ -296,6 +317,7 @@ pub(crate) fn parse_reader(
                 line,
                 field: Some("column `weight`".to_owned()),
             },
+            spread: spread_from_values(&spreads),
         });
     }
     if points.is_empty() {
@@ -365,16 +387,27 @@ fn structure(kind: Kind, options: &ReadOptions) -> Structure {
     }
 }
 
-/// The field of each header cell; the message explains an unknown or repeated column.
-fn read_header(header: &::csv::StringRecord) -> Result<Vec<Field>, String> {
-    let mut columns: Vec<Field> = Vec::with_capacity(header.len());
+/// What a header cell names: a field of the control point, or a spread.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Column {
+    Field(Field),
+    Spread(SpreadKey),
+}
+
+/// The column of each header cell; the message explains an unknown or repeated column.
+fn read_header(header: &::csv::StringRecord) -> Result<Vec<Column>, String> {
+    let mut columns: Vec<Column> = Vec::with_capacity(header.len());
     for (i, heading) in header.iter().enumerate() {
-        let field = Field::from_name(heading, true).ok_or_else(|| {
-            format!(
-                "unknown column `{heading}` (known columns: {})",
-                Field::known_list()
-            )
-        })?;
+        let field = Field::from_name(heading, true)
+            .map(Column::Field)
+            .or_else(|| SpreadKey::from_name(heading, true).map(Column::Spread))
+            .ok_or_else(|| {
+                format!(
+                    "unknown column `{heading}` (known columns: {}){}",
+                    Field::known_list(),
+                    spread_hint(heading)
+                )
+            })?;
         if let Some(j) = columns.iter().position(|&f| f == field) {
             return Err(format!(
                 "column {} `{heading}` repeats column {} `{}` ({})",
@@ -551,6 +584,39 @@ mod tests {
         assert_eq!(
             e.to_string(),
             "t.csv:3: column `indeterminacy`: value `x` is not a number"
+        );
+    }
+
+    #[test]
+    fn csv_parse_spreads() {
+        let m = parse_ok("x,y,T,I,F,SPREAD_X,spread_y_left,spread_y_right\n0,0,1,0,0,0.5,1,2\n");
+        assert_eq!(m.points[0].spread.left, [0.5, 1.0, 0.0]);
+        assert_eq!(m.points[0].spread.right, [0.5, 2.0, 0.0]);
+        let m = parse_ok("x,y,T,I,F\n0,0,1,0,0\n");
+        assert!(m.points[0].spread.is_zero());
+        use Membership::*;
+        let cases: &[(&[u8], &str)] = &[
+            (b"x,y,T,I,F,spread_x,spread_x_right\n", "t.csv:1: column `spread_x` and `spread_x_right` are both given (give the symmetric spread `spread_x` or the asymmetric `spread_x_left` and `spread_x_right` for one axis, not both)"),
+            (b"x,y,T,I,F,spread_z\n", "t.csv:1: column `spread_z` does not apply to a curve without z (the spread of z needs a z coordinate)"),
+            (b"x,y,T,I,F,spread_x,spread_x\n", "t.csv:1: column 7 `spread_x` repeats column 6 `spread_x` (each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity)"),
+            (b"x,y,T,I,F,spread\n", "t.csv:1: unknown column `spread` (known columns: x, y, z, truth (T), indeterminacy (I), falsity (F), weight, name) (spreads: spread_x, spread_y, spread_z, or spread_x_left and spread_x_right and so on)"),
+            (b"x,y,T,I,F,spread_y\n0,0,1,0,0,1\n0,0,1,0,0,-2\n", "t.csv:3: column `spread_y`: spread -2 is negative (a spread is a distance >= 0)"),
+            (b"x,y,T,I,F,spread_y\n0,0,1,0,0,inf\n", "t.csv:2: column `spread_y`: value `inf` is not a finite number (NaN and infinities are not allowed)"),
+        ];
+        for (text, expected) in cases {
+            assert_eq!(&parse_err(text, Neutrosophic), expected);
+        }
+        let surface = ReadOptions {
+            kind: Some(Kind::Surface(neutrospline::SurfaceKind::Bezier)),
+            rows: Some(1),
+            cols: Some(1),
+            ..rule(Neutrosophic)
+        };
+        assert_eq!(
+            parse("t.csv", b"x,y,z,T,I,F,spread_x\n0,0,0,1,0,0,1\n", &surface)
+                .unwrap_err()
+                .to_string(),
+            "t.csv:1: column `spread_x` does not apply to surfaces (spreads apply to curves only)"
         );
     }
 

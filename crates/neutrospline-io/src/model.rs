@@ -1,6 +1,6 @@
 //! [`Model`]: what a model file holds once validated, in any format.
 
-use neutrospline::{DegreeError, Degrees, Membership};
+use neutrospline::{DegreeError, Degrees, FuzzyError, Membership, Spread};
 
 use crate::settings::{Kind, KnotRule, KnotSpec};
 use crate::{ReadOptions, Shape};
@@ -41,6 +41,10 @@ pub enum ModelError {
         #[source]
         error: DegreeError,
     },
+    /// Spreads that a model cannot carry: not one per control point, negative or not finite,
+    /// a spread of `z` on a planar curve, or spreads on a surface.
+    #[error("{0}")]
+    Spread(String),
 }
 
 /// A curve or surface with what a model file says about it: an optional name and description,
@@ -72,6 +76,8 @@ pub struct Model {
     point_names: Vec<Option<String>>,
     shape: Shape,
     knot_sources: Vec<KnotSource>,
+    /// One per control point (all zero when the model has none; `z` zero for planar curves).
+    spreads: Vec<Spread<3>>,
 }
 
 impl PartialEq for Model {
@@ -83,6 +89,7 @@ impl PartialEq for Model {
             && self.membership == other.membership
             && self.point_names == other.point_names
             && self.shape == other.shape
+            && self.spreads == other.spreads
     }
 }
 
@@ -120,6 +127,7 @@ impl Model {
             membership: Membership::Neutrosophic,
             point_names: vec![None; shape.control_count()],
             knot_sources: vec![KnotSource::Explicit; knot_directions(&shape)],
+            spreads: vec![Spread::ZERO; shape.control_count()],
             shape,
         }
     }
@@ -132,6 +140,7 @@ impl Model {
         membership: Membership,
         point_names: Vec<Option<String>>,
         knot_sources: Vec<KnotSource>,
+        spreads: Vec<Spread<3>>,
     ) -> Model {
         Model {
             name,
@@ -140,7 +149,70 @@ impl Model {
             point_names,
             shape,
             knot_sources,
+            spreads,
         }
+    }
+
+    /// With these spreads (SPEC section 9), one per control point: each control point's
+    /// coordinates become triangular fuzzy numbers `(x - left, x, x + right)`. Planar curves
+    /// take the `x` and `y` spreads (`z` must be 0); surfaces take none (all must be 0).
+    ///
+    /// # Errors
+    /// [`ModelError::Spread`]: not one spread per control point, a spread that is negative
+    /// or not finite, a `z` spread on a planar curve, or a non-zero spread on a surface.
+    pub fn with_spreads(mut self, spreads: Vec<Spread<3>>) -> Result<Model, ModelError> {
+        let points = self.shape.control_count();
+        if spreads.len() != points {
+            return Err(ModelError::Spread(
+                FuzzyError::SpreadCount {
+                    spreads: spreads.len(),
+                    points,
+                }
+                .to_string(),
+            ));
+        }
+        for (index, spread) in spreads.iter().enumerate() {
+            spread.check().map_err(|e| {
+                ModelError::Spread(match e {
+                    FuzzyError::Spread {
+                        axis, side, value, ..
+                    } => FuzzyError::Spread {
+                        index,
+                        axis,
+                        side,
+                        value,
+                    }
+                    .to_string(),
+                    other => other.to_string(),
+                })
+            })?;
+            let bad = match &self.shape {
+                Shape::Surface(_) => !spread.is_zero(),
+                Shape::Planar(_) => spread.left[2] != 0.0 || spread.right[2] != 0.0,
+                Shape::Spatial(_) => false,
+            };
+            if bad {
+                return Err(ModelError::Spread(format!(
+                    "control point {index}: {}",
+                    if self.shape.is_surface() {
+                        "spreads apply to curves only, not to surfaces"
+                    } else {
+                        "a planar curve has no z to spread"
+                    }
+                )));
+            }
+        }
+        self.spreads = spreads;
+        Ok(self)
+    }
+
+    /// The spreads of the control points (SPEC section 9), in order, when any is non-zero;
+    /// `None` for a crisp model. Planar curves have `z` spreads 0.
+    pub fn spreads(&self) -> Option<&[Spread<3>]> {
+        self.spreads
+            .iter()
+            .any(|s| !s.is_zero())
+            .then_some(self.spreads.as_slice())
     }
 
     /// With this name (TOML / JSON `name`).

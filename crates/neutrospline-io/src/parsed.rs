@@ -3,7 +3,7 @@
 //! found later (a knot, a weight) can still be located. Also the control-point fields and the
 //! small text helpers the readers share.
 
-use neutrospline::{DegreeError, Degrees, Membership};
+use neutrospline::{DegreeError, Degrees, Membership, Side, Spread};
 
 use crate::settings::{resolve, Kind, Structure};
 use crate::InputError;
@@ -90,6 +90,134 @@ impl Field {
     }
 }
 
+/// How a spread key gives the spread of its axis: both sides, or one.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum SpreadForm {
+    /// `spread_x`: the same spread left and right.
+    Symmetric,
+    /// `spread_x_left` or `spread_x_right`.
+    Side(Side),
+}
+
+/// A spread key (CSV column, model key): the axis (0, 1, 2) and the form.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct SpreadKey {
+    pub(crate) axis: usize,
+    pub(crate) form: SpreadForm,
+}
+
+/// The spread keys, axis by axis: `spread_x`, `spread_x_left`, `spread_x_right`, `spread_y`, ...
+pub(crate) const SPREAD_KEYS: [&str; 9] = [
+    "spread_x",
+    "spread_x_left",
+    "spread_x_right",
+    "spread_y",
+    "spread_y_left",
+    "spread_y_right",
+    "spread_z",
+    "spread_z_left",
+    "spread_z_right",
+];
+
+impl SpreadKey {
+    /// The key called `text`, exactly or ignoring ASCII case.
+    pub(crate) fn from_name(text: &str, ignore_case: bool) -> Option<SpreadKey> {
+        let i = SPREAD_KEYS.iter().position(|k| {
+            if ignore_case {
+                k.eq_ignore_ascii_case(text)
+            } else {
+                *k == text
+            }
+        })?;
+        let form = match i % 3 {
+            0 => SpreadForm::Symmetric,
+            1 => SpreadForm::Side(Side::Left),
+            _ => SpreadForm::Side(Side::Right),
+        };
+        Some(SpreadKey { axis: i / 3, form })
+    }
+
+    /// Index in [`SPREAD_KEYS`].
+    pub(crate) fn index(self) -> usize {
+        3 * self.axis
+            + match self.form {
+                SpreadForm::Symmetric => 0,
+                SpreadForm::Side(Side::Left) => 1,
+                SpreadForm::Side(Side::Right) => 2,
+            }
+    }
+}
+
+/// A hint for an unknown key that looks like a spread key (empty otherwise), to append to the
+/// unknown-key message.
+pub(crate) fn spread_hint(text: &str) -> &'static str {
+    if text.to_ascii_lowercase().starts_with("spread") {
+        " (spreads: spread_x, spread_y, spread_z, or spread_x_left and spread_x_right and so on)"
+    } else {
+        ""
+    }
+}
+
+/// Why the spread keys given for one point (or one CSV header) are not allowed: both forms
+/// for one axis, or an axis the shape does not have. `given[k]` is whether `SPREAD_KEYS[k]`
+/// is present, `names[k]` how it was spelt.
+pub(crate) fn spread_keys_problem(
+    given: &[Option<&str>; 9],
+    dimension: usize,
+    surface: bool,
+) -> Option<String> {
+    if surface {
+        if let Some(name) = given.iter().flatten().next() {
+            return Some(format!(
+                "`{name}` does not apply to surfaces (spreads apply to curves only)"
+            ));
+        }
+    }
+    for axis in 0..3 {
+        let [both, left, right] = [given[3 * axis], given[3 * axis + 1], given[3 * axis + 2]];
+        if axis >= dimension {
+            if let Some(name) = both.or(left).or(right) {
+                return Some(format!(
+                    "`{name}` does not apply to a curve without z (the spread of z needs a z \
+                     coordinate)"
+                ));
+            }
+        }
+        if let (Some(both), Some(side)) = (both, left.or(right)) {
+            return Some(format!(
+                "`{both}` and `{side}` are both given (give the symmetric spread `{}` or the \
+                 asymmetric `{}` and `{}` for one axis, not both)",
+                SPREAD_KEYS[3 * axis],
+                SPREAD_KEYS[3 * axis + 1],
+                SPREAD_KEYS[3 * axis + 2]
+            ));
+        }
+    }
+    None
+}
+
+/// Message for a spread value that is negative (finite values only reach here).
+pub(crate) fn check_spread_value(value: f64) -> Result<f64, String> {
+    if value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(format!(
+            "spread {value} is negative (a spread is a distance >= 0)"
+        ))
+    }
+}
+
+/// The spread of a point from its spread values, indexed as [`SPREAD_KEYS`].
+pub(crate) fn spread_from_values(values: &[Option<f64>; 9]) -> Spread<3> {
+    let mut spread = Spread::<3>::ZERO;
+    for axis in 0..3 {
+        let [both, left, right] = [values[3 * axis], values[3 * axis + 1], values[3 * axis + 2]];
+        spread.left[axis] = both.or(left).unwrap_or(0.0);
+        spread.right[axis] = both.or(right).unwrap_or(0.0);
+    }
+    spread
+}
+
 /// Explains why two names of the same field clash.
 pub(crate) fn duplicate_rule() -> &'static str {
     "each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity"
@@ -110,6 +238,8 @@ pub(crate) struct PointRecord {
     pub(crate) origin: Origin,
     /// Where the weight was read (`control_points[2].weight`, `` column `weight` ``).
     pub(crate) weight_origin: Origin,
+    /// The spreads of the fuzzy position (zero when none is given; `z` zero for 2-D points).
+    pub(crate) spread: Spread<3>,
 }
 
 /// Where something was read: the line and the field path of a point.

@@ -13,10 +13,11 @@ use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::Path;
 
-use neutrospline::Membership;
+use neutrospline::{Membership, Spread};
 
 use crate::format::MAX_CSV_LINE;
 use crate::number::file_number;
+use crate::parsed::SPREAD_KEYS;
 use crate::shape::PointData;
 use crate::{AtomicFile, Format, Model, Shape, WriteError};
 
@@ -87,6 +88,59 @@ fn point_values(point: &PointData, membership: Membership) -> Vec<(&'static str,
     values
 }
 
+/// The spread keys and values of a control point (TOML, JSON): per axis of the point, none
+/// when both sides are 0, `spread_x` when they are equal, else `spread_x_left` and
+/// `spread_x_right`.
+fn spread_values(spread: &Spread<3>, dimension: usize) -> Vec<(&'static str, f64)> {
+    let mut values = Vec::new();
+    for axis in 0..dimension.min(3) {
+        let (l, r) = (spread.left[axis], spread.right[axis]);
+        if l == 0.0 && r == 0.0 {
+            continue;
+        }
+        if l.to_bits() == r.to_bits() {
+            values.push((SPREAD_KEYS[3 * axis], l));
+        } else {
+            values.push((SPREAD_KEYS[3 * axis + 1], l));
+            values.push((SPREAD_KEYS[3 * axis + 2], r));
+        }
+    }
+    values
+}
+
+/// The spread columns of a CSV table: per axis, none when every spread is 0, `spread_x` when
+/// every point's two sides are equal, else `spread_x_left` and `spread_x_right` (as indices
+/// into [`SPREAD_KEYS`]).
+fn spread_columns(spreads: &[Spread<3>], dimension: usize) -> Vec<usize> {
+    let mut columns = Vec::new();
+    for axis in 0..dimension.min(3) {
+        if spreads
+            .iter()
+            .all(|s| s.left[axis] == 0.0 && s.right[axis] == 0.0)
+        {
+            continue;
+        }
+        if spreads
+            .iter()
+            .all(|s| s.left[axis].to_bits() == s.right[axis].to_bits())
+        {
+            columns.push(3 * axis);
+        } else {
+            columns.extend([3 * axis + 1, 3 * axis + 2]);
+        }
+    }
+    columns
+}
+
+/// The value of spread column `key` (an index into [`SPREAD_KEYS`]).
+fn spread_value(spread: &Spread<3>, key: usize) -> f64 {
+    let axis = key / 3;
+    match key % 3 {
+        2 => spread.right[axis],
+        _ => spread.left[axis],
+    }
+}
+
 /// Writes `[v0, v1, ...]`.
 fn push_array(out: &mut String, values: &[f64]) {
     out.push('[');
@@ -151,14 +205,25 @@ pub fn to_toml_string(model: &Model) -> String {
         }
         out.push('\n');
     }
-    for (point, name) in model.shape().point_data().iter().zip(model.point_names()) {
+    let spreads = model.spreads();
+    for (i, (point, name)) in model
+        .shape()
+        .point_data()
+        .iter()
+        .zip(model.point_names())
+        .enumerate()
+    {
         out.push_str("\n[[control_points]]\n");
         if let Some(name) = name {
             out.push_str("name = ");
             toml_string(&mut out, name);
             out.push('\n');
         }
-        for (key, value) in point_values(point, model.membership()) {
+        let mut values = point_values(point, model.membership());
+        if let Some(spreads) = spreads {
+            values.extend(spread_values(&spreads[i], point.position.len()));
+        }
+        for (key, value) in values {
             out.push_str(key);
             out.push_str(" = ");
             file_number(&mut out, value);
@@ -200,7 +265,11 @@ pub fn to_json_string(model: &Model) -> String {
             json_string(&mut out, name);
             first = false;
         }
-        for (key, value) in point_values(point, model.membership()) {
+        let mut values = point_values(point, model.membership());
+        if let Some(spreads) = model.spreads() {
+            values.extend(spread_values(&spreads[i], point.position.len()));
+        }
+        for (key, value) in values {
             if !first {
                 out.push_str(", ");
             }
@@ -269,6 +338,10 @@ pub fn to_csv_string(model: &Model) -> Result<String, WriteError> {
     if let Some(point) = points.first() {
         header.extend(point_values(point, model.membership()).iter().map(|v| v.0));
     }
+    let spreads = model.spreads();
+    let dimension = points.first().map_or(0, |p| p.position.len());
+    let spread_keys = spreads.map_or_else(Vec::new, |s| spread_columns(s, dimension));
+    header.extend(spread_keys.iter().map(|&k| SPREAD_KEYS[k]));
     out.push_str(&header.join(","));
     out.push('\n');
     let mut row = String::new();
@@ -291,6 +364,12 @@ pub fn to_csv_string(model: &Model) -> Result<String, WriteError> {
                 row.push(',');
             }
             file_number(&mut row, *value);
+        }
+        if let Some(spreads) = spreads {
+            for &key in &spread_keys {
+                row.push(',');
+                file_number(&mut row, spread_value(&spreads[index], key));
+            }
         }
         row.push('\n');
         if row.len() > MAX_CSV_LINE {

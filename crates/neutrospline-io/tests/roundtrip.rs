@@ -7,7 +7,7 @@
 use neutrospline::strategies;
 use neutrospline::{
     AnyCurve, BSpline, Bezier, ControlPoint, ControlPolygon, CurveKind, Degrees, KnotVector,
-    Membership, Nurbs, Surface, SurfaceKind,
+    Membership, Nurbs, Spread, Surface, SurfaceKind,
 };
 use neutrospline_io::{parse, to_string, Format, Model, ReadOptions, Shape};
 use proptest::prelude::*;
@@ -196,18 +196,56 @@ fn text() -> impl Strategy<Value = String> {
     ]
 }
 
-/// A model of any kind, with or without name, description and point names.
+/// A spread: 0, a small number, or any finite number >= 0 (symmetric now and then).
+fn spread_value() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        2 => Just(0.0),
+        2 => 0.0..10.0f64,
+        1 => number().prop_map(f64::abs),
+    ]
+}
+
+/// Spreads for the control points of `shape` (curves only; `z` only for spatial curves),
+/// symmetric, asymmetric or mixed.
+fn spreads(shape: &Shape) -> BoxedStrategy<Option<Vec<Spread<3>>>> {
+    let dimension = match shape {
+        Shape::Planar(_) => 2,
+        Shape::Spatial(_) => 3,
+        _ => return Just(None).boxed(),
+    };
+    let one = (
+        prop::array::uniform3(spread_value()),
+        prop::array::uniform3(spread_value()),
+        prop::array::uniform3(any::<bool>()),
+    )
+        .prop_map(move |(mut left, mut right, symmetric)| {
+            for k in 0..3 {
+                if symmetric[k] {
+                    right[k] = left[k];
+                }
+                if k >= dimension {
+                    (left[k], right[k]) = (0.0, 0.0);
+                }
+            }
+            Spread::new(left, right)
+        });
+    prop::option::of(prop::collection::vec(one, shape.control_count())).boxed()
+}
+
+/// A model of any kind, with or without name, description, point names and spreads.
 fn model() -> impl Strategy<Value = Model> {
     shape().prop_flat_map(|(shape, membership)| {
         let count = shape.control_count();
+        let spreads = spreads(&shape);
         (
             Just(shape),
             Just(membership),
             prop::option::of(text()),
             prop::option::of(text()),
             prop::option::of(prop::collection::vec(prop::option::of(text()), count)),
+            spreads,
         )
-            .prop_map(|(shape, membership, name, description, names)| {
+            .prop_map(|(shape, membership, name, description, names, spreads)| {
                 let mut model = Model::new(shape).with_membership(membership).unwrap();
                 if let Some(name) = name {
                     model = model.with_name(name);
@@ -217,6 +255,9 @@ fn model() -> impl Strategy<Value = Model> {
                 }
                 if let Some(names) = names {
                     model = model.with_point_names(names).unwrap();
+                }
+                if let Some(spreads) = spreads {
+                    model = model.with_spreads(spreads).unwrap();
                 }
                 model
             })
@@ -229,6 +270,11 @@ fn csv_view(model: &Model) -> Model {
         .with_membership(model.membership())
         .unwrap()
         .with_point_names(model.point_names().to_vec())
+        .unwrap()
+        .with_spreads(model.spreads().map_or_else(
+            || vec![Spread::ZERO; model.shape().control_count()],
+            <[_]>::to_vec,
+        ))
         .unwrap()
 }
 
@@ -305,6 +351,12 @@ proptest! {
         if weights.is_some() {
             text.push_str(",Weight");
         }
+        let spreads = model.spreads();
+        if spreads.is_some() {
+            for axis in ["X", "Y", "Z"][..dimension].iter() {
+                text.push_str(&format!(",Spread_{axis}_Left,spread_{axis}_right"));
+            }
+        }
         text.push_str("\r\n");
         let positions: Vec<Vec<f64>> = match model.shape() {
             Shape::Planar(c) => c.control_points().iter().map(|p| p.position.to_vec()).collect(),
@@ -327,6 +379,12 @@ proptest! {
             if let Some(w) = weights {
                 cells.push(format!("{}", w[i]));
             }
+            if let Some(spreads) = spreads {
+                for axis in 0..dimension {
+                    cells.push(format!("{}", spreads[i].left[axis]));
+                    cells.push(format!("{}", spreads[i].right[axis]));
+                }
+            }
             text.push_str(&cells.join(" , "));
             text.push_str("\r\n");
         }
@@ -334,7 +392,13 @@ proptest! {
             .map_err(|e| TestCaseError::fail(format!("{e}\n{text}")))?;
         let mut expected = csv_view(&model);
         if !named {
-            expected = Model::new(model.shape().clone()).with_membership(membership).unwrap();
+            expected = Model::new(model.shape().clone())
+                .with_membership(membership)
+                .unwrap()
+                .with_spreads(
+                    spreads.map_or_else(|| vec![Spread::ZERO; model.shape().control_count()], <[_]>::to_vec),
+                )
+                .unwrap();
         }
         prop_assert_eq!(&first, &expected);
         for format in Format::ALL {

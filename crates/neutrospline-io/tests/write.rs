@@ -483,3 +483,89 @@ fn bezier_without_name() -> Model {
         .with_point_names([Some("C0"), Some("C1")])
         .unwrap()
 }
+
+/// A spatial NURBS with spreads: symmetric, asymmetric and none.
+fn fuzzy_nurbs() -> Model {
+    use neutrospline::Spread;
+    let curve = Nurbs::new(
+        vec![
+            point([0.0, 0.0, 0.0], d(1.0, 0.0, 0.0)),
+            point([1.0, 2.0, 0.0], d(0.5, 0.5, 0.0)),
+        ],
+        vec![1.0, 2.0],
+        knots(&[0.0, 0.0, 1.0, 1.0], 1, 2),
+    )
+    .unwrap();
+    Model::new(AnyCurve::Nurbs(curve))
+        .with_spreads(vec![
+            Spread::new([0.5, 0.0, 0.0], [0.5, 0.0, 0.0]),
+            Spread::new([0.25, 1.0, 0.0], [0.25, 3.0, 0.0]),
+        ])
+        .unwrap()
+}
+
+#[test]
+fn write_spreads_symmetric_or_asymmetric() {
+    let model = fuzzy_nurbs();
+    let toml = to_toml_string(&model);
+    assert!(
+        toml.ends_with(
+            "weight = 2.0\nspread_x = 0.25\nspread_y_left = 1.0\nspread_y_right = 3.0\n"
+        ),
+        "{toml}"
+    );
+    assert!(toml.contains("weight = 1.0\nspread_x = 0.5\n\n"), "{toml}");
+    let json = to_json_string(&model);
+    assert!(
+        json.contains(r#""weight": 1.0, "spread_x": 0.5 }"#),
+        "{json}"
+    );
+    let csv = to_csv_string(&model).unwrap();
+    assert_eq!(
+        csv,
+        "x,y,z,truth,indeterminacy,falsity,weight,spread_x,spread_y_left,spread_y_right\n\
+         0.0,0.0,0.0,1.0,0.0,0.0,1.0,0.5,0.0,0.0\n\
+         1.0,2.0,0.0,0.5,0.5,0.0,2.0,0.25,1.0,3.0\n"
+    );
+    for (format, text) in [(Format::Toml, &toml), (Format::Json, &json)] {
+        let back = parse("m", format, text.as_bytes(), &ReadOptions::default()).unwrap();
+        assert_eq!(back, model);
+        assert_eq!(back.spreads(), model.spreads());
+    }
+    let back = parse("m", Format::Csv, csv.as_bytes(), &model.csv_read_options()).unwrap();
+    assert_eq!(back, model);
+    // Without spreads, nothing changes: no spread key or column.
+    let crisp = Model::new(model.shape().clone());
+    assert_eq!(crisp.spreads(), None);
+    assert!(!to_toml_string(&crisp).contains("spread"));
+    assert!(!to_csv_string(&crisp).unwrap().contains("spread"));
+}
+
+#[test]
+fn model_spreads_are_checked() {
+    use neutrospline::Spread;
+    let model = fuzzy_nurbs();
+    let e = |spreads: Vec<Spread<3>>| model.clone().with_spreads(spreads).unwrap_err().to_string();
+    assert_eq!(
+        e(vec![Spread::ZERO]),
+        "1 spreads for 2 control points (give one spread per control point)"
+    );
+    assert_eq!(
+        e(vec![Spread::ZERO, Spread::symmetric([0.0, -1.0, 0.0])]),
+        "control point 1: left spread of y = -1 is not a finite number >= 0"
+    );
+    assert_eq!(
+        bezier()
+            .with_spreads(vec![Spread::ZERO, Spread::symmetric([0.0, 0.0, 1.0])])
+            .unwrap_err()
+            .to_string(),
+        "control point 1: a planar curve has no z to spread"
+    );
+    assert_eq!(
+        bezier_surface()
+            .with_spreads(vec![Spread::symmetric([1.0, 0.0, 0.0]); 4])
+            .unwrap_err()
+            .to_string(),
+        "control point 0: spreads apply to curves only, not to surfaces"
+    );
+}

@@ -25,6 +25,13 @@ pub(crate) struct DataCtx {
     pub at_parameters: bool,
 }
 
+/// The band view's curves: per alpha level (ascending), the lower and upper curves of the
+/// alpha-cut; and the centroid curve. Samples at the parameters of `Ctx::curve`.
+pub(crate) struct BandCtx {
+    pub levels: Vec<(f64, Vec<Pt>, Vec<Pt>)>,
+    pub centroid: Vec<Pt>,
+}
+
 /// Everything a view needs.
 pub(crate) struct Ctx<'a> {
     pub theme: Theme,
@@ -37,6 +44,8 @@ pub(crate) struct Ctx<'a> {
     pub caption: String,
     /// The data overlay, for the view that draws it (`None` for every other view).
     pub data: Option<DataCtx>,
+    /// The band view's curves (`None` for every other view).
+    pub band: Option<BandCtx>,
 }
 
 impl Ctx<'_> {
@@ -52,7 +61,17 @@ impl Ctx<'_> {
             .data
             .iter()
             .flat_map(|d| d.points.iter().chain(d.feet.iter()));
-        self.curve.iter().chain(self.controls.iter()).chain(data)
+        let band = self.band.iter().flat_map(|b| {
+            b.levels
+                .iter()
+                .flat_map(|(_, lo, hi)| lo.iter().chain(hi.iter()))
+                .chain(b.centroid.iter())
+        });
+        self.curve
+            .iter()
+            .chain(self.controls.iter())
+            .chain(data)
+            .chain(band)
     }
 
     /// (min, max) of coordinate `axis` over curve and control points.

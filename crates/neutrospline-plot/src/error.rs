@@ -5,7 +5,7 @@
 #[non_exhaustive]
 pub enum PlotError {
     /// A view name that [`View`](crate::View) does not know.
-    #[error("unknown view \"{name}\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, data)")]
+    #[error("unknown view \"{name}\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, data, band)")]
     UnknownView {
         /// The name given.
         name: String,
@@ -85,6 +85,18 @@ pub enum PlotError {
     /// The `data` view was asked for a model without data points.
     #[error("the data view needs data points (neutrospline plot MODEL --data DATA.csv, or neutrospline fit --plot)")]
     NoData,
+    /// The `band` view asked for of a surface.
+    #[error("the band view draws curves (spreads are given per control point of a curve); surfaces have no band")]
+    BandOnSurface,
+    /// An alpha level of the band view outside [0, 1].
+    #[error("alpha level {alpha} is outside [0, 1] (the band view draws alpha-cuts at levels in [0, 1])")]
+    InvalidAlpha {
+        /// The level given.
+        alpha: f64,
+    },
+    /// The fuzzy position of the curve cannot be cut (the core's message).
+    #[error("{0}")]
+    Fuzzy(String),
     /// Data points given to a surface, or the `data` view asked for of a surface.
     #[error("the data view draws curves; surfaces have no data overlay")]
     DataOnSurface,

@@ -5,8 +5,9 @@ use std::ops::Range;
 use std::sync::Arc;
 
 use neutrospline::{
-    uniform_parameter, AnyCurve, Bezier, ControlPoint, ControlPolygon, CurveKind, CurvePoint,
-    Evaluate, EvaluateSurface, NeutrosophicPoint, Surface, SurfaceKind,
+    alpha_cut, centroid_curve, uniform_parameter, AnyCurve, Bezier, ControlPoint, ControlPolygon,
+    CurveKind, CurvePoint, Evaluate, EvaluateSurface, NeutrosophicPoint, Spread, Surface,
+    SurfaceKind,
 };
 
 use crate::error::PlotError;
@@ -101,6 +102,41 @@ where
 
     fn at(&self, t: f64, index: usize) -> Result<Pt, PlotError> {
         to_pt(&self.0.evaluate(t)?, "curve point of data point", index)
+    }
+}
+
+/// A fuzzy curve that can be sampled at render time: its alpha-cut curves and its centroid
+/// curve, at the parameters of [`Sampler::sample`].
+pub(crate) trait BandSampler: Send + Sync {
+    /// The lower and upper curves of the alpha-cut, `n` samples each.
+    fn cut(&self, alpha: f64, n: usize) -> Result<(Vec<Pt>, Vec<Pt>), PlotError>;
+    /// The centroid curve, `n` samples.
+    fn centroid(&self, n: usize) -> Result<Vec<Pt>, PlotError>;
+}
+
+/// A curve with one spread per control point.
+struct FuzzyCurve<const D: usize> {
+    curve: AnyCurve<D>,
+    spreads: Vec<Spread<D>>,
+}
+
+impl<const D: usize> FuzzyCurve<D> {
+    fn sample(curve: &AnyCurve<D>, n: usize) -> Result<Vec<Pt>, PlotError> {
+        CurveSampler::<_, D>(curve.clone()).sample(n)
+    }
+}
+
+impl<const D: usize> BandSampler for FuzzyCurve<D> {
+    fn cut(&self, alpha: f64, n: usize) -> Result<(Vec<Pt>, Vec<Pt>), PlotError> {
+        let (lower, upper) = alpha_cut(&self.curve, &self.spreads, alpha)
+            .map_err(|e| PlotError::Fuzzy(e.to_string()))?;
+        Ok((Self::sample(&lower, n)?, Self::sample(&upper, n)?))
+    }
+
+    fn centroid(&self, n: usize) -> Result<Vec<Pt>, PlotError> {
+        let centroid = centroid_curve(&self.curve, &self.spreads)
+            .map_err(|e| PlotError::Fuzzy(e.to_string()))?;
+        Self::sample(&centroid, n)
     }
 }
 
@@ -240,6 +276,9 @@ pub struct PlotModel {
     names: Vec<String>,
     label: String,
     data: Option<DataOverlay>,
+    /// The fuzzy position of a curve (control point spreads, SPEC section 9), for the band
+    /// view; `None` draws the curve as crisp.
+    band: Option<Arc<dyn BandSampler>>,
 }
 
 impl fmt::Debug for PlotModel {
@@ -301,6 +340,7 @@ impl PlotModel {
             names: Vec::new(),
             label: CURVE_LABEL.to_string(),
             data: None,
+            band: None,
         })
     }
 
@@ -364,6 +404,7 @@ impl PlotModel {
             names: Vec::new(),
             label: CURVE_LABEL.to_string(),
             data: None,
+            band: None,
         })
     }
 
@@ -408,6 +449,7 @@ impl PlotModel {
             names: Vec::new(),
             label: label.to_string(),
             data: None,
+            band: None,
         })
     }
 
@@ -431,9 +473,17 @@ impl PlotModel {
     /// As [`PlotModel::from_any`] and [`PlotModel::from_surface`].
     pub fn from_model(model: &neutrospline_io::Model) -> Result<PlotModel, PlotError> {
         use neutrospline_io::Shape;
+        let zero = vec![Spread::ZERO; model.shape().control_count()];
+        let spreads = model.spreads().unwrap_or(&zero);
         let figure = match model.shape() {
-            Shape::Planar(c) => PlotModel::from_any(c)?,
-            Shape::Spatial(c) => PlotModel::from_any(c)?,
+            Shape::Planar(c) => PlotModel::from_any(c)?.with_band(FuzzyCurve {
+                curve: c.clone(),
+                spreads: spreads.iter().map(Spread::resize::<2>).collect(),
+            }),
+            Shape::Spatial(c) => PlotModel::from_any(c)?.with_band(FuzzyCurve {
+                curve: c.clone(),
+                spreads: spreads.to_vec(),
+            }),
             Shape::Surface(s) => PlotModel::from_surface(s)?,
         };
         let names = model.point_names();
@@ -597,6 +647,42 @@ impl PlotModel {
         &self.label
     }
 
+    /// With the fuzzy position of the curve, for the band view.
+    fn with_band(mut self, band: impl BandSampler + 'static) -> PlotModel {
+        self.band = Some(Arc::new(band));
+        self
+    }
+
+    /// The alpha-cut of the curve at `alpha` (lower and upper samples) and its centroid
+    /// curve, at the parameters of [`PlotModel::curve_points`]; a crisp curve (no spreads)
+    /// gives its own samples.
+    #[allow(clippy::type_complexity)]
+    pub(crate) fn band_points(
+        &self,
+        alphas: &[f64],
+        samples: usize,
+    ) -> Result<(Vec<(f64, Vec<Pt>, Vec<Pt>)>, Vec<Pt>), PlotError> {
+        match &self.band {
+            Some(band) => Ok((
+                alphas
+                    .iter()
+                    .map(|&a| band.cut(a, samples).map(|(lo, hi)| (a, lo, hi)))
+                    .collect::<Result<_, _>>()?,
+                band.centroid(samples)?,
+            )),
+            None => {
+                let crisp = self.curve_points(samples)?;
+                Ok((
+                    alphas
+                        .iter()
+                        .map(|&a| (a, crisp.clone(), crisp.clone()))
+                        .collect(),
+                    crisp,
+                ))
+            }
+        }
+    }
+
     pub(crate) fn controls(&self) -> &[Pt] {
         &self.controls
     }
@@ -643,6 +729,7 @@ impl<const D: usize> From<&Bezier<D>> for PlotModel {
             names: Vec::new(),
             label: BEZIER_LABEL.to_string(),
             data: None,
+            band: None,
         }
     }
 }

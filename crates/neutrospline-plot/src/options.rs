@@ -35,6 +35,8 @@ pub struct PlotOptions {
     elevation: f64,
     /// `None`: the default of the model's kind.
     samples: Option<usize>,
+    /// The alpha levels of the band view.
+    alphas: Vec<f64>,
 }
 
 impl Default for PlotOptions {
@@ -47,11 +49,31 @@ impl Default for PlotOptions {
             azimuth: PlotOptions::DEFAULT_AZIMUTH,
             elevation: PlotOptions::DEFAULT_ELEVATION,
             samples: None,
+            alphas: PlotOptions::DEFAULT_ALPHAS.to_vec(),
         }
     }
 }
 
 impl PlotOptions {
+    /// The alpha levels the band view draws by default.
+    pub const DEFAULT_ALPHAS: [f64; 3] = [0.0, 0.5, 1.0];
+
+    /// With these alpha levels for the band view (each in \[0, 1\]; order and repeats do
+    /// not matter; checked by [`PlotOptions::validate`]).
+    #[must_use]
+    pub fn with_alphas(mut self, alphas: impl IntoIterator<Item = f64>) -> PlotOptions {
+        self.alphas = alphas.into_iter().collect();
+        self
+    }
+
+    /// The alpha levels of the band view, ascending, without repeats.
+    pub fn alphas(&self) -> Vec<f64> {
+        let mut a = self.alphas.clone();
+        a.sort_by(f64::total_cmp);
+        a.dedup();
+        a
+    }
+
     /// Default image width in pixels.
     pub const DEFAULT_WIDTH: u32 = 1600;
     /// Default image height in pixels.
@@ -206,6 +228,9 @@ impl PlotOptions {
     /// [`PlotError::InvalidCamera`].
     pub fn validate(&self) -> Result<(), PlotError> {
         check_size(self.width, self.height)?;
+        if let Some(&alpha) = self.alphas.iter().find(|a| !(0.0..=1.0).contains(*a)) {
+            return Err(PlotError::InvalidAlpha { alpha });
+        }
         if !(PlotOptions::MIN_SAMPLES..=PlotOptions::MAX_SAMPLES).contains(&self.samples()) {
             return Err(PlotError::InvalidSamples {
                 samples: self.samples(),

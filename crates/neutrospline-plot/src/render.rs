@@ -2,7 +2,7 @@
 //! [`Ctx`] every view draws from, and hands it to the view's [`Figure`](crate::views::Figure)
 //! for the kind of model.
 
-use crate::ctx::{Ctx, DataCtx};
+use crate::ctx::{BandCtx, Ctx, DataCtx};
 use crate::error::PlotError;
 use crate::model::{PlotModel, NEAREST_SAMPLES};
 use crate::options::PlotOptions;
@@ -47,6 +47,9 @@ pub fn render_svg(
             return Err(PlotError::NoData);
         }
     }
+    if view == View::Band && model.is_surface() {
+        return Err(PlotError::BandOnSurface);
+    }
     if model.is_surface() {
         options.validate_surface()?;
     } else {
@@ -78,6 +81,12 @@ pub fn render_svg(
         Some(t) => t.to_string(),
         None => figure.title(model.label(), model.is_surface()),
     };
+    let band = if view == View::Band {
+        let (levels, centroid) = model.band_points(&options.alphas(), options.samples())?;
+        Some(BandCtx { levels, centroid })
+    } else {
+        None
+    };
     let ctx = Ctx {
         theme: Theme::new(options.width(), options.height()),
         options,
@@ -87,6 +96,7 @@ pub fn render_svg(
         title,
         caption: options.caption().unwrap_or("").to_string(),
         data,
+        band,
     };
     for axis in 0..model.dimension() {
         let (lo, hi) = ctx.extent(axis);

@@ -31,6 +31,8 @@ pub(crate) const KNOT: Color = Color(0xff, 0xff, 0xff);
 pub(crate) const RESIDUAL: Color = Color(0xcc, 0x33, 0x11);
 /// The lifted score curve (Paul Tol's bright green: apart from the three degree colours).
 pub(crate) const SCORE: Color = Color(0x22, 0x88, 0x33);
+/// The centroid curve of the band view (orange: apart from the blue bands and the grey curve).
+pub(crate) const CENTROID: Color = Color(0xdd, 0x77, 0x00);
 /// Background of the degree lanes of the plane view.
 pub(crate) const TRACK: Color = Color(0xe6, 0xe8, 0xeb);
 

@@ -9,7 +9,7 @@ use crate::error::PlotError;
 
 /// Which figure to draw. Names (for [`FromStr`] and [`Display`](fmt::Display)) are the
 /// lowercase variant names: `controls`, `truth`, `indeterminacy`, `falsity`, `all`, `plane`,
-/// `score`, `data`.
+/// `score`, `data`, `band`.
 ///
 /// | view | 2-D model (the paper's figures) | 3-D model | surface |
 /// |---|---|---|---|
@@ -18,6 +18,7 @@ use crate::error::PlotError;
 /// | `all` | Fig. 5: the three space curves in one box | three panels, one per degree, sharing a colour bar | three meshes, one per degree, sharing a colour bar |
 /// | `plane` | crisp curve with three bands along it whose widths are the degrees | the same bands along the curve's projection in the 3-D box | three heat maps of the degrees over the parameter domain (u, v), with knot lines |
 /// | `score` | the space curve `(x, y, score)` like Fig. 2-4, the score `(2 + T - I - F) / 3` of the degrees ([`neutrospline::Degrees::score`]) as the height, its control polygon lifted to the control points' scores | the 3-D curve coloured by the score, with a colour bar | the shaded mesh coloured by the score, with the control net and a colour bar |
+/// | `band` | the plane view of the fuzzy position (control point spreads, SPEC section 9): the region swept by the curve's alpha-cut at alpha = 0, 0.5 and 1 ([`PlotOptions::with_alphas`](crate::PlotOptions::with_alphas)), lighter for lower alpha, the crisp curve on top and the centroid curve dashed where it differs | the silhouette of the tube of alpha-cut boxes in the 3-D box | none: an error ([`PlotError::BandOnSurface`]) |
 /// | `data` | the curve fitted to measured data ([`PlotModel::with_data`](crate::PlotModel::with_data)) as a line on x-y axes, the data points as markers coloured by one degree (viridis, with a colour bar), a residual whisker from each point to its point of the curve | the same in the 3-D box, with the curve's shadow on the floor | none: an error ([`PlotError::DataOnSurface`]) |
 ///
 /// ```
@@ -29,7 +30,8 @@ use crate::error::PlotError;
 /// ```
 ///
 /// The `data` view needs a model with data points; without them it is an error
-/// ([`PlotError::NoData`]). [`View::MODEL`] lists the views that draw any model.
+/// ([`PlotError::NoData`]). [`View::MODEL`] lists the views that draw any model (not `band`,
+/// which draws curves only, nor `data`).
 ///
 /// More views may come: the enum is `#[non_exhaustive]`, so a `match` on it outside this crate
 /// needs a wildcard arm; [`View::ALL`] lists the views there are.
@@ -56,11 +58,14 @@ pub enum View {
     /// Measured data points next to the curve fitted to them, with residual whiskers
     /// ([`PlotModel::with_data`](crate::PlotModel::with_data)).
     Data,
+    /// The fuzzy position's band: the regions swept by the alpha-cuts of the curve whose
+    /// control points carry spreads, with the crisp and the centroid curve (curves only).
+    Band,
 }
 
 impl View {
-    /// Every view, in the paper's order, then `plane`, `score` and `data`.
-    pub const ALL: [View; 8] = [
+    /// Every view, in the paper's order, then `plane`, `score`, `data` and `band`.
+    pub const ALL: [View; 9] = [
         View::Controls,
         View::Truth,
         View::Indeterminacy,
@@ -69,6 +74,7 @@ impl View {
         View::Plane,
         View::Score,
         View::Data,
+        View::Band,
     ];
 
     /// The views that draw any model (every view but `data`, which needs data points), in
@@ -94,6 +100,7 @@ impl View {
             View::Plane => "plane",
             View::Score => "score",
             View::Data => "data",
+            View::Band => "band",
         }
     }
 
@@ -157,7 +164,7 @@ mod tests {
         let err = "Truth".parse::<View>().unwrap_err();
         assert_eq!(
             err.to_string(),
-            "unknown view \"Truth\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, data)"
+            "unknown view \"Truth\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, data, band)"
         );
         // The message lists every view, in the order of `View::ALL`.
         let names: Vec<&str> = View::ALL.iter().map(|v| v.name()).collect();

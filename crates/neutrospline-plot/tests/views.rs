@@ -84,7 +84,7 @@ fn check_svg(svg: &str, width: u32, height: u32) {
 
 #[test]
 fn views_names_parse() {
-    assert_eq!(View::ALL.len(), 8);
+    assert_eq!(View::ALL.len(), 9);
     assert_eq!(View::MODEL, View::ALL[..7]);
     for (name, view) in [
         ("controls", View::Controls),

@@ -103,6 +103,7 @@ mod degrees;
 mod derivative;
 mod example;
 pub mod fit;
+mod fuzzy;
 mod geometry;
 mod intersect;
 mod knots;
@@ -129,6 +130,7 @@ pub use degrees::{
 };
 pub use derivative::CurveDerivative;
 pub use example::{example1, EXAMPLE1_NAMES, EXAMPLE1_TABLE};
+pub use fuzzy::{alpha_cut, centroid_curve, FuzzyError, Side, Spread};
 pub use geometry::{
     ArcAverages, CurveGeometry, GeometryError, DEFAULT_ACCURACY, FINEST_ACCURACY, MAX_SUBINTERVALS,
 };

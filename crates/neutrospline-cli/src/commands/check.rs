@@ -16,7 +16,9 @@ use crate::shape::Shape;
 any), degree (curves) or degree_u and degree_v (surfaces), dimension, control points (with \
 rows x columns for surfaces), membership, knots (B-spline and NURBS; knots_u and knots_v for \
 surfaces), domain (domain_u and domain_v), weights (NURBS: min..max), and the truth, \
-indeterminacy and falsity ranges (min..max over the control points); for curves then the \
+indeterminacy and falsity ranges (min..max over the control points), the spreads' ranges \
+when a control point has a fuzzy position (`spread_x: left min..max, right min..max`, per \
+axis); for curves then the \
 length and the arc-length averages (1/L) * integral of q |C'(t)| dt of truth, indeterminacy, \
 falsity and score (2 + T - I - F) / 3, to 12 significant digits (relative accuracy 1e-12; \
 curves of at most 1000 control points and degree 30).\n\
@@ -117,6 +119,7 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
     // How the knots were given: one source per knot direction (u, then v for surfaces).
     let sources = model.knot_sources().to_vec();
     let source = |i: usize| sources.get(i).copied();
+    let spreads = model.spreads().map(<[_]>::to_vec);
     let shape = model.into_shape();
     let geometry = match &shape {
         Shape::Planar(c) => geometry_lines(c),
@@ -180,6 +183,22 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
             .zip(shape.degree_ranges())
         {
             writeln!(w, "{label}: {}..{}", number(range.min), number(range.max))?;
+        }
+        if let Some(spreads) = &spreads {
+            let range = |values: &mut dyn Iterator<Item = f64>| {
+                let (min, max) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                    (lo.min(v), hi.max(v))
+                });
+                format!("{}..{}", number(min), number(max))
+            };
+            for (axis, name) in ["x", "y", "z"][..shape.dimension()].iter().enumerate() {
+                writeln!(
+                    w,
+                    "spread_{name}: left {}, right {}",
+                    range(&mut spreads.iter().map(|s| s.left[axis])),
+                    range(&mut spreads.iter().map(|s| s.right[axis]))
+                )?;
+            }
         }
         for line in &geometry {
             writeln!(w, "{line}")?;

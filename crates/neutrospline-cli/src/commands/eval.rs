@@ -5,7 +5,9 @@ use std::path::PathBuf;
 
 use std::ops::Range;
 
-use neutrospline::{uniform_parameter, EvaluateSurface};
+use neutrospline::{
+    alpha_cut, centroid_curve, uniform_parameter, AnyCurve, Evaluate, EvaluateSurface, Spread,
+};
 
 use crate::commands::options::ModelArgs;
 use crate::input::{self, UsageError};
@@ -20,7 +22,9 @@ curves    t, x, y[, z], truth, indeterminacy, falsity; with --scores score, accu
 certainty; with --derivative the rates d/dt dx, dy[, dz], dtruth, dindeterminacy,\n            \
 dfalsity (--derivative 2 adds d2x, ..., d2falsity, --derivative 3 also d3x, ...,\n            \
 d3falsity); with --geometry arc_length (from the start of the domain) and curvature\n            \
-(empty in CSV, null in JSON, where |C'(t)| = 0)\n  \
+(empty in CSV, null in JSON, where |C'(t)| = 0); then with --alpha A the alpha-cut\n            \
+x_lo, x_hi, y_lo, y_hi[, z_lo, z_hi] of the fuzzy position (control point spreads),\n            \
+with --centroid its centroid x_centroid, y_centroid[, z_centroid]\n  \
 surfaces  u, v, x, y, z, truth, indeterminacy, falsity; with --scores score, accuracy,\n            \
 certainty; with --derivative the partial derivatives dx_du, dy_du, dz_du, dtruth_du,\n            \
 dindeterminacy_du, dfalsity_du, then dx_dv, ..., dfalsity_dv (--derivative 2 adds\n            \
@@ -100,6 +104,18 @@ pub struct EvalArgs {
     )]
     pub accuracy: f64,
 
+    /// Curves: add the alpha-cut of the fuzzy position at level A in [0, 1] as columns
+    /// x_lo, x_hi, y_lo, y_hi[, z_lo, z_hi]: the curves of the control points' cut ends
+    /// (spreads `spread_x`, ... in the file; without spreads both equal the curve)
+    #[arg(long, value_name = "A", value_parser = parse_alpha, allow_hyphen_values = true)]
+    pub alpha: Option<f64>,
+
+    /// Curves: add the centroid (defuzzified) curve of the fuzzy position as columns
+    /// x_centroid, y_centroid[, z_centroid]: the curve of the control points' centroids
+    /// x + (right - left) / 3
+    #[arg(long)]
+    pub centroid: bool,
+
     /// Output format: csv (a header row, then one row per parameter) or json (an array of
     /// objects keyed by column name)
     #[arg(long, value_enum, value_name = "FORMAT", default_value_t = TableFormat::Csv)]
@@ -140,6 +156,117 @@ fn parse_accuracy(text: &str) -> Result<f64, String> {
             "`{text}` is not a positive finite number (a relative accuracy such as 1e-12)"
         )),
         Err(_) => Err(format!("`{text}` is not a number")),
+    }
+}
+
+/// Parses `--alpha`: a number in [0, 1].
+fn parse_alpha(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(a) if (0.0..=1.0).contains(&a) => Ok(a),
+        _ => Err(format!(
+            "`{text}` is not a number in [0, 1] (the membership level of the alpha-cut: 0 is \
+             the widest band, 1 the crisp curve)"
+        )),
+    }
+}
+
+/// The fuzzy-position columns of a curve (`--alpha`, `--centroid`): the cut curves and the
+/// centroid curve, evaluated beside the crisp one.
+struct FuzzyColumns<const D: usize> {
+    cut: Option<(AnyCurve<D>, AnyCurve<D>)>,
+    centroid: Option<AnyCurve<D>>,
+}
+
+impl<const D: usize> FuzzyColumns<D> {
+    fn new(
+        curve: &AnyCurve<D>,
+        spreads: &[Spread<D>],
+        alpha: Option<f64>,
+        centroid: bool,
+    ) -> anyhow::Result<Self> {
+        Ok(FuzzyColumns {
+            cut: alpha.map(|a| alpha_cut(curve, spreads, a)).transpose()?,
+            centroid: centroid
+                .then(|| centroid_curve(curve, spreads))
+                .transpose()?,
+        })
+    }
+
+    fn names(&self) -> Vec<String> {
+        let axes = &["x", "y", "z"][..D];
+        let mut names = Vec::new();
+        if self.cut.is_some() {
+            for a in axes {
+                names.push(format!("{a}_lo"));
+                names.push(format!("{a}_hi"));
+            }
+        }
+        if self.centroid.is_some() {
+            names.extend(axes.iter().map(|a| format!("{a}_centroid")));
+        }
+        names
+    }
+
+    fn push(&self, t: f64, row: &mut Vec<Option<f64>>) -> anyhow::Result<()> {
+        if let Some((lower, upper)) = &self.cut {
+            let lo = lower.evaluate(t)?.position;
+            let hi = upper.evaluate(t)?.position;
+            for k in 0..D {
+                row.push(Some(lo[k]));
+                row.push(Some(hi[k]));
+            }
+        }
+        if let Some(centroid) = &self.centroid {
+            row.extend(centroid.evaluate(t)?.position.map(Some));
+        }
+        Ok(())
+    }
+}
+
+/// The fuzzy columns of a planar or spatial curve.
+enum Fuzzy {
+    Planar(FuzzyColumns<2>),
+    Spatial(FuzzyColumns<3>),
+}
+
+impl Fuzzy {
+    fn new(
+        model: &neutrospline_io::Model,
+        alpha: Option<f64>,
+        centroid: bool,
+    ) -> anyhow::Result<Self> {
+        let count = model.shape().control_count();
+        let spreads: Vec<Spread<3>> = model
+            .spreads()
+            .map_or_else(|| vec![Spread::ZERO; count], <[_]>::to_vec);
+        let resized = |s: &Spread<3>| s.resize::<2>();
+        Ok(match model.shape() {
+            Shape::Planar(c) => Fuzzy::Planar(FuzzyColumns::new(
+                c,
+                &spreads.iter().map(resized).collect::<Vec<_>>(),
+                alpha,
+                centroid,
+            )?),
+            Shape::Spatial(c) => Fuzzy::Spatial(FuzzyColumns::new(c, &spreads, alpha, centroid)?),
+            Shape::Surface(_) => anyhow::bail!("internal error: fuzzy columns of a surface"),
+        })
+    }
+
+    fn names(&self) -> Vec<String> {
+        match self {
+            Fuzzy::Planar(f) => f.names(),
+            Fuzzy::Spatial(f) => f.names(),
+        }
+    }
+
+    fn push(&self, param: Param, row: &mut Vec<Option<f64>>) -> anyhow::Result<()> {
+        let Param::T(t) = param else {
+            anyhow::bail!("a curve takes one parameter t")
+        };
+        match self {
+            Fuzzy::Planar(f) => f.push(t, row),
+            Fuzzy::Spatial(f) => f.push(t, row),
+        }
     }
 }
 
@@ -231,8 +358,27 @@ fn row_count(args: &EvalArgs, shape: &Shape) -> u64 {
 /// `--geometry` for a surface), an
 /// evaluation error, or a write error.
 pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
-    let shape = input::read_model(&args.file, &args.model)?.into_shape();
+    let model = input::read_model(&args.file, &args.model)?;
     let file = input::label(&args.file);
+    let fuzzy = if args.alpha.is_some() || args.centroid {
+        if model.shape().is_surface() {
+            let option = if args.alpha.is_some() {
+                "--alpha"
+            } else {
+                "--centroid"
+            };
+            return Err(UsageError(format!(
+                "{option} applies only to curves ({file} holds a {}; spreads are given per \
+                 control point of a curve)",
+                model.kind()
+            ))
+            .into());
+        }
+        Some(Fuzzy::new(&model, args.alpha, args.centroid)?)
+    } else {
+        None
+    };
+    let shape = model.into_shape();
     if args.normal && !shape.is_surface() {
         return Err(UsageError(format!(
             "--normal applies only to surfaces ({file} holds a {} curve)",
@@ -262,7 +408,10 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         geometry: args.geometry,
         accuracy: args.accuracy,
     };
-    let columns = shape.columns(extras);
+    let mut columns = shape.columns(extras);
+    if let Some(fuzzy) = &fuzzy {
+        columns.extend(fuzzy.names());
+    }
     let sampler = shape.sampler(extras);
     let limit = crate::limits::current().max_samples;
     let count = row_count(args, &shape);
@@ -286,7 +435,10 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         progress.tick();
         let cannot =
             |e: &dyn std::fmt::Display| anyhow::anyhow!("{file}: cannot evaluate at {param}: {e}");
-        let row = sampler.row(param).map_err(|e| cannot(&e))?;
+        let mut row = sampler.row(param).map_err(|e| cannot(&e))?;
+        if let Some(fuzzy) = &fuzzy {
+            fuzzy.push(param, &mut row).map_err(|e| cannot(&e))?;
+        }
         // Never write an infinity or NaN: the core reports overflow, this is a safety net.
         if let Some((column, value)) = columns
             .iter()

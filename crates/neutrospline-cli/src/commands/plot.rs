@@ -39,6 +39,24 @@ impl FigureFormat {
     }
 }
 
+/// The alpha levels of `--alpha`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AlphaLevels(pub Vec<f64>);
+
+/// Parses `--alpha A1,A2,...`: numbers in [0, 1].
+fn parse_alphas(text: &str) -> Result<AlphaLevels, String> {
+    text.split(',')
+        .map(|item| match item.trim().parse::<f64>() {
+            Ok(a) if (0.0..=1.0).contains(&a) => Ok(a),
+            _ => Err(format!(
+                "`{}` is not a number in [0, 1] (alpha levels of the band view, such as 0,0.5,1)",
+                item.trim()
+            )),
+        })
+        .collect::<Result<_, _>>()
+        .map(AlphaLevels)
+}
+
 fn parse_view(text: &str) -> Result<View, String> {
     text.parse::<View>().map_err(|e| e.to_string())
 }
@@ -58,7 +76,10 @@ plane          the crisp curve with three bands along it whose widths follow the
 score          the space curve (x(t), y(t), score(t)) above the crisp curve, score =\n                 \
 (2 + T - I - F) / 3 (3-D models and surfaces: coloured by the score)\n  \
 data           the data points of --data coloured by a degree over the curve, with residual\n                 \
-whiskers (curves only)\n\
+whiskers (curves only)\n  \
+band           the fuzzy position (control point spreads): the regions swept by the\n                 \
+alpha-cuts at alpha = 0, 0.5, 1 (or --alpha), lighter for lower alpha, the crisp curve\n                 \
+on top, the centroid curve dashed (curves only; 3-D: the tube's silhouette)\n\
 The format follows the extension of OUT: .svg or .png.")]
 pub struct PlotArgs {
     /// The model file: .csv, .toml or .json; `-` reads CSV from standard input
@@ -69,8 +90,8 @@ pub struct PlotArgs {
     #[arg(short = 'o', long = "output", value_name = "OUT")]
     pub output: PathBuf,
 
-    /// Which view to draw: controls, truth, indeterminacy, falsity, all, plane, score, data
-    /// (default: data with --data, else all)
+    /// Which view to draw: controls, truth, indeterminacy, falsity, all, plane, score, data,
+    /// band (default: data with --data, else all)
     #[arg(long, value_name = "VIEW", value_parser = parse_view)]
     pub view: Option<View>,
 
@@ -107,6 +128,10 @@ pub struct PlotArgs {
     /// 3-D camera: angle above the horizontal plane, in degrees
     #[arg(long, value_name = "DEG", default_value_t = PlotOptions::DEFAULT_ELEVATION, allow_hyphen_values = true)]
     pub elevation: f64,
+
+    /// The alpha levels of the band view, A1,A2,... each in [0, 1] (default 0,0.5,1)
+    #[arg(long, value_name = "A1,A2,...", value_parser = parse_alphas, allow_hyphen_values = true)]
+    pub alpha: Option<AlphaLevels>,
 
     /// Points sampled along a curve (surfaces: samples per direction of the mesh; default 40)
     #[arg(long, value_name = "N")]
@@ -149,6 +174,9 @@ pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
         .with_camera(args.azimuth, args.elevation);
     if let Some(n) = args.samples {
         options = options.with_samples(n);
+    }
+    if let Some(AlphaLevels(alphas)) = &args.alpha {
+        options = options.with_alphas(alphas.iter().copied());
     }
     options.validate().map_err(|e| UsageError(e.to_string()))?;
     let model = input::read_model(&args.file, &args.model)?;

@@ -3,7 +3,10 @@
 use neutrospline::{DegreeError, DegreeKind, Degrees, Membership};
 
 use super::Walker;
-use crate::parsed::{duplicate_rule, Field, Origin, PointRecord};
+use crate::parsed::{
+    check_spread_value, duplicate_rule, spread_from_values, spread_hint, spread_keys_problem,
+    Field, Origin, PointRecord, SpreadKey,
+};
 use crate::settings::Kind;
 use crate::tree::{Node, Value};
 use crate::InputError;
@@ -23,15 +26,37 @@ impl Walker<'_> {
         };
         let mut nodes: [Option<&Node>; 8] = Default::default();
         let mut keys: [Option<&str>; 8] = Default::default();
+        let mut spread_nodes: [Option<&Node>; 9] = Default::default();
+        let mut spread_keys: [Option<&str>; 9] = Default::default();
+        let mut first_spread_span = None;
         for entry in entries {
+            if let Some(key) = SpreadKey::from_name(&entry.key, false) {
+                if spread_keys[key.index()].is_some() {
+                    return Err(self.error(
+                        entry.key_span.as_ref(),
+                        Some(path.clone()),
+                        format!(
+                            "key `{}` repeats key `{}` ({})",
+                            entry.key,
+                            entry.key,
+                            duplicate_rule()
+                        ),
+                    ));
+                }
+                first_spread_span = first_spread_span.or(entry.key_span.as_ref());
+                spread_keys[key.index()] = Some(&entry.key);
+                spread_nodes[key.index()] = Some(&entry.value);
+                continue;
+            }
             let Some(field) = Field::from_name(&entry.key, false) else {
                 return Err(self.error(
                     entry.key_span.as_ref(),
                     Some(path.clone()),
                     format!(
-                        "unknown key `{}` (known keys: {})",
+                        "unknown key `{}` (known keys: {}){}",
                         entry.key,
-                        Field::known_list()
+                        Field::known_list(),
+                        spread_hint(&entry.key)
                     ),
                 ));
             };
@@ -98,6 +123,24 @@ impl Walker<'_> {
                 ))
             }
             None => {}
+        }
+        if let Some(problem) = spread_keys_problem(&spread_keys, position.len(), kind.is_surface())
+        {
+            return Err(self.error(
+                first_spread_span,
+                Some(path.clone()),
+                format!("key {problem}"),
+            ));
+        }
+        let mut spreads = [None::<f64>; 9];
+        for (k, node) in spread_nodes.iter().enumerate() {
+            if let Some(node) = node {
+                let field = format!("{path}.{}", spread_keys[k].unwrap_or_default());
+                let value = self.number(node, &field)?;
+                let value = check_spread_value(value)
+                    .map_err(|m| self.error(node.span.as_ref(), Some(field), m))?;
+                spreads[k] = Some(value);
+            }
         }
         // Any number, NaN and infinities included: the core's NURBS weight rule judges it.
         let weight = match node(Field::Weight) {
@@ -174,6 +217,7 @@ impl Walker<'_> {
                 field: Some(path),
             },
             weight_origin,
+            spread: spread_from_values(&spreads),
         })
     }
 }

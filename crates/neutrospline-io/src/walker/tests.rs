@@ -253,3 +253,67 @@ fn model_parse_invalid_utf8() {
         "m.json:2: invalid UTF-8 (the file must be UTF-8 encoded)"
     );
 }
+
+#[test]
+fn model_parse_spreads_symmetric_and_asymmetric() {
+    let text = "kind = \"bezier\"\n\n[[control_points]]\nx = 0\ny = 0\ntruth = 1\nI = 0\nF = 0\n\
+                spread_x = 0.5\nspread_y_left = 1\nspread_y_right = 2\n\n[[control_points]]\nx = 1\n\
+                y = 1\ntruth = 1\nI = 0\nF = 0\n";
+    let m = parse_toml("m.toml", text.as_bytes(), &ReadOptions::default()).unwrap();
+    assert_eq!(m.points[0].spread.left, [0.5, 1.0, 0.0]);
+    assert_eq!(m.points[0].spread.right, [0.5, 2.0, 0.0]);
+    assert_eq!(m.points[1].spread, neutrospline::Spread::ZERO);
+    let json = r#"{"kind": "bezier", "control_points": [
+        {"x": 0, "y": 0, "z": 1, "T": 1, "I": 0, "F": 0, "spread_z": 3, "spread_x_right": 0.25}]}"#;
+    let m = parse_json("m.json", json.as_bytes(), &ReadOptions::default()).unwrap();
+    assert_eq!(m.points[0].spread.left, [0.0, 0.0, 3.0]);
+    assert_eq!(m.points[0].spread.right, [0.25, 0.0, 3.0]);
+}
+
+#[test]
+fn model_parse_spread_errors_are_located() {
+    let point = |extra: &str| {
+        format!("kind = \"bezier\"\n\n[[control_points]]\nx = 0\ny = 0\ntruth = 1\nI = 0\nF = 0\n{extra}")
+    };
+    let cases: &[(&str, &str)] = &[
+        (
+            "spread_x = 1\nspread_x_left = 2\n",
+            "m.toml:9: control_points[0]: key `spread_x` and `spread_x_left` are both given (give the symmetric spread `spread_x` or the asymmetric `spread_x_left` and `spread_x_right` for one axis, not both)",
+        ),
+        (
+            "spread_y = -1\n",
+            "m.toml:9: control_points[0].spread_y: spread -1 is negative (a spread is a distance >= 0)",
+        ),
+        (
+            "spread_y_right = nan\n",
+            "m.toml:9: control_points[0].spread_y_right: value NaN is not a finite number (NaN and infinities are not allowed)",
+        ),
+        (
+            "spread_z = 1\n",
+            "m.toml:9: control_points[0]: key `spread_z` does not apply to a curve without z (the spread of z needs a z coordinate)",
+        ),
+        (
+            "spread_w = 1\n",
+            "m.toml:9: control_points[0]: unknown key `spread_w` (known keys: x, y, z, truth (T), indeterminacy (I), falsity (F), weight, name) (spreads: spread_x, spread_y, spread_z, or spread_x_left and spread_x_right and so on)",
+        ),
+        (
+            "spread_x = \"wide\"\n",
+            "m.toml:9: control_points[0].spread_x: expected a number, found the string \"wide\"",
+        ),
+    ];
+    for (extra, want) in cases {
+        assert_eq!(toml_err(&point(extra)), *want, "{extra}");
+    }
+    let surface = "kind = \"bezier-surface\"\nrows = 1\ncols = 1\n\n[[control_points]]\nx = 0\n\
+                   y = 0\nz = 0\ntruth = 1\nI = 0\nF = 0\nspread_x = 1\n";
+    assert_eq!(
+        toml_err(surface),
+        "m.toml:12: control_points[0]: key `spread_x` does not apply to surfaces (spreads apply to curves only)"
+    );
+    assert_eq!(
+        json_err(
+            r#"{"kind": "bezier", "control_points": [{"x": 0, "y": 0, "T": 1, "I": 0, "F": 0, "spread_x": -0.5}]}"#
+        ),
+        "m.json: control_points[0].spread_x: spread -0.5 is negative (a spread is a distance >= 0)"
+    );
+}

@@ -6,6 +6,7 @@
 //! implementing [`Figure`], and its arm in [`figure`].
 
 mod all;
+mod band;
 mod controls;
 mod data;
 mod plane;
@@ -51,5 +52,6 @@ pub(crate) fn figure(view: View) -> &'static dyn Figure {
         View::Plane => &plane::Plane,
         View::Score => &single::Single(Quantity::Score),
         View::Data => &data::Data,
+        View::Band => &band::Band,
     }
 }

@@ -11,7 +11,7 @@ FloatArray = npt.NDArray[np.float64]
 PathLike = Union[str, "os.PathLike[str]"]
 Membership = Literal["neutrosophic", "intuitionistic", "fuzzy"]
 ViewName = Literal[
-    "all", "controls", "truth", "indeterminacy", "falsity", "plane", "score", "data"
+    "all", "controls", "truth", "indeterminacy", "falsity", "plane", "score", "data", "band"
 ]
 Triple = Tuple[float, float, float]
 
