@@ -5,11 +5,12 @@
 
 use std::path::PathBuf;
 
+use neutrospline::alpha_cut;
 use neutrospline::{
     AnyCurve, BSpline as BSplineCurve, BatchOptions, BatchParams, Bezier as BezierCurve, Bounded,
     BoundingBox, ControlPoint, ControlPolygon, CurveBatch, CurveDerivative, CurveError,
     CurveGeometry, CurveKind, Degrees, Derivative, Elevate, EvalError, Evaluate, KnotVector,
-    Membership, NearestPoint, Nurbs as NurbsCurve, Split,
+    Membership, NearestPoint, Nurbs as NurbsCurve, Split, Spread,
 };
 use neutrospline_io::{Model, Shape};
 use pyo3::prelude::*;
@@ -522,6 +523,29 @@ fn under_rule<const D: usize>(curve: AnyCurve<D>, membership: Membership) -> PyR
     rebuilt.map_err(invalid)
 }
 
+/// The spreads of the control points of `crisp` whose alpha = 0 cut curves are `lower` and
+/// `upper` (the same kind and knots): `left = crisp - lower`, `right = upper - crisp` per axis
+/// (non-negative up to rounding, which is clamped).
+fn spreads_between<const D: usize>(
+    crisp: &AnyCurve<D>,
+    lower: &AnyCurve<D>,
+    upper: &AnyCurve<D>,
+) -> Vec<Spread<3>> {
+    let (c, lo, hi) = (
+        crisp.control_points(),
+        lower.control_points(),
+        upper.control_points(),
+    );
+    c.iter()
+        .zip(lo.iter().zip(&hi))
+        .map(|(p, (l, h))| {
+            let left = core::array::from_fn(|a| (p.position[a] - l.position[a]).max(0.0));
+            let right = core::array::from_fn(|a| (h.position[a] - p.position[a]).max(0.0));
+            Spread::<D>::new(left, right).resize::<3>()
+        })
+        .collect()
+}
+
 /// A Bézier curve as the B-spline it is (clamped knots `0^(n+1) 1^(n+1)`).
 fn bezier_as_bspline<const D: usize>(curve: &BezierCurve<D>) -> PyResult<BSplineCurve<D>> {
     let points = curve.control_points();
@@ -541,15 +565,43 @@ impl Curve {
         }
     }
 
-    /// A new curve object from a curve derived from this one's (same metadata).
-    fn derived<const D: usize>(&self, py: Python<'_>, curve: AnyCurve<D>) -> PyResult<Py<PyAny>>
+    /// New curve objects from the curves `op` derives from this one's `source` (same
+    /// metadata). `split`, `elevate` and `insert_knot` map the control points by convex
+    /// combinations, so applied to the alpha = 0 cut curves they give the derived curves' cut
+    /// curves (docs/model.md section 9): a fuzzy model's spreads are carried along.
+    fn derive<const D: usize>(
+        &self,
+        py: Python<'_>,
+        source: &AnyCurve<D>,
+        op: impl Fn(&AnyCurve<D>) -> PyResult<Vec<AnyCurve<D>>>,
+    ) -> PyResult<Vec<Py<PyAny>>>
     where
         Shape: From<AnyCurve<D>>,
     {
         let (model, _) = self.model()?;
-        let curve = under_rule(curve, model.membership())?;
-        let model = model::derived(model, curve)?;
-        model_into_py(py, model)
+        let crisp = op(source)?;
+        let spreads: Vec<Option<Vec<Spread<3>>>> = match model.spreads() {
+            None => vec![None; crisp.len()],
+            Some(spreads) => {
+                let local: Vec<Spread<D>> = spreads.iter().map(Spread::resize).collect();
+                let (lower, upper) = alpha_cut(source, &local, 0.0).map_err(invalid)?;
+                let (lower, upper) = (op(&lower)?, op(&upper)?);
+                crisp
+                    .iter()
+                    .zip(lower.iter().zip(&upper))
+                    .map(|(c, (lo, hi))| Some(spreads_between(c, lo, hi)))
+                    .collect()
+            }
+        };
+        crisp
+            .into_iter()
+            .zip(spreads)
+            .map(|(curve, spreads)| {
+                let curve = under_rule(curve, model.membership())?;
+                let model = model::derived(model, curve, spreads)?;
+                model_into_py(py, model)
+            })
+            .collect()
     }
 
     fn evaluate_impl(
@@ -685,11 +737,11 @@ impl Curve {
     /// (True, True)
     fn split<'py>(&self, py: Python<'py>, t: f64) -> PyResult<Bound<'py, PyTuple>> {
         let (_, curve) = self.model()?;
-        let (left, right) = on_dim!(curve, c => {
-            let (left, right) = c.curve.split(t).map_err(|e| invalid_at("t", e))?;
-            (self.derived(py, left)?, self.derived(py, right)?)
-        });
-        PyTuple::new(py, [left, right])
+        let pieces = on_dim!(curve, c => self.derive(py, &c.curve, |c| {
+            let (left, right) = c.split(t).map_err(|e| invalid_at("t", e))?;
+            Ok(vec![left, right])
+        }))?;
+        PyTuple::new(py, pieces)
     }
 
     /// Raises the degree `times` times (default once); the curve is unchanged.
@@ -700,13 +752,14 @@ impl Curve {
     #[pyo3(signature = (times = 1))]
     fn elevate(&self, py: Python<'_>, times: usize) -> PyResult<Py<PyAny>> {
         let (_, curve) = self.model()?;
-        on_dim!(curve, c => {
-            let mut elevated = c.curve.clone();
+        let mut curves = on_dim!(curve, c => self.derive(py, &c.curve, |c| {
+            let mut elevated = c.clone();
             for _ in 0..times {
                 elevated = elevated.elevate();
             }
-            self.derived(py, elevated)
-        })
+            Ok(vec![elevated])
+        }))?;
+        Ok(curves.remove(0))
     }
 
     /// Inserts the knot `u` `times` times (default once); the curve is unchanged. A Bézier
@@ -719,8 +772,8 @@ impl Curve {
     #[pyo3(signature = (u, times = 1))]
     fn insert_knot(&self, py: Python<'_>, u: f64, times: usize) -> PyResult<Py<PyAny>> {
         let (_, curve) = self.model()?;
-        on_dim!(curve, c => {
-            let mut spline = c.curve.clone();
+        let mut curves = on_dim!(curve, c => self.derive(py, &c.curve, |c| {
+            let mut spline = c.clone();
             for _ in 0..times {
                 spline = match spline {
                     AnyCurve::Bezier(b) => bezier_as_bspline(&b)?.insert_knot(u).map(AnyCurve::from),
@@ -729,8 +782,9 @@ impl Curve {
                 }
                 .map_err(|e| invalid_at("u", e))?;
             }
-            self.derived(py, spline)
-        })
+            Ok(vec![spline])
+        }))?;
+        Ok(curves.remove(0))
     }
 
     /// The tight bounding box of the curve: an array of shape (2, dimension + 3), the rows

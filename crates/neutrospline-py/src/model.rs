@@ -49,8 +49,13 @@ pub fn model(shape: impl Into<Shape>, membership: Membership, meta: Meta) -> PyR
 }
 
 /// A model like `like` (membership, name, description; point names when the count is
-/// unchanged) for a new shape derived from its shape by `split`, `elevate` and the like.
-pub fn derived(like: &Model, shape: impl Into<Shape>) -> PyResult<Model> {
+/// unchanged) for a new shape derived from its shape by `split`, `elevate` and the like, with
+/// the derived shape's `spreads` when the model is fuzzy.
+pub fn derived(
+    like: &Model,
+    shape: impl Into<Shape>,
+    spreads: Option<Vec<neutrospline::Spread<3>>>,
+) -> PyResult<Model> {
     let shape = shape.into();
     let names = like.point_names();
     let meta = Meta {
@@ -59,7 +64,11 @@ pub fn derived(like: &Model, shape: impl Into<Shape>) -> PyResult<Model> {
         point_names: (names.len() == shape.control_count() && names.iter().any(Option::is_some))
             .then(|| names.to_vec()),
     };
-    model(shape, like.membership(), meta)
+    let model = model(shape, like.membership(), meta)?;
+    match spreads {
+        Some(spreads) => model.with_spreads(spreads).map_err(invalid),
+        None => Ok(model),
+    }
 }
 
 /// Control points from `positions` (`(n, dimension)`, or `rows x cols` grids when `grid`) and

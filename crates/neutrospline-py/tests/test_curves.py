@@ -507,3 +507,32 @@ def test_intersections_match_intersect(cli, root, tmp_path):
     np.testing.assert_allclose(loop(t_a)[:2], loop(t_b)[:2], rtol=0, atol=1e-12)
     with pytest.raises(ns.ModelError, match="the curves overlap"):
         line.intersections(line)
+
+
+# ---- fuzzy positions (spreads) ----
+
+
+def test_spreads_are_carried_through_operations(cli, root, tmp_path):
+    path = root / "examples" / "fuzzy-bspline.toml"
+    curve = ns.load(path)
+    band = tmp_path / "band.svg"
+    assert run_cli(cli, "plot", path, "--view", "band", "-o", band).returncode == 0
+    assert curve.to_svg("band") == band.read_text()
+    assert pickle.loads(pickle.dumps(curve)) == curve
+
+    def cut(model_path, t, alpha):
+        _, table = cli_table(cli, "eval", model_path, "--at", t, "--alpha", alpha)
+        return table[0, -4:]  # x_lo, x_hi, y_lo, y_hi
+
+    left, right = curve.split(0.4)
+    elevated = curve.elevate()
+    inserted = curve.insert_knot(0.55, times=2)
+    for k, (piece, t_piece, t_whole) in enumerate(
+        [(left, 0.2, 0.2), (right, 0.7, 0.7), (elevated, 0.3, 0.3), (inserted, 0.6, 0.6)]
+    ):
+        saved = tmp_path / f"piece{k}.toml"
+        piece.save(saved)
+        for alpha in ["0", "0.5"]:
+            np.testing.assert_allclose(
+                cut(saved, t_piece, alpha), cut(path, t_whole, alpha), rtol=0, atol=1e-12
+            )
