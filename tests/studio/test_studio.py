@@ -74,7 +74,7 @@ def test_edit_save_and_export(start_studio, page, binary, out_dir, tmp_path):
     curve_before = page.locator("#views [data-view=plane] polyline.curve").get_attribute("points")
     table_before = page.locator("#table-host tbody tr").nth(5).inner_text()
     sx, sy, _, _ = page.evaluate("window.studio.frame()")
-    svg_box = page.locator("#views [data-view=plane] svg").bounding_box()
+    svg_box = page.locator("#views [data-view=plane] .figure svg").bounding_box()
     per_pixel = 1600 / svg_box["width"]  # figure pixels per screen pixel
     drag_handle(page, 1, 80, 60)
     moved = model(page)["control_points"][1]
@@ -448,7 +448,7 @@ def test_drop_broken_file_3d_curve_and_surface(start_studio, page, binary, out_d
     page.wait_for_function("window.studio.model().kind === 'bezier-surface'")
     idle(page)
     for view in ["plane", "controls", "truth", "indeterminacy", "falsity", "all"]:
-        assert page.locator(f"[data-view={view}] svg").count() == 1, view
+        assert page.locator(f"[data-view={view}] .figure svg").count() == 1, view
     page.select_option("#point-index", "5")
     page.fill("input[name=truth]", "0.25")
     page.press("input[name=truth]", "Enter")

@@ -1,10 +1,11 @@
 //! 2-D axes at equal scale on x and y (or filling the frame, for data views): for the flat views of curves and the heat maps over a
 //! surface's parameter domain.
 
+use crate::drawing::Painter;
 use crate::font::text_width;
 use crate::layout::{text_centred, Rect, TEXT_BOX};
 use crate::model::Pt;
-use crate::svg::{Anchor, Style, SvgWriter, TextStyle};
+use crate::svg::{Anchor, Style, TextStyle};
 use crate::theme::{self, Theme};
 use crate::ticks::{padded, ticks_inside, widen_degenerate, Ticks};
 
@@ -224,8 +225,8 @@ impl Axes2 {
     }
 
     /// Opens a group clipped to the frame (id `plot-clip`); close it with
-    /// [`SvgWriter::end_group`].
-    pub(crate) fn begin_clip(&self, svg: &mut SvgWriter) {
+    /// [`Painter::end_group`].
+    pub(crate) fn begin_clip(&self, svg: &mut Painter) {
         let f = self.frame;
         svg.begin_clip("plot-clip", f.x, f.y, f.w, f.h);
     }
@@ -244,7 +245,7 @@ impl Axes2 {
     }
 
     /// The frame: a dark rectangle around the plot.
-    pub(crate) fn draw_frame(&self, svg: &mut SvgWriter, theme: &Theme) {
+    pub(crate) fn draw_frame(&self, svg: &mut Painter, theme: &Theme) {
         let f = self.frame;
         svg.rect(
             f.x,
@@ -256,7 +257,7 @@ impl Axes2 {
     }
 
     /// Background, grid, frame, ticks and axis labels.
-    pub(crate) fn draw(&self, svg: &mut SvgWriter, theme: &Theme) {
+    pub(crate) fn draw(&self, svg: &mut Painter, theme: &Theme) {
         let f = self.frame;
         svg.begin_group("axes");
         let grid = Style::stroke(theme::GRID, theme.grid_w()).square();

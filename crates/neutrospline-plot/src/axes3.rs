@@ -2,9 +2,10 @@
 //! into an area (away from a legend), and the projection of data points to pixels.
 
 use crate::camera::{Camera, Projected};
+use crate::drawing::Painter;
 use crate::font::text_width;
 use crate::layout::{support, text_centred, Rect, TEXT_BOX};
-use crate::svg::{Style, SvgWriter, TextStyle};
+use crate::svg::{Style, TextStyle};
 use crate::theme::{self, Theme};
 use crate::ticks::{ticks_inside, Ticks};
 
@@ -450,7 +451,7 @@ impl Axes3 {
     }
 
     /// Back panes, grid, tick edges, tick labels and axis labels.
-    pub(crate) fn draw(&self, svg: &mut SvgWriter, theme: &Theme) {
+    pub(crate) fn draw(&self, svg: &mut Painter, theme: &Theme) {
         svg.begin_group("axes3d");
         let t = &self.ticks;
         let b = self.back.map(|s| s);

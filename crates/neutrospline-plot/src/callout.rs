@@ -4,9 +4,10 @@
 
 use neutrospline::DegreeKind;
 
+use crate::drawing::Painter;
 use crate::font::text_width;
 use crate::layout::{support, text_centred, Rect, BASELINE_FROM_CENTRE};
-use crate::svg::{Anchor, Color, Style, SvgWriter, TextStyle};
+use crate::svg::{Anchor, Color, Style, TextStyle};
 use crate::theme::{self, Theme};
 
 /// Above this many control points the callouts shrink to three bars and the name.
@@ -131,7 +132,7 @@ impl Keep {
 /// Places and draws callouts for points at pixel positions `at` with degrees `deg` and
 /// names, keeping clear of what `keep` says.
 pub(crate) fn draw_callouts(
-    svg: &mut SvgWriter,
+    svg: &mut Painter,
     theme: &Theme,
     at: &[(f64, f64)],
     deg: &[[f64; 3]],
@@ -219,7 +220,7 @@ pub(crate) fn draw_callouts(
     svg.end_group();
 }
 
-fn draw_box(svg: &mut SvgWriter, theme: &Theme, dims: &Dims, c: &Content, rect: Rect) {
+fn draw_box(svg: &mut Painter, theme: &Theme, dims: &Dims, c: &Content, rect: Rect) {
     svg.rect(
         rect.x,
         rect.y,
@@ -325,7 +326,7 @@ fn name_style(theme: &Theme) -> TextStyle {
 /// Draws `names` of the points at `at` (pixels), each placed by [`place_names`], in a group
 /// `point-names`.
 pub(crate) fn draw_names(
-    svg: &mut SvgWriter,
+    svg: &mut Painter,
     theme: &Theme,
     at: &[(f64, f64)],
     names: &[String],

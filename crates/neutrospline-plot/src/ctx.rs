@@ -7,10 +7,10 @@ use crate::axes2::Axes2;
 use crate::axes3::{box_lengths3, Axes3};
 use crate::callout::{draw_names, Keep, Obstacle};
 use crate::camera::Camera;
+use crate::drawing::{Drawing, Painter};
 use crate::layout::{Frame, Legend, LegendPlace, Rect};
 use crate::model::Pt;
 use crate::options::PlotOptions;
-use crate::svg::SvgWriter;
 use crate::theme::Theme;
 use crate::ticks::{padded, ticks_loose, Ticks};
 
@@ -100,7 +100,7 @@ impl Ctx<'_> {
     /// `bounds` and off `avoid`.
     pub(crate) fn names(
         &self,
-        svg: &mut SvgWriter,
+        svg: &mut Painter,
         at: &[(f64, f64)],
         obstacles: Vec<Obstacle>,
         bounds: Rect,
@@ -120,8 +120,8 @@ impl Ctx<'_> {
         &self,
         legend: Legend,
         place: LegendPlace,
-        draw: impl FnOnce(&mut SvgWriter, Rect, Option<Rect>),
-    ) -> String {
+        draw: impl FnOnce(&mut Painter, Rect, Option<Rect>),
+    ) -> Drawing {
         let frame = self.frame(legend, place);
         let mut svg = self.svg();
         draw(&mut svg, frame.plot, frame.legend_rect(&self.theme));
@@ -130,8 +130,8 @@ impl Ctx<'_> {
     }
 
     /// An empty SVG document of the figure's size and title.
-    pub(crate) fn svg(&self) -> SvgWriter {
-        SvgWriter::new(self.options.width(), self.options.height(), &self.title)
+    pub(crate) fn svg(&self) -> Painter {
+        Painter::new(self.options.width(), self.options.height(), &self.title)
     }
 
     /// 2-D axes x, y for the model in `plot`, with `inner` pixels kept free around the data.
@@ -181,7 +181,7 @@ impl Ctx<'_> {
 
     /// The 3-D box fitted into `area` clear of `avoid` (as [`Ctx::axes3`], about five ticks
     /// per axis), drawn into `svg`.
-    pub(crate) fn draw_box(&self, svg: &mut SvgWriter, area: Rect, avoid: Option<Rect>) -> Axes3 {
+    pub(crate) fn draw_box(&self, svg: &mut Painter, area: Rect, avoid: Option<Rect>) -> Axes3 {
         let axes = self.axes3(area, 5, avoid);
         axes.draw(svg, &self.theme);
         axes

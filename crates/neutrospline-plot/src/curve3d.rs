@@ -5,16 +5,17 @@
 use crate::axes3::Axes3;
 use crate::callout::{obstacles_of, Obstacle};
 use crate::ctx::Ctx;
+use crate::drawing::Painter;
 use crate::layout::{ColorBar, Entry, Legend, Rect};
 use crate::quantity::Quantity;
 use crate::scene::{flat, Scene, Shape, CHUNK, DATA, FLOOR, OVER};
-use crate::svg::{Color, Style, SvgWriter};
+use crate::svg::{Color, Style};
 use crate::theme::{self, marker_style, Marker, Theme};
 
 /// The 3-D box of a curve fitted into `area` clear of `avoid` and drawn into `svg`, and a
 /// scene that holds the curve's shadow on the floor of the box, for the rest of the drawing.
 pub(crate) fn shadowed_box(
-    svg: &mut SvgWriter,
+    svg: &mut Painter,
     ctx: &Ctx,
     area: Rect,
     avoid: Option<Rect>,
@@ -186,7 +187,7 @@ pub(crate) fn coloured_legend(th: &Theme, bar: &str, noun: &str, notes: Vec<Stri
 
 /// One box of a 3-D model coloured by `q`, drawn into `svg`.
 pub(crate) fn coloured_panel(
-    svg: &mut SvgWriter,
+    svg: &mut Painter,
     ctx: &Ctx,
     area: Rect,
     q: Quantity,

@@ -4,10 +4,11 @@
 
 use neutrospline::DegreeKind;
 
+use crate::drawing::Painter;
 use crate::layout::{median_spacing, Rect};
 use crate::model::Pt;
 use crate::scene::flat;
-use crate::svg::{Color, Style, SvgWriter};
+use crate::svg::{Color, Style};
 use crate::theme::{self, Theme};
 
 /// Most control points drawn with their degrees; larger nets show a regular subset.
@@ -56,7 +57,7 @@ fn glyph_unit(th: &Theme, at: &[(f64, f64)]) -> f64 {
 }
 
 /// A control point drawn as its degrees: a white box centred on it with three bars.
-fn glyph(svg: &mut SvgWriter, th: &Theme, c: (f64, f64), deg: [f64; 3], u: f64) {
+fn glyph(svg: &mut Painter, th: &Theme, c: (f64, f64), deg: [f64; 3], u: f64) {
     let (w, h) = glyph_size(u);
     let (x, y) = (c.0 - w / 2.0, c.1 - h / 2.0);
     svg.rect(
@@ -91,7 +92,7 @@ fn glyph(svg: &mut SvgWriter, th: &Theme, c: (f64, f64), deg: [f64; 3], u: f64) 
 /// `controls`, their degrees) as degree glyphs, far to near so that nearer ones overlap
 /// farther ones, shrunk where they crowd. Returns the rectangles they cover.
 pub(crate) fn draw_glyphs(
-    svg: &mut SvgWriter,
+    svg: &mut Painter,
     th: &Theme,
     pts: &[(f64, f64, f64)],
     controls: &[Pt],

@@ -2,8 +2,9 @@
 
 use neutrospline::DegreeKind;
 
+use crate::drawing::Painter;
 use crate::font::text_width;
-use crate::svg::{Anchor, Color, Style, SvgWriter, TextStyle};
+use crate::svg::{Anchor, Color, Style, TextStyle};
 use crate::theme::{self, Marker, Theme};
 use crate::ticks::ticks_inside;
 
@@ -120,7 +121,7 @@ pub(crate) fn wrap(text: &str, size: f64, max_w: f64, bold: bool) -> Vec<String>
 }
 
 /// Draws text centred on `c` (horizontally and on the cap height).
-pub(crate) fn text_centred(svg: &mut SvgWriter, c: (f64, f64), text: &str, style: &TextStyle) {
+pub(crate) fn text_centred(svg: &mut Painter, c: (f64, f64), text: &str, style: &TextStyle) {
     let style = style.clone().anchor(Anchor::Middle);
     if style.rotate == 0.0 {
         svg.text(c.0, c.1 + BASELINE_FROM_CENTRE * style.size, text, &style);
@@ -158,7 +159,7 @@ pub(crate) fn median_spacing(at: &[(f64, f64)]) -> f64 {
 }
 
 /// Draws a marker of the given shape.
-pub(crate) fn marker(svg: &mut SvgWriter, shape: Marker, c: (f64, f64), r: f64, style: &Style) {
+pub(crate) fn marker(svg: &mut Painter, shape: Marker, c: (f64, f64), r: f64, style: &Style) {
     match shape {
         Marker::Circle => svg.circle(c, r, style),
         Marker::Square => {
@@ -353,7 +354,7 @@ impl Legend {
     }
 
     /// Draws the legend with its top-left corner at `(x, y)`.
-    pub(crate) fn draw(&self, svg: &mut SvgWriter, theme: &Theme, x: f64, y: f64) {
+    pub(crate) fn draw(&self, svg: &mut Painter, theme: &Theme, x: f64, y: f64) {
         if self.is_empty() {
             return;
         }
@@ -442,7 +443,7 @@ impl Legend {
     }
 }
 
-fn draw_swatch(svg: &mut SvgWriter, theme: &Theme, swatch: &Swatch, x: f64, cy: f64, w: f64) {
+fn draw_swatch(svg: &mut Painter, theme: &Theme, swatch: &Swatch, x: f64, cy: f64, w: f64) {
     match swatch {
         Swatch::Line {
             color,
@@ -585,7 +586,7 @@ impl Frame {
     }
 
     /// Draws the title, caption and legend.
-    pub(crate) fn draw(&self, svg: &mut SvgWriter, theme: &Theme) {
+    pub(crate) fn draw(&self, svg: &mut Painter, theme: &Theme) {
         let m = theme.margin();
         if !self.title.is_empty() {
             svg.begin_group("title");

@@ -8,6 +8,7 @@ use crate::axes3::{box_lengths, Axes3};
 use crate::callout::obstacles_of;
 use crate::ctx::Ctx;
 use crate::curve3d::drop_line;
+use crate::drawing::Drawing;
 use crate::layout::{Entry, Legend, LegendPlace};
 use crate::model::Pt;
 use crate::quantity::Quantity;
@@ -37,7 +38,7 @@ pub(crate) fn figure(
     mut entries: Vec<Entry>,
     notes: Vec<String>,
     look: &Look,
-) -> String {
+) -> Drawing {
     let th = &ctx.theme;
     let floor = kinds.first().map_or("degree", |q| q.noun());
     entries.push(Entry::line(

@@ -6,12 +6,13 @@
 
 use crate::axes3::Axes3;
 use crate::ctx::Ctx;
+use crate::drawing::Painter;
 use crate::layout::{ColorBar, Entry, Legend, Rect, Swatch};
 use crate::model::Mesh;
 use crate::net::draw_net;
 use crate::quantity::Quantity;
 use crate::scene::{Scene, Shape, DATA};
-use crate::svg::{Color, Style, SvgWriter};
+use crate::svg::{Color, Style};
 use crate::theme::{self, Marker, Theme};
 
 /// Light direction in camera coordinates (right, up, towards the viewer): from the upper
@@ -221,7 +222,7 @@ fn mesh_line(th: &Theme) -> f64 {
 
 /// Draws the mesh seen in `axes`, painted by `paint`, far to near into `svg`, in a group
 /// `mesh` whose seams and iso-parameter lines are [`mesh_line`] wide.
-pub(crate) fn draw_mesh(svg: &mut SvgWriter, th: &Theme, axes: &Axes3, mesh: &Mesh, paint: Paint) {
+pub(crate) fn draw_mesh(svg: &mut Painter, th: &Theme, axes: &Axes3, mesh: &Mesh, paint: Paint) {
     let mut scene = Scene::default();
     add_mesh(&mut scene, th, axes, mesh, paint);
     svg.begin_mesh_group("mesh", mesh_line(th));
@@ -261,7 +262,7 @@ pub(crate) fn quantity_legend(th: &Theme, bar: &str, noun: &str, notes: Vec<Stri
 
 /// One box with the mesh coloured by `q` and the control net.
 pub(crate) fn mesh_panel(
-    svg: &mut SvgWriter,
+    svg: &mut Painter,
     ctx: &Ctx,
     mesh: &Mesh,
     grid: (usize, usize),

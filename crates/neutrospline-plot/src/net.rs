@@ -5,9 +5,10 @@ use neutrospline::uniform_parameter;
 
 use crate::axes3::Axes3;
 use crate::ctx::Ctx;
+use crate::drawing::Painter;
 use crate::layout::median_spacing;
 use crate::model::Mesh;
-use crate::svg::{Color, Style, SvgWriter};
+use crate::svg::{Color, Style};
 use crate::theme::{self, marker_style, Theme};
 
 /// Pieces each control-net edge is cut into to find where the surface hides it.
@@ -90,7 +91,7 @@ impl Occluder {
 /// The control net over the mesh: dashed edges and markers, in full where they are in front
 /// of the surface and faint where it hides them. `fill` gives each point's colour.
 fn add_net(
-    svg: &mut SvgWriter,
+    svg: &mut Painter,
     th: &Theme,
     pts: &[(f64, f64, f64)],
     grid: (usize, usize),
@@ -170,7 +171,7 @@ fn add_net(
 /// edges in `color` and markers filled by `fill` (a colour per point), faint where the
 /// surface hides them. Returns the points on screen (pixels and depth), row by row.
 pub(crate) fn draw_net(
-    svg: &mut SvgWriter,
+    svg: &mut Painter,
     ctx: &Ctx,
     axes: &Axes3,
     mesh: &Mesh,

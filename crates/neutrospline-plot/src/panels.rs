@@ -10,8 +10,9 @@
 use neutrospline::DegreeKind;
 
 use crate::ctx::Ctx;
+use crate::drawing::{Drawing, Painter};
 use crate::layout::{text_centred, Frame, Legend, LegendPlace, Rect};
-use crate::svg::{SvgWriter, TextStyle};
+use crate::svg::TextStyle;
 use crate::theme::{self, Theme};
 
 /// Shortest colour bar, relative to the default length, before an arrangement is rejected.
@@ -188,8 +189,8 @@ pub(crate) fn figure(
     ctx: &Ctx,
     legend: &Legend,
     fit: &dyn Fn(Rect) -> (f64, f64),
-    panel: &dyn Fn(&mut SvgWriter, Rect, DegreeKind),
-) -> String {
+    panel: &dyn Fn(&mut Painter, Rect, DegreeKind),
+) -> Drawing {
     let th = &ctx.theme;
     let layout = choose(th, legend, &|legend, place| ctx.frame(legend, place), fit);
     let mut svg = ctx.svg();
@@ -202,7 +203,7 @@ pub(crate) fn figure(
 }
 
 /// The title of one panel of an `all` figure: the degree's name in its colour.
-fn panel_title(svg: &mut SvgWriter, th: &Theme, at: (f64, f64), kind: DegreeKind) {
+fn panel_title(svg: &mut Painter, th: &Theme, at: (f64, f64), kind: DegreeKind) {
     text_centred(
         svg,
         at,

@@ -1,8 +1,9 @@
-//! From a model and options to SVG text: checks the options, samples the model, builds the
+//! From a model and options to a drawing (and SVG text): checks the options, samples the model, builds the
 //! [`Ctx`] every view draws from, and hands it to the view's [`Figure`](crate::views::Figure)
 //! for the kind of model.
 
 use crate::ctx::{BandCtx, Ctx, DataCtx};
+use crate::drawing::Drawing;
 use crate::error::PlotError;
 use crate::model::{PlotModel, NEAREST_SAMPLES};
 use crate::options::PlotOptions;
@@ -10,7 +11,8 @@ use crate::theme::Theme;
 use crate::view::View;
 use crate::views;
 
-/// Draws `view` of `model` as an SVG document.
+/// Draws `view` of `model` as an SVG document: [`render_drawing`] written out with
+/// [`Drawing::to_svg`].
 ///
 /// The SVG is `options.width()` x `options.height()` pixels, uses only the bundled font
 /// (family "DejaVu Sans", generic fallback `sans-serif`), and depends only on its inputs:
@@ -18,12 +20,7 @@ use crate::views;
 /// are real SVG `<text>` elements.
 ///
 /// # Errors
-/// The `data` view of a surface ([`PlotError::DataOnSurface`]) or of a model without data
-/// ([`PlotError::NoData`]), invalid options ([`PlotOptions::validate`]; for a surface
-/// [`PlotOptions::validate_surface`], which caps the samples per direction), a curve or
-/// surface that cannot be sampled
-/// ([`PlotError::Evaluate`], [`PlotError::NotFinite`]), or coordinates whose range overflows
-/// ([`PlotError::RangeTooLarge`]).
+/// As [`render_drawing`].
 ///
 /// # Examples
 /// ```
@@ -38,6 +35,36 @@ pub fn render_svg(
     view: View,
     options: &PlotOptions,
 ) -> Result<String, PlotError> {
+    render_drawing(model, view, options).map(|d| d.to_svg())
+}
+
+/// Draws `view` of `model` as a [`Drawing`]: the figure's primitives in drawing order, which
+/// [`Drawing::to_svg`] writes as the figure file and [`Drawing::to_display_list`] as a list
+/// for an HTML canvas.
+///
+/// # Errors
+/// The `data` view of a surface ([`PlotError::DataOnSurface`]) or of a model without data
+/// ([`PlotError::NoData`]), invalid options ([`PlotOptions::validate`]; for a surface
+/// [`PlotOptions::validate_surface`], which caps the samples per direction), a curve or
+/// surface that cannot be sampled
+/// ([`PlotError::Evaluate`], [`PlotError::NotFinite`]), or coordinates whose range overflows
+/// ([`PlotError::RangeTooLarge`]).
+///
+/// # Examples
+/// ```
+/// use neutrospline_plot::{render_drawing, render_svg, PlotModel, PlotOptions, View};
+/// let model = PlotModel::from(&neutrospline::example1());
+/// let options = PlotOptions::default();
+/// let drawing = render_drawing(&model, View::All, &options)?;
+/// assert_eq!(drawing.to_svg(), render_svg(&model, View::All, &options)?);
+/// assert!(drawing.to_display_list().starts_with("{\"width\":1600,\"height\":1200,"));
+/// # Ok::<(), neutrospline_plot::PlotError>(())
+/// ```
+pub fn render_drawing(
+    model: &PlotModel,
+    view: View,
+    options: &PlotOptions,
+) -> Result<Drawing, PlotError> {
     let figure = views::figure(view);
     if figure.draws_data() {
         if model.is_surface() {
@@ -109,10 +136,10 @@ pub fn render_svg(
             });
         }
     }
-    let svg = match (&mesh, model.grid()) {
+    let drawing = match (&mesh, model.grid()) {
         (Some(mesh), Some(grid)) => figure.surface(&ctx, mesh, grid),
         _ if model.dimension() == 2 => figure.curve_2d(&ctx),
         _ => figure.curve_3d(&ctx),
     };
-    Ok(svg)
+    Ok(drawing)
 }

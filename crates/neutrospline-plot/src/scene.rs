@@ -1,7 +1,8 @@
 //! Depth-sorted drawing of 3-D primitives (painter's algorithm).
 
+use crate::drawing::Painter;
 use crate::layout::marker;
-use crate::svg::{Color, Style, SvgWriter};
+use crate::svg::{Color, Style};
 use crate::theme::Marker;
 
 /// Segments per depth-sorted chunk of a curve.
@@ -78,7 +79,7 @@ impl Scene {
         }
     }
 
-    pub(crate) fn draw(mut self, svg: &mut SvgWriter) {
+    pub(crate) fn draw(mut self, svg: &mut Painter) {
         self.prims.sort_by(|a, b| {
             a.layer
                 .cmp(&b.layer)
@@ -96,7 +97,7 @@ pub(crate) fn flat(pts: &[(f64, f64, f64)]) -> Vec<(f64, f64)> {
     pts.iter().map(|p| (p.0, p.1)).collect()
 }
 
-fn draw_shape(svg: &mut SvgWriter, shape: Shape) {
+fn draw_shape(svg: &mut Painter, shape: Shape) {
     match shape {
         Shape::Polyline(pts, style) => svg.polyline(&pts, &style),
         Shape::Polygon(pts, style) => svg.polygon(&pts, &style),

@@ -1,4 +1,5 @@
-//! A small deterministic SVG writer.
+//! Colours and styles of the primitives, and the SVG encoding of a [`Drawing`]: the figure
+//! file.
 //!
 //! Coordinates and lengths are written with at most two decimals (trailing zeros removed,
 //! `-0` written as `0`); a non-finite number is written as `0`, so no output ever contains
@@ -8,6 +9,7 @@ use std::fmt::Write as _;
 
 use neutrospline::uniform_parameter;
 
+use crate::drawing::{Drawing, Element};
 use crate::font::FONT_FAMILY_CSS;
 
 /// An sRGB colour.
@@ -28,7 +30,7 @@ impl Color {
         Color(f(self.0, other.0), f(self.1, other.1), f(self.2, other.2))
     }
 
-    fn hex(self) -> String {
+    pub(crate) fn hex(self) -> String {
         format!("#{:02x}{:02x}{:02x}", self.0, self.1, self.2)
     }
 }
@@ -230,16 +232,34 @@ impl TextStyle {
     }
 }
 
-/// An SVG document being written.
-pub(crate) struct SvgWriter {
+impl Drawing {
+    /// The drawing as an SVG document: the figure file.
+    ///
+    /// Deterministic (equal drawings give equal bytes); `<text>` elements use the bundled
+    /// font's family ([`FONT_FAMILY`](crate::FONT_FAMILY)).
+    pub fn to_svg(&self) -> String {
+        let mut w = SvgText {
+            out: String::with_capacity(64 * 1024),
+            depth: 1,
+        };
+        w.header(self.width, self.height, &self.title);
+        for element in &self.elements {
+            w.element(element);
+        }
+        w.out.push_str("</svg>\n");
+        w.out
+    }
+}
+
+/// The SVG text of a drawing being written, one element per line, indented by group depth.
+struct SvgText {
     out: String,
     depth: usize,
 }
 
-impl SvgWriter {
-    /// Starts a document of `width` x `height` pixels with a white background.
-    pub(crate) fn new(width: u32, height: u32, title: &str) -> SvgWriter {
-        let mut out = String::with_capacity(64 * 1024);
+impl SvgText {
+    fn header(&mut self, width: u32, height: u32, title: &str) {
+        let out = &mut self.out;
         out.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
         let _ = writeln!(
             out,
@@ -253,7 +273,6 @@ impl SvgWriter {
             out,
             "<rect x=\"0\" y=\"0\" width=\"{width}\" height=\"{height}\" fill=\"#ffffff\"/>"
         );
-        SvgWriter { out, depth: 1 }
     }
 
     fn indent(&mut self) {
@@ -262,241 +281,187 @@ impl SvgWriter {
         }
     }
 
-    /// Opens a `<g>` with the given class (for structure and for tests), closed by `end_group`.
-    pub(crate) fn begin_group(&mut self, class: &str) {
-        self.indent();
-        let _ = writeln!(self.out, "<g class=\"{}\">", escape(class));
-        self.depth += 1;
-    }
-
-    /// Opens a `<g>` whose children inherit the given stroke width, round joins and no fill
-    /// unless they set their own: compact output for the many faces and edges of a mesh
-    /// ([`SvgWriter::face`], [`SvgWriter::edge`]).
-    pub(crate) fn begin_mesh_group(&mut self, class: &str, stroke_width: f64) {
-        self.indent();
-        let _ = writeln!(
-            self.out,
-            "<g class=\"{}\" fill=\"none\" stroke-width=\"{}\" stroke-linejoin=\"round\">",
-            escape(class),
-            num(stroke_width)
-        );
-        self.depth += 1;
-    }
-
-    /// A polygon filled and outlined in `color` (the outline, of the inherited width, closes
-    /// the hairline seams between neighbouring faces).
-    pub(crate) fn face(&mut self, points: &[(f64, f64)], color: Color) {
-        if points.len() < 3 {
-            return;
+    fn element(&mut self, element: &Element) {
+        if matches!(element, Element::End) {
+            self.depth = self.depth.saturating_sub(1);
         }
         self.indent();
-        self.out.push_str("<polygon");
-        self.points_attr(points);
-        let hex = color.hex();
-        let _ = writeln!(self.out, " fill=\"{hex}\" stroke=\"{hex}\"/>");
-    }
-
-    /// A line in `color` of the inherited width.
-    pub(crate) fn edge(&mut self, a: (f64, f64), b: (f64, f64), color: Color) {
-        self.indent();
-        let _ = writeln!(
-            self.out,
-            "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\"/>",
-            num(a.0),
-            num(a.1),
-            num(b.0),
-            num(b.1),
-            color.hex()
-        );
-    }
-
-    pub(crate) fn end_group(&mut self) {
-        self.depth = self.depth.saturating_sub(1);
-        self.indent();
-        self.out.push_str("</g>\n");
-    }
-
-    /// Opens a `<clipPath>`-clipped group limited to the rectangle; closed by `end_group`.
-    pub(crate) fn begin_clip(&mut self, id: &str, x: f64, y: f64, w: f64, h: f64) {
-        self.indent();
-        let _ = writeln!(
-            self.out,
-            "<clipPath id=\"{id}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath>",
-            num(x),
-            num(y),
-            num(w.max(0.0)),
-            num(h.max(0.0))
-        );
-        self.indent();
-        let _ = writeln!(self.out, "<g clip-path=\"url(#{id})\">");
-        self.depth += 1;
-    }
-
-    pub(crate) fn rect(&mut self, x: f64, y: f64, w: f64, h: f64, style: &Style) {
-        self.indent();
-        let _ = write!(
-            self.out,
-            "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"",
-            num(x),
-            num(y),
-            num(w.max(0.0)),
-            num(h.max(0.0))
-        );
-        style.write_attrs(&mut self.out);
-        self.out.push_str("/>\n");
-    }
-
-    pub(crate) fn line(&mut self, a: (f64, f64), b: (f64, f64), style: &Style) {
-        self.indent();
-        let _ = write!(
-            self.out,
-            "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\"",
-            num(a.0),
-            num(a.1),
-            num(b.0),
-            num(b.1)
-        );
-        style.write_attrs(&mut self.out);
-        self.out.push_str("/>\n");
-    }
-
-    fn points_attr(&mut self, points: &[(f64, f64)]) {
-        self.out.push_str(" points=\"");
-        for (i, p) in points.iter().enumerate() {
-            if i > 0 {
-                self.out.push(' ');
+        let out = &mut self.out;
+        match element {
+            Element::Group(class) => {
+                let _ = writeln!(out, "<g class=\"{}\">", escape(class));
+                self.depth += 1;
             }
-            let _ = write!(self.out, "{},{}", num(p.0), num(p.1));
+            Element::MeshGroup(class, width) => {
+                let _ = writeln!(
+                    out,
+                    "<g class=\"{}\" fill=\"none\" stroke-width=\"{}\" stroke-linejoin=\"round\">",
+                    escape(class),
+                    num(*width)
+                );
+                self.depth += 1;
+            }
+            Element::Clip(id, [x, y, w, h]) => {
+                let _ = writeln!(
+                    out,
+                    "<clipPath id=\"{id}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath>",
+                    num(*x),
+                    num(*y),
+                    num(w.max(0.0)),
+                    num(h.max(0.0))
+                );
+                self.indent();
+                let _ = writeln!(self.out, "<g clip-path=\"url(#{id})\">");
+                self.depth += 1;
+            }
+            Element::End => out.push_str("</g>\n"),
+            Element::Rect([x, y, w, h], style) => {
+                let _ = write!(
+                    out,
+                    "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"",
+                    num(*x),
+                    num(*y),
+                    num(w.max(0.0)),
+                    num(h.max(0.0))
+                );
+                style.write_attrs(out);
+                out.push_str("/>\n");
+            }
+            Element::Line(a, b, style) => {
+                let _ = write!(
+                    out,
+                    "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\"",
+                    num(a.0),
+                    num(a.1),
+                    num(b.0),
+                    num(b.1)
+                );
+                style.write_attrs(out);
+                out.push_str("/>\n");
+            }
+            Element::Polyline(points, style) | Element::Polygon(points, style) => {
+                out.push_str(if matches!(element, Element::Polygon(..)) {
+                    "<polygon"
+                } else {
+                    "<polyline"
+                });
+                points_attr(out, points);
+                style.write_attrs(out);
+                out.push_str("/>\n");
+            }
+            Element::Circle(c, r, style) => {
+                let _ = write!(
+                    out,
+                    "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"",
+                    num(c.0),
+                    num(c.1),
+                    num(r.max(0.0))
+                );
+                style.write_attrs(out);
+                out.push_str("/>\n");
+            }
+            Element::Text(x, y, text, style) => text_element(out, *x, *y, text, style),
+            Element::Face(points, color) => {
+                out.push_str("<polygon");
+                points_attr(out, points);
+                let hex = color.hex();
+                let _ = writeln!(out, " fill=\"{hex}\" stroke=\"{hex}\"/>");
+            }
+            Element::Edge(a, b, color) => {
+                let _ = writeln!(
+                    out,
+                    "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\"/>",
+                    num(a.0),
+                    num(a.1),
+                    num(b.0),
+                    num(b.1),
+                    color.hex()
+                );
+            }
+            Element::Gradient(id, stops) => {
+                let _ = writeln!(
+                    out,
+                    "<defs><linearGradient id=\"{id}\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">"
+                );
+                for (i, c) in stops.iter().enumerate() {
+                    self.indent();
+                    let _ = writeln!(
+                        self.out,
+                        " <stop offset=\"{}\" stop-color=\"{}\"/>",
+                        num(uniform_parameter(i, stops.len(), 0.0..1.0)),
+                        c.hex()
+                    );
+                }
+                self.indent();
+                self.out.push_str("</linearGradient></defs>\n");
+            }
+            Element::GradientRect(id, [x, y, w, h]) => {
+                let _ = writeln!(
+                    out,
+                    "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"url(#{id})\"/>",
+                    num(*x),
+                    num(*y),
+                    num(w.max(0.0)),
+                    num(h.max(0.0))
+                );
+            }
         }
-        self.out.push('"');
     }
+}
 
-    pub(crate) fn polyline(&mut self, points: &[(f64, f64)], style: &Style) {
-        if points.is_empty() {
-            return;
+fn points_attr(out: &mut String, points: &[(f64, f64)]) {
+    out.push_str(" points=\"");
+    for (i, p) in points.iter().enumerate() {
+        if i > 0 {
+            out.push(' ');
         }
-        if points.len() == 1 {
-            // A zero-length path still shows its round cap as a dot.
-            self.line(points[0], points[0], style);
-            return;
-        }
-        self.indent();
-        self.out.push_str("<polyline");
-        self.points_attr(points);
-        style.write_attrs(&mut self.out);
-        self.out.push_str("/>\n");
+        let _ = write!(out, "{},{}", num(p.0), num(p.1));
     }
+    out.push('"');
+}
 
-    pub(crate) fn polygon(&mut self, points: &[(f64, f64)], style: &Style) {
-        if points.len() < 3 {
-            return;
-        }
-        self.indent();
-        self.out.push_str("<polygon");
-        self.points_attr(points);
-        style.write_attrs(&mut self.out);
-        self.out.push_str("/>\n");
+fn text_element(out: &mut String, x: f64, y: f64, text: &str, style: &TextStyle) {
+    let _ = write!(out, "<text x=\"{}\" y=\"{}\"", num(x), num(y));
+    if let Some(class) = &style.class {
+        let _ = write!(out, " class=\"{}\"", escape(class));
     }
-
-    pub(crate) fn circle(&mut self, c: (f64, f64), r: f64, style: &Style) {
-        self.indent();
+    let _ = write!(
+        out,
+        " font-size=\"{}\" fill=\"{}\"",
+        num(style.size),
+        style.color.hex()
+    );
+    if style.bold {
+        out.push_str(" font-weight=\"bold\"");
+    }
+    match style.anchor {
+        Anchor::Start => {}
+        Anchor::Middle => out.push_str(" text-anchor=\"middle\""),
+        Anchor::End => out.push_str(" text-anchor=\"end\""),
+    }
+    if style.rotate != 0.0 {
         let _ = write!(
-            self.out,
-            "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"",
-            num(c.0),
-            num(c.1),
-            num(r.max(0.0))
-        );
-        style.write_attrs(&mut self.out);
-        self.out.push_str("/>\n");
-    }
-
-    /// Writes `text` with its baseline at `y`; `x` is the anchor (start, middle or end).
-    pub(crate) fn text(&mut self, x: f64, y: f64, text: &str, style: &TextStyle) {
-        self.indent();
-        let _ = write!(self.out, "<text x=\"{}\" y=\"{}\"", num(x), num(y));
-        if let Some(class) = &style.class {
-            let _ = write!(self.out, " class=\"{}\"", escape(class));
-        }
-        let _ = write!(
-            self.out,
-            " font-size=\"{}\" fill=\"{}\"",
-            num(style.size),
-            style.color.hex()
-        );
-        if style.bold {
-            self.out.push_str(" font-weight=\"bold\"");
-        }
-        match style.anchor {
-            Anchor::Start => {}
-            Anchor::Middle => self.out.push_str(" text-anchor=\"middle\""),
-            Anchor::End => self.out.push_str(" text-anchor=\"end\""),
-        }
-        if style.rotate != 0.0 {
-            let _ = write!(
-                self.out,
-                " transform=\"rotate({} {} {})\"",
-                num(style.rotate),
-                num(x),
-                num(y)
-            );
-        }
-        if style.halo > 0.0 {
-            let _ = write!(
-                self.out,
-                " stroke=\"#ffffff\" stroke-width=\"{}\" stroke-linejoin=\"round\" paint-order=\"stroke\"",
-                num(style.halo)
-            );
-        }
-        let _ = writeln!(self.out, ">{}</text>", escape(text));
-    }
-
-    /// A vertical linear gradient (bottom to top) from evenly spaced colour stops.
-    pub(crate) fn vertical_gradient(&mut self, id: &str, stops: &[Color]) {
-        self.indent();
-        let _ = writeln!(
-            self.out,
-            "<defs><linearGradient id=\"{id}\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">"
-        );
-        for (i, c) in stops.iter().enumerate() {
-            self.indent();
-            let _ = writeln!(
-                self.out,
-                " <stop offset=\"{}\" stop-color=\"{}\"/>",
-                num(uniform_parameter(i, stops.len(), 0.0..1.0)),
-                c.hex()
-            );
-        }
-        self.indent();
-        self.out.push_str("</linearGradient></defs>\n");
-    }
-
-    /// A rectangle filled with the gradient `id`.
-    pub(crate) fn gradient_rect(&mut self, id: &str, x: f64, y: f64, w: f64, h: f64) {
-        self.indent();
-        let _ = writeln!(
-            self.out,
-            "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"url(#{id})\"/>",
+            out,
+            " transform=\"rotate({} {} {})\"",
+            num(style.rotate),
             num(x),
-            num(y),
-            num(w.max(0.0)),
-            num(h.max(0.0))
+            num(y)
         );
     }
-
-    /// Finishes the document.
-    pub(crate) fn finish(mut self) -> String {
-        while self.depth > 1 {
-            self.end_group();
-        }
-        self.out.push_str("</svg>\n");
-        self.out
+    if style.halo > 0.0 {
+        let _ = write!(
+            out,
+            " stroke=\"#ffffff\" stroke-width=\"{}\" stroke-linejoin=\"round\" paint-order=\"stroke\"",
+            num(style.halo)
+        );
     }
+    let _ = writeln!(out, ">{}</text>", escape(text));
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::drawing::Painter;
 
     #[test]
     fn num_formats_two_decimals() {
@@ -517,13 +482,13 @@ mod tests {
 
     #[test]
     fn writer_document_is_closed() {
-        let mut w = SvgWriter::new(10, 20, "t");
+        let mut w = Painter::new(10, 20, "t");
         w.begin_group("g");
         w.polyline(
             &[(0.0, 0.0), (1.0, 1.0)],
             &Style::stroke(Color(0, 0, 0), 1.0),
         );
-        let s = w.finish();
+        let s = w.finish().to_svg();
         assert!(s.starts_with("<?xml"));
         assert!(s.ends_with("</g>\n</svg>\n"));
         assert!(s.contains("points=\"0,0 1,1\""));

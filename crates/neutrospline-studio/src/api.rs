@@ -7,7 +7,7 @@
 //! |---|---|---|
 //! | `GET /`, `/studio.js`, `/studio.css` | | the page (embedded in the binary) |
 //! | `GET /api/state` | | `{model, file, canSave}`: the model the studio was started with |
-//! | `POST /api/render` | `{model, views, azimuth, elevation, at, data, colorBy}` | `{model, figures, errors, handles, table, info, ms}` |
+//! | `POST /api/render` | `{model, views, encoding: svg\|display-list, samples, azimuth, elevation, at, data, colorBy}` | `{model, figures (SVG) or drawings (display lists), errors, handles, table, info, ms}` |
 //! | `POST /api/export` | `{model, view, format: svg\|png, azimuth, elevation, data, colorBy}` | the figure's bytes |
 //! | `POST /api/open` | `{name, text}` | `{model}`: a TOML, JSON or CSV model read like a file |
 //! | `POST /api/convert` | `{model, format: toml\|json}` | `{text, filename}` (a download) |
@@ -27,7 +27,9 @@ use neutrospline::{
     uniform_parameter, AnyCurve, ControlPolygon, DegreeKind, Evaluate, EvaluateSurface, Membership,
 };
 use neutrospline_io::{format_number, DataTable, Format, Model, ReadError, ReadOptions, Shape};
-use neutrospline_plot::{render_png, render_svg, DataOverlay, PlotModel, PlotOptions, View};
+use neutrospline_plot::{
+    render_drawing, render_png, render_svg, DataOverlay, Drawing, PlotModel, PlotOptions, View,
+};
 use serde_json::{json, Map, Value};
 
 use crate::figure::{figure_options, handles};
@@ -183,11 +185,29 @@ impl Studio {
 
 /// `{"model": MODEL_JSON, ...rest}` (the model as the JSON writer writes it).
 fn with_model(model_json: &str, rest: Value, status: u16) -> Response {
+    with_parts(&[("model", model_json)], rest, status)
+}
+
+/// `{KEY: JSON, ..., ...rest}`: `parts` are keys with JSON text written as it is (a model as
+/// the JSON writer writes it, figures already encoded), followed by the members of `rest`.
+fn with_parts(parts: &[(&str, &str)], rest: Value, status: u16) -> Response {
+    let mut body = String::from("{");
+    for (i, (key, json)) in parts.iter().enumerate() {
+        if i > 0 {
+            body.push(',');
+        }
+        body.push_str(&Value::from(*key).to_string());
+        body.push(':');
+        body.push_str(json);
+    }
     let rest = rest.to_string();
-    let body = match rest.strip_prefix('{') {
-        Some("}") | None => format!("{{\"model\":{model_json}}}"),
-        Some(tail) => format!("{{\"model\":{model_json},{tail}"),
-    };
+    match rest.strip_prefix('{') {
+        Some("}") | None => body.push('}'),
+        Some(tail) => {
+            body.push(',');
+            body.push_str(tail);
+        }
+    }
     Response::json(status, body)
 }
 
@@ -313,6 +333,15 @@ fn parse_view(name: &str) -> Result<View, Response> {
     View::from_str(name).map_err(|e| Response::error(400, &e.to_string()))
 }
 
+/// How `/api/render` writes the figures: SVG documents (`figures`), or display lists for a
+/// canvas (`drawings`: the frames while a point is dragged or a view turned, which the page
+/// paints far faster than it lays out SVG).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Encoding {
+    Svg,
+    DisplayList,
+}
+
 fn render(body: &Value) -> Result<Response, Response> {
     let start = Instant::now();
     let model = page_model(body)?;
@@ -320,6 +349,16 @@ fn render(body: &Value) -> Result<Response, Response> {
         .as_array()
         .map(|v| v.iter().filter_map(Value::as_str).map(parse_view).collect())
         .unwrap_or_else(|| Ok(Vec::new()))?;
+    let encoding = match body["encoding"].as_str() {
+        None | Some("svg") => Encoding::Svg,
+        Some("display-list") => Encoding::DisplayList,
+        Some(other) => {
+            return Err(Response::error(
+                400,
+                &format!("encoding `{other}`: give \"svg\" or \"display-list\""),
+            ))
+        }
+    };
     let (azimuth, elevation) = camera(body);
     let mut options = figure_options(&model, azimuth, elevation);
     // A preview while a point is dragged: fewer samples along a curve (the figure after the
@@ -332,12 +371,28 @@ fn render(body: &Value) -> Result<Response, Response> {
         }
     }
     let (plot, data_error) = prepare(&model, body)?;
-    let mut figures = Map::new();
+    // Each view's figure as JSON text: an SVG string or a display-list object.
+    let mut figures = Vec::new();
     let mut errors = Map::new();
-    for (view, drawn) in render_views(&plot, &views, &options) {
+    let mut plane_handles = Value::Null;
+    for (view, drawn) in render_views(&plot, &views, &options, encoding) {
         match drawn {
-            Ok(svg) => {
-                figures.insert(view.name().to_owned(), Value::String(svg));
+            Ok((json, drawing)) => {
+                if view == View::Plane {
+                    plane_handles = match model.shape() {
+                        Shape::Planar(c) => {
+                            let points: Vec<[f64; 2]> =
+                                c.control_points().iter().map(|p| p.position).collect();
+                            let h = handles(&drawing, &points);
+                            json!({ "pixels": h.pixels, "frame": h.frame })
+                        }
+                        _ => json!({
+                            "pixels": drawing.circle_centres("control-point"),
+                            "frame": null,
+                        }),
+                    };
+                }
+                figures.push((view, json));
             }
             Err(e) => {
                 errors.insert(view.name().to_owned(), Value::String(e));
@@ -347,26 +402,33 @@ fn render(body: &Value) -> Result<Response, Response> {
     if let Some(e) = data_error {
         errors.insert("data".to_owned(), Value::String(e));
     }
-    let handles = match (model.shape(), figures.get("plane").and_then(Value::as_str)) {
-        (Shape::Planar(c), Some(svg)) => {
-            let points: Vec<[f64; 2]> = c.control_points().iter().map(|p| p.position).collect();
-            let h = handles(svg, &points);
-            json!({ "pixels": h.pixels, "frame": h.frame })
-        }
-        (_, Some(svg)) => json!({ "pixels": crate::figure::control_markers(svg), "frame": null }),
-        _ => Value::Null,
-    };
     let table = match table(model.shape(), body["at"].as_str().unwrap_or("")) {
         Ok((columns, rows)) => json!({ "columns": columns, "rows": rows }),
         Err(message) => json!({ "error": message }),
     };
+    let mut figures_json = String::from("{");
+    for (i, (view, json)) in figures.iter().enumerate() {
+        if i > 0 {
+            figures_json.push(',');
+        }
+        figures_json.push_str(&Value::from(view.name()).to_string());
+        figures_json.push(':');
+        figures_json.push_str(json);
+    }
+    figures_json.push('}');
+    let key = match encoding {
+        Encoding::Svg => "figures",
+        Encoding::DisplayList => "drawings",
+    };
     let ms = start.elapsed().as_secs_f64() * 1e3;
-    Ok(with_model(
-        &neutrospline_io::to_json_string(&model),
+    Ok(with_parts(
+        &[
+            ("model", &neutrospline_io::to_json_string(&model)),
+            (key, &figures_json),
+        ],
         json!({
-            "figures": figures,
             "errors": errors,
-            "handles": handles,
+            "handles": plane_handles,
             "table": table,
             "info": info(&model),
             "ms": ms,
@@ -376,13 +438,26 @@ fn render(body: &Value) -> Result<Response, Response> {
 }
 
 /// Draws `views` on up to [`std::thread::available_parallelism`] threads (a drag redraws
-/// every view shown), in the order given.
+/// every view shown), in the order given: each figure as JSON text in `encoding` (an SVG
+/// string or a display-list object), with its drawing.
 fn render_views(
     plot: &PlotModel,
     views: &[View],
     options: &PlotOptions,
-) -> Vec<(View, Result<String, String>)> {
-    let draw = |v: View| (v, render_svg(plot, v, options).map_err(|e| e.to_string()));
+    encoding: Encoding,
+) -> Vec<(View, Result<(String, Drawing), String>)> {
+    let draw = |v: View| {
+        let drawn = render_drawing(plot, v, options)
+            .map(|d| {
+                let json = match encoding {
+                    Encoding::Svg => Value::String(d.to_svg()).to_string(),
+                    Encoding::DisplayList => d.to_display_list(),
+                };
+                (json, d)
+            })
+            .map_err(|e| e.to_string());
+        (v, drawn)
+    };
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     if views.len() < 2 || threads < 2 {
         return views.iter().map(|&v| draw(v)).collect();

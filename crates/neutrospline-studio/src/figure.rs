@@ -2,7 +2,7 @@
 //! command and the studio, so that the studio's "export SVG" writes the command's bytes.
 
 use neutrospline_io::Model;
-use neutrospline_plot::PlotOptions;
+use neutrospline_plot::{Drawing, PlotOptions};
 
 /// The options `neutrospline plot FILE --azimuth A --elevation E` draws with: the default
 /// size and samples, the default title, and the model's description as the caption.
@@ -26,32 +26,12 @@ pub struct Handles {
     pub frame: Option<[f64; 4]>,
 }
 
-/// The control-point markers (`<circle ... class="control-point">`) of an SVG, in order.
-pub fn control_markers(svg: &str) -> Vec<[f64; 2]> {
-    let attr = |tag: &str, name: &str| -> Option<f64> {
-        let key = format!(" {name}=\"");
-        let start = tag.find(&key)? + key.len();
-        let end = start + tag[start..].find('"')?;
-        tag[start..end].parse().ok()
-    };
-    svg.match_indices("<circle ")
-        .filter_map(|(i, _)| {
-            let end = i + svg[i..].find('>')?;
-            let tag = &svg[i..end];
-            if !tag.contains("class=\"control-point\"") {
-                return None;
-            }
-            Some([attr(tag, "cx")?, attr(tag, "cy")?])
-        })
-        .collect()
-}
-
-/// The handles of a `plane` view `svg` of a 2-D curve with control positions `points`: the
-/// markers' pixels, and the scale and offset on each axis from the two points farthest apart
-/// along it (the plane view draws x and y at one scale, which stands in for an axis on which
-/// all points coincide).
-pub fn handles(svg: &str, points: &[[f64; 2]]) -> Handles {
-    let pixels = control_markers(svg);
+/// The handles of a `plane` view `drawing` of a 2-D curve with control positions `points`:
+/// the pixels of its control-point markers (circles of class `control-point`), and the scale
+/// and offset on each axis from the two points farthest apart along it (the plane view draws
+/// x and y at one scale, which stands in for an axis on which all points coincide).
+pub fn handles(drawing: &Drawing, points: &[[f64; 2]]) -> Handles {
+    let pixels = drawing.circle_centres("control-point");
     let frame = (pixels.len() == points.len() && !points.is_empty())
         .then(|| {
             let axis = |a: usize| -> Option<f64> {
@@ -87,29 +67,22 @@ pub fn handles(svg: &str, points: &[[f64; 2]]) -> Handles {
 mod tests {
     use super::*;
     use neutrospline::ControlPolygon;
-    use neutrospline_plot::{render_svg, PlotModel, View};
+    use neutrospline_plot::{render_drawing, PlotModel, View};
 
     #[test]
     fn handles_map_model_to_pixels() {
         let curve = neutrospline::example1();
         let model = PlotModel::from(&curve);
-        let svg = render_svg(&model, View::Plane, &PlotOptions::default()).unwrap();
+        let drawing = render_drawing(&model, View::Plane, &PlotOptions::default()).unwrap();
         let points: Vec<[f64; 2]> = curve.control_points().iter().map(|p| p.position).collect();
-        let h = handles(&svg, &points);
+        let h = handles(&drawing, &points);
         assert_eq!(h.pixels.len(), 4);
         let [sx, sy, ox, oy] = h.frame.unwrap();
-        // Equal scale on both axes, y down (pixels are written to 0.01).
+        // Equal scale on both axes, y down.
         assert!((sx + sy).abs() < 1e-3 * sx, "{sx} {sy}");
         for (p, px) in points.iter().zip(&h.pixels) {
-            assert!((ox + sx * p[0] - px[0]).abs() < 0.01, "{p:?} {px:?}");
-            assert!((oy + sy * p[1] - px[1]).abs() < 0.01, "{p:?} {px:?}");
+            assert!((ox + sx * p[0] - px[0]).abs() < 1e-6, "{p:?} {px:?}");
+            assert!((oy + sy * p[1] - px[1]).abs() < 1e-6, "{p:?} {px:?}");
         }
-    }
-
-    #[test]
-    fn control_markers_reads_only_control_points() {
-        let svg = "<circle cx=\"1\" cy=\"2\" r=\"3\" class=\"data\"/>\n\
-                   <circle cx=\"4.5\" cy=\"-6\" r=\"3\" class=\"control-point\"/>";
-        assert_eq!(control_markers(svg), vec![[4.5, -6.0]]);
     }
 }

@@ -17,8 +17,7 @@
 //! - [`figure_options`]: the options `neutrospline plot` draws a model with by default; the
 //!   figure itself is `neutrospline_plot::PlotModel::from_model` (and
 //!   `DataOverlay::from_table` for data), the command's own code path, so an exported SVG is
-//!   the command's bytes; [`handles`] and [`control_markers`] locate the control points in a
-//!   `plane` view.
+//!   the command's bytes; [`handles`] locates the control points in a `plane` view.
 //! - [`open_browser`]: asks the desktop to open a URL, quietly.
 //!
 //! ```no_run
@@ -36,7 +35,7 @@ mod figure;
 mod http;
 
 pub use api::Studio;
-pub use figure::{control_markers, figure_options, handles, Handles};
+pub use figure::{figure_options, handles, Handles};
 pub use http::{check_origin, Handler, Request, Response, Server, MAX_BODY};
 
 /// Asks the desktop to open `url` in the default browser (`xdg-open`, or `open` on macOS),

@@ -10,13 +10,13 @@ use neutrospline::DegreeKind;
 
 use crate::ctx::Ctx;
 use crate::curve3d::{coloured_legend, coloured_panel};
+use crate::drawing::{Drawing, Painter};
 use crate::layout::{Entry, Legend, Rect, Swatch};
 use crate::lifted::{self, Look};
 use crate::mesh::{mesh_panel, quantity_legend};
 use crate::model::Mesh;
 use crate::panels;
 use crate::quantity::Quantity;
-use crate::svg::SvgWriter;
 use crate::theme;
 
 use super::Figure;
@@ -29,7 +29,7 @@ impl Figure for All {
         format!("{label}: all three degrees")
     }
 
-    fn curve_2d(&self, ctx: &Ctx) -> String {
+    fn curve_2d(&self, ctx: &Ctx) -> Drawing {
         let th = &ctx.theme;
         let mut entries: Vec<Entry> = DegreeKind::ALL
             .iter()
@@ -62,14 +62,14 @@ impl Figure for All {
         lifted::figure(ctx, &kinds, entries, Vec::new(), &look)
     }
 
-    fn curve_3d(&self, ctx: &Ctx) -> String {
+    fn curve_3d(&self, ctx: &Ctx) -> Drawing {
         let legend = coloured_legend(&ctx.theme, "degree", "degree", Vec::new());
         boxes(ctx, legend, &|svg, area, kind| {
             coloured_panel(svg, ctx, area, kind.into(), None);
         })
     }
 
-    fn surface(&self, ctx: &Ctx, mesh: &Mesh, grid: (usize, usize)) -> String {
+    fn surface(&self, ctx: &Ctx, mesh: &Mesh, grid: (usize, usize)) -> Drawing {
         let legend = quantity_legend(&ctx.theme, "degree", "degree", Vec::new());
         boxes(ctx, legend, &|svg, area, kind| {
             mesh_panel(svg, ctx, mesh, grid, area, kind.into(), None);
@@ -79,11 +79,7 @@ impl Figure for All {
 
 /// Three 3-D boxes, one per degree, drawn by `panel`, with the shared `legend` (without its
 /// notes, which the panels make plain).
-fn boxes(
-    ctx: &Ctx,
-    mut legend: Legend,
-    panel: &dyn Fn(&mut SvgWriter, Rect, DegreeKind),
-) -> String {
+fn boxes(ctx: &Ctx, mut legend: Legend, panel: &dyn Fn(&mut Painter, Rect, DegreeKind)) -> Drawing {
     legend.notes.clear();
     panels::figure(ctx, &legend, &|area| ctx.fit_box(area), panel)
 }

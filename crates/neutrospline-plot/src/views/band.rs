@@ -16,9 +16,10 @@
 use crate::callout::{obstacles_of, Obstacle};
 use crate::ctx::Ctx;
 use crate::curve3d::shadowed_box;
+use crate::drawing::{Drawing, Painter};
 use crate::layout::{Entry, Legend, LegendPlace, Swatch};
 use crate::model::{Mesh, Pt};
-use crate::svg::{Color, Style, SvgWriter};
+use crate::svg::{Color, Style};
 use crate::theme::{self, marker_style, Marker, Theme};
 
 use super::Figure;
@@ -45,7 +46,7 @@ impl Figure for Band {
         format!("{label}: fuzzy band")
     }
 
-    fn curve_2d(&self, ctx: &Ctx) -> String {
+    fn curve_2d(&self, ctx: &Ctx) -> Drawing {
         let th = &ctx.theme;
         ctx.figure(legend(ctx, false), LegendPlace::Column, |svg, plot, _| {
             let axes = ctx.axes2(plot, 40.0 * th.s);
@@ -61,7 +62,7 @@ impl Figure for Band {
         })
     }
 
-    fn curve_3d(&self, ctx: &Ctx) -> String {
+    fn curve_3d(&self, ctx: &Ctx) -> Drawing {
         ctx.figure(
             legend(ctx, true),
             LegendPlace::Corner,
@@ -80,7 +81,7 @@ impl Figure for Band {
 
     /// Never called: [`crate::render_svg`] refuses the band view of a surface
     /// ([`crate::PlotError::BandOnSurface`]) before drawing; the plane view's maps stand in.
-    fn surface(&self, ctx: &Ctx, mesh: &Mesh, grid: (usize, usize)) -> String {
+    fn surface(&self, ctx: &Ctx, mesh: &Mesh, grid: (usize, usize)) -> Drawing {
         super::plane::Plane.surface(ctx, mesh, grid)
     }
 }
@@ -147,7 +148,7 @@ fn has_width(px: &dyn Fn([f64; 3]) -> (f64, f64), lo: &[Pt], hi: &[Pt]) -> bool 
 /// The band of each level (lowest alpha first), the centroid curve (dashed, when it differs
 /// from the crisp curve), the control polygon, the crisp curve and the control points.
 fn draw(
-    svg: &mut SvgWriter,
+    svg: &mut Painter,
     ctx: &Ctx,
     px: &dyn Fn([f64; 3]) -> (f64, f64),
     dimension: usize,

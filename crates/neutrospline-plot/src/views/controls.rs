@@ -11,13 +11,14 @@ use neutrospline::DegreeKind;
 use crate::callout::{draw_callouts, draw_names, obstacles_of, Keep};
 use crate::ctx::Ctx;
 use crate::curve3d::{control_polygon_3d, drop_lines, shadowed_box};
+use crate::drawing::{Drawing, Painter};
 use crate::glyph::{draw_glyphs, glyph_subset};
 use crate::layout::{Entry, Legend, LegendPlace, Rect, Swatch};
 use crate::mesh::{draw_mesh, Paint};
 use crate::model::Mesh;
 use crate::net::{draw_net, net_edges};
 use crate::scene::{flat, Shape, CHUNK, DATA, OVER};
-use crate::svg::{Color, Style, SvgWriter};
+use crate::svg::{Color, Style};
 use crate::theme::{self, marker_style, Marker, Theme};
 
 use super::Figure;
@@ -34,7 +35,7 @@ impl Figure for Controls {
         }
     }
 
-    fn curve_2d(&self, ctx: &Ctx) -> String {
+    fn curve_2d(&self, ctx: &Ctx) -> Drawing {
         let th = &ctx.theme;
         ctx.figure(curve_legend(th), LegendPlace::Column, |svg, plot, _| {
             let axes = ctx.axes2(plot, 6.0 * th.callout());
@@ -63,7 +64,7 @@ impl Figure for Controls {
         })
     }
 
-    fn curve_3d(&self, ctx: &Ctx) -> String {
+    fn curve_3d(&self, ctx: &Ctx) -> Drawing {
         let th = &ctx.theme;
         ctx.figure(curve_legend(th), LegendPlace::Corner, |svg, plot, avoid| {
             let (axes, mut scene) = shadowed_box(svg, ctx, plot, avoid);
@@ -94,7 +95,7 @@ impl Figure for Controls {
         })
     }
 
-    fn surface(&self, ctx: &Ctx, mesh: &Mesh, grid: (usize, usize)) -> String {
+    fn surface(&self, ctx: &Ctx, mesh: &Mesh, grid: (usize, usize)) -> Drawing {
         let th = &ctx.theme;
         let (chosen, step) = glyph_subset(grid);
         let legend = net_legend(th, step);
@@ -113,7 +114,7 @@ impl Figure for Controls {
 /// Callouts of the control points at `ctrl` (pixels), clear of the curve and the control
 /// polygon, inside `bounds` and off `avoid`.
 fn callouts(
-    svg: &mut SvgWriter,
+    svg: &mut Painter,
     ctx: &Ctx,
     curve: &[(f64, f64)],
     ctrl: &[(f64, f64)],
@@ -130,7 +131,7 @@ fn callouts(
 /// Names the corners of the net (at `pts`, pixels), clear of its edges, inside `bounds` and
 /// off `keep_out` (the glyphs and the legend).
 fn name_corners(
-    svg: &mut SvgWriter,
+    svg: &mut Painter,
     ctx: &Ctx,
     grid: (usize, usize),
     pts: &[(f64, f64)],

@@ -15,6 +15,7 @@ use neutrospline::DegreeKind;
 
 use crate::ctx::{Ctx, DataCtx};
 use crate::curve3d::shadowed_box;
+use crate::drawing::Drawing;
 use crate::layout::{ColorBar, Entry, Legend, LegendPlace, Swatch};
 use crate::model::Mesh;
 use crate::scene::{Shape, CHUNK, DATA, OVER};
@@ -39,7 +40,7 @@ impl Figure for Data {
         true
     }
 
-    fn curve_2d(&self, ctx: &Ctx) -> String {
+    fn curve_2d(&self, ctx: &Ctx) -> Drawing {
         let th = &ctx.theme;
         let Some(data) = &ctx.data else {
             return ctx.figure(Legend::default(), LegendPlace::Column, |_, _, _| {});
@@ -69,7 +70,7 @@ impl Figure for Data {
         })
     }
 
-    fn curve_3d(&self, ctx: &Ctx) -> String {
+    fn curve_3d(&self, ctx: &Ctx) -> Drawing {
         let th = &ctx.theme;
         let Some(data) = &ctx.data else {
             return ctx.figure(Legend::default(), LegendPlace::Corner, |_, _, _| {});
@@ -121,7 +122,7 @@ impl Figure for Data {
         })
     }
 
-    fn surface(&self, ctx: &Ctx, _mesh: &Mesh, _grid: (usize, usize)) -> String {
+    fn surface(&self, ctx: &Ctx, _mesh: &Mesh, _grid: (usize, usize)) -> Drawing {
         // Unreachable through `render_svg`, which refuses a surface first.
         ctx.figure(Legend::default(), LegendPlace::Corner, |_, _, _| {})
     }

@@ -15,6 +15,7 @@ mod single;
 use neutrospline::DegreeKind;
 
 use crate::ctx::Ctx;
+use crate::drawing::Drawing;
 use crate::model::Mesh;
 use crate::quantity::Quantity;
 use crate::view::View;
@@ -25,13 +26,13 @@ pub(crate) trait Figure {
     fn title(&self, label: &str, surface: bool) -> String;
 
     /// The figure of a 2-D curve (positions x, y: the degrees can become heights).
-    fn curve_2d(&self, ctx: &Ctx) -> String;
+    fn curve_2d(&self, ctx: &Ctx) -> Drawing;
 
     /// The figure of a 3-D curve (positions x, y, z).
-    fn curve_3d(&self, ctx: &Ctx) -> String;
+    fn curve_3d(&self, ctx: &Ctx) -> Drawing;
 
     /// The figure of a surface sampled as `mesh`, with a `rows x cols` control net.
-    fn surface(&self, ctx: &Ctx, mesh: &Mesh, grid: (usize, usize)) -> String;
+    fn surface(&self, ctx: &Ctx, mesh: &Mesh, grid: (usize, usize)) -> Drawing;
 
     /// Whether the view draws the model's data overlay: [`render_svg`](crate::render_svg)
     /// then requires a curve with data, and gives the view the data (`Ctx::data`) instead of

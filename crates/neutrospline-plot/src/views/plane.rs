@@ -14,10 +14,11 @@ use crate::axes2::Axes2;
 use crate::callout::{obstacles_of, Obstacle};
 use crate::ctx::Ctx;
 use crate::curve3d::shadowed_box;
+use crate::drawing::{Drawing, Painter};
 use crate::layout::{ColorBar, Entry, Legend, LegendPlace, Rect, Swatch};
 use crate::model::Mesh;
 use crate::panels;
-use crate::svg::{Color, Style, SvgWriter};
+use crate::svg::{Color, Style};
 use crate::theme::{self, marker_style, Marker, Theme};
 
 use super::Figure;
@@ -34,7 +35,7 @@ impl Figure for Plane {
         }
     }
 
-    fn curve_2d(&self, ctx: &Ctx) -> String {
+    fn curve_2d(&self, ctx: &Ctx) -> Drawing {
         let th = &ctx.theme;
         ctx.figure(band_legend(th), LegendPlace::Column, |svg, plot, _| {
             let axes = ctx.axes2(plot, 75.0 * th.s);
@@ -48,7 +49,7 @@ impl Figure for Plane {
         })
     }
 
-    fn curve_3d(&self, ctx: &Ctx) -> String {
+    fn curve_3d(&self, ctx: &Ctx) -> Drawing {
         let th = &ctx.theme;
         ctx.figure(band_legend(th), LegendPlace::Corner, |svg, plot, avoid| {
             let (axes, scene) = shadowed_box(svg, ctx, plot, avoid);
@@ -61,7 +62,7 @@ impl Figure for Plane {
         })
     }
 
-    fn surface(&self, ctx: &Ctx, mesh: &Mesh, _grid: (usize, usize)) -> String {
+    fn surface(&self, ctx: &Ctx, mesh: &Mesh, _grid: (usize, usize)) -> Drawing {
         let th = &ctx.theme;
         let legend = map_legend(th, !(mesh.knots[0].is_empty() && mesh.knots[1].is_empty()));
         let fit = |area: Rect| {
@@ -84,7 +85,7 @@ fn lanes(th: &Theme) -> (f64, f64) {
 
 /// Offset bands along a pixel polyline: lane `j` centred `pitch * (1 - j)` pixels to the left
 /// of the direction of travel, of full width `width`; band width = degree * width.
-fn draw_bands(svg: &mut SvgWriter, th: &Theme, pts: &[(f64, f64)], degs: &[[f64; 3]]) {
+fn draw_bands(svg: &mut Painter, th: &Theme, pts: &[(f64, f64)], degs: &[[f64; 3]]) {
     let n = pts.len();
     if n < 2 {
         return;
@@ -151,7 +152,7 @@ fn band_legend(th: &Theme) -> Legend {
 
 /// The control polygon, the bands along the curve, the crisp curve and the control points,
 /// at pixels `curve` (one per sample of `ctx.curve`) and `ctrl`.
-fn plane_data(svg: &mut SvgWriter, ctx: &Ctx, curve: &[(f64, f64)], ctrl: &[(f64, f64)]) {
+fn plane_data(svg: &mut Painter, ctx: &Ctx, curve: &[(f64, f64)], ctrl: &[(f64, f64)]) {
     let th = &ctx.theme;
     let degs: Vec<[f64; 3]> = ctx.curve.iter().map(|p| p.deg).collect();
     svg.polyline(
@@ -223,7 +224,7 @@ fn domain_axes(th: &Theme, mesh: &Mesh, area: Rect) -> Axes2 {
 
 /// One heat map: the degree `kind` over (u, v), cells of the sample grid coloured by the
 /// mean of their corners.
-fn heat_map(svg: &mut SvgWriter, th: &Theme, mesh: &Mesh, axes: &Axes2, kind: DegreeKind) {
+fn heat_map(svg: &mut Painter, th: &Theme, mesh: &Mesh, axes: &Axes2, kind: DegreeKind) {
     let n = mesh.n;
     axes.draw(svg, th);
     let f = axes.frame;

@@ -12,6 +12,7 @@
 
 use crate::ctx::Ctx;
 use crate::curve3d::{coloured_legend, coloured_panel};
+use crate::drawing::Drawing;
 use crate::layout::{Entry, LegendPlace};
 use crate::lifted::{self, Look};
 use crate::mesh::{mesh_panel, quantity_legend};
@@ -29,7 +30,7 @@ impl Figure for Single {
         format!("{label}: {}", self.0.name())
     }
 
-    fn curve_2d(&self, ctx: &Ctx) -> String {
+    fn curve_2d(&self, ctx: &Ctx) -> Drawing {
         let th = &ctx.theme;
         let q = self.0;
         let c = q.color();
@@ -46,7 +47,7 @@ impl Figure for Single {
         lifted::figure(ctx, &[q], entries, q.notes(), &look)
     }
 
-    fn curve_3d(&self, ctx: &Ctx) -> String {
+    fn curve_3d(&self, ctx: &Ctx) -> Drawing {
         let q = self.0;
         let legend = coloured_legend(&ctx.theme, q.name(), q.noun(), q.notes());
         ctx.figure(legend, LegendPlace::Corner, |svg, plot, avoid| {
@@ -54,7 +55,7 @@ impl Figure for Single {
         })
     }
 
-    fn surface(&self, ctx: &Ctx, mesh: &Mesh, grid: (usize, usize)) -> String {
+    fn surface(&self, ctx: &Ctx, mesh: &Mesh, grid: (usize, usize)) -> Drawing {
         let q = self.0;
         let legend = quantity_legend(&ctx.theme, q.name(), q.noun(), q.notes());
         ctx.figure(legend, LegendPlace::Corner, |svg, plot, avoid| {

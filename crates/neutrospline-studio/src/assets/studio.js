@@ -1,6 +1,9 @@
 // The studio page. It holds the model as the JSON object a `.json` save writes, edits that
 // object, and asks the server (POST /api/render) to validate it, evaluate it and draw the views
 // shown. No geometry is computed here: every curve, figure and refusal comes from the server.
+// A settled figure is the SVG `neutrospline plot` writes; while a point is dragged or a view
+// turned, the server sends the same drawings as display lists, which are painted on canvases
+// (six SVG documents take tens of milliseconds to lay out, six canvases a few).
 'use strict';
 
 (function () {
@@ -9,6 +12,7 @@
   const TURNABLE = ['truth', 'indeterminacy', 'falsity', 'all', 'score'];
   const DEGREES = ['truth', 'indeterminacy', 'falsity'];
   const DEFAULT_CAMERA = { azimuth: -55, elevation: 25 };
+  const SVG_NS = 'http://www.w3.org/2000/svg';
   // Samples along the curve while a point is dragged (the figure after the drag uses the
   // plot's default, as exports do).
   const PREVIEW_SAMPLES = 80;
@@ -142,7 +146,10 @@
       views: shownViews(),
       at: state.at,
     };
-    if (job.preview) request.samples = PREVIEW_SAMPLES;
+    if (job.preview) {
+      request.samples = PREVIEW_SAMPLES;
+      request.encoding = 'display-list';
+    }
     const tSent = performance.now();
     let result;
     try {
@@ -169,7 +176,7 @@
         // latency: from the input event to the views laid out anew; work: from the request
         // to the same point; interval: since the previous frame was laid out.
         const last = state.timings[state.timings.length - 1];
-        state.timings.push({
+        const timing = {
           latency: tDom - job.t0,
           work: tDom - tSent,
           fetch: tAnswer - tSent,
@@ -178,8 +185,13 @@
           at: tDom,
           interval: last ? tDom - last.at : null,
           preview: job.preview,
-          views: Object.keys(result.value.figures).length,
-        });
+          views: Object.keys(result.value.figures || result.value.drawings).length,
+          shown: null,
+        };
+        state.timings.push(timing);
+        // shown: from the input event to the end of the first frame drawn after it (the
+        // callback of the next animation frame, then the task after that frame).
+        requestAnimationFrame(() => setTimeout(() => { timing.shown = performance.now() - job.t0; }, 0));
       } else {
         const err = (result.value && result.value.error) || { message: 'refused' };
         clearFieldErrors();
@@ -228,7 +240,16 @@
       const figure = document.createElement('figure');
       figure.className = 'panel';
       figure.dataset.view = view;
-      figure.innerHTML = `<figcaption><span>${view}</span><button class="enlarge" title="Show this view large">⤢</button></figcaption><div class="host"></div>`;
+      // The host stacks the figure (an SVG document), the canvas that shows drag frames over
+      // it, and in the plane view the control-point handles over both.
+      figure.innerHTML = `<figcaption><span>${view}</span><button class="enlarge" title="Show this view large">⤢</button></figcaption>`
+        + '<div class="host"><div class="figure"></div><canvas class="preview" hidden></canvas></div>';
+      if (view === 'plane') {
+        const overlay = document.createElementNS(SVG_NS, 'svg');
+        overlay.setAttribute('class', 'studio-overlay');
+        overlay.setAttribute('viewBox', '0 0 1600 1200');
+        figure.querySelector('.host').appendChild(overlay);
+      }
       figure.querySelector('.enlarge').addEventListener('click', () => {
         if (state.layout === 'large' && state.large === view) { state.layout = 'grid'; }
         else { state.layout = 'large'; state.large = view; }
@@ -261,42 +282,199 @@
 
   function drawFigures(value) {
     const shown = shownViews();
+    const figures = value.figures || {};
+    const drawings = value.drawings || {};
     for (const [view, panel] of Object.entries(panels)) {
       panel.hidden = !shown.includes(view);
       panel.classList.toggle('turnable', isTurnable(view));
       if (!shown.includes(view)) continue;
       const host = panel.querySelector('.host');
-      if (view in value.figures) {
-        host.innerHTML = value.figures[view];
+      const figure = host.querySelector('.figure');
+      const canvas = host.querySelector('canvas.preview');
+      if (view in drawings) {
+        paintDisplayList(canvas, drawings[view]);
+        canvas.hidden = false;
+        continue;
+      }
+      canvas.hidden = true;
+      if (view in figures) {
+        figure.innerHTML = figures[view];
       } else if (view in value.errors) {
-        host.innerHTML = '';
+        figure.innerHTML = '';
         const p = document.createElement('p');
         p.className = 'view-error';
         p.textContent = value.errors[view];
-        host.appendChild(p);
+        figure.appendChild(p);
       }
     }
     state.handles = value.handles;
-    if (value.figures.plane) addHandles(panels.plane.querySelector('svg'), value.handles);
+    const size = drawings.plane ? [drawings.plane.width, drawings.plane.height] : figureSize(panels.plane);
+    placeHandles(value.handles, size, !!(figures.plane || drawings.plane));
   }
 
-  const SVG_NS = 'http://www.w3.org/2000/svg';
+  // The width and height of a panel's figure, from its SVG's view box.
+  function figureSize(panel) {
+    const svg = panel.querySelector('.figure svg');
+    const box = svg && svg.viewBox && svg.viewBox.baseVal;
+    return box && box.width ? [box.width, box.height] : null;
+  }
 
-  function addHandles(svg, handles) {
-    if (!svg || !handles) return;
-    const g = document.createElementNS(SVG_NS, 'g');
-    g.setAttribute('class', 'studio-handles');
-    handles.pixels.forEach(([x, y], k) => {
-      const c = document.createElementNS(SVG_NS, 'circle');
-      c.setAttribute('cx', x);
-      c.setAttribute('cy', y);
-      c.setAttribute('r', 16);
-      c.setAttribute('class', 'studio-handle' + (k === state.selected ? ' selected' : ''));
-      c.setAttribute('data-point-index', String(k));
-      c.setAttribute('tabindex', '0');
-      g.appendChild(c);
+  // The plane view's handles over a figure of `size` pixels: moved in place when their number
+  // is unchanged (a drag), else made anew.
+  function placeHandles(handles, size, shown) {
+    const overlay = panels.plane.querySelector('.studio-overlay');
+    const pixels = shown && handles ? handles.pixels : [];
+    if (size) overlay.setAttribute('viewBox', `0 0 ${size[0]} ${size[1]}`);
+    let circles = overlay.querySelectorAll('[data-point-index]');
+    if (circles.length !== pixels.length) {
+      overlay.textContent = '';
+      pixels.forEach((_, k) => {
+        const c = document.createElementNS(SVG_NS, 'circle');
+        c.setAttribute('r', 16);
+        c.setAttribute('data-point-index', String(k));
+        c.setAttribute('tabindex', '0');
+        overlay.appendChild(c);
+      });
+      circles = overlay.querySelectorAll('[data-point-index]');
+    }
+    pixels.forEach(([x, y], k) => {
+      circles[k].setAttribute('cx', x);
+      circles[k].setAttribute('cy', y);
+      circles[k].setAttribute('class', 'studio-handle' + (k === state.selected ? ' selected' : ''));
     });
-    svg.appendChild(g);
+  }
+
+  // ------------------------------------------------------------------------------------------
+  // Display lists (neutrospline-plot's `Drawing::to_display_list`; the format is in
+  // docs/architecture.md): the drawing's primitives, painted in order, the figure scaled to
+  // fit the canvas as the SVG is scaled to fit its box.
+
+  function paintDisplayList(canvas, list) {
+    const dpr = window.devicePixelRatio || 1;
+    const pw = Math.max(1, Math.round(canvas.clientWidth * dpr));
+    const ph = Math.max(1, Math.round(canvas.clientHeight * dpr));
+    if (canvas.width !== pw || canvas.height !== ph) { canvas.width = pw; canvas.height = ph; }
+    const g = canvas.getContext('2d');
+    g.setTransform(1, 0, 0, 1, 0, 0);
+    g.clearRect(0, 0, pw, ph);
+    const scale = Math.min(pw / list.width, ph / list.height);
+    g.setTransform(scale, 0, 0, scale, (pw - scale * list.width) / 2, (ph - scale * list.height) / 2);
+    g.fillStyle = '#ffffff';
+    g.fillRect(0, 0, list.width, list.height);
+    g.miterLimit = 4;  // SVG's default (the canvas's is 10)
+    const styles = list.styles;
+    const texts = list.texts;
+    const gradients = {};
+    const groups = [];  // per open group: the mesh width to restore, or null
+    let meshWidth = 1;
+    const path = (q, close) => {
+      g.beginPath();
+      g.moveTo(q[0], q[1]);
+      for (let i = 2; i < q.length; i += 2) g.lineTo(q[i], q[i + 1]);
+      if (close) g.closePath();
+    };
+    const stroke = (color, width, cap, join, dash) => {
+      g.strokeStyle = color;
+      g.lineWidth = width;
+      g.lineCap = cap;
+      g.lineJoin = join;
+      g.setLineDash(dash || []);
+      g.stroke();
+    };
+    const paint = (st) => {
+      if (st.fill) {
+        g.globalAlpha = st.fillOpacity;
+        g.fillStyle = st.fill;
+        g.fill();
+      }
+      if (st.stroke && st.width > 0) {
+        g.globalAlpha = st.strokeOpacity;
+        stroke(st.stroke, st.width, st.round ? 'round' : 'butt', st.round ? 'round' : 'miter', st.dash);
+      }
+      g.globalAlpha = 1;
+    };
+    for (const op of list.ops) {
+      switch (op[0]) {
+        case 'g': groups.push(null); break;
+        case 'm': groups.push(meshWidth); meshWidth = op[1]; break;
+        case 'c':
+          groups.push('clip');
+          g.save();
+          g.beginPath();
+          g.rect(op[1], op[2], op[3], op[4]);
+          g.clip();
+          break;
+        case 'e': {
+          const top = groups.pop();
+          if (top === 'clip') g.restore();
+          else if (typeof top === 'number') meshWidth = top;
+          break;
+        }
+        case 'r': g.beginPath(); g.rect(op[1], op[2], op[3], op[4]); paint(styles[op[5]]); break;
+        case 'l': {
+          const st = styles[op[5]];
+          if (op[1] === op[3] && op[2] === op[4]) {
+            // A zero-length line shows its round cap as a dot, as in SVG.
+            if (st.stroke && st.round) {
+              g.beginPath();
+              g.arc(op[1], op[2], st.width / 2, 0, 2 * Math.PI);
+              g.fillStyle = st.stroke;
+              g.globalAlpha = st.strokeOpacity;
+              g.fill();
+              g.globalAlpha = 1;
+            }
+            break;
+          }
+          path([op[1], op[2], op[3], op[4]], false);
+          paint(st);
+          break;
+        }
+        case 'p': path(op[1], false); paint(styles[op[2]]); break;
+        case 'P': path(op[1], true); paint(styles[op[2]]); break;
+        case 'o': g.beginPath(); g.arc(op[1], op[2], op[3], 0, 2 * Math.PI); paint(styles[op[4]]); break;
+        case 't': {
+          const t = texts[op[4]];
+          g.font = `${t.bold ? 'bold ' : ''}${t.size}px ${list.font}`;
+          g.textAlign = t.anchor === 'middle' ? 'center' : t.anchor;
+          g.textBaseline = 'alphabetic';
+          g.save();
+          g.translate(op[1], op[2]);
+          if (t.rotate) g.rotate(t.rotate * Math.PI / 180);
+          if (t.halo > 0) {
+            g.strokeStyle = '#ffffff';
+            g.lineWidth = t.halo;
+            g.lineJoin = 'round';
+            g.setLineDash([]);
+            g.strokeText(op[3], 0, 0);
+          }
+          g.fillStyle = t.color;
+          g.fillText(op[3], 0, 0);
+          g.restore();
+          break;
+        }
+        case 'f':
+          path(op[1], true);
+          g.fillStyle = op[2];
+          g.fill();
+          stroke(op[2], meshWidth, 'butt', 'round', null);
+          break;
+        case 'k':
+          path([op[1], op[2], op[3], op[4]], false);
+          stroke(op[5], meshWidth, 'butt', 'round', null);
+          break;
+        case 'G': gradients[op[1]] = op[2]; break;
+        case 'R': {
+          const [x, y, w, h] = op.slice(2);
+          const stops = gradients[op[1]] || [];
+          const gradient = g.createLinearGradient(0, y + h, 0, y);
+          stops.forEach((c, i) => gradient.addColorStop(stops.length > 1 ? i / (stops.length - 1) : 0, c));
+          g.fillStyle = gradient;
+          g.fillRect(x, y, w, h);
+          break;
+        }
+        default: break;
+      }
+    }
   }
 
   // Pointer position in the SVG's own pixels (the figure's coordinates).
@@ -322,7 +500,7 @@
       const k = Number(handle.getAttribute('data-point-index'));
       selectPoint(k, true);
       const frame = state.handles && state.handles.frame;
-      const svg = host.querySelector('svg');
+      const svg = host.querySelector('.studio-overlay');
       if (!frame || !svg || state.info.dimension !== 2) {
         status(`point ${k} selected (drag works on plane curves; edit the fields for others)`);
         return;
@@ -335,7 +513,7 @@
     });
     host.addEventListener('pointermove', (event) => {
       if (!drag || event.pointerId !== drag.pointerId) return;
-      const svg = host.querySelector('svg');
+      const svg = host.querySelector('.studio-overlay');
       const p = svgPoint(svg, event);
       const [sx, sy] = drag.frame;
       const m = clone(state.model);
@@ -947,6 +1125,8 @@
     // The map from model x, y to the plane view's pixels: [sx, sy, ox, oy] (null for 3-D).
     frame: () => (state.handles && state.handles.frame ? state.handles.frame.slice() : null),
     idle: () => (inFlight || pending ? new Promise((r) => idleWaiters.push(r)) : Promise.resolve()),
+    // Paints a display list on a canvas, as drag frames are painted (for tests).
+    paintDisplayList,
     undo,
     redo,
   };
