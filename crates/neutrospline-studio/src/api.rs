@@ -437,6 +437,9 @@ fn render(body: &Value) -> Result<Response, Response> {
     ))
 }
 
+/// A figure as JSON text in its encoding, with the drawing it encodes.
+type Drawn = (String, Drawing);
+
 /// Draws `views` on up to [`std::thread::available_parallelism`] threads (a drag redraws
 /// every view shown), in the order given: each figure as JSON text in `encoding` (an SVG
 /// string or a display-list object), with its drawing.
@@ -445,7 +448,7 @@ fn render_views(
     views: &[View],
     options: &PlotOptions,
     encoding: Encoding,
-) -> Vec<(View, Result<(String, Drawing), String>)> {
+) -> Vec<(View, Result<Drawn, String>)> {
     let draw = |v: View| {
         let drawn = render_drawing(plot, v, options)
             .map(|d| {
