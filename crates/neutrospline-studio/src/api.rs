@@ -5,7 +5,7 @@
 //!
 //! | route | body | answer |
 //! |---|---|---|
-//! | `GET /`, `/studio.js`, `/studio.css` | | the page (embedded in the binary) |
+//! | `GET /`, `/studio.js`, `/studio.css`, `/paint.js` | | the page (embedded in the binary) |
 //! | `GET /api/state` | | `{model, file, canSave}`: the model the studio was started with |
 //! | `POST /api/render` | `{model, views, encoding: svg\|display-list, samples, azimuth, elevation, at, data, colorBy}` | `{model, figures (SVG) or drawings (display lists), errors, handles, table, info, ms}` |
 //! | `POST /api/export` | `{model, view, format: svg\|png, azimuth, elevation, data, colorBy}` | the figure's bytes |
@@ -38,6 +38,7 @@ use crate::http::{Handler, Request, Response};
 const INDEX_HTML: &str = include_str!("assets/index.html");
 const STUDIO_JS: &str = include_str!("assets/studio.js");
 const STUDIO_CSS: &str = include_str!("assets/studio.css");
+const PAINT_JS: &str = include_str!("assets/paint.js");
 
 /// The paper's Example 1, opened when the studio is started without a file.
 const EXAMPLE1_JSON: &str = include_str!("../../../examples/example1.json");
@@ -101,7 +102,7 @@ impl Handler for Studio {
             f(&body).unwrap_or_else(|e| e)
         };
         match request.path.as_str() {
-            "/" | "/index.html" | "/studio.js" | "/studio.css" | "/api/state"
+            "/" | "/index.html" | "/studio.js" | "/studio.css" | "/paint.js" | "/api/state"
                 if request.method != "GET" && request.method != "HEAD" =>
             {
                 Response::error(405, "use GET").with_header("Allow", "GET")
@@ -113,6 +114,7 @@ impl Handler for Studio {
             ),
             "/studio.js" => Response::new(200, "text/javascript; charset=utf-8", STUDIO_JS),
             "/studio.css" => Response::new(200, "text/css; charset=utf-8", STUDIO_CSS),
+            "/paint.js" => Response::new(200, "text/javascript; charset=utf-8", PAINT_JS),
             "/api/state" => self.state(),
             "/favicon.ico" => Response::new(204, "image/x-icon", Vec::new()),
             "/api/render" => post(&render),

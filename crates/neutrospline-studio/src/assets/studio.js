@@ -55,7 +55,7 @@
   }
 
   function clearFieldErrors() {
-    document.querySelectorAll('.field-error').forEach((e) => { e.textContent = ''; });
+    document.querySelectorAll('.field-error').forEach((e) => put(e, 'textContent', ''));
     document.querySelectorAll('input.invalid').forEach((e) => e.classList.remove('invalid'));
   }
 
@@ -110,11 +110,15 @@
   }
 
   // ------------------------------------------------------------------------------------------
-  // Rendering: at most one request in flight; while it runs, later proposals replace each
-  // other and only the latest is sent next.
+  // Rendering: one request at a time. Proposals made meanwhile replace each other, and the
+  // latest leaves as soon as the answer before it has been drawn. (Sending it earlier, so that
+  // the server draws frame N + 1 while the page paints frame N, was measured slower on a
+  // two-core machine: both then compete for the same cores and frames queue up.)
 
-  let inFlight = false;
   let pending = null;
+  let serverBusy = false;
+  let outstanding = 0;  // requests sent whose answers are not applied yet
+  let applied = Promise.resolve();
   let idleWaiters = [];
 
   function shownViews() {
@@ -134,13 +138,31 @@
       t0: performance.now(),
       onRefused: how && how.onRefused,
     };
-    if (!inFlight) pump();
+    kick();
   }
 
-  // Sends the pending proposal; resolves to {job, result, tSent, tAnswer}.
-  async function send() {
+  function kick() {
+    if (serverBusy || !pending) return;
     const job = pending;
     pending = null;
+    serverBusy = true;
+    outstanding += 1;
+    applied = applied
+      .then(() => send(job))
+      .then(apply)
+      .then(() => {
+        serverBusy = false;
+        kick();
+      });
+  }
+
+  function unreachable(e) {
+    return { ok: false, status: 0, value: { error: { message: `the studio server cannot be reached (${e.message})` } } };
+  }
+
+  // Sends `job`; resolves to {job, result: {ok, status, value}, tSent, tAnswered}. Drag
+  // frames ask for display lists, painted on canvases when the answer is applied.
+  async function send(job) {
     const request = {
       model: JSON.stringify(job.model, null, 1),
       views: shownViews(),
@@ -150,62 +172,53 @@
       request.samples = PREVIEW_SAMPLES;
       request.encoding = 'display-list';
     }
+    Object.assign(request, extra());
     const tSent = performance.now();
-    let result;
-    try {
-      result = await postJson('/api/render', Object.assign(request, extra()));
-    } catch (e) {
-      result = { ok: false, status: 0, value: { error: { message: `the studio server cannot be reached (${e.message})` } } };
-    }
-    return { job, result, tSent, tAnswer: performance.now() };
+    const result = await postJson('/api/render', request).catch(unreachable);
+    return { job, result, tSent, tAnswered: performance.now() };
   }
 
-  // One request at a time; the next one (the latest proposal) leaves as soon as an answer
-  // is in, so that the server draws frame N + 1 while the page lays out frame N.
-  async function pump() {
-    inFlight = true;
-    let next = send();
-    while (next) {
-      const { job, result, tSent, tAnswer } = await next;
-      next = pending ? send() : null;
-      if (result.ok) {
-        accept(result.value, job);
-        // The layout the next paint needs, done now so that it is measured.
-        void $('#views').offsetHeight;
-        const tDom = performance.now();
-        // latency: from the input event to the views laid out anew; work: from the request
-        // to the same point; interval: since the previous frame was laid out.
-        const last = state.timings[state.timings.length - 1];
-        const timing = {
-          latency: tDom - job.t0,
-          work: tDom - tSent,
-          fetch: tAnswer - tSent,
-          server: result.value.ms,
-          dom: tDom - tAnswer,
-          at: tDom,
-          interval: last ? tDom - last.at : null,
-          preview: job.preview,
-          views: Object.keys(result.value.figures || result.value.drawings).length,
-          shown: null,
-        };
-        state.timings.push(timing);
-        // shown: from the input event to the end of the first frame drawn after it (the
-        // callback of the next animation frame, then the task after that frame).
-        requestAnimationFrame(() => setTimeout(() => { timing.shown = performance.now() - job.t0; }, 0));
-      } else {
-        const err = (result.value && result.value.error) || { message: 'refused' };
-        clearFieldErrors();
-        showFieldError(err.field, err.message, err.detail);
-        alertMessage(err.message);
-        if (job.onRefused) job.onRefused();
-        fillModelFields();
-      }
-      if (!next && pending) next = send();
+  function apply({ job, result, tSent, tAnswered }) {
+    if (result.ok) {
+      accept(result.value, job);
+      // The layout the next paint needs, done now so that it is measured.
+      void $('#views').offsetHeight;
+      const tDone = performance.now();
+      // latency: from the input event to the views painted and laid out anew; work: from
+      // the request to the same point; fetch: from the request to the server's answer; dom:
+      // from the answer to the end (painting, and the page's update); interval: since the
+      // previous frame.
+      const last = state.timings[state.timings.length - 1];
+      const timing = {
+        latency: tDone - job.t0,
+        work: tDone - tSent,
+        fetch: tAnswered - tSent,
+        server: result.value.ms,
+        dom: tDone - tAnswered,
+        at: tDone,
+        interval: last ? tDone - last.at : null,
+        preview: job.preview,
+        views: Object.keys(result.value.figures || result.value.drawings).length,
+        shown: null,
+      };
+      state.timings.push(timing);
+      // shown: from the input event to the end of the first frame drawn after it (the
+      // callback of the next animation frame, then the task after that frame).
+      requestAnimationFrame(() => setTimeout(() => { timing.shown = performance.now() - job.t0; }, 0));
+    } else {
+      const err = (result.value && result.value.error) || { message: 'refused' };
+      clearFieldErrors();
+      showFieldError(err.field, err.message, err.detail);
+      alertMessage(err.message);
+      if (job.onRefused) job.onRefused();
+      fillModelFields();
     }
-    inFlight = false;
-    const waiters = idleWaiters;
-    idleWaiters = [];
-    waiters.forEach((w) => w());
+    outstanding -= 1;
+    if (!outstanding && !pending) {
+      const waiters = idleWaiters;
+      idleWaiters = [];
+      waiters.forEach((w) => w());
+    }
   }
 
   function accept(value, job) {
@@ -227,6 +240,13 @@
     if (job.message) status(job.message);
     else if (Object.keys(value.errors).length) alertMessage(Object.entries(value.errors).map(([v, e]) => `${v}: ${e}`).join('\n'));
     else if ($('#alert').textContent) $('#alert').textContent = '';
+  }
+
+  // The pixel size of a view's canvas: its box (the canvas may be hidden) times the device's
+  // pixel ratio.
+  function canvasSize(host) {
+    const ratio = window.devicePixelRatio || 1;
+    return [Math.max(1, Math.round(host.clientWidth * ratio)), Math.max(1, Math.round(host.clientHeight * ratio))];
   }
 
   // ------------------------------------------------------------------------------------------
@@ -285,18 +305,26 @@
     const figures = value.figures || {};
     const drawings = value.drawings || {};
     for (const [view, panel] of Object.entries(panels)) {
-      panel.hidden = !shown.includes(view);
+      put(panel, 'hidden', !shown.includes(view));
       panel.classList.toggle('turnable', isTurnable(view));
       if (!shown.includes(view)) continue;
       const host = panel.querySelector('.host');
       const figure = host.querySelector('.figure');
       const canvas = host.querySelector('canvas.preview');
       if (view in drawings) {
-        paintDisplayList(canvas, drawings[view]);
-        canvas.hidden = false;
+        const [width, height] = canvasSize(host);
+        if (canvas.width !== width || canvas.height !== height) {
+          canvas.width = width;
+          canvas.height = height;
+        }
+        self.paintDisplayList(canvas, drawings[view]);
+        put(canvas, 'hidden', false);
+        // The figure under the canvas is not drawn (else every frame would draw it too).
+        put(figure, 'hidden', true);
         continue;
       }
-      canvas.hidden = true;
+      put(canvas, 'hidden', true);
+      put(figure, 'hidden', false);
       if (view in figures) {
         figure.innerHTML = figures[view];
       } else if (view in value.errors) {
@@ -342,139 +370,6 @@
       circles[k].setAttribute('cy', y);
       circles[k].setAttribute('class', 'studio-handle' + (k === state.selected ? ' selected' : ''));
     });
-  }
-
-  // ------------------------------------------------------------------------------------------
-  // Display lists (neutrospline-plot's `Drawing::to_display_list`; the format is in
-  // docs/architecture.md): the drawing's primitives, painted in order, the figure scaled to
-  // fit the canvas as the SVG is scaled to fit its box.
-
-  function paintDisplayList(canvas, list) {
-    const dpr = window.devicePixelRatio || 1;
-    const pw = Math.max(1, Math.round(canvas.clientWidth * dpr));
-    const ph = Math.max(1, Math.round(canvas.clientHeight * dpr));
-    if (canvas.width !== pw || canvas.height !== ph) { canvas.width = pw; canvas.height = ph; }
-    const g = canvas.getContext('2d');
-    g.setTransform(1, 0, 0, 1, 0, 0);
-    g.clearRect(0, 0, pw, ph);
-    const scale = Math.min(pw / list.width, ph / list.height);
-    g.setTransform(scale, 0, 0, scale, (pw - scale * list.width) / 2, (ph - scale * list.height) / 2);
-    g.fillStyle = '#ffffff';
-    g.fillRect(0, 0, list.width, list.height);
-    g.miterLimit = 4;  // SVG's default (the canvas's is 10)
-    const styles = list.styles;
-    const texts = list.texts;
-    const gradients = {};
-    const groups = [];  // per open group: the mesh width to restore, or null
-    let meshWidth = 1;
-    const path = (q, close) => {
-      g.beginPath();
-      g.moveTo(q[0], q[1]);
-      for (let i = 2; i < q.length; i += 2) g.lineTo(q[i], q[i + 1]);
-      if (close) g.closePath();
-    };
-    const stroke = (color, width, cap, join, dash) => {
-      g.strokeStyle = color;
-      g.lineWidth = width;
-      g.lineCap = cap;
-      g.lineJoin = join;
-      g.setLineDash(dash || []);
-      g.stroke();
-    };
-    const paint = (st) => {
-      if (st.fill) {
-        g.globalAlpha = st.fillOpacity;
-        g.fillStyle = st.fill;
-        g.fill();
-      }
-      if (st.stroke && st.width > 0) {
-        g.globalAlpha = st.strokeOpacity;
-        stroke(st.stroke, st.width, st.round ? 'round' : 'butt', st.round ? 'round' : 'miter', st.dash);
-      }
-      g.globalAlpha = 1;
-    };
-    for (const op of list.ops) {
-      switch (op[0]) {
-        case 'g': groups.push(null); break;
-        case 'm': groups.push(meshWidth); meshWidth = op[1]; break;
-        case 'c':
-          groups.push('clip');
-          g.save();
-          g.beginPath();
-          g.rect(op[1], op[2], op[3], op[4]);
-          g.clip();
-          break;
-        case 'e': {
-          const top = groups.pop();
-          if (top === 'clip') g.restore();
-          else if (typeof top === 'number') meshWidth = top;
-          break;
-        }
-        case 'r': g.beginPath(); g.rect(op[1], op[2], op[3], op[4]); paint(styles[op[5]]); break;
-        case 'l': {
-          const st = styles[op[5]];
-          if (op[1] === op[3] && op[2] === op[4]) {
-            // A zero-length line shows its round cap as a dot, as in SVG.
-            if (st.stroke && st.round) {
-              g.beginPath();
-              g.arc(op[1], op[2], st.width / 2, 0, 2 * Math.PI);
-              g.fillStyle = st.stroke;
-              g.globalAlpha = st.strokeOpacity;
-              g.fill();
-              g.globalAlpha = 1;
-            }
-            break;
-          }
-          path([op[1], op[2], op[3], op[4]], false);
-          paint(st);
-          break;
-        }
-        case 'p': path(op[1], false); paint(styles[op[2]]); break;
-        case 'P': path(op[1], true); paint(styles[op[2]]); break;
-        case 'o': g.beginPath(); g.arc(op[1], op[2], op[3], 0, 2 * Math.PI); paint(styles[op[4]]); break;
-        case 't': {
-          const t = texts[op[4]];
-          g.font = `${t.bold ? 'bold ' : ''}${t.size}px ${list.font}`;
-          g.textAlign = t.anchor === 'middle' ? 'center' : t.anchor;
-          g.textBaseline = 'alphabetic';
-          g.save();
-          g.translate(op[1], op[2]);
-          if (t.rotate) g.rotate(t.rotate * Math.PI / 180);
-          if (t.halo > 0) {
-            g.strokeStyle = '#ffffff';
-            g.lineWidth = t.halo;
-            g.lineJoin = 'round';
-            g.setLineDash([]);
-            g.strokeText(op[3], 0, 0);
-          }
-          g.fillStyle = t.color;
-          g.fillText(op[3], 0, 0);
-          g.restore();
-          break;
-        }
-        case 'f':
-          path(op[1], true);
-          g.fillStyle = op[2];
-          g.fill();
-          stroke(op[2], meshWidth, 'butt', 'round', null);
-          break;
-        case 'k':
-          path([op[1], op[2], op[3], op[4]], false);
-          stroke(op[5], meshWidth, 'butt', 'round', null);
-          break;
-        case 'G': gradients[op[1]] = op[2]; break;
-        case 'R': {
-          const [x, y, w, h] = op.slice(2);
-          const stops = gradients[op[1]] || [];
-          const gradient = g.createLinearGradient(0, y + h, 0, y);
-          stops.forEach((c, i) => gradient.addColorStop(stops.length > 1 ? i / (stops.length - 1) : 0, c));
-          g.fillStyle = gradient;
-          g.fillRect(x, y, w, h);
-          break;
-        }
-        default: break;
-      }
-    }
   }
 
   // Pointer position in the SVG's own pixels (the figure's coordinates).
@@ -631,7 +526,13 @@
   function setValue(input, value, force) {
     if (!force && document.activeElement === input) return;
     if (!force && input.classList.contains('invalid')) return;
-    input.value = value === undefined || value === null ? '' : String(value);
+    put(input, 'value', value === undefined || value === null ? '' : String(value));
+  }
+
+  // Sets a property only when it changes: a drag redraws many times a second, and every
+  // write to the page, even of the same value, may make the browser lay it out again.
+  function put(element, property, value) {
+    if (element[property] !== value) element[property] = value;
   }
 
   function knotsText(knots) {
@@ -644,14 +545,14 @@
     if (!m) return;
     setValue($('#model-name'), m.name || '', force);
     setValue($('#model-description'), m.description || '', force);
-    $('#model-kind').value = m.kind;
+    put($('#model-kind'), 'value', m.kind);
     const surface = m.kind.endsWith('surface');
-    $('#model-kind').disabled = surface;
+    put($('#model-kind'), 'disabled', surface);
     setValue($('#model-degree'), m.degree, force);
-    $('#model-degree').disabled = m.kind === 'bezier' || surface;
+    put($('#model-degree'), 'disabled', m.kind === 'bezier' || surface);
     setValue($('#model-knots'), knotsText(m.knots), force);
-    $('#model-knots').disabled = !(m.kind === 'bspline' || m.kind === 'nurbs');
-    $('#model-membership').value = m.membership || 'neutrosophic';
+    put($('#model-knots'), 'disabled', !(m.kind === 'bspline' || m.kind === 'nurbs'));
+    put($('#model-membership'), 'value', m.membership || 'neutrosophic');
     const n = m.control_points.length;
     const select = $('#point-index');
     if (select.options.length !== n) {
@@ -668,14 +569,14 @@
       if (select.options[k].textContent !== label) select.options[k].textContent = label;
     });
     if (state.selected >= n) state.selected = n - 1;
-    select.value = String(state.selected);
+    put(select, 'value', String(state.selected));
     const p = m.control_points[state.selected];
     const fields = $('#point-fields');
     for (const key of ['x', 'y', 'z', 'weight']) {
       setValue(fields.querySelector(`input[name=${key}]`), p[key], force);
     }
-    $('#z-field').hidden = p.z === undefined;
-    $('#weight-field').hidden = m.kind !== 'nurbs' && m.kind !== 'nurbs-surface';
+    put($('#z-field'), 'hidden', p.z === undefined);
+    put($('#weight-field'), 'hidden', m.kind !== 'nurbs' && m.kind !== 'nurbs-surface');
     const rule = m.membership || 'neutrosophic';
     for (const d of DEGREES) {
       const input = fields.querySelector(`input[name=${d}]`);
@@ -687,20 +588,20 @@
         derived = true;
       }
       if (rule === 'fuzzy' && d !== 'truth') { value = 0; derived = true; }
-      input.disabled = derived;
-      slider.disabled = derived;
+      put(input, 'disabled', derived);
+      put(slider, 'disabled', derived);
       setValue(input, value, force);
-      if (document.activeElement !== slider) slider.value = String(value === undefined ? 0 : value);
+      if (document.activeElement !== slider) put(slider, 'value', String(value === undefined ? 0 : value));
     }
-    $('#rule-note').textContent = {
+    put($('#rule-note'), 'textContent', {
       neutrosophic: 'neutrosophic: truth, indeterminacy and falsity each in [0, 1], independent',
       intuitionistic: 'intuitionistic: truth + falsity <= 1; indeterminacy = 1 - truth - falsity',
       fuzzy: 'fuzzy: truth only; indeterminacy and falsity are 0',
-    }[rule];
+    }[rule]);
     const curve = !surface;
-    $('#add-point').disabled = !curve;
-    $('#insert-point').disabled = !curve;
-    $('#delete-point').disabled = !curve || n <= 2;
+    put($('#add-point'), 'disabled', !curve);
+    put($('#insert-point'), 'disabled', !curve);
+    put($('#delete-point'), 'disabled', !curve || n <= 2);
   }
 
   // The hesitation 1 - T - F shown (not sent) under the intuitionistic rule.
@@ -885,9 +786,9 @@
   }
 
   function updateButtons() {
-    $('#undo').disabled = !state.history.length;
-    $('#redo').disabled = !state.future.length;
-    $('#save').disabled = !state.canSave;
+    put($('#undo'), 'disabled', !state.history.length);
+    put($('#redo'), 'disabled', !state.future.length);
+    put($('#save'), 'disabled', !state.canSave);
   }
 
   // ------------------------------------------------------------------------------------------
@@ -1124,9 +1025,9 @@
     camera: () => clone(state.camera),
     // The map from model x, y to the plane view's pixels: [sx, sy, ox, oy] (null for 3-D).
     frame: () => (state.handles && state.handles.frame ? state.handles.frame.slice() : null),
-    idle: () => (inFlight || pending ? new Promise((r) => idleWaiters.push(r)) : Promise.resolve()),
+    idle: () => (outstanding || pending ? new Promise((r) => idleWaiters.push(r)) : Promise.resolve()),
     // Paints a display list on a canvas, as drag frames are painted (for tests).
-    paintDisplayList,
+    paintDisplayList: self.paintDisplayList,
     undo,
     redo,
   };
