@@ -115,6 +115,9 @@ fn server_limits_bodies_methods_and_paths() {
     assert_eq!(status, 200);
     assert!(head.contains("Content-Type: text/javascript"));
     assert!(String::from_utf8_lossy(&body).contains("window.studio"));
+    let (status, _, body) = get(port, "/paint.js", &host(port));
+    assert_eq!(status, 200);
+    assert!(String::from_utf8_lossy(&body).contains("function paintDisplayList"));
     // Garbage answers 400 and the server keeps serving.
     assert_eq!(http(port, b"NONSENSE\r\n\r\n").0, 400);
     assert_eq!(get(port, "/", &host(port)).0, 200);
@@ -196,6 +199,61 @@ fn render_draws_what_the_plot_crate_draws() {
     assert_eq!(
         answer["table"]["error"],
         "parameter t = 2 is outside the domain [0, 1]"
+    );
+}
+
+#[test]
+fn render_gives_display_lists_for_drag_frames() {
+    let port = example_server();
+    let views = [
+        "plane",
+        "controls",
+        "truth",
+        "indeterminacy",
+        "falsity",
+        "all",
+    ];
+    let ask = |encoding: &str| {
+        let (status, answer, _) = post(
+            port,
+            "/api/render",
+            &json!({ "model": EXAMPLE1_JSON, "views": views, "encoding": encoding, "samples": 40 }),
+        );
+        assert_eq!(status, 200, "{answer}");
+        answer
+    };
+    let (svg, lists) = (ask("svg"), ask("display-list"));
+    assert!(svg.get("drawings").is_none() && lists.get("figures").is_none());
+    // The display lists of the figures the SVG answer has, drawn here with the plot crate.
+    let model = example1();
+    let plot = PlotModel::from_model(&model).unwrap();
+    let options = PlotOptions::new()
+        .with_caption(model.description().unwrap())
+        .with_samples(40);
+    for view in views {
+        let drawing =
+            neutrospline_plot::render_drawing(&plot, view.parse().unwrap(), &options).unwrap();
+        let expected: Value = serde_json::from_str(&drawing.to_display_list()).unwrap();
+        assert_eq!(lists["drawings"][view], expected, "{view}");
+        assert_eq!(
+            svg["figures"][view].as_str().unwrap(),
+            drawing.to_svg(),
+            "{view}"
+        );
+    }
+    // The same handles, the same model and table, whatever the encoding.
+    for key in ["handles", "model", "table", "info", "errors"] {
+        assert_eq!(svg[key], lists[key], "{key}");
+    }
+    let (status, answer, _) = post(
+        port,
+        "/api/render",
+        &json!({ "model": EXAMPLE1_JSON, "views": ["plane"], "encoding": "png" }),
+    );
+    assert_eq!(status, 400);
+    assert_eq!(
+        answer["error"]["message"],
+        "encoding `png`: give \"svg\" or \"display-list\""
     );
 }
 
