@@ -8,11 +8,12 @@ import math
 import os
 import shutil
 import socket
-import statistics
 import subprocess
 import urllib.error
 import urllib.request
 from pathlib import Path
+
+from drag import DRAG_JS, degree20, summarise
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "examples" / "example1.json"
@@ -316,21 +317,12 @@ def test_canvas_frames_match_the_svg_figures(start_studio, page, out_dir):
     print("canvas vs SVG, worst mean difference per view:", json.dumps(worst))
 
 
-def degree20(path):
-    points = []
-    for k in range(21):
-        t = k / 20
-        points.append({
-            "x": 10 * t,
-            "y": 3 * math.sin(2 * math.pi * t) + (2 if k % 2 else 0),
-            "truth": round(0.5 + 0.4 * math.sin(3 * t), 3),
-            "indeterminacy": round(0.3 * t, 3),
-            "falsity": round(0.2 + 0.1 * math.cos(5 * t), 3),
-        })
-    path.write_text(json.dumps({"kind": "bezier", "name": "degree 20", "control_points": points}))
-
-
 def test_drag_degree_20_redraws_quickly(start_studio, page, out_dir, tmp_path):
+    """Drags a point of a degree-20 curve with six views side by side, then with one large:
+    every frame redraws every view shown. The timings are printed and saved; the speed itself
+    is measured by bench/studio_drag.py in a plain headless Chromium (Playwright's network
+    instrumentation costs the page time on every request), and STUDIO_DRAG_BUDGET_MS makes
+    this test fail above a median latency."""
     file = tmp_path / "degree20.json"
     degree20(file)
     studio = start_studio(file)
@@ -348,67 +340,19 @@ def test_drag_degree_20_redraws_quickly(start_studio, page, out_dir, tmp_path):
     for layout, summary in summaries.items():
         print(f"drag, degree 20, layout {layout}:", json.dumps(summary["summary"]))
         assert summary["summary"]["frames"] >= 5
+        previews = [t for t in summary["frames"] if t["preview"]]
+        assert {t["views"] for t in previews} == {6 if layout == "grid" else 1}, layout
+        assert not summary["frames"][-1]["preview"], "the drag ends on the settled SVG figures"
     budget = os.environ.get("STUDIO_DRAG_BUDGET_MS")
     if budget:
-        median = summaries["grid"]["summary"]["work_ms"]["median"]
+        median = summaries["grid"]["summary"]["latency_ms"]["median"]
         assert median <= float(budget), summaries["grid"]["summary"]
 
 
 def drag_and_time(page, index, moves=120, every_ms=16):
-    """Drags point `index` along a wave with pointer events sent from inside the page every
-    `every_ms` (a 60 Hz mouse; moves that come while a frame is being drawn are coalesced, so
-    `interval` is the time between redraws); the page's timings of the preview frames,
-    summarised."""
-    page.evaluate("window.studio.timings.length = 0")
-    page.evaluate(
-        """async ([index, moves, every]) => {
-            const host = document.querySelector('[data-view=plane] .host');
-            const handle = host.querySelector(`[data-point-index="${index}"]`);
-            const box = handle.getBoundingClientRect();
-            const x = box.x + box.width / 2, y = box.y + box.height / 2;
-            const fire = (type, k, target) => target.dispatchEvent(new PointerEvent(type, {
-                clientX: x + k, clientY: y + 30 * Math.sin(k / 10), pointerId: 1,
-                pointerType: 'mouse', isPrimary: true, bubbles: true,
-                buttons: type === 'pointerup' ? 0 : 1,
-            }));
-            fire('pointerdown', 0, handle);
-            for (let k = 1; k <= moves; k++) {
-                await new Promise((r) => setTimeout(r, every));
-                fire('pointermove', k, host);
-            }
-            fire('pointerup', moves, host);
-        }""",
-        [index, moves, every_ms],
-    )
-    idle(page)
-    timings = page.evaluate("window.studio.timings")
-    frames = [t for t in timings if t["preview"]]
-    final = [t for t in timings if not t["preview"]]
-
-    def stats(key):
-        values = sorted(t[key] for t in frames if t[key] is not None)
-        return {
-            "median": round(statistics.median(values), 1),
-            "p90": round(values[int(0.9 * (len(values) - 1))], 1),
-            "max": round(values[-1], 1),
-        }
-
-    summary = {
-        "moves": moves,
-        "move_every_ms": every_ms,
-        "frames": len(frames),
-        "views_per_frame": frames[-1]["views"],
-        "latency_ms": stats("latency"),
-        "work_ms": stats("work"),
-        "interval_ms": stats("interval"),
-        "server_ms": stats("server"),
-        "fetch_ms": stats("fetch"),
-        "dom_ms": stats("dom"),
-        "shown_ms": stats("shown"),
-        "final_full_quality_work_ms": round(final[-1]["work"], 1) if final else None,
-        "load_average": os.getloadavg(),
-    }
-    return {"summary": summary, "frames": timings}
+    """Drags point `index` (drag.DRAG_JS) and summarises the timings of the frames drawn."""
+    timings = page.evaluate(DRAG_JS, [index, moves, every_ms])
+    return {"summary": summarise(timings, moves, every_ms), "frames": timings}
 
 
 def test_points_rules_files_data_and_camera(start_studio, page, binary, out_dir, tmp_path):

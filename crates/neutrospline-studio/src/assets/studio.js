@@ -221,6 +221,38 @@
     }
   }
 
+  // The side panel (the table and the fields) while a point is dragged: at most every
+  // PANEL_EVERY_MS, and after the last frame; the views are redrawn every frame. Each update
+  // of the panel makes the browser lay it out and paint it again, which on a two-core machine
+  // took a third of a frame.
+  const PANEL_EVERY_MS = 100;
+  let panelAt = -Infinity;
+  let panelTimer = null;
+  let panelTable = null;
+
+  function updatePanel(table) {
+    panelAt = performance.now();
+    clearFieldErrors();
+    drawTable(table);
+    fillModelFields();
+    updateButtons();
+  }
+
+  function schedulePanel(table) {
+    panelTable = table;
+    const wait = panelAt + PANEL_EVERY_MS - performance.now();
+    if (wait <= 0) {
+      clearTimeout(panelTimer);
+      panelTimer = null;
+      updatePanel(table);
+    } else if (!panelTimer) {
+      panelTimer = setTimeout(() => {
+        panelTimer = null;
+        updatePanel(panelTable);
+      }, wait);
+    }
+  }
+
   function accept(value, job) {
     state.model = value.model;
     state.info = value.info;
@@ -232,11 +264,14 @@
       state.committed = text;
     }
     if (state.selected >= state.model.control_points.length) state.selected = state.model.control_points.length - 1;
-    clearFieldErrors();
     drawFigures(value);
-    drawTable(value.table);
-    fillModelFields();
-    updateButtons();
+    if (job.preview) {
+      schedulePanel(value.table);
+    } else {
+      clearTimeout(panelTimer);
+      panelTimer = null;
+      updatePanel(value.table);
+    }
     if (job.message) status(job.message);
     else if (Object.keys(value.errors).length) alertMessage(Object.entries(value.errors).map(([v, e]) => `${v}: ${e}`).join('\n'));
     else if ($('#alert').textContent) $('#alert').textContent = '';
