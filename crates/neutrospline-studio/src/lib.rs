@@ -6,7 +6,10 @@
 //! binary; it computes nothing itself. Each edit sends the model (the JSON object a `.json`
 //! save writes) to a small HTTP server on 127.0.0.1, which reads it with `neutrospline-io`
 //! (so a refused value carries the CLI's message), draws the views shown with
-//! `neutrospline-plot` and evaluates the table with the core's traits.
+//! `neutrospline-plot` and evaluates the table with the core's traits. Settled figures are the
+//! SVG `neutrospline plot` writes; while a point is dragged the page asks for the same drawings
+//! as display lists (`neutrospline_plot::Drawing::to_display_list`) and paints them on
+//! canvases (`paint.js`), which is several times faster for the browser than laying out SVG.
 //!
 //! ## The public items
 //! - [`Studio`]: the model the studio was started with and the one file it may write;
