@@ -111,9 +111,9 @@
 
   // ------------------------------------------------------------------------------------------
   // Rendering: one request at a time. Proposals made meanwhile replace each other, and the
-  // latest leaves as soon as the answer before it has been drawn. (Sending it earlier, so that
-  // the server draws frame N + 1 while the page paints frame N, was measured slower on a
-  // two-core machine: both then compete for the same cores and frames queue up.)
+  // latest leaves as soon as the answer before it has been drawn. (Sending it as soon as the
+  // answer arrives, so that the server draws frame N + 1 while the page paints frame N,
+  // measured no faster on a two-core machine, where both compete for the same cores.)
 
   let pending = null;
   let serverBusy = false;
