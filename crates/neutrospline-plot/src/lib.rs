@@ -23,6 +23,9 @@
 //!   `#[non_exhaustive]`: views may be added, so a `match` on it needs a wildcard arm.
 //! - [`render_svg`] draws one view of a model with options; [`render_png`] draws and
 //!   rasterizes it, [`svg_to_png`] rasterizes an SVG document.
+//! - [`render_drawing`] draws the view as a [`Drawing`], its primitives in order, which
+//!   [`Drawing::to_svg`] writes as the SVG above and [`Drawing::to_display_list`] as compact
+//!   JSON for painting on an HTML canvas (the studio's frames while a point is dragged).
 //! - [`PlotError`]: every error of the above; [`FONT_FAMILY`]: the bundled font's family name.
 //!
 //! ```
@@ -129,8 +132,9 @@
 //! elevation above it) and draw back panes, grid and labels like common 3-D plotting tools.
 //!
 //! ## Inside the crate
-//! [`render_svg`] (module `render`) checks the options, samples the model and builds the
-//! context every view draws from (`ctx`), then hands it to the view. The views sit behind one
+//! [`render_drawing`] (module `render`) checks the options, samples the model and builds the
+//! context every view draws from (`ctx`), then hands it to the view, which draws into a
+//! `drawing::Painter` and returns the [`Drawing`] it recorded. The views sit behind one
 //! dispatch, `views::figure`, the only `match` on [`View`] that draws: each view is one
 //! module of `views` that draws its three cases (a 2-D curve, a 3-D curve, a surface) and its
 //! default title:
@@ -153,8 +157,10 @@
 //!   point's degrees, taken by `lifted`, `curve3d` and `mesh`);
 //! - geometry: `nearest` (the point of a curve nearest to a given point: dense samples, then
 //!   a golden-section search);
-//! - output: `scene` (depth-sorted drawing), `svg` (the SVG writer), `theme` (sizes and
-//!   colours), `font` (the bundled font and its metrics), `png` (rasterizing);
+//! - output: `scene` (depth-sorted drawing), `drawing` (the `Painter` and the [`Drawing`] it
+//!   records), `svg` (colours, styles and the SVG encoding), `display_list` (the canvas
+//!   encoding), `theme` (sizes and colours), `font` (the bundled font and its metrics), `png`
+//!   (rasterizing);
 //! - the public types: `model`, `overlay` (the data overlay and its checks), `options`,
 //!   `view`, `error`.
 //!
@@ -162,8 +168,8 @@
 //! its arm in `views::figure`.
 //!
 //! ## Output
-//! SVG is written by a small deterministic writer (coordinates with two decimals, fixed
-//! element order), with real `<text>` elements in the bundled DejaVu Sans ([`FONT_FAMILY`],
+//! SVG is written from the recorded drawing (coordinates with two decimals, fixed element
+//! order), with real `<text>` elements in the bundled DejaVu Sans ([`FONT_FAMILY`],
 //! fallback `sans-serif`). PNG is rasterized from that SVG with resvg using only the bundled
 //! font. Both are byte-for-byte reproducible. Degenerate models (one point, all points equal,
 //! a straight line, all degrees 0 or 1, a 1 x 1 or flat surface) render with padded axis
