@@ -501,6 +501,24 @@ def test_drop_broken_file_3d_curve_and_surface(start_studio, page, binary, out_d
     page.press("input[name=z]", "Enter")
     idle(page)
     assert model(page)["control_points"][2]["z"] == 0.6
+    # A space curve's point is dragged in the plane of the screen: the least move whose
+    # picture is the pointer's move (the map comes from the server).
+    drag_map = page.evaluate("window.studio.dragMap()")
+    assert drag_map is not None and len(drag_map) == 3
+    before = model(page)["control_points"][1]
+    per_pixel = 1600 / page.locator("#views [data-view=plane] .figure svg").bounding_box()["width"]
+    drag_handle(page, 1, 40, -30)
+    after = model(page)["control_points"][1]
+    dx, dy = 40 * per_pixel, -30 * per_pixel
+    for i, axis in enumerate("xyz"):
+        expected = before[axis] + drag_map[i][0] * dx + drag_map[i][1] * dy
+        assert math.isclose(after[axis], expected, abs_tol=0.01), (axis, before, after, expected)
+    assert math.dist([before[a] for a in "xyz"], [after[a] for a in "xyz"]) > 0.1
+    assert (after["truth"], after["indeterminacy"], after["falsity"]) == (
+        before["truth"], before["indeterminacy"], before["falsity"])
+    assert "moved point 1 to (" in page.locator("[role=status]").inner_text()
+    # The fields show the dropped point, even the one edited before the drag.
+    assert float(page.locator("#point-fields input[name=z]").input_value()) == after["z"]
     shot(page, out_dir, "14-helix-3d")
 
     # A surface: every view draws; degrees of a control point are edited; no handles to drag.

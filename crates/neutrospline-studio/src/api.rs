@@ -32,7 +32,7 @@ use neutrospline_plot::{
 };
 use serde_json::{json, Map, Value};
 
-use crate::figure::{figure_options, handles};
+use crate::figure::{figure_options, handles, space_handles};
 use crate::http::{Handler, Request, Response};
 
 const INDEX_HTML: &str = include_str!("assets/index.html");
@@ -386,11 +386,18 @@ fn render(body: &Value) -> Result<Response, Response> {
                             let points: Vec<[f64; 2]> =
                                 c.control_points().iter().map(|p| p.position).collect();
                             let h = handles(&drawing, &points);
-                            json!({ "pixels": h.pixels, "frame": h.frame })
+                            json!({ "pixels": h.pixels, "frame": h.frame, "drag": h.drag })
+                        }
+                        Shape::Spatial(c) => {
+                            let points: Vec<[f64; 3]> =
+                                c.control_points().iter().map(|p| p.position).collect();
+                            let h = space_handles(&drawing, &points);
+                            json!({ "pixels": h.pixels, "frame": null, "drag": h.drag })
                         }
                         _ => json!({
                             "pixels": drawing.circle_centres("control-point"),
                             "frame": null,
+                            "drag": null,
                         }),
                     };
                 }

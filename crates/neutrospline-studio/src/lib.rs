@@ -20,7 +20,8 @@
 //! - [`figure_options`]: the options `neutrospline plot` draws a model with by default; the
 //!   figure itself is `neutrospline_plot::PlotModel::from_model` (and
 //!   `DataOverlay::from_table` for data), the command's own code path, so an exported SVG is
-//!   the command's bytes; [`handles`] locates the control points in a `plane` view.
+//!   the command's bytes; [`handles`] and [`space_handles`] locate the control points in a
+//!   `plane` view and say how dragging one moves it.
 //! - [`open_browser`]: asks the desktop to open a URL, quietly.
 //!
 //! ```no_run
@@ -38,7 +39,7 @@ mod figure;
 mod http;
 
 pub use api::Studio;
-pub use figure::{figure_options, handles, Handles};
+pub use figure::{figure_options, handles, space_handles, Handles};
 pub use http::{check_origin, Handler, Request, Response, Server, MAX_BODY};
 
 /// Asks the desktop to open `url` in the default browser (`xdg-open`, or `open` on macOS),

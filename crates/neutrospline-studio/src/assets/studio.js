@@ -13,6 +13,7 @@
   const DEGREES = ['truth', 'indeterminacy', 'falsity'];
   const DEFAULT_CAMERA = { azimuth: -55, elevation: 25 };
   const SVG_NS = 'http://www.w3.org/2000/svg';
+  const COORDINATES = ['x', 'y', 'z'];
   // Samples along the curve while a point is dragged (the figure after the drag uses the
   // plot's default, as exports do).
   const PREVIEW_SAMPLES = 80;
@@ -429,26 +430,32 @@
       if (!handle) return;
       const k = Number(handle.getAttribute('data-point-index'));
       selectPoint(k, true);
-      const frame = state.handles && state.handles.frame;
+      // How a move of the pointer moves the point (from the server: the inverse of the plane
+      // view's map for a plane curve; for a space curve, the least move under the pointer).
+      const map = state.handles && state.handles.drag;
       const svg = host.querySelector('.studio-overlay');
-      if (!frame || !svg || state.info.dimension !== 2) {
-        status(`point ${k} selected (drag works on plane curves; edit the fields for others)`);
+      if (!map || !svg) {
+        status(`point ${k} selected (this view cannot place it under the pointer: edit its fields to move it)`);
         return;
       }
       event.preventDefault();
+      // The fields follow the drag; one being edited would keep its text.
+      if (document.activeElement instanceof HTMLElement) document.activeElement.blur();
       capture(host, event.pointerId);
       const p = svgPoint(svg, event);
       const point = state.model.control_points[k];
-      drag = { k, frame, start: p, x: point.x, y: point.y, moved: false, pointerId: event.pointerId };
+      const axes = COORDINATES.slice(0, map.length);
+      drag = { k, map, axes, start: p, from: axes.map((a) => point[a]), moved: false, pointerId: event.pointerId };
     });
     host.addEventListener('pointermove', (event) => {
       if (!drag || event.pointerId !== drag.pointerId) return;
       const svg = host.querySelector('.studio-overlay');
       const p = svgPoint(svg, event);
-      const [sx, sy] = drag.frame;
+      const [dx, dy] = [p.x - drag.start.x, p.y - drag.start.y];
       const m = clone(state.model);
-      m.control_points[drag.k].x = drag.x + (p.x - drag.start.x) / sx;
-      m.control_points[drag.k].y = drag.y + (p.y - drag.start.y) / sy;
+      drag.axes.forEach((a, i) => {
+        m.control_points[drag.k][a] = drag.from[i] + drag.map[i][0] * dx + drag.map[i][1] * dy;
+      });
       drag.moved = true;
       drag.last = m.control_points[drag.k];
       propose(m, { preview: true });
@@ -459,9 +466,9 @@
       drag = null;
       if (!d.moved) return;
       const m = clone(state.model);
-      m.control_points[d.k].x = d.last.x;
-      m.control_points[d.k].y = d.last.y;
-      propose(m, { commit: true, message: `moved point ${d.k} to (${fmt(d.last.x)}, ${fmt(d.last.y)})` });
+      d.axes.forEach((a) => { m.control_points[d.k][a] = d.last[a]; });
+      const at = d.axes.map((a) => fmt(d.last[a])).join(', ');
+      propose(m, { commit: true, message: `moved point ${d.k} to (${at})` });
     };
     host.addEventListener('pointerup', end);
     host.addEventListener('pointercancel', end);
@@ -1060,6 +1067,9 @@
     camera: () => clone(state.camera),
     // The map from model x, y to the plane view's pixels: [sx, sy, ox, oy] (null for 3-D).
     frame: () => (state.handles && state.handles.frame ? state.handles.frame.slice() : null),
+    // How a pointer move of (dx, dy) figure pixels in the plane view moves a control point:
+    // one row [per dx, per dy] per coordinate x, y (, z); null when the view cannot say.
+    dragMap: () => (state.handles && state.handles.drag ? clone(state.handles.drag) : null),
     idle: () => (outstanding || pending ? new Promise((r) => idleWaiters.push(r)) : Promise.resolve()),
     // Paints a display list on a canvas, as drag frames are painted (for tests).
     paintDisplayList: self.paintDisplayList,
