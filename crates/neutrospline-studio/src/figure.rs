@@ -136,7 +136,7 @@ fn affine_fit(points: &[[f64; 3]], pixels: &[[f64; 2]]) -> Option<[[f64; 3]; 2]>
 /// lie in a plane or on a line).
 fn solve3(mut m: [[f64; 3]; 3], mut b: [f64; 3]) -> Option<[f64; 3]> {
     let scale = (0..3).map(|i| m[i][i].abs()).fold(0.0, f64::max);
-    if !(scale > 0.0) || !scale.is_finite() {
+    if !scale.is_finite() || scale <= 0.0 {
         return None;
     }
     for col in 0..3 {
@@ -168,7 +168,7 @@ fn least_move(a: &[[f64; 3]; 2]) -> Option<Vec<[f64; 2]>> {
     let dot = |u: &[f64; 3], v: &[f64; 3]| u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
     let (g00, g01, g11) = (dot(&a[0], &a[0]), dot(&a[0], &a[1]), dot(&a[1], &a[1]));
     let det = g00 * g11 - g01 * g01;
-    if !(det > 1e-12 * g00 * g11) {
+    if !det.is_finite() || det <= 1e-12 * g00 * g11 {
         return None;
     }
     let inv = [[g11 / det, -g01 / det], [-g01 / det, g00 / det]];
