@@ -61,6 +61,12 @@ pub(crate) fn num(v: f64) -> String {
             _ => format!("{sign}{whole}.{cents:02}"),
         };
     }
+    num_by_format(v)
+}
+
+/// [`num`] the slow way, which defines it: `format!("{v:.2}")`, trailing zeros and a trailing
+/// point removed, `-0` as `0`.
+fn num_by_format(v: f64) -> String {
     let s = format!("{v:.2}");
     let s = if s.contains('.') {
         s.trim_end_matches('0').trim_end_matches('.').to_string()
@@ -505,19 +511,7 @@ mod tests {
     /// the ties and near-ties of the rounding.
     #[test]
     fn num_matches_the_formatter() {
-        let slow = |v: f64| {
-            let s = format!("{v:.2}");
-            let s = if s.contains('.') {
-                s.trim_end_matches('0').trim_end_matches('.').to_string()
-            } else {
-                s
-            };
-            if s == "-0" {
-                "0".to_string()
-            } else {
-                s
-            }
-        };
+        let slow = num_by_format;
         let mut state = 0x2545_f491_4f6c_dd1d_u64;
         let mut next = || {
             state ^= state << 13;
