@@ -5,7 +5,6 @@ use std::path::PathBuf;
 
 use neutrospline::{AxisSet, AxisSetName, Degrees, PointRelation};
 use neutrospline_io::{Format, Kind, KnotSpec, Model, ReadOptions};
-use numpy::PyUntypedArrayMethods;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 
@@ -87,11 +86,7 @@ fn knot_spec(knots: &Bound<'_, PyAny>, what: &str) -> PyResult<KnotSpec> {
     if let Ok(text) = knots.extract::<String>() {
         return KnotSpec::parse_option(&text).map_err(|e| invalid_at(what, e));
     }
-    let values = float_array(knots, what)?
-        .as_array()
-        .iter()
-        .copied()
-        .collect();
+    let values = float_array(knots, what)?.values()?.to_vec();
     Ok(KnotSpec::Explicit(values))
 }
 
@@ -141,7 +136,7 @@ fn measure(
             ),
         ));
     }
-    let values: Vec<f64> = array.as_array().iter().copied().collect();
+    let values = array.values()?;
     let results = values
         .chunks_exact(3)
         .enumerate()
