@@ -20,6 +20,7 @@ use pyo3::PyClassInitializer;
 use crate::arrays::{readonly_array, vector, Output, Params, Writer};
 use crate::errors::{invalid, invalid_at};
 use crate::model::{self, FigureRequest, Meta, PointArrays};
+use numpy::PyArrayMethods;
 
 /// Parameters evaluated per block when the output is not Fortran-ordered: the block is
 /// evaluated column by column into cache-resident scratch, then written row by row.
@@ -208,7 +209,8 @@ impl Construction<'_, '_> {
     /// Builds the curve of `kind` and its model.
     fn build(self, kind: CurveKind) -> PyResult<Curve> {
         let membership = model::membership(self.membership)?;
-        let arrays = PointArrays::read(self.positions, self.degrees, membership, false)?;
+        let arrays =
+            PointArrays::read(self.positions, "positions", self.degrees, membership, false)?;
         let weights = self
             .weights
             .map(|w| {
@@ -637,6 +639,12 @@ impl Curve {
         let scalar = matches!(params, Params::Scalar(_));
         let ts = params.values()?;
         let columns = self.state.dimension() + 3;
+        // A scalar parameter's result is one row: an `out` of that shape (columns,) gets it,
+        // checked before anything is evaluated.
+        let row_out = match (scalar, out) {
+            (true, Some(out)) => Some(crate::arrays::checked_out(out, &[columns])?),
+            _ => None,
+        };
         let output = Output::new(py, if scalar { None } else { out }, ts.len(), columns)?;
         let mut writer = output.write()?;
         let domain = self.domain_range();
@@ -650,6 +658,16 @@ impl Curve {
         };
         drop(writer);
         result.map_err(|e| parameter_error(ts, scalar, &domain, e))?;
+        if let Some(target) = row_out {
+            let values = output.array().try_readonly()?;
+            target
+                .try_readwrite()
+                .map_err(|e| invalid_at("out", format!("cannot write into the array ({e})")))?
+                .as_array_mut()
+                .assign(&values.as_array().row(0));
+            drop(values);
+            return Ok(target.into_any().unbind());
+        }
         output.finish(scalar)
     }
 

@@ -296,7 +296,7 @@ fn read_source(
             "missing: give the degrees of the data points (or a data file instead of arrays)",
         )
     })?;
-    let arrays = PointArrays::read(data, degrees, membership, false)?;
+    let arrays = PointArrays::read(data, "data", degrees, membership, false)?;
     Ok(Source::Arrays {
         positions: arrays.positions,
         dimension: arrays.dimension,

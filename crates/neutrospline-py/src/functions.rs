@@ -271,6 +271,7 @@ pub fn check_relation(
     let n = axis_set(AxisSetName::N, n)?;
     let arrays = model::PointArrays::read(
         positions,
+        "positions",
         degrees,
         neutrospline::Membership::Neutrosophic,
         false,

@@ -85,14 +85,16 @@ pub struct PointArrays {
 }
 
 impl PointArrays {
-    /// Reads and checks the arrays; `grid` reads `(rows, cols, 3)` positions.
+    /// Reads and checks the arrays (the positions named `what` in messages: `positions`, or
+    /// `data` for fitting); `grid` reads `(rows, cols, 3)` positions.
     pub fn read(
         positions: &Bound<'_, PyAny>,
+        what: &str,
         degrees: &Bound<'_, PyAny>,
         membership: Membership,
         grid: bool,
     ) -> PyResult<PointArrays> {
-        let positions = float_array(positions, "positions")?;
+        let positions = float_array(positions, what)?;
         let degree_array = float_array(degrees, "degrees")?;
         let shape = positions.shape().to_vec();
         let (count, dimension, grid) = match (grid, shape.as_slice()) {
@@ -100,7 +102,7 @@ impl PointArrays {
             (true, &[rows, cols, 3]) => (rows * cols, 3, Some((rows, cols))),
             (false, _) => {
                 return Err(invalid_at(
-                    "positions",
+                    what,
                     format!(
                         "expected an array of shape (n, 2) or (n, 3) (one row x, y[, z] per \
                          control point), got shape {shape:?}"
@@ -109,7 +111,7 @@ impl PointArrays {
             }
             (true, _) => {
                 return Err(invalid_at(
-                    "positions",
+                    what,
                     format!(
                         "expected an array of shape (rows, cols, 3) (x, y, z of each control \
                          point of the grid), got shape {shape:?}"

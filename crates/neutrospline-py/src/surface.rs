@@ -93,8 +93,10 @@ fn build(
     meta: Meta,
 ) -> PyResult<Surface> {
     let membership = model::membership(membership)?;
-    let arrays = PointArrays::read(positions, degrees, membership, true)?;
-    let (rows, cols) = arrays.grid.unwrap_or((0, 0));
+    let arrays = PointArrays::read(positions, "positions", degrees, membership, true)?;
+    let (rows, cols) = arrays
+        .grid
+        .ok_or_else(|| invalid_at("positions", "expected a grid of shape (rows, cols, 3)"))?;
     let points = arrays.points::<3>();
     let surface = match settings.kind {
         SurfaceKind::Bezier => CoreSurface::bezier(rows, cols, points),

@@ -479,3 +479,28 @@ def test_out_that_cannot_be_written_in_place_is_refused(call):
         with pytest.raises(ns.ModelError, match=message):
             evaluate(out)
         assert np.array_equal(np.asarray(out), before), bad
+
+
+@pytest.mark.parametrize("curve", CURVES)
+def test_out_of_a_scalar_parameter_gets_its_row(curve):
+    """A scalar t gives one row: out of that shape gets it (it was ignored before)."""
+    curve = CURVES[curve]
+    columns = curve.dimension + 3
+    want = curve(0.625)
+    for layout, make in out_layouts((columns,)).items():
+        out = make()
+        assert curve(0.625, out=out) is out, layout
+        assert out.tobytes() == want.tobytes(), layout
+    for bad, (make, message) in bad_outs((columns,)).items():
+        out = make()
+        before = np.array(out, copy=True)
+        with pytest.raises(ns.ModelError, match=message):
+            curve.evaluate(np.float64(0.625), out=out)
+        assert np.array_equal(np.asarray(out), before), bad
+
+
+def test_fit_names_its_data_argument():
+    with pytest.raises(ns.ModelError, match=r"^data\[2, 1\] = None is not a number$"):
+        ns.fit([[0.0, 0.0], [1.0, 1.0], [2.0, None], [3.0, 1.0]], [[1, 0, 0]] * 4)
+    with pytest.raises(ns.ModelError, match=r"^data: expected an array of shape \(n, 2\) or \(n, 3\)"):
+        ns.fit(np.zeros((4, 4)), [[1, 0, 0]] * 4)
