@@ -504,3 +504,26 @@ def test_fit_names_its_data_argument():
         ns.fit([[0.0, 0.0], [1.0, 1.0], [2.0, None], [3.0, 1.0]], [[1, 0, 0]] * 4)
     with pytest.raises(ns.ModelError, match=r"^data: expected an array of shape \(n, 2\) or \(n, 3\)"):
         ns.fit(np.zeros((4, 4)), [[1, 0, 0]] * 4)
+
+
+def test_the_fast_path_does_not_copy():
+    """An aligned C-contiguous float64 t is read in place: numpy allocates nothing while a
+    million parameters are evaluated into out (a strided t, which is copied once, allocates
+    its 8 MB: the measurement sees copies)."""
+    import tracemalloc
+
+    t = np.linspace(0.0, 1.0, 1_000_000)
+    out = np.empty((t.size, 5), order="F")
+    BEZIER.evaluate(t, out=out)
+
+    def peak(call):
+        tracemalloc.start()
+        try:
+            call()
+            return tracemalloc.get_traced_memory()[1]
+        finally:
+            tracemalloc.stop()
+
+    assert peak(lambda: BEZIER.evaluate(t, out=out)) < 100_000
+    strided_t = np.repeat(t, 2)[::2]
+    assert peak(lambda: BEZIER.evaluate(strided_t, out=out)) >= t.nbytes
