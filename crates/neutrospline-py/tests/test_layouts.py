@@ -253,6 +253,7 @@ def other_cases():
     yield "certainty(degree)", ns.certainty, BSPLINE_DEGREES[1]
     yield "check_relation(positions)", lambda p: ns.check_relation(p, [[0.5, 0.5, 0.5]], AXIS_M, AXIS_N), np.array([[1.0, 3.0]])
     yield "check_relation(degrees)", lambda d: ns.check_relation([[2.0, 4.0]], d, AXIS_M, AXIS_N), np.array([[0.75, 0.25, 0.25]])
+    yield "largest_relation(pairs)", lambda p: ns.largest_relation(AXIS_M, AXIS_N, p), np.array([[2.0, 4.0], [1.0, 3.0]])
     yield "fit(data)", lambda p: ns.fit(p, DATA_DEGREES, control_points=6), DATA
     yield "fit(degrees)", lambda d: ns.fit(DATA, d, control_points=6), DATA_DEGREES
     yield "fit(parameters)", lambda s: ns.fit(DATA, DATA_DEGREES, parameters=s, control_points=6), DATA_S
@@ -409,6 +410,10 @@ def test_refused_arrays_name_their_argument():
         ns.score([0.5, None, 0.5])
     with pytest.raises(ns.ModelError, match=r"^parameters\[0\] = None is not a number$"):
         ns.fit(DATA, DATA_DEGREES, parameters=[None] * 12, control_points=6)
+    with pytest.raises(ns.ModelError, match=r"^pairs\[1, 1\] = None is not a number$"):
+        ns.largest_relation(AXIS_M, AXIS_N, [(1.0, 3.0), (2.0, None)])
+    with pytest.raises(ns.ModelError, match=r"^pairs: expected an array of shape \(k, 2\)"):
+        ns.largest_relation(AXIS_M, AXIS_N, [1.0, 3.0])
     with pytest.raises(ns.ModelError, match=r"^nodes: expected an array of shape \(dimension, n\)"):
         ns.Bezier.from_nodes([0.0, 1.0], [[1, 0, 0]] * 2)
 

@@ -263,7 +263,7 @@ def certainty(degrees: ArrayLike) -> Union[float, FloatArray]: ...
 def largest_relation(
     m: Sequence[Tuple[float, Triple]],
     n: Sequence[Tuple[float, Triple]],
-    pairs: Optional[Sequence[Tuple[float, float]]] = None,
+    pairs: Optional[ArrayLike] = None,
 ) -> Tuple[FloatArray, FloatArray]: ...
 def check_relation(
     positions: ArrayLike,
