@@ -211,10 +211,18 @@ pub fn element_name(what: &str, mut k: usize, shape: &[usize]) -> String {
 }
 
 /// Refuses the first element of an object array that is not a real number: `None`, a bool, a
-/// string, bytes, a complex number, a sequence, or a Python integer beyond 2^53 in magnitude.
+/// string, bytes, a complex number, a sequence, or an integer (Python's or numpy's) that a
+/// float64 cannot hold exactly.
 fn check_objects(array: &Bound<'_, PyUntypedArray>, what: &str) -> PyResult<()> {
     let shape = array.shape().to_vec();
-    let numbers = array.py().import("numbers")?;
+    let py = array.py();
+    let numbers = py.import("numbers")?;
+    let (integral, complex, real) = (
+        numbers.getattr("Integral")?,
+        numbers.getattr("Complex")?,
+        numbers.getattr("Real")?,
+    );
+    let int = py.get_type::<PyInt>();
     let flat = array.call_method0("ravel")?;
     for (k, item) in flat.try_iter()?.enumerate() {
         let item = item?;
@@ -239,17 +247,18 @@ fn check_objects(array: &Bound<'_, PyUntypedArray>, what: &str) -> PyResult<()> 
         if item.is_instance_of::<PyFloat>() {
             continue;
         }
-        if item.is_instance_of::<PyInt>() {
-            let Ok(exact) = item.extract::<i128>() else {
+        if item.is_instance(&integral)? {
+            // Python and numpy integers: exact when converting to float64 and back gives the
+            // same integer (every one up to 2^53, and larger ones of few significant bits).
+            let Ok(nearest) = item.call_method0("__float__") else {
                 return refuse("is an integer too large for a float64");
             };
-            if exact.unsigned_abs() > 1 << 53 && (exact as f64) as i128 != exact {
+            let back = int.call1((&nearest,))?;
+            if !back.eq(&item)? {
                 return refuse("is an integer a float64 cannot hold exactly (beyond 2^53)");
             }
             continue;
         }
-        let complex = numbers.getattr("Complex")?;
-        let real = numbers.getattr("Real")?;
         if item.is_instance(&complex)? && !item.is_instance(&real)? {
             return refuse("is a complex number, not a real number");
         }

@@ -376,6 +376,8 @@ REFUSED = [
     (np.array([0.0, True], dtype=object), r"^t\[1\] = True is a boolean"),
     (np.array([0, 2**53 + 1], dtype=np.int64), r"^t\[1\] = 9007199254740993 \(int64\) is not exactly a float64"),
     ([0, 2**70 + 1], r"^t\[1\] = 1180591620717411303425 is an integer"),
+    (np.array([0, np.int64(2**53 + 1)], dtype=object), r"^t\[1\] = np.int64\(9007199254740993\) is an integer a float64 cannot hold exactly"),
+    ([0, 10**400], r"^t\[1\] = 1000000000000000000000.* is an integer too large for a float64$"),
     (np.zeros((2, 2)), r"^t: expected a number or a 1-D array of numbers, got a 2-D array"),
     ([[0.0], [0.5, 1.0]], r"^t: not an array of numbers"),
     (np.array(["2026-01-01"], dtype="datetime64[D]"), r"^t: expected numbers, got an array of dtype"),
@@ -532,3 +534,10 @@ def test_the_fast_path_does_not_copy():
     assert peak(lambda: BEZIER.evaluate(t, out=out)) < 100_000
     strided_t = np.repeat(t, 2)[::2]
     assert peak(lambda: BEZIER.evaluate(strided_t, out=out)) >= t.nbytes
+
+
+def test_large_integers_a_float64_holds_are_read():
+    """2^70 and 2^200 are float64 values: read exactly, like any other integer."""
+    for big in (2**70, 2**200):
+        want = BEZIER.nearest(np.array([[float(big), 0.0]]))
+        assert canonical(BEZIER.nearest([[big, 0]])) == canonical(want)
