@@ -34,6 +34,55 @@ pub fn rounded(v: f64, decimals: usize) -> String {
     }
 }
 
+/// A cell of a table: a number (or a missing value), or a word (a name from a fixed list, such
+/// as an intersection's contact, written as it is in CSV and as a JSON string).
+pub trait TableCell {
+    /// Appends the cell as CSV.
+    fn push_csv(&self, line: &mut Vec<u8>);
+    /// Appends the cell as a JSON value.
+    fn push_json(&self, line: &mut Vec<u8>);
+}
+
+impl TableCell for Option<f64> {
+    fn push_csv(&self, line: &mut Vec<u8>) {
+        if let Some(v) = self {
+            push_number(line, *v);
+        }
+    }
+
+    fn push_json(&self, line: &mut Vec<u8>) {
+        match self {
+            Some(v) => push_number(line, *v),
+            None => line.extend_from_slice(b"null"),
+        }
+    }
+}
+
+/// A numeric cell or a word (see [`TableCell`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Cell {
+    /// A number.
+    Number(f64),
+    /// A word: letters, digits and `-` only, so that CSV needs no quotes.
+    Word(&'static str),
+}
+
+impl TableCell for Cell {
+    fn push_csv(&self, line: &mut Vec<u8>) {
+        match self {
+            Cell::Number(v) => push_number(line, *v),
+            Cell::Word(w) => line.extend_from_slice(w.as_bytes()),
+        }
+    }
+
+    fn push_json(&self, line: &mut Vec<u8>) {
+        match self {
+            Cell::Number(v) => push_number(line, *v),
+            Cell::Word(w) => line.extend_from_slice(json_string(w).as_bytes()),
+        }
+    }
+}
+
 /// Writes a numeric table. Rows are produced lazily, so that any number of samples streams.
 ///
 /// CSV: the header, then one line per row. JSON: `[` then one object per row with the columns
@@ -42,11 +91,11 @@ pub fn rounded(v: f64, decimals: usize) -> String {
 ///
 /// # Errors
 /// The first error of `rows`, or a write error.
-pub fn write_table<W: Write + ?Sized>(
+pub fn write_table<W: Write + ?Sized, C: TableCell>(
     w: &mut W,
     format: TableFormat,
     columns: &[String],
-    rows: impl IntoIterator<Item = anyhow::Result<Vec<Option<f64>>>>,
+    rows: impl IntoIterator<Item = anyhow::Result<Vec<C>>>,
 ) -> anyhow::Result<()> {
     // Each row is formatted into one reused buffer and written with one call.
     let mut line: Vec<u8> = Vec::with_capacity(32 * columns.len());
@@ -61,9 +110,7 @@ pub fn write_table<W: Write + ?Sized>(
                     if i > 0 {
                         line.push(b',');
                     }
-                    if let Some(v) = value {
-                        push_number(&mut line, *v);
-                    }
+                    value.push_csv(&mut line);
                 }
                 line.push(b'\n');
                 w.write_all(&line)?;
@@ -86,10 +133,7 @@ pub fn write_table<W: Write + ?Sized>(
                         line.extend_from_slice(b", ");
                     }
                     line.extend_from_slice(key.as_bytes());
-                    match value {
-                        Some(v) => push_number(&mut line, *v),
-                        None => line.extend_from_slice(b"null"),
-                    }
+                    value.push_json(&mut line);
                 }
                 line.push(b'}');
                 w.write_all(&line)?;

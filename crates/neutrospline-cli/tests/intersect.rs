@@ -9,7 +9,7 @@ use std::process::{Command, Stdio};
 const BIN: &str = env!("CARGO_BIN_EXE_neutrospline");
 
 const HEADER: &str =
-    "index,t_a,t_b,x,y,truth_a,indeterminacy_a,falsity_a,truth_b,indeterminacy_b,falsity_b";
+    "index,t_a,t_b,x,y,truth_a,indeterminacy_a,falsity_a,truth_b,indeterminacy_b,falsity_b,contact";
 
 fn examples_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
@@ -48,11 +48,27 @@ fn ok(dir: &Path, args: &[&str]) -> String {
     stdout
 }
 
+/// The numeric columns of each row (all but the last, `contact`).
 fn rows(table: &str) -> Vec<Vec<f64>> {
     table
         .lines()
         .skip(1)
-        .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
+        .map(|l| {
+            let cells: Vec<&str> = l.split(',').collect();
+            cells[..cells.len() - 1]
+                .iter()
+                .map(|c| c.parse().unwrap())
+                .collect()
+        })
+        .collect()
+}
+
+/// The `contact` column of each row.
+fn contacts(table: &str) -> Vec<String> {
+    table
+        .lines()
+        .skip(1)
+        .map(|l| l.rsplit(',').next().unwrap().to_owned())
         .collect()
 }
 
@@ -69,6 +85,7 @@ fn intersect_closed_forms() {
     assert_eq!(out.lines().next().unwrap(), HEADER);
     let r = rows(&out);
     assert_eq!(r.len(), 1);
+    assert_eq!(contacts(&out), ["crossing"]);
     let s = (3.0 - 3f64.sqrt()) / 6.0;
     assert!((r[0][1] - s).abs() < 1e-14 && (r[0][2] - (1.0 - s)).abs() < 1e-14);
     assert!((r[0][3] - 1.5).abs() < 1e-14 && (r[0][4] - 1.0).abs() < 1e-14);
@@ -77,6 +94,7 @@ fn intersect_closed_forms() {
     let out = ok(dir.path(), &["intersect", "line.csv", "nurbs-circle.toml"]);
     let r = rows(&out);
     assert_eq!(r.len(), 2);
+    assert_eq!(contacts(&out), ["crossing", "crossing"]);
     for row in &r {
         let (x, y) = (row[3], row[4]);
         assert!((x.hypot(y) - 1.0).abs() < 1e-14, "{row:?}");
@@ -122,11 +140,13 @@ fn intersect_tangent_and_end_points_once() {
     // Tangent at (0, 1): the circle's N (t = 1/4) and the upper circle's S (t = 3/4), once.
     assert_eq!(
         out,
-        format!("{HEADER}\n0,0.25,0.75,0,1,0.6,0.3,0.2,0.5,0.5,0.5\n")
+        format!("{HEADER}\n0,0.25,0.75,0,1,0.6,0.3,0.2,0.5,0.5,0.5,tangent\n")
     );
     // Cubics meeting at their ends (A's end is B's start), crossing twice more; the reference
     // values are from scripts/reference/make_intersection_reference.py (mpmath).
-    let r = rows(&ok(dir.path(), &["intersect", "first.csv", "second.csv"]));
+    let out = ok(dir.path(), &["intersect", "first.csv", "second.csv"]);
+    assert_eq!(contacts(&out), ["crossing", "crossing", "end"]);
+    let r = rows(&out);
     let want = [
         (0.22036411574419631, 0.9019118154414405),
         (0.47910729834322924, 0.5483771332872838),

@@ -972,18 +972,27 @@ impl Curve {
     /// The intersections of this plane curve with `other` (another plane curve; omitted: the
     /// curve's self-intersections), as `neutrospline intersect`: an array of shape (k, 10),
     /// columns `t_a, t_b, x, y, truth_a, indeterminacy_a, falsity_a, truth_b,
-    /// indeterminacy_b, falsity_b`, ordered by `t_a`; curves that overlap raise `ModelError`.
+    /// indeterminacy_b, falsity_b`, ordered by `t_a`, one row per contact; curves that
+    /// overlap raise `ModelError`. With `contacts=True`, the pair `(array, contacts)`, where
+    /// `contacts[k]` is how the curves meet at row k, the `contact` column of `intersect`:
+    /// `"crossing"` (at an angle), `"tangent"` (the tangents agree: touching, osculating or
+    /// crossing tangentially) or `"end"` (an end of either curve).
     ///
     /// >>> import neutrospline as ns
     /// >>> line = ns.Bezier([[-2, 0], [2, 0]], [[1, 0, 0], [0, 0, 1]])
     /// >>> circle = ns.load("examples/nurbs-circle.toml")
     /// >>> line.intersections(circle)[:, :4].round(12).tolist()
     /// [[0.25, 0.5, -1.0, 0.0], [0.75, 0.0, 1.0, 0.0]]
-    #[pyo3(signature = (other = None))]
+    /// >>> tangent = ns.Bezier([[-2, 1], [2, 1]], [[1, 0, 0], [0, 0, 1]])
+    /// >>> rows, contacts = tangent.intersections(circle, contacts=True)
+    /// >>> rows[:, :4].round(12).tolist(), contacts
+    /// ([[0.5, 0.25, 0.0, 1.0]], ['tangent'])
+    #[pyo3(signature = (other = None, *, contacts = false))]
     fn intersections<'py>(
         &self,
         py: Python<'py>,
         other: Option<&Bound<'py, Curve>>,
+        contacts: bool,
     ) -> PyResult<Bound<'py, PyAny>> {
         let planar = |curve: &Curve, what: &str| -> PyResult<AnyCurve<2>> {
             match curve.model()? {
@@ -1010,7 +1019,12 @@ impl Curve {
             rows.extend_from_slice(&hit.point_a.degrees.to_array());
             rows.extend_from_slice(&hit.point_b.degrees.to_array());
         }
-        crate::arrays::new_array(py, rows, &[found.len(), 10])
+        let array = crate::arrays::new_array(py, rows, &[found.len(), 10])?;
+        if !contacts {
+            return Ok(array);
+        }
+        let names: Vec<&str> = found.iter().map(|hit| hit.contact.name()).collect();
+        Ok((array, names).into_pyobject(py)?.into_any())
     }
 
     /// The parameter domain `(a, b)`.

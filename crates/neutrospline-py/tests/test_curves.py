@@ -496,10 +496,19 @@ def test_intersections_match_intersect(cli, root, tmp_path):
     a = tmp_path / "line.toml"
     line.save(a)
     circle = root / "examples" / "nurbs-circle.toml"
-    _, want = cli_table(cli, "intersect", a, circle)
+    done = run_cli(cli, "intersect", a, circle)
+    assert done.returncode == 0, done.stderr
+    table = list(csv.reader(io.StringIO(done.stdout)))
+    assert table[0][-1] == "contact"
+    want = np.array([r[:-1] for r in table[1:]], dtype=float)
     got = line.intersections(ns.load(circle))
     assert got.shape == (2, 10)
-    np.testing.assert_array_equal(got, want[:, 1:])
+    np.testing.assert_array_equal(got, want[:, 1:-1])
+    rows, contacts = line.intersections(ns.load(circle), contacts=True)
+    np.testing.assert_array_equal(rows, got)
+    done = run_cli(cli, "intersect", a, circle)
+    assert contacts == [r[-1] for r in csv.reader(io.StringIO(done.stdout))][1:]
+    assert contacts == ["crossing", "crossing"]
     loop = ns.Bezier([[0, 0], [3, 3], [-1, 3], [2, 0]], [[0.2, 0.2, 0.2]] * 4)
     crossing = loop.intersections()
     assert crossing.shape == (1, 10)

@@ -6,7 +6,7 @@ use core::ops::Range;
 
 use crate::curve::{Derivative, EvalError, Evaluate};
 use crate::derivative::CurveDerivative;
-use crate::nearest::{distance_to_piece, NearestPoint, Piece};
+use crate::nearest::{distance_to_piece, NearestError, NearestPoint, Piece};
 use crate::point::CurvePoint;
 
 /// A point where two curves meet.
@@ -468,8 +468,50 @@ where
             }
             pairs = next;
         }
-        let roots = self.polish_terminal(terminal)?;
+        let mut roots = self.polish_terminal(terminal)?;
+        if !self.same {
+            roots.extend(self.end_roots()?);
+        }
         self.collect(roots, &pa, &pb)
+    }
+
+    /// The ends of each curve that lie on the other (within 1e-12 of the size), found by the
+    /// global nearest point: curves joined end to end, or an end resting on the other curve.
+    /// Where the curves meet there tangentially (a smooth join), subdivision and Newton's
+    /// method cannot settle on the end (the systems are singular at the domain's edge); the
+    /// nearest point can.
+    fn end_roots(&self) -> Result<Vec<Root>, IntersectError> {
+        let tolerance = 1e-12 * self.scale;
+        let (ra, rb) = (self.a.domain(), self.b.domain());
+        let mut roots = Vec::new();
+        let on_b = self.b.projector();
+        for s in [ra.start, ra.end] {
+            let near = on_b
+                .nearest(self.a.evaluate(s)?.position)
+                .map_err(nearest_failure(s))?;
+            if near.distance <= tolerance {
+                roots.push((s, near.parameter));
+            }
+        }
+        let on_a = self.a.projector();
+        for t in [rb.start, rb.end] {
+            let near = on_a
+                .nearest(self.b.evaluate(t)?.position)
+                .map_err(nearest_failure(t))?;
+            if near.distance <= tolerance {
+                roots.push((near.parameter, t));
+            }
+        }
+        roots
+            .into_iter()
+            .map(|(s, t)| {
+                Ok(Root {
+                    s,
+                    t,
+                    sine: self.sine(s, t)?,
+                })
+            })
+            .collect()
     }
 
     /// Polishes the pairs that subdivision left (both sub-pieces below 1e-7 of the size):
@@ -1113,6 +1155,15 @@ fn project<C: Evaluate<Point = CurvePoint<2>>>(
         t = next;
     }
     Ok(gap)
+}
+
+/// A nearest-point search from an end (at parameter `t` of its curve) fails only where the
+/// curves' values overflow.
+fn nearest_failure(t: f64) -> impl Fn(NearestError) -> IntersectError {
+    move |e| match e {
+        NearestError::Eval(e) => IntersectError::Eval(e),
+        _ => IntersectError::Eval(EvalError::Overflow { t }),
+    }
 }
 
 fn width(r: &Range<f64>) -> f64 {

@@ -7,16 +7,18 @@ use neutrospline::{intersections, self_intersections, AnyCurve, Intersection};
 
 use crate::commands::options::ModelArgs;
 use crate::input;
-use crate::output::{self, TableFormat};
+use crate::output::{self, Cell, TableFormat};
 use crate::shape::Shape;
 
 /// Arguments of `intersect`.
 #[derive(Debug, clap::Args)]
 #[command(after_help = "Columns:\n  \
-index, t_a, t_b, x, y, truth_a, indeterminacy_a, falsity_a, truth_b, indeterminacy_b, falsity_b\n\
-One row per intersection, ordered by t_a: the parameters on A and on B, the point (A's), and\n\
-the degrees of each curve there. Tangential and end-point intersections are included, each\n\
-once. When B is the same curve as A the rows are its self-intersections, t_a < t_b. Curves\n\
+index, t_a, t_b, x, y, truth_a, indeterminacy_a, falsity_a, truth_b, indeterminacy_b, falsity_b,\n\
+contact\n\
+One row per intersection, ordered by t_a: the parameters on A and on B, the point (A's), the\n\
+degrees of each curve there, and how the curves meet: crossing (at an angle), tangent (the\n\
+tangents agree: touching, osculating or crossing tangentially) or end (an end of either\n\
+curve). Tangential and end-point intersections are included, each contact once. When B is the same curve as A the rows are its self-intersections, t_a < t_b. Curves\n\
 that share a stretch are refused with the parameters of the stretch.\n\
 Both files must hold plane (2-D) curves, of any kinds.")]
 pub struct IntersectArgs {
@@ -44,7 +46,7 @@ pub struct IntersectArgs {
 }
 
 /// The table's columns.
-const COLUMNS: [&str; 11] = [
+const COLUMNS: [&str; 12] = [
     "index",
     "t_a",
     "t_b",
@@ -56,6 +58,7 @@ const COLUMNS: [&str; 11] = [
     "truth_b",
     "indeterminacy_b",
     "falsity_b",
+    "contact",
 ];
 
 /// The plane curve of `file`, or an error naming what it holds.
@@ -102,10 +105,12 @@ pub fn run(args: &IntersectArgs) -> anyhow::Result<()> {
     })
 }
 
-fn row(index: usize, i: &Intersection) -> Vec<Option<f64>> {
+fn row(index: usize, i: &Intersection) -> Vec<Cell> {
     let mut row = vec![index as f64, i.parameter_a, i.parameter_b];
     row.extend(i.point_a.position);
     row.extend(i.point_a.degrees.to_array());
     row.extend(i.point_b.degrees.to_array());
-    row.into_iter().map(Some).collect()
+    let mut cells: Vec<Cell> = row.into_iter().map(Cell::Number).collect();
+    cells.push(Cell::Word(i.contact.name()));
+    cells
 }

@@ -17,7 +17,7 @@ and is left untouched.
 """
 
 import os
-from typing import Any, Literal, Optional, Sequence, Tuple, Union
+from typing import Any, List, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -51,7 +51,14 @@ class Curve:
     def nearest(
         self, points: ArrayLike
     ) -> Tuple[Union[float, FloatArray], Union[float, FloatArray], FloatArray]: ...
-    def intersections(self, other: Optional["Curve"] = None) -> FloatArray: ...
+    @overload
+    def intersections(
+        self, other: Optional["Curve"] = None, *, contacts: Literal[False] = False
+    ) -> FloatArray: ...
+    @overload
+    def intersections(
+        self, other: Optional["Curve"] = None, *, contacts: Literal[True]
+    ) -> Tuple[FloatArray, List[str]]: ...
     @property
     def domain(self) -> Tuple[float, float]: ...
     @property
