@@ -27,10 +27,11 @@ pub(crate) fn parse(file: &str, bytes: &[u8], options: &ReadOptions) -> Result<P
     parse_reader(file, bytes, options)
 }
 
-/// The bytes the CSV reader adds after the end of the input: a line end that ends the last
-/// row when the file does not, and a NUL byte. The NUL byte reads as a row of its own, unless
-/// the file ends inside a quoted cell: then both bytes are in that cell, and the row is
-/// refused (the `csv` crate itself ends such a cell at the end of the input without a word).
+/// The bytes the CSV reader adds after the end of the input, one per `read`: a line end that
+/// ends the last row when the file does not, and a NUL byte. The NUL byte reads as a row of
+/// its own, unless the file ends inside a quoted cell: then both bytes are in that cell, and
+/// the row is refused (the `csv` crate itself ends such a cell at the end of the input without
+/// a word).
 const END_MARK: &[u8] = b"\n\0";
 
 /// A located problem found by [`Input`]: the line and the message. It travels through the
@@ -49,10 +50,11 @@ impl std::fmt::Display for Located {
 
 impl std::error::Error for Located {}
 
-/// Where [`Input`] is: between rows (empty lines and comments), or in a row.
+/// Where [`Input`] is: between rows (empty lines), in a comment, or in a row.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Place {
     Between,
+    Comment,
     /// In the row that starts on line `start`, `bytes` long so far (line ends included).
     Row {
         start: usize,
@@ -61,23 +63,25 @@ enum Place {
 }
 
 /// The input as the CSV reader sees it: the stream without its UTF-8 byte order mark, handed
-/// over one physical line (up to and including its `\n`) per `read` at most, then
-/// [`END_MARK`]. On the way it refuses, with the line: bytes that are not UTF-8 (comments
-/// included), a line longer than [`MAX_CSV_LINE`] bytes, and a row (a quoted cell may span
-/// lines) longer than that.
+/// over in pieces that end at the first `\r` or `\n` at most, then [`END_MARK`]. On the way it
+/// refuses, with the line: bytes that are not UTF-8 (comments included), a line longer than
+/// [`MAX_CSV_LINE`] bytes, and a row (a quoted cell may span lines) longer than that.
 ///
-/// Handing over one line at a time means the CSV reader has taken every byte handed over when
-/// it returns a row (a row ends at a `\n`, the last byte of a line), so the next line starts
-/// either a row or a line the reader skips: an empty line or a comment (`#` first). The reader
-/// calls [`Input::row_ended`] after each row.
+/// A row ends at a `\r` or `\n` outside quotes, the last byte of a piece, so when the CSV
+/// reader returns a row it has taken every byte handed over (and [`Input::row_ended`] is
+/// called): what follows starts a row, or something the reader skips between rows (a `\r` or
+/// `\n`, or a comment: `#` first, up to the next `\n`). So the input knows where each row
+/// starts, and counts its bytes.
 struct Input<R> {
     inner: R,
-    /// The physical line (1-based) of the next byte.
+    /// The physical line (1-based, lines end at `\n`) of the next byte.
     line: usize,
     /// The bytes of the current physical line so far.
     line_bytes: usize,
-    /// Whether the next byte starts a physical line.
-    line_start: bool,
+    /// Whether the last piece ended with `\r` or `\n` (true at the start).
+    piece_start: bool,
+    /// The last byte handed over.
+    last: u8,
     place: Place,
     /// Whether the byte order mark has been looked for.
     began: bool,
@@ -97,7 +101,8 @@ impl<R: BufRead> Input<R> {
             inner,
             line: 1,
             line_bytes: 0,
-            line_start: true,
+            piece_start: true,
+            last: b'\n',
             place: Place::Between,
             began: false,
             partial: Vec::new(),
@@ -116,7 +121,7 @@ impl<R: BufRead> Input<R> {
     fn row_start(&self) -> Option<usize> {
         match self.place {
             Place::Row { start, .. } => Some(start),
-            Place::Between => None,
+            Place::Between | Place::Comment => None,
         }
     }
 
@@ -154,6 +159,59 @@ impl<R: BufRead> Input<R> {
         }
         Ok(())
     }
+
+    /// Follows the CSV reader's rule for what `piece` is (`::csv::ReaderBuilder::comment`,
+    /// `Terminator::CRLF`), and refuses a line or a row over the limit.
+    fn account(&mut self, piece: &[u8]) -> std::io::Result<()> {
+        if self.piece_start && self.place == Place::Between {
+            self.place = match piece[0] {
+                b'\r' | b'\n' => Place::Between,
+                b'#' => Place::Comment,
+                _ => Place::Row {
+                    start: self.line,
+                    bytes: 0,
+                },
+            };
+        }
+        self.line_bytes += piece.len();
+        if self.line_bytes > MAX_CSV_LINE {
+            return Err(self.fail(
+                self.line,
+                format!(
+                    "the line is longer than {MAX_CSV_LINE} bytes (a row of control point values \
+                     is short; is this a CSV file?)"
+                ),
+            ));
+        }
+        if let Place::Row { start, bytes } = &mut self.place {
+            *bytes += piece.len();
+            if *bytes > MAX_CSV_LINE {
+                let start = *start;
+                return Err(self.fail(
+                    start,
+                    format!(
+                        "the row starting on this line is longer than {MAX_CSV_LINE} bytes at \
+                         line {} (a row of control point values is short; is a quoted cell \
+                         never closed?)",
+                        self.line
+                    ),
+                ));
+            }
+        }
+        self.check_utf8(piece)?;
+        let last = piece[piece.len() - 1];
+        self.piece_start = matches!(last, b'\r' | b'\n');
+        if last == b'\n' {
+            self.line += 1;
+            self.line_bytes = 0;
+            if self.place == Place::Comment {
+                self.place = Place::Between;
+            }
+        }
+        self.last = last;
+        self.handed += piece.len() as u64;
+        Ok(())
+    }
 }
 
 impl<R: BufRead> Read for Input<R> {
@@ -164,15 +222,15 @@ impl<R: BufRead> Read for Input<R> {
                 located.clone(),
             ));
         }
-        if out.is_empty() {
+        if out.is_empty() || self.end_mark == END_MARK.len() {
             return Ok(0);
         }
         if self.end_mark > 0 {
-            let n = (END_MARK.len() - self.end_mark).min(out.len());
-            out[..n].copy_from_slice(&END_MARK[self.end_mark..self.end_mark + n]);
-            self.end_mark += n;
-            self.handed += n as u64;
-            return Ok(n);
+            out[0] = END_MARK[self.end_mark];
+            self.end_mark += 1;
+            self.last = out[0];
+            self.handed += 1;
+            return Ok(1);
         }
         let line = self.line;
         let available = match self.inner.fill_buf() {
@@ -190,71 +248,31 @@ impl<R: BufRead> Read for Input<R> {
             if !self.partial.is_empty() {
                 return Err(self.invalid_utf8());
             }
-            let n = END_MARK.len().min(out.len());
-            out[..n].copy_from_slice(&END_MARK[..n]);
-            self.end_mark = n;
-            self.handed += n as u64;
-            return Ok(n);
+            out[0] = END_MARK[0];
+            self.end_mark = 1;
+            self.last = out[0];
+            self.handed += 1;
+            return Ok(1);
         }
         let length = available
             .iter()
-            .position(|&b| b == b'\n')
+            .position(|&b| matches!(b, b'\r' | b'\n'))
             .map_or(available.len(), |i| i + 1)
             .min(out.len());
         out[..length].copy_from_slice(&available[..length]);
         self.inner.consume(length);
-        let piece = &out[..length];
-        // The rule of the CSV reader (`::csv::ReaderBuilder::comment`): between rows, a line
-        // that is empty or starts with `#` is skipped; any other line starts a row.
-        if self.line_start && self.place == Place::Between && !matches!(piece[0], b'\n' | b'#') {
-            self.place = Place::Row {
-                start: self.line,
-                bytes: 0,
-            };
-        }
-        self.line_bytes += length;
-        if self.line_bytes > MAX_CSV_LINE {
-            return Err(self.fail(
-                self.line,
-                format!(
-                    "the line is longer than {MAX_CSV_LINE} bytes (a row of control point values \
-                     is short; is this a CSV file?)"
-                ),
-            ));
-        }
-        if let Place::Row { start, bytes } = &mut self.place {
-            *bytes += length;
-            if *bytes > MAX_CSV_LINE {
-                let start = *start;
-                return Err(self.fail(
-                    start,
-                    format!(
-                        "the row starting on this line is longer than {MAX_CSV_LINE} bytes at \
-                         line {} (a row of control point values is short; is a quoted cell \
-                         never closed?)",
-                        self.line
-                    ),
-                ));
-            }
-        }
-        let ends_line = piece.ends_with(b"\n");
-        self.check_utf8(&out[..length])?;
-        self.handed += length as u64;
-        self.line_start = ends_line;
-        if ends_line {
-            self.line += 1;
-            self.line_bytes = 0;
-        }
+        self.account(&out[..length])?;
         Ok(length)
     }
 }
 
 /// The rows of a CSV stream, read by one `csv` reader: cells trimmed, rows of any length,
-/// lines starting with `#` between rows are comments, empty lines (and lines of whitespace)
-/// are skipped, a UTF-8 byte order mark is dropped, CRLF line ends read as LF (the `\r` is
-/// trimmed with the cell). Quoting is the `csv` crate's and Python's `csv` module's: a cell
-/// that starts with `"` is quoted (`""` inside it is one quote, line ends inside it are kept),
-/// a quote anywhere else is an ordinary character (`C"0` is the name `C"0`).
+/// comments (a line starting with `#` where a row could start, up to its `\n`), empty lines
+/// and lines of whitespace skipped, a UTF-8 byte order mark dropped, rows ending at `\n`,
+/// `\r\n` or `\r` (as Python's `csv` module and spreadsheets read them). Quoting is the `csv`
+/// crate's and Python's: a cell that starts with `"` is quoted (`""` inside it is one quote,
+/// line ends inside it are kept), a quote anywhere else is an ordinary character (`C"0` is the
+/// name `C"0`).
 ///
 /// Only one row is held in memory; every error is located: the rows' lines come from the
 /// reader's own [`::csv::Position`], physical lines counted by `\n` (comments and empty lines
@@ -273,7 +291,7 @@ impl<R: BufRead> Records<R> {
             .flexible(true)
             .trim(::csv::Trim::None)
             .comment(Some(b'#'))
-            .terminator(::csv::Terminator::Any(b'\n'))
+            .terminator(::csv::Terminator::CRLF)
             .from_reader(Input::new(reader));
         Records {
             reader,
@@ -322,11 +340,13 @@ impl<R: BufRead> Records<R> {
                 }
             }
             // The reader's line after the row counts the row's line ends: those inside its
-            // quoted cells and the one that ends it.
+            // quoted cells, and the one that ends it when that is a `\n` (the reader has taken
+            // every byte handed over, so it is the last one).
             let end = self.reader.position();
             let inner_ends = self.row.as_slice().bytes().filter(|&b| b == b'\n').count();
             let after = usize::try_from(end.line()).unwrap_or(usize::MAX);
-            if self.reader.get_ref().read_to_the_end(end.byte()) {
+            let input = self.reader.get_ref();
+            if input.read_to_the_end(end.byte()) {
                 self.done = true;
                 if self.row.len() == 1 && &self.row[0] == "\0" {
                     return Ok(None);
@@ -341,7 +361,7 @@ impl<R: BufRead> Records<R> {
                         .to_owned(),
                 ));
             }
-            let start = after - inner_ends - 1;
+            let start = after - inner_ends - usize::from(input.last == b'\n');
             debug_assert_eq!(Some(start), row_start);
             self.reader.get_mut().row_ended();
             self.row.trim();
@@ -863,6 +883,27 @@ mod framing_tests {
                 row(8, &["#not a comment", "2"]),
                 row(9, &["\"\n\nx", "3"]),
             ]
+        );
+    }
+
+    #[test]
+    fn a_lone_carriage_return_ends_a_row_as_in_spreadsheets() {
+        // Rows end at `\r` too (old Mac files, and Python's csv writer leaves a `\r` in a cell
+        // unquoted when its line end is `\n`); lines are counted by `\n`. A comment runs to
+        // the `\n`.
+        assert_eq!(
+            rows(b"a,b\rc,d\r\ne,f\n# x\ry\n\"g\rh\",i\r").unwrap(),
+            [
+                row(1, &["a", "b"]),
+                row(1, &["c", "d"]),
+                row(2, &["e", "f"]),
+                row(4, &["g\rh", "i"]),
+            ]
+        );
+        let text = b"name,x,y,T,I,F\nC\r0,1,2,0,0,0\n";
+        assert_eq!(
+            parse("t.csv", text, &ReadOptions::default()).unwrap_err().to_string(),
+            "t.csv:2: the row has 1 cells but the header has 6 (every row needs one cell per column)"
         );
     }
 
