@@ -3,8 +3,12 @@
 //! Columns (case-insensitive): `x`, `y`, optional `z` (required for surfaces), `truth`,
 //! `indeterminacy`, `falsity` (aliases `T`, `I`, `F`), `weight` (exactly for the NURBS kinds)
 //! and an optional `name`. Lines starting with `#` are comments, empty lines are skipped, cells
-//! are trimmed, CRLF line ends and a UTF-8 byte order mark are accepted. Line numbers in errors
-//! are physical lines of the file (1-based, comments counted).
+//! are trimmed, rows end at LF, CRLF or CR, and a UTF-8 byte order mark is accepted. Quoting is
+//! that of spreadsheets and Python's `csv` module: a cell starting with `"` is quoted (`""` in
+//! it is a quote; commas and line ends in it are kept), a quote elsewhere is a character
+//! (`C"0`); a file that ends inside a quoted cell is refused. One `csv` reader reads the whole
+//! stream ([`Records`]). Line numbers in errors are physical lines of the file (1-based,
+//! counted by LF, comments counted); a row's line is the one it starts on.
 //!
 //! A CSV file lists control points only: the kind, degree, knots and grid come from the
 //! [`ReadOptions`](crate::ReadOptions) (the command line's `--kind`, `--degree`, `--knots`,
