@@ -356,7 +356,7 @@ impl<R: BufRead> Records<R> {
                     return Ok(None);
                 }
                 // The file ends inside a quoted cell: the row holds the end mark.
-                let start = after - inner_ends;
+                let start = after.saturating_sub(inner_ends);
                 debug_assert_eq!(Some(start), row_start);
                 return Err(at(
                     start,
@@ -365,7 +365,9 @@ impl<R: BufRead> Records<R> {
                         .to_owned(),
                 ));
             }
-            let start = after - inner_ends - usize::from(input.last == b'\n');
+            let start = after
+                .saturating_sub(inner_ends)
+                .saturating_sub(usize::from(input.last == b'\n'));
             debug_assert_eq!(Some(start), row_start);
             self.reader.get_mut().row_ended();
             self.row.trim();
