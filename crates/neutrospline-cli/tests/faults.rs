@@ -382,3 +382,51 @@ fn limit_samples_curves_and_surfaces() {
         assert!(help.contains(needle), "{needle} not in:\n{help}");
     }
 }
+
+#[test]
+fn fault_csv_stray_quote_in_a_name_reads_every_row() {
+    // Issue 22: `C"0` made `check` report one control point and exit 0.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("quote.csv"),
+        "name,x,y,truth,indeterminacy,falsity\nC\"0,1,3,0.3,0.6,0.1\nC1,3,6,0.8,0.1,0.1\n\
+         C2,6,2,0.7,0.1,0.2\nC3,9,5,0.2,0.4,0.4\n",
+    )
+    .unwrap();
+    let out = Command::new(BIN)
+        .args(["check", "quote.csv"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    assert!(stdout.contains("\ncontrol points: 4\n"), "{stdout}");
+    assert!(stdout.contains("\ndegree: 3\n"), "{stdout}");
+}
+
+#[test]
+fn fault_csv_quoted_cell_open_at_the_end_is_refused_with_its_line() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("open.csv"),
+        "name,x,y,truth,indeterminacy,falsity\nC0,1,3,0.3,0.6,0.1\n\"C1,3,6,0.8,0.1,0.1\n\
+         C2,6,2,0.7,0.1,0.2\nC3,9,5,0.2,0.4,0.4\n",
+    )
+    .unwrap();
+    let out = Command::new(BIN)
+        .args(["check", "open.csv"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert_eq!(
+        (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stderr).as_ref()
+        ),
+        (
+            Some(1),
+            "error: open.csv:3: the file ends inside a quoted cell of the row starting on this \
+             line (a cell that starts with `\"` ends at the next `\"` that is not doubled)\n"
+        )
+    );
+}

@@ -3,8 +3,12 @@
 //! Columns (case-insensitive): `x`, `y`, optional `z` (required for surfaces), `truth`,
 //! `indeterminacy`, `falsity` (aliases `T`, `I`, `F`), `weight` (exactly for the NURBS kinds)
 //! and an optional `name`. Lines starting with `#` are comments, empty lines are skipped, cells
-//! are trimmed, CRLF line ends and a UTF-8 byte order mark are accepted. Line numbers in errors
-//! are physical lines of the file (1-based, comments counted).
+//! are trimmed, rows end at LF, CRLF or CR, and a UTF-8 byte order mark is accepted. Quoting is
+//! that of spreadsheets and Python's `csv` module: a cell starting with `"` is quoted (`""` in
+//! it is a quote; commas and line ends in it are kept), a quote elsewhere is a character
+//! (`C"0`); a file that ends inside a quoted cell is refused. One `csv` reader reads the whole
+//! stream ([`Records`]). Line numbers in errors are physical lines of the file (1-based,
+//! counted by LF, comments counted); a row's line is the one it starts on.
 //!
 //! A CSV file lists control points only: the kind, degree, knots and grid come from the
 //! [`ReadOptions`](crate::ReadOptions) (the command line's `--kind`, `--degree`, `--knots`,
@@ -16,7 +20,7 @@ use std::io::{BufRead, Read};
 
 use crate::format::{too_many_points, MAX_CSV_LINE};
 use crate::parsed::{
-    check_spread_value, duplicate_rule, line_of, missing_degree, parse_number, spread_from_values,
+    check_spread_value, duplicate_rule, missing_degree, parse_number, spread_from_values,
     spread_hint, spread_keys_problem, Field, Origin, Parsed, PointRecord, SpreadKey,
 };
 use crate::settings::{Key, Kind, KnotSpec, KnotsSetting, Setting, Structure};
@@ -27,43 +31,155 @@ pub(crate) fn parse(file: &str, bytes: &[u8], options: &ReadOptions) -> Result<P
     parse_reader(file, bytes, options)
 }
 
-/// A reading error: the line and the message.
-pub(crate) type LineError = (usize, String);
+/// The bytes the CSV reader adds after the end of the input, one per `read`: a line end that
+/// ends the last row when the file does not, and a NUL byte. The NUL byte reads as a row of
+/// its own, unless the file ends inside a quoted cell: then both bytes are in that cell, and
+/// the row is refused (the `csv` crate itself ends such a cell at the end of the input without
+/// a word).
+const END_MARK: &[u8] = b"\n\0";
 
-/// Reads the records of a CSV stream one physical line at a time (a quoted cell may span
-/// lines), never holding more than one record in memory.
-pub(crate) struct Records<R> {
-    reader: R,
-    /// The physical line last read.
+/// A located problem found by [`Input`]: the line and the message. It travels through the
+/// `csv` reader as the payload of an [`std::io::Error`].
+#[derive(Debug, Clone)]
+struct Located {
     line: usize,
-    /// The current record, line ends removed.
-    buffer: Vec<u8>,
+    message: String,
 }
 
-impl<R: BufRead> Records<R> {
-    /// Records from the start of `reader`.
-    pub(crate) fn new(reader: R) -> Records<R> {
-        Records {
-            reader,
-            line: 0,
-            buffer: Vec::new(),
+impl std::fmt::Display for Located {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "line {}: {}", self.line, self.message)
+    }
+}
+
+impl std::error::Error for Located {}
+
+/// Where [`Input`] is: between rows (empty lines), in a comment, or in a row.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Place {
+    Between,
+    Comment,
+    /// In the row that starts on line `start`, `bytes` long so far (line ends included).
+    Row {
+        start: usize,
+        bytes: usize,
+    },
+}
+
+/// The input as the CSV reader sees it: the stream without its UTF-8 byte order mark, handed
+/// over in pieces that end at the first `\r` or `\n` at most, then [`END_MARK`]. On the way it
+/// refuses, with the line: bytes that are not UTF-8 (comments included), a line longer than
+/// [`MAX_CSV_LINE`] bytes, and a row (a quoted cell may span lines) longer than that.
+///
+/// A row ends at a `\r` or `\n` outside quotes, the last byte of a piece, so when the CSV
+/// reader returns a row it has taken every byte handed over (and [`Input::row_ended`] is
+/// called): what follows starts a row, or something the reader skips between rows (a `\r` or
+/// `\n`, or a comment: `#` first, up to the next `\n`). So the input knows where each row
+/// starts, and counts its bytes.
+struct Input<R> {
+    inner: R,
+    /// The physical line (1-based, lines end at `\n`) of the next byte.
+    line: usize,
+    /// The bytes of the current physical line so far.
+    line_bytes: usize,
+    /// Whether the last piece ended with `\r` or `\n` (true at the start).
+    piece_start: bool,
+    /// The last byte handed over.
+    last: u8,
+    place: Place,
+    /// Whether the byte order mark has been looked for.
+    began: bool,
+    /// The last bytes handed over when they end inside a UTF-8 sequence (at most 3).
+    partial: Vec<u8>,
+    /// The bytes handed over, [`END_MARK`] included.
+    handed: u64,
+    /// How much of [`END_MARK`] has been handed over.
+    end_mark: usize,
+    /// The first problem: every later `read` repeats it.
+    failed: Option<Located>,
+}
+
+impl<R: BufRead> Input<R> {
+    fn new(inner: R) -> Input<R> {
+        Input {
+            inner,
+            line: 1,
+            line_bytes: 0,
+            piece_start: true,
+            last: b'\n',
+            place: Place::Between,
+            began: false,
+            partial: Vec::new(),
+            handed: 0,
+            end_mark: 0,
+            failed: None,
         }
     }
 
-    /// Appends the next physical line to the buffer (at most [`MAX_CSV_LINE`] bytes in all);
-    /// `false` at the end of the input.
-    fn read_line(&mut self) -> Result<bool, LineError> {
-        let room = (MAX_CSV_LINE + 1).saturating_sub(self.buffer.len()) as u64;
-        let read = (&mut self.reader)
-            .take(room)
-            .read_until(b'\n', &mut self.buffer)
-            .map_err(|e| (self.line + 1, format!("cannot read: {e}")))?;
-        if read == 0 {
-            return Ok(false);
+    /// The reader has read a row: what follows is between rows.
+    fn row_ended(&mut self) {
+        self.place = Place::Between;
+    }
+
+    /// The line the current row started on, when in a row.
+    fn row_start(&self) -> Option<usize> {
+        match self.place {
+            Place::Row { start, .. } => Some(start),
+            Place::Between | Place::Comment => None,
         }
-        self.line += 1;
-        if self.buffer.len() > MAX_CSV_LINE {
-            return Err((
+    }
+
+    /// Whether the CSV reader, having read `consumed` bytes, has read all of [`END_MARK`].
+    fn read_to_the_end(&self, consumed: u64) -> bool {
+        self.end_mark == END_MARK.len() && consumed == self.handed
+    }
+
+    fn fail(&mut self, line: usize, message: String) -> std::io::Error {
+        let located = Located { line, message };
+        self.failed = Some(located.clone());
+        std::io::Error::new(std::io::ErrorKind::InvalidData, located)
+    }
+
+    fn invalid_utf8(&mut self) -> std::io::Error {
+        self.fail(
+            self.line,
+            "invalid UTF-8 (the file must be UTF-8 encoded)".to_owned(),
+        )
+    }
+
+    /// Checks that `piece` continues valid UTF-8 (a sequence may be cut at its end).
+    fn check_utf8(&mut self, piece: &[u8]) -> std::io::Result<()> {
+        let joined;
+        let bytes = if self.partial.is_empty() {
+            piece
+        } else {
+            joined = [self.partial.as_slice(), piece].concat();
+            &joined
+        };
+        match std::str::from_utf8(bytes) {
+            Ok(_) => self.partial.clear(),
+            Err(e) if e.error_len().is_none() => self.partial = bytes[e.valid_up_to()..].to_vec(),
+            Err(_) => return Err(self.invalid_utf8()),
+        }
+        Ok(())
+    }
+
+    /// Follows the CSV reader's rule for what `piece` is (`::csv::ReaderBuilder::comment`,
+    /// `Terminator::CRLF`), and refuses a line or a row over the limit.
+    fn account(&mut self, piece: &[u8]) -> std::io::Result<()> {
+        if self.piece_start && self.place == Place::Between {
+            self.place = match piece[0] {
+                b'\r' | b'\n' => Place::Between,
+                b'#' => Place::Comment,
+                _ => Place::Row {
+                    start: self.line,
+                    bytes: 0,
+                },
+            };
+        }
+        self.line_bytes += piece.len();
+        if self.line_bytes > MAX_CSV_LINE {
+            return Err(self.fail(
                 self.line,
                 format!(
                     "the line is longer than {MAX_CSV_LINE} bytes (a row of control point values \
@@ -71,89 +187,196 @@ impl<R: BufRead> Records<R> {
                 ),
             ));
         }
-        Ok(true)
-    }
-
-    /// The next record that is neither empty nor a comment, with the line it starts on.
-    pub(crate) fn next_record(&mut self) -> Result<Option<(usize, &[u8])>, LineError> {
-        loop {
-            self.buffer.clear();
-            if !self.read_line()? {
-                return Ok(None);
-            }
-            let start = self.line;
-            if start == 1 {
-                if let Some(rest) = self.buffer.strip_prefix(b"\xEF\xBB\xBF") {
-                    self.buffer = rest.to_vec();
-                }
-            }
-            // A quoted cell continues on the next line while its quotes are unbalanced.
-            while self.buffer.iter().filter(|&&b| b == b'"').count() % 2 == 1
-                && self.buffer.ends_with(b"\n")
-            {
-                if !self.read_line()? {
-                    break;
-                }
-            }
-            while let Some(b'\n' | b'\r') = self.buffer.last() {
-                self.buffer.pop();
-            }
-            // Every line must be UTF-8, comments included.
-            if let Err(e) = std::str::from_utf8(&self.buffer) {
-                return Err((
-                    start + line_of(&self.buffer, e.valid_up_to()) - 1,
-                    "invalid UTF-8 (the file must be UTF-8 encoded)".to_owned(),
+        if let Place::Row { start, bytes } = &mut self.place {
+            *bytes += piece.len();
+            if *bytes > MAX_CSV_LINE {
+                let start = *start;
+                return Err(self.fail(
+                    start,
+                    format!(
+                        "the row starting on this line is longer than {MAX_CSV_LINE} bytes at \
+                         line {} (a row of control point values is short; is a quoted cell \
+                         never closed?)",
+                        self.line
+                    ),
                 ));
             }
-            if self.buffer.trim_ascii().is_empty() || self.buffer.starts_with(b"#") {
-                continue;
-            }
-            return Ok(Some((start, &self.buffer)));
         }
+        self.check_utf8(piece)?;
+        let last = piece[piece.len() - 1];
+        self.piece_start = matches!(last, b'\r' | b'\n');
+        if last == b'\n' {
+            self.line += 1;
+            self.line_bytes = 0;
+            if self.place == Place::Comment {
+                self.place = Place::Between;
+            }
+        }
+        self.last = last;
+        self.handed += piece.len() as u64;
+        Ok(())
     }
 }
 
+impl<R: BufRead> Read for Input<R> {
+    fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
+        if let Some(located) = &self.failed {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                located.clone(),
+            ));
+        }
+        if out.is_empty() || self.end_mark == END_MARK.len() {
+            return Ok(0);
+        }
+        if self.end_mark > 0 {
+            out[0] = END_MARK[self.end_mark];
+            self.end_mark += 1;
+            self.last = out[0];
+            self.handed += 1;
+            return Ok(1);
+        }
+        let line = self.line;
+        let available = match self.inner.fill_buf() {
+            Ok(available) => available,
+            Err(e) => return Err(self.fail(line, format!("cannot read: {e}"))),
+        };
+        if !self.began {
+            self.began = true;
+            if available.starts_with(b"\xEF\xBB\xBF") {
+                self.inner.consume(3);
+                return self.read(out);
+            }
+        }
+        if available.is_empty() {
+            if !self.partial.is_empty() {
+                return Err(self.invalid_utf8());
+            }
+            out[0] = END_MARK[0];
+            self.end_mark = 1;
+            self.last = out[0];
+            self.handed += 1;
+            return Ok(1);
+        }
+        let length = available
+            .iter()
+            .position(|&b| matches!(b, b'\r' | b'\n'))
+            .map_or(available.len(), |i| i + 1)
+            .min(out.len());
+        out[..length].copy_from_slice(&available[..length]);
+        self.inner.consume(length);
+        self.account(&out[..length])?;
+        Ok(length)
+    }
+}
+
+/// The rows of a CSV stream, read by one `csv` reader: cells trimmed, rows of any length,
+/// comments (a line starting with `#` where a row could start, up to its `\n`), empty lines
+/// and lines of whitespace skipped, a UTF-8 byte order mark dropped, rows ending at `\n`,
+/// `\r\n` or `\r` (as Python's `csv` module and spreadsheets read them). Quoting is the `csv`
+/// crate's and Python's: a cell that starts with `"` is quoted (`""` inside it is one quote,
+/// line ends inside it are kept), a quote anywhere else is an ordinary character (`C"0` is the
+/// name `C"0`).
+///
+/// Only one row is held in memory; every error is located: the rows' lines come from the
+/// reader's own [`::csv::Position`], physical lines counted by `\n` (comments and empty lines
+/// included), a row's line being the one it starts on.
+pub(crate) struct Records<R> {
+    reader: ::csv::Reader<Input<R>>,
+    row: ::csv::StringRecord,
+    done: bool,
+}
+
 impl<R: BufRead> Records<R> {
-    /// The next record split into trimmed cells, with the line it starts on; errors located
-    /// in `file`.
+    /// Records from the start of `reader`.
+    pub(crate) fn new(reader: R) -> Records<R> {
+        let reader = ::csv::ReaderBuilder::new()
+            .has_headers(false)
+            .flexible(true)
+            .trim(::csv::Trim::None)
+            .comment(Some(b'#'))
+            .terminator(::csv::Terminator::CRLF)
+            .from_reader(Input::new(reader));
+        Records {
+            reader,
+            row: ::csv::StringRecord::new(),
+            done: false,
+        }
+    }
+
+    /// The next row that is not empty, split into trimmed cells, with the line it starts on;
+    /// errors located in `file`.
     pub(crate) fn next_cells(
         &mut self,
         file: &str,
     ) -> Result<Option<(usize, ::csv::StringRecord)>, InputError> {
         let at = |line: usize, message: String| InputError::new(file, Some(line), None, message);
-        let Some((line, bytes)) = self.next_record().map_err(|(line, m)| at(line, m))? else {
-            return Ok(None);
-        };
-        let text = std::str::from_utf8(bytes).map_err(|e| {
-            at(
-                line + line_of(bytes, e.valid_up_to()) - 1,
-                "invalid UTF-8 (the file must be UTF-8 encoded)".to_owned(),
-            )
-        })?;
-        let cells = cells(text).map_err(|m| at(line, m))?;
-        Ok(Some((line, cells)))
+        loop {
+            if self.done {
+                return Ok(None);
+            }
+            let read = self.reader.read_record(&mut self.row);
+            let row_start = self.reader.get_ref().row_start();
+            match read {
+                Ok(true) => {}
+                Ok(false) => {
+                    self.done = true;
+                    return Ok(None);
+                }
+                Err(e) => {
+                    self.done = true;
+                    let line = e.position().map_or(1, |p| p.line() as usize);
+                    let line = row_start.unwrap_or(line);
+                    let shown = e.to_string();
+                    return Err(match e.into_kind() {
+                        ::csv::ErrorKind::Io(io) => {
+                            match io.get_ref().and_then(|e| e.downcast_ref::<Located>()) {
+                                Some(located) => at(located.line, located.message.clone()),
+                                None => at(line, format!("cannot read: {io}")),
+                            }
+                        }
+                        ::csv::ErrorKind::Utf8 { .. } => at(
+                            line,
+                            "invalid UTF-8 (the file must be UTF-8 encoded)".to_owned(),
+                        ),
+                        _ => at(line, format!("malformed CSV: {shown}")),
+                    });
+                }
+            }
+            // The reader's line after the row counts the row's line ends: those inside its
+            // quoted cells, and the one that ends it when that is a `\n` (the reader has taken
+            // every byte handed over, so it is the last one).
+            let end = self.reader.position();
+            let inner_ends = self.row.as_slice().bytes().filter(|&b| b == b'\n').count();
+            let after = usize::try_from(end.line()).unwrap_or(usize::MAX);
+            let input = self.reader.get_ref();
+            if input.read_to_the_end(end.byte()) {
+                self.done = true;
+                if self.row.len() == 1 && &self.row[0] == "\0" {
+                    return Ok(None);
+                }
+                // The file ends inside a quoted cell: the row holds the end mark.
+                let start = after.saturating_sub(inner_ends);
+                debug_assert_eq!(Some(start), row_start);
+                return Err(at(
+                    start,
+                    "the file ends inside a quoted cell of the row starting on this line (a cell \
+                     that starts with `\"` ends at the next `\"` that is not doubled)"
+                        .to_owned(),
+                ));
+            }
+            let start = after
+                .saturating_sub(inner_ends)
+                .saturating_sub(usize::from(input.last == b'\n'));
+            debug_assert_eq!(Some(start), row_start);
+            self.reader.get_mut().row_ended();
+            self.row.trim();
+            if self.row.len() == 1 && self.row[0].is_empty() {
+                continue;
+            }
+            return Ok(Some((start, self.row.clone())));
+        }
     }
-}
-
-/// Splits one record (UTF-8, line ends removed) into trimmed cells.
-///
-/// A record without a quote character is split at its commas directly (what the CSV reader
-/// does with it, without building a reader per line: 100,000 lines read in a fraction of the
-/// time); quoted records go through the `csv` crate.
-fn cells(record: &str) -> Result<::csv::StringRecord, String> {
-    if !record.is_empty() && !record.contains('"') {
-        return Ok(record.split(',').map(str::trim).collect());
-    }
-    let mut reader = ::csv::ReaderBuilder::new()
-        .has_headers(false)
-        .trim(::csv::Trim::All)
-        .flexible(true)
-        .from_reader(record.as_bytes());
-    let mut cells = ::csv::StringRecord::new();
-    reader
-        .read_record(&mut cells)
-        .map_err(|e| format!("malformed CSV: {e}"))?;
-    Ok(cells)
 }
 
 /// Parses a CSV table from a stream, line by line: an error is reported as soon as its line is
@@ -426,30 +649,6 @@ fn read_header(header: &::csv::StringRecord) -> Result<Vec<Column>, String> {
 mod tests {
     use super::*;
 
-    #[test]
-    fn cells_without_quotes_split_as_the_csv_reader_does() {
-        let by_reader = |record: &str| {
-            let mut reader = ::csv::ReaderBuilder::new()
-                .has_headers(false)
-                .trim(::csv::Trim::All)
-                .flexible(true)
-                .from_reader(record.as_bytes());
-            let mut cells = ::csv::StringRecord::new();
-            reader.read_record(&mut cells).unwrap();
-            cells
-        };
-        for record in [
-            "x,y",
-            " 1 , 2.5 ,\t3",
-            ",,",
-            "a",
-            "\u{a0}x\u{a0},y",
-            "name,C0,1e-3, -0 ",
-        ] {
-            assert_eq!(cells(record).unwrap(), by_reader(record), "{record:?}");
-        }
-        assert_eq!(cells("\"a,b\",c").unwrap(), by_reader("\"a,b\",c"));
-    }
     use neutrospline::Membership;
 
     fn rule(membership: Membership) -> ReadOptions {
@@ -625,5 +824,217 @@ mod tests {
         let m = parse_ok("name,x,y,T,I,F\n\"a, b\",1,2,0,0,0\n,1,2,0,0,0\n");
         assert_eq!(m.points[0].name.as_deref(), Some("a, b"));
         assert_eq!(m.points[1].name, None);
+    }
+}
+
+#[cfg(test)]
+mod framing_tests {
+    //! The framing of rows: one `csv` reader over the whole stream (issue 22). Expected rows
+    //! are written out by hand, as a spreadsheet and Python's `csv` module read them.
+    use super::*;
+
+    /// The rows of `text` as (line, cells), or the error message.
+    fn rows(text: &[u8]) -> Result<Vec<(usize, Vec<String>)>, String> {
+        let mut records = Records::new(text);
+        let mut out = Vec::new();
+        while let Some((line, cells)) = records.next_cells("t.csv").map_err(|e| e.to_string())? {
+            out.push((line, cells.iter().map(str::to_owned).collect()));
+        }
+        Ok(out)
+    }
+
+    fn row(line: usize, cells: &[&str]) -> (usize, Vec<String>) {
+        (line, cells.iter().map(|&c| c.to_owned()).collect())
+    }
+
+    #[test]
+    fn a_stray_quote_inside_an_unquoted_name_is_a_character() {
+        // Issue 22: `C"0` made the old framer join the rest of the file to the row, and the
+        // per-row reader kept the first line only: one control point instead of four.
+        let text = "name,x,y,truth,indeterminacy,falsity\nC\"0,1,3,0.3,0.6,0.1\n\
+                    C1,3,6,0.8,0.1,0.1\nC2,6,2,0.7,0.1,0.2\nC3,9,5,0.2,0.4,0.4\n";
+        let m = parse("t.csv", text.as_bytes(), &ReadOptions::default()).unwrap();
+        let names: Vec<_> = m.points.iter().map(|p| p.name.as_deref()).collect();
+        assert_eq!(names, [Some("C\"0"), Some("C1"), Some("C2"), Some("C3")]);
+        let lines: Vec<_> = m.points.iter().map(|p| p.origin.line).collect();
+        assert_eq!(lines, [Some(2), Some(3), Some(4), Some(5)]);
+        assert_eq!(m.points[0].position, vec![1.0, 3.0]);
+        assert_eq!(m.points[3].position, vec![9.0, 5.0]);
+    }
+
+    #[test]
+    fn quotes_read_as_spreadsheets_read_them() {
+        let text = b"a,b\n\"x\"\"y\",\"p\"q\n a\"b , \"c,d\"\n\"\",\"e\"\"\"\n";
+        assert_eq!(
+            rows(text).unwrap(),
+            [
+                row(1, &["a", "b"]),
+                row(2, &["x\"y", "pq"]),
+                // A quote after a space is an ordinary character, as is the comma after it.
+                row(3, &["a\"b", "\"c", "d\""]),
+                row(4, &["", "e\""]),
+            ]
+        );
+    }
+
+    #[test]
+    fn quoted_line_ends_crlf_bom_comments_and_blank_lines() {
+        let text = "\u{feff}# it's a \"comment\r\nname,x\r\n\r\n   \r\n\"two\r\nlines\",1\r\n\
+                    # \"\r\n\"#not a comment\",2\r\n\"\"\"\n\nx\",3";
+        assert_eq!(
+            rows(text.as_bytes()).unwrap(),
+            [
+                row(2, &["name", "x"]),
+                row(5, &["two\r\nlines", "1"]),
+                row(8, &["#not a comment", "2"]),
+                row(9, &["\"\n\nx", "3"]),
+            ]
+        );
+    }
+
+    #[test]
+    fn a_lone_carriage_return_ends_a_row_as_in_spreadsheets() {
+        // Rows end at `\r` too (old Mac files, and Python's csv writer leaves a `\r` in a cell
+        // unquoted when its line end is `\n`); lines are counted by `\n`. A comment runs to
+        // the `\n`.
+        assert_eq!(
+            rows(b"a,b\rc,d\r\ne,f\n# x\ry\n\"g\rh\",i\r").unwrap(),
+            [
+                row(1, &["a", "b"]),
+                row(1, &["c", "d"]),
+                row(2, &["e", "f"]),
+                row(4, &["g\rh", "i"]),
+            ]
+        );
+        let text = b"name,x,y,T,I,F\nC\r0,1,2,0,0,0\n";
+        assert_eq!(
+            parse("t.csv", text, &ReadOptions::default()).unwrap_err().to_string(),
+            "t.csv:2: the row has 1 cells but the header has 6 (every row needs one cell per column)"
+        );
+    }
+
+    #[test]
+    fn trailing_commas_and_short_rows_keep_their_cells() {
+        assert_eq!(
+            rows(b"a,b,c\n1,2,\n1,\n,,\n").unwrap(),
+            [
+                row(1, &["a", "b", "c"]),
+                row(2, &["1", "2", ""]),
+                row(3, &["1", ""]),
+                row(4, &["", "", ""]),
+            ]
+        );
+        let text = b"name,x,y,T,I,F\nC0,1,2,0,0,0,\n";
+        assert_eq!(
+            parse("t.csv", text, &ReadOptions::default()).unwrap_err().to_string(),
+            "t.csv:2: the row has 7 cells but the header has 6 (every row needs one cell per column)"
+        );
+    }
+
+    #[test]
+    fn a_quoted_cell_that_never_closes_is_refused_with_its_line() {
+        let message = "the file ends inside a quoted cell of the row starting on this line (a \
+                       cell that starts with `\"` ends at the next `\"` that is not doubled)";
+        for (text, line) in [
+            (&b"name,x\nC0,1\n\"C1,2\nC2,3\nC3,4\n"[..], 3),
+            (b"name,x\nC0,1\n\"C1,2", 3),
+            (b"name,x\nC0,\"1\n", 2),
+            (b"\"name,x\n", 1),
+            (b"name,x\n\"a\nb\",1\n# c\nC0,\"1\n\n", 5),
+        ] {
+            assert_eq!(
+                rows(text).unwrap_err(),
+                format!("t.csv:{line}: {message}"),
+                "{:?}",
+                String::from_utf8_lossy(text)
+            );
+        }
+        // A NUL byte is a character like any other, at the end too.
+        assert_eq!(rows(b"a\n\0").unwrap(), [row(1, &["a"]), row(2, &["\0"])]);
+        assert_eq!(rows(b"a\n\0\n").unwrap(), [row(1, &["a"]), row(2, &["\0"])]);
+        assert_eq!(rows(b"\"a\"").unwrap(), [row(1, &["a"])]);
+    }
+
+    #[test]
+    fn invalid_utf8_is_refused_on_its_line_comments_included() {
+        for (text, line) in [
+            (&b"a\n# caf\xe9\nb\n"[..], 2),
+            (b"a\n\"x\ny\xff\",1\n", 3),
+            (b"a\nb\n\xe2\x82", 3),
+            (b"a\n\xe2\x82\nb\n", 2),
+        ] {
+            assert_eq!(
+                rows(text).unwrap_err(),
+                format!("t.csv:{line}: invalid UTF-8 (the file must be UTF-8 encoded)")
+            );
+        }
+        assert_eq!(
+            rows("a\n\u{20ac}\n".as_bytes()).unwrap()[1],
+            row(2, &["\u{20ac}"])
+        );
+    }
+
+    #[test]
+    fn long_lines_and_long_rows_are_refused_with_their_line() {
+        let mut text = b"a\n# c\n".to_vec();
+        text.extend(std::iter::repeat_n(b'x', MAX_CSV_LINE));
+        text.push(b'\n');
+        assert_eq!(
+            rows(&text).unwrap_err(),
+            format!(
+                "t.csv:3: the line is longer than {MAX_CSV_LINE} bytes (a row of control point \
+                 values is short; is this a CSV file?)"
+            )
+        );
+        // A line of exactly the limit, its line end included, reads.
+        text.truncate(text.len() - 2);
+        text.push(b'\n');
+        assert_eq!(rows(&text).unwrap().len(), 2);
+        // A quoted cell spanning many short lines: the row is refused where it starts.
+        let mut text = b"a\n\n\"".to_vec();
+        for _ in 0..=MAX_CSV_LINE / 8 {
+            text.extend(b"1234567\n");
+        }
+        text.extend(b"\"\n");
+        assert_eq!(
+            rows(&text).unwrap_err(),
+            format!(
+                "t.csv:3: the row starting on this line is longer than {MAX_CSV_LINE} bytes at \
+                 line {} (a row of control point values is short; is a quoted cell never \
+                 closed?)",
+                // The quote and 8 bytes a line: past the limit on the row's line MAX / 8.
+                2 + MAX_CSV_LINE / 8
+            )
+        );
+        // Comment lines do not count towards a row.
+        let mut text = b"a\n".to_vec();
+        for _ in 0..=MAX_CSV_LINE / 8 {
+            text.extend(b"# 34567\n");
+        }
+        text.extend(b"b\n");
+        assert_eq!(rows(&text).unwrap()[1].1, ["b"]);
+    }
+
+    #[test]
+    fn reading_stops_at_the_error_without_reading_further() {
+        // One byte per read: the framing never asks for more than it needs.
+        struct Trickle(Vec<u8>, usize);
+        impl std::io::Read for Trickle {
+            fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+                assert!(self.1 < self.0.len(), "read past the unclosed quote's row");
+                buf[0] = self.0[self.1];
+                self.1 += 1;
+                Ok(1)
+            }
+        }
+        let mut text = b"a,b\n1,2\n3,4,5\n".to_vec();
+        let end = text.len();
+        text.extend(b"never read\n");
+        let mut records = Records::new(std::io::BufReader::with_capacity(1, Trickle(text, 0)));
+        assert_eq!(records.next_cells("t.csv").unwrap().unwrap().0, 1);
+        assert_eq!(records.next_cells("t.csv").unwrap().unwrap().0, 2);
+        let (line, cells) = records.next_cells("t.csv").unwrap().unwrap();
+        assert_eq!((line, cells.len()), (3, 3));
+        assert_eq!(records.reader.get_ref().inner.get_ref().1, end);
     }
 }

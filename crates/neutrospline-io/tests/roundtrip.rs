@@ -407,3 +407,93 @@ proptest! {
         }
     }
 }
+
+/// A name made of the characters CSV framing trips on (quotes, commas, line ends, spaces,
+/// `#`, a byte order mark, a NUL) and a few ordinary ones.
+fn hostile_name() -> impl Strategy<Value = String> {
+    let pieces = prop::sample::select(vec![
+        "\"", "\"\"", ",", "\n", "\r", "\r\n", " ", "\t", "#", "\u{feff}", "\0", "a", "C", "0",
+        "é", "\u{a0}", "x\"y", "\"a,b\"",
+    ]);
+    prop::collection::vec(pieces, 0..8).prop_map(|p| p.concat())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// Issue 22: rows written by the `csv` crate's writer (quoting only what needs it, or
+    /// every cell; LF or CRLF; with or without a byte order mark; the name column first,
+    /// between or last) read back to the same rows: as many control points, the names as
+    /// written (trimmed; empty means no name), the numbers exact. Between the rows: comment
+    /// lines and empty lines.
+    #[test]
+    fn csv_written_by_a_csv_writer_reads_back_row_for_row(
+        rows in prop::collection::vec(
+            (hostile_name(), -1000.0..1000.0f64, -1000.0..1000.0f64, 0.0..=1.0f64, 0.0..=1.0f64, 0.0..=1.0f64),
+            1..12,
+        ),
+        name_column in 0usize..3,
+        quote_all in any::<bool>(),
+        crlf in any::<bool>(),
+        bom in any::<bool>(),
+        gaps in prop::collection::vec(0u8..4, 12),
+    ) {
+        let headings = ["x", "y", "truth", "indeterminacy", "falsity"];
+        let at = [0, 2, 5][name_column];
+        let order = |name: String, values: [String; 5]| {
+            let mut cells: Vec<String> = values.into();
+            cells.insert(at, name);
+            cells
+        };
+        let mut writer = ::csv::WriterBuilder::new()
+            .quote_style(if quote_all { ::csv::QuoteStyle::Always } else { ::csv::QuoteStyle::Necessary })
+            .terminator(if crlf { ::csv::Terminator::CRLF } else { ::csv::Terminator::Any(b'\n') })
+            // A row whose first cell starts with `#` is a comment unless that cell is quoted.
+            .comment(Some(b'#'))
+            .from_writer(Vec::new());
+        let end = if crlf { "\r\n" } else { "\n" };
+        writer.write_record(order("name".to_owned(), headings.map(str::to_owned))).unwrap();
+        let mut text: Vec<u8> = Vec::new();
+        if bom {
+            text.extend("\u{feff}".as_bytes());
+        }
+        text.extend(writer.into_inner().unwrap());
+        for (k, (name, x, y, t, i, f)) in rows.iter().enumerate() {
+            match gaps[k] {
+                1 => text.extend(format!("# a comment with a \" quote{end}").as_bytes()),
+                2 => text.extend(end.as_bytes()),
+                _ => {}
+            }
+            let mut writer = ::csv::WriterBuilder::new()
+                .quote_style(if quote_all { ::csv::QuoteStyle::Always } else { ::csv::QuoteStyle::Necessary })
+                .terminator(if crlf { ::csv::Terminator::CRLF } else { ::csv::Terminator::Any(b'\n') })
+                .comment(Some(b'#'))
+                .from_writer(Vec::new());
+            let values = [x, y, t, i, f].map(|v| format!("{v:?}"));
+            writer.write_record(order(name.clone(), values)).unwrap();
+            text.extend(writer.into_inner().unwrap());
+        }
+        let shown = String::from_utf8_lossy(&text).into_owned();
+        let model = parse("w.csv", Format::Csv, &text, &ReadOptions::default())
+            .map_err(|e| TestCaseError::fail(format!("{e}\n{shown:?}")))?;
+        let expected_names: Vec<Option<String>> = rows
+            .iter()
+            .map(|r| Some(r.0.trim().to_owned()).filter(|n| !n.is_empty()))
+            .collect();
+        let names: Vec<Option<String>> = if model.point_names().is_empty() {
+            vec![None; model.shape().control_count()]
+        } else {
+            model.point_names().to_vec()
+        };
+        prop_assert_eq!(names, expected_names, "{:?}", shown);
+        let Shape::Planar(curve) = model.shape() else {
+            return Err(TestCaseError::fail("not a plane curve"));
+        };
+        let points = curve.control_points();
+        prop_assert_eq!(points.len(), rows.len());
+        for (p, r) in points.iter().zip(&rows) {
+            prop_assert_eq!(p.position, [r.1, r.2]);
+            prop_assert_eq!(p.degrees.to_array(), [r.3, r.4, r.5]);
+        }
+    }
+}
