@@ -583,12 +583,12 @@ fn search_piece<const D: usize>(
     let mut stack: Vec<Interval> = vec![(numerator, p.denominator.clone(), 0.0, 1.0, 0)];
     let mut sign = Vec::new();
     let to_distance = |ratio: f64| ratio.max(0.0).sqrt() * scale;
-    // The rounding error of the numerator's coefficients: the scaled differences are at most
-    // 1 in size and the products of binomials of one coefficient sum to 1 (Vandermonde), so
-    // each coefficient is a sum of at most 2n + D + 2 rounded terms of size at most 1, and
-    // each halving adds at most one rounding of the same size. The lower bound is lowered by
-    // it: where the bound is uncertain (a flat piece, a query point on the curve) the interval
-    // is kept, never pruned on rounding noise.
+    // The rounding error of the ratios `a_k / b_k`: the scaled differences are at most 1 in
+    // size and the products of binomials of one coefficient sum to 1 (Vandermonde), so each
+    // `a_k` is a sum of at most 2n + D + 2 rounded terms, each at most its share of `b_k`
+    // (the same products of the weights), and each halving adds at most one rounding of the
+    // same size. The lower bound is lowered by it: where the bound is uncertain (a flat piece,
+    // a query point on the curve) the interval is kept, never pruned on rounding noise.
     let rounding = |depth: usize| (2 * n + D + 4 + 2 * depth) as f64 * f64::EPSILON;
     while let Some((a, b, lo, hi, depth)) = stack.pop() {
         let slack = rounding(depth);
@@ -596,10 +596,17 @@ fn search_piece<const D: usize>(
             .iter()
             .zip(&b)
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), (x, y)| {
-                (l.min((x - slack) / y), h.max((x + slack) / y))
+                (l.min(x / y), h.max(x / y))
             });
-        let (lower, upper) = (to_distance(low), to_distance(high));
+        let (lower, upper) = (to_distance(low - slack), to_distance(high + slack));
         if lower > best.min + best.tie {
+            continue;
+        }
+        if high - low <= 4.0 * slack {
+            // The squared distance is flat on the interval to within its rounding: the
+            // coefficients cannot order its points any more (a far query point, the centre of
+            // a circle, a query point on the curve near the zero). The true distance decides.
+            offer_flat(piece, point, lo, hi, best);
             continue;
         }
         let ties = lower >= best.min - best.tie && upper <= best.min + best.tie;
@@ -641,6 +648,44 @@ fn search_piece<const D: usize>(
         }
     }
     Ok(())
+}
+
+/// Offers the ends of `[lo, hi]` (local parameters of `piece`) and the minimum of the true
+/// distance on it by golden-section search, where the coefficients of the squared distance no
+/// longer tell its points apart.
+fn offer_flat<const D: usize>(
+    piece: &Piece<D>,
+    point: &[f64; D],
+    lo: f64,
+    hi: f64,
+    best: &mut Best,
+) {
+    offer_at(piece, point, lo, best);
+    offer_at(piece, point, hi, best);
+    let at = |x: f64| distance(&piece_point(piece, x), point);
+    let ratio = 0.5 * (5.0_f64.sqrt() - 1.0);
+    let (mut a, mut b) = (lo, hi);
+    let (mut c, mut d) = (b - ratio * (b - a), a + ratio * (b - a));
+    let (mut fc, mut fd) = (at(c), at(d));
+    for _ in 0..80 {
+        if b - a <= 4.0 * f64::EPSILON * b.abs().max(f64::MIN_POSITIVE) {
+            break;
+        }
+        if fc <= fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - ratio * (b - a);
+            fc = at(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + ratio * (b - a);
+            fd = at(d);
+        }
+    }
+    offer_at(piece, point, if fc <= fd { c } else { d }, best);
 }
 
 /// Offers the point of `piece` at local parameter `x` in [0, 1].

@@ -468,7 +468,7 @@ impl<'a> SurfaceProjector<'a> {
                 .iter()
                 .zip(&b)
                 .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), (x, y)| {
-                    (l.min((x - slack) / y), h.max((x + slack) / y))
+                    (l.min(x / y - slack), h.max(x / y + slack))
                 });
             let lower = to_distance(low);
             if lower > best.limit() {
