@@ -96,6 +96,7 @@
 mod any_curve;
 pub mod batch;
 mod bernstein;
+mod bernstein_scalar;
 mod bezier;
 pub mod color;
 mod curve;

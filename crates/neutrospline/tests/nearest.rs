@@ -406,3 +406,39 @@ proptest! {
         }
     }
 }
+
+/// Issue 22's report: a straight stretch drawn as a cubic the way drawing and font programs
+/// write it (the first two control points 1e-13 apart, the last two equal). Both ends are
+/// stationary, so the derivative's sign polynomial starts with rounding noise and falls at
+/// first; the root finder took that for convergence and every query came back at an end,
+/// 40 to 200 units away. The curve is the line `P0 + s (P3 - P0)` with `s = 3t^2 - 2t^3`
+/// (to 1e-13), so the nearest point of `P0 + s (P3 - P0)` is at distance ~0 and at the `t`
+/// solving that cubic (found here by bisection).
+#[test]
+fn nearest_on_a_cubic_with_stationary_ends_regression_issue_22() {
+    let d = Degrees::new(0.5, 0.25, 0.125).unwrap();
+    let pts = [
+        [461.0, 123.0],
+        [461.0 - 6e-14, 123.0 + 4e-14],
+        [111.0, 319.0],
+        [111.0, 319.0],
+    ];
+    let curve = Bezier::new(pts.iter().map(|p| ControlPoint::new(*p, d)).collect()).unwrap();
+    let size = (350.0_f64).hypot(196.0);
+    for k in 1..40 {
+        let s = k as f64 / 40.0;
+        let q = [461.0 - 350.0 * s, 123.0 + 196.0 * s];
+        let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
+        for _ in 0..80 {
+            let mid = 0.5 * (lo + hi);
+            if 3.0 * mid * mid - 2.0 * mid * mid * mid < s {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let near = curve.nearest(q).unwrap();
+        assert!(near.distance <= 1e-12 * size, "s = {s}: {near:?}");
+        assert!((near.parameter - lo).abs() <= 1e-9, "s = {s}: {near:?}, t = {lo}");
+    }
+}
