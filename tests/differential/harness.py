@@ -18,16 +18,20 @@ class CliError(Exception):
 
 
 # seconds a command may take on a test case (the cases are small: a few milliseconds is normal)
-TIMEOUT = 20
+TIMEOUT = 10
+
+
+def _shown(args):
+    return " ".join(pathlib.Path(a).name if isinstance(a, pathlib.Path) else str(a) for a in args)
 
 
 def run(cli, args):
     try:
         proc = subprocess.run([str(cli), *map(str, args)], capture_output=True, text=True, timeout=TIMEOUT)
     except subprocess.TimeoutExpired:
-        raise CliError(f"`neutrospline {' '.join(map(str, args))}` did not finish in {TIMEOUT} s") from None
+        raise CliError(f"`neutrospline {_shown(args)}` did not finish in {TIMEOUT} s") from None
     if proc.returncode != 0:
-        raise CliError(f"`neutrospline {' '.join(map(str, args))}` exited {proc.returncode}: {proc.stderr.strip()}")
+        raise CliError(f"`neutrospline {_shown(args)}` exited {proc.returncode}: {proc.stderr.strip()}")
     return proc.stdout
 
 
@@ -65,11 +69,13 @@ def shape_from_json(d):
 
 
 def write_regression(folder: pathlib.Path, prefix: str, payload: dict) -> pathlib.Path:
-    """Write a shrunk failure as folder/prefix-<hash>.json (stable name for the same case)."""
-    text = json.dumps(payload, indent=1, sort_keys=True)
+    """Write a shrunk failure as folder/prefix-<hash>.json, the hash of the input alone (the
+    same case found again keeps its file)."""
     import hashlib
 
-    name = f"{prefix}-{hashlib.sha256(text.encode()).hexdigest()[:10]}.json"
+    text = json.dumps(payload, indent=1, sort_keys=True)
+    key = json.dumps({k: v for k, v in payload.items() if k not in ("note", "found")}, sort_keys=True)
+    name = f"{prefix}-{hashlib.sha256(key.encode()).hexdigest()[:10]}.json"
     path = folder / name
     path.write_text(text + "\n")
     return path
@@ -99,8 +105,6 @@ def simpler_curves(curve: Curve):
                 kn = curve.knots[: p + 1] + interior[:j] + interior[j + 1 :] + curve.knots[len(curve.knots) - p - 1 :]
                 yield Curve(curve.kind, p, q, w, kn)
                 break
-    if curve.kind != "bezier" and len(pts) > curve.degree + 1 and curve.degree > 1:
-        pass
     # rounder numbers
     for digits in (1, 2, 3, 6, 10):
         q = [tuple(_round(c, digits) for c in p) for p in pts]

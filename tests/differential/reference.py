@@ -422,7 +422,7 @@ def _refine_curve_min(curve, span, lo, hi, q, exact_q):
     if glo < 0 < ghi:
         a, b = lo, hi
         t = 0.5 * (a + b)
-        for _ in range(200):
+        for _ in range(80):
             g, dg = g_and_dg(t)
             if g == 0:
                 break
@@ -441,22 +441,11 @@ def _refine_curve_min(curve, span, lo, hi, q, exact_q):
                 t = nt
                 break
             t = nt
-        # polish in mpf: a few Newton steps kept inside [lo, hi]
-        tm = mp.mpf(t)
-        mlo, mhi = mp.mpf(lo), mp.mpf(hi)
-        for _ in range(4):
-            g, dg = g_and_dg(tm)
-            if dg <= 0:
-                break
-            nt = tm - g / dg
-            if not (mlo <= nt <= mhi) or abs(nt - tm) > 1e-6 * (mhi - mlo + 1e-300):
-                break
-            tm = nt
-        found.append(tm)
+        found.append(t)
     return found
 
 
-def nearest_curve(curve: Curve, q, samples_per_span=None, cap=10):
+def nearest_curve(curve: Curve, q, samples_per_span=None, cap=6):
     """Every candidate local minimum of |C(t) - q| (ends of the spans included), measured in mpf.
     Returns the list of Minimum sorted by distance, then parameter."""
     spans = curve.spans()
@@ -485,15 +474,38 @@ def nearest_curve(curve: Curve, q, samples_per_span=None, cap=10):
     eligible = [c for c in cands if c[0] <= best * (1 + 1e-12) + 1e-300]
     by_bound = sorted(eligible, key=lambda c: (c[0], c[2]))[:cap]
     by_dist = sorted(eligible, key=lambda c: (c[1], c[2]))[: cap // 2]
-    by_t = sorted(eligible, key=lambda c: c[2])[:4]
+    by_t = sorted(eligible, key=lambda c: c[2])[:2]
     chosen = {id(c): c for c in by_bound + by_dist + by_t}.values()
-    results = []
+    found = []
     for _, _, _, k, lo, hi in chosen:
         for t in _refine_curve_min(curve, k, lo, hi, [float(x) for x in q], exact_q):
-            tm = t if isinstance(t, mp.mpf) else mp.mpf(t)
-            c = curve.eval(k, tm, 0)[0]
-            dist = mp.sqrt(_dot(_sub(c, exact_q), _sub(c, exact_q)))
-            results.append(Minimum(tm, dist, c))
+            c = np.array([float(x) for x in curve.eval(k, t, 0)[0]])
+            found.append((float(np.linalg.norm(c - qf)), t, k, lo, hi))
+    # measure in mpf only what can matter for a verdict: within 1e-7 of the size (plus the
+    # doubles' resolution) of the best float distance
+    size = curve.size() or 1.0
+    best_f = min(f[0] for f in found)
+    margin = 1e-7 * size + 1e-12 * magnitude(curve.points, [q])
+    results = []
+    for dist_f, t, k, lo, hi in found:
+        if dist_f > best_f + margin:
+            continue
+        tm = mp.mpf(t)
+        if lo < t < hi:
+            # two Newton steps on g = (C - q) . C' in mpf, kept inside [lo, hi]
+            for _ in range(2):
+                c, c1, c2 = curve.eval(k, tm, 2)
+                r = _sub(c, exact_q)
+                g, dg = _dot(r, c1), _dot(c1, c1) + _dot(r, c2)
+                if dg <= 0:
+                    break
+                nt = tm - g / dg
+                if not (lo <= nt <= hi) or abs(nt - tm) > 1e-6 * (hi - lo):
+                    break
+                tm = nt
+        c = curve.eval(k, tm, 0)[0]
+        dist = mp.sqrt(_dot(_sub(c, exact_q), _sub(c, exact_q)))
+        results.append(Minimum(tm, dist, c))
     results.sort(key=lambda m: (m.distance, m.t))
     return results
 
@@ -592,7 +604,7 @@ def _boundary_curves(surface: Surface):
     return out
 
 
-def nearest_surface(surface: Surface, q, grid=48):
+def nearest_surface(surface: Surface, q, grid=32):
     """Candidate minima of |S(u, v) - q|: interior ones by Newton on the gradient from the
     discrete minima of a dense grid on every patch (floats, then mpf), and every edge's
     minima by `nearest_curve` on the edge curves (clamped knots assumed). Sorted by distance,
@@ -626,7 +638,7 @@ def nearest_surface(surface: Surface, q, grid=48):
                 # edge); the edge curves give the minima on the edges themselves
                 if True:
                     cands.append((float(d[i, j]) - step, float(d[i, j]), su, sv, float(us[i]), float(vs[j]), (ua, ub, va, vb)))
-    eligible = sorted((c for c in cands if c[0] <= best_sample), key=lambda c: c[1])[:12]
+    eligible = sorted((c for c in cands if c[0] <= best_sample), key=lambda c: c[1])[:5]
     (ua, ub), (va, vb) = surface.domain_u(), surface.domain_v()
     spans_u, spans_v = surface.spans_u(), surface.spans_v()
 
@@ -643,7 +655,7 @@ def nearest_surface(surface: Surface, q, grid=48):
         # lower the distance
         f, (gu, gv), (huu, huv, hvv), su, sv = local(u, v)
         lam = 0.0
-        for it in range(200):
+        for it in range(60):
             a, b, c = huu + lam, huv, hvv + lam
             det = a * c - b * b
             if det <= 0 or a <= 0:
@@ -684,7 +696,7 @@ def nearest_surface(surface: Surface, q, grid=48):
         r = _sub(S, exact_q)
         results.append((um, vm, mp.sqrt(_dot(r, r)), S))
     for edge, to_uv in _boundary_curves(surface):
-        for m in nearest_curve(edge, q, cap=6)[:6]:
+        for m in nearest_curve(edge, q, cap=4)[:4]:
             u, v = to_uv(m.t)
             results.append((mp.mpf(u), mp.mpf(v), m.distance, m.point))
     results.sort(key=lambda r: (r[2], r[0], r[1]))
