@@ -164,3 +164,34 @@ def test_intersection_regressions(cli, path):
     b = shape_from_json(case["b"]) if case.get("b") else None
     problem, rows = check(cli, a, b)
     assert not problem, f"{path.name} ({case.get('note')}): {problem}\n{describe(a, b, rows)}"
+
+
+def test_reference_closed_forms():
+    """The reference on closed forms: the line y = 1/2 meets the unit circle at (+-sqrt(3)/2,
+    1/2), two crossings; the parabola y = (2t - 1)^2 touches y = 0 once at t = 1/2 (tangent); a
+    segment moved 1e-3 into the parabola crosses twice at x = +-sqrt(1e-3); B ending on A is an
+    `end` contact."""
+    import mpmath as mp
+
+    from reference import intersect_reference
+
+    s = 0.7071067811865476
+    circle = Curve(
+        "nurbs",
+        2,
+        [(1.0, 0.0), (1.0, 1.0), (0.0, 1.0), (-1.0, 1.0), (-1.0, 0.0), (-1.0, -1.0), (0.0, -1.0), (1.0, -1.0), (1.0, 0.0)],
+        [1, s, 1, s, 1, s, 1, s, 1],
+        [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1],
+    )
+    line = Curve("bezier", 1, [(-2.0, 0.5), (2.0, 0.5)])
+    got = intersect_reference(circle, line)
+    assert [c.kind for c in got] == ["crossing", "crossing"]
+    assert abs(got[0].point[0] - mp.sqrt(3) / 2) < 1e-15 and abs(got[1].point[0] + mp.sqrt(3) / 2) < 1e-15
+    parabola = Curve("bezier", 2, [(-1.0, 1.0), (0.0, -1.0), (1.0, 1.0)])
+    got = intersect_reference(parabola, Curve("bezier", 1, [(-2.0, 0.0), (2.0, 0.0)]))
+    assert [(c.kind, float(c.s)) for c in got] == [("tangent", 0.5)]
+    got = intersect_reference(parabola, Curve("bezier", 1, [(-2.0, 1e-3), (2.0, 1e-3)]))
+    assert [c.kind for c in got] == ["crossing", "crossing"]
+    assert abs(abs(got[0].point[0]) - mp.sqrt(mp.mpf("1e-3"))) < 1e-15
+    got = intersect_reference(parabola, Curve("bezier", 1, [(0.5, 0.25), (3.0, -1.0)]))
+    assert [(c.kind, float(c.t)) for c in got] == [("end", 0.0)]

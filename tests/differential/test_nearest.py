@@ -153,3 +153,69 @@ def test_nearest_regressions(cli, path):
     else:
         bad = curve_verdicts(cli, shape, case["queries"])
     assert not bad, f"{path.name} ({case.get('note')}):\n" + report(shape, bad)
+
+
+# ---- the reference itself -------------------------------------------------------------------
+
+
+def test_reference_closed_forms():
+    """The reference on curves with closed-form nearest points: the NURBS unit circle (distance
+    | |q| - 1 |; its corner weight is sqrt(2)/2 rounded, so the curve is a circle to ~1e-16) and
+    the parabola y = x^2, (-1, 1), (0, -1), (1, 1), from (0, h), h > 1/2: nearest at
+    x^2 = h - 1/2, distance sqrt(h - 1/4)."""
+    import mpmath as mp
+
+    from reference import nearest_curve
+
+    s = 0.7071067811865476
+    circle = Curve(
+        "nurbs",
+        2,
+        [(1.0, 0.0), (1.0, 1.0), (0.0, 1.0), (-1.0, 1.0), (-1.0, 0.0), (-1.0, -1.0), (0.0, -1.0), (1.0, -1.0), (1.0, 0.0)],
+        [1, s, 1, s, 1, s, 1, s, 1],
+        [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1],
+    )
+    rng = random.Random(7)
+    for _ in range(10):
+        q = (rng.uniform(-3, 3), rng.uniform(-3, 3))
+        best = nearest_curve(circle, q)[0]
+        assert abs(best.distance - abs(mp.sqrt(q[0] ** 2 + q[1] ** 2) - 1)) < 1e-15, q
+    parabola = Curve("bezier", 2, [(-1.0, 1.0), (0.0, -1.0), (1.0, 1.0)])
+    for h in (0.75, 1.0, 1.25, 1.5):
+        best = nearest_curve(parabola, (0.0, h))[0]
+        assert abs(best.distance - mp.sqrt(mp.mpf(h) - mp.mpf(1) / 4)) < 1e-25, h
+        assert abs(abs(2 * best.t - 1) - mp.sqrt(mp.mpf(h) - mp.mpf(1) / 2)) < 1e-12, h
+    # beyond h = 3/2 the nearest points are the ends (-1, 1) and (1, 1), a tie: t = 0 first
+    best = nearest_curve(parabola, (0.0, 10.0))[0]
+    assert best.t == 0 and abs(best.distance - mp.sqrt(82)) < 1e-25
+    # below the focus the vertex is nearest
+    assert abs(nearest_curve(parabola, (0.0, 0.25))[0].t - mp.mpf(1) / 2) < 1e-12
+
+
+def test_reference_evaluation_agrees_with_eval(cli):
+    """The reference's curves are the command's curves: `neutrospline eval --at` and the mpmath
+    evaluation agree to 1e-9 of the size (plus the doubles' resolution) on random degenerate
+    curves; otherwise every verdict above would compare different curves."""
+    import mpmath as mp
+
+    from harness import run, table
+    from reference import ROUNDING, magnitude, write_model
+
+    import pathlib
+    import tempfile
+
+    for k in range(12):
+        rng = random.Random(first_seed() + 3 * 10**6 + k)
+        curve = degenerate_curve(rng)
+        lo, hi = curve.domain
+        ts = [lo, hi] + [lo + (hi - lo) * rng.random() for _ in range(6)]
+        with tempfile.TemporaryDirectory() as tmp:
+            path = pathlib.Path(tmp) / "m.json"
+            write_model(path, curve)
+            rows = table(run(cli, ["eval", path, "--at", ",".join(repr(t) for t in ts)]))
+        tol = 1e-9 * (curve.size() or 1.0) + ROUNDING * magnitude(curve.points)
+        for t, r in zip(ts, rows):
+            ref = curve.point(mp.mpf(t))[0]
+            ours = [float(r[c]) for c in ("x", "y", "z")[: curve.dim]]
+            gap = max(abs(mp.mpf(a) - b) for a, b in zip(ours, ref))
+            assert gap <= tol, f"{curve.model()} at t={t!r}: eval {ours}, reference {[mp.nstr(v, 17) for v in ref]}"
