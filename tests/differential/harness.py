@@ -74,6 +74,13 @@ def write_regression(folder: pathlib.Path, prefix: str, payload: dict) -> pathli
     import hashlib
 
     text = json.dumps(payload, indent=1, sort_keys=True)
+    # a case already saved (the same test and seed, maybe shrunk further by hand) keeps its file
+    for existing in sorted(folder.glob(f"{prefix}-*.json")):
+        try:
+            if json.loads(existing.read_text()).get("note") == payload.get("note"):
+                return existing
+        except ValueError:
+            continue
     key = json.dumps({k: v for k, v in payload.items() if k not in ("note", "found")}, sort_keys=True)
     name = f"{prefix}-{hashlib.sha256(key.encode()).hexdigest()[:10]}.json"
     path = folder / name

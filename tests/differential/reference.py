@@ -431,7 +431,7 @@ def _refine_curve_min(curve, span, lo, hi, q, exact_q):
     ts[-1] = hi
     gs, _ = g_and_dg(ts)
     gs = np.broadcast_to(gs, ts.shape)
-    for i in np.nonzero((gs[:-1] < 0) & (gs[1:] > 0))[0]:
+    for i in np.nonzero((gs[:-1] < 0) & (gs[1:] >= 0))[0]:
         a, b = float(ts[i]), float(ts[i + 1])
         t = 0.5 * (a + b)
         for _ in range(80):
