@@ -1149,6 +1149,16 @@ def query_points(rng: random.Random, curve: Curve, count: int):
             c = np.array([float(x) for x in curve.point(t)[0]])
             p = list(c + size * 1e-6 * np.array([rng.gauss(0, 1) for _ in range(curve.dim)]))
         out.append([float(x) for x in p])
+    # and the point where the sampled speed is smallest (a cusp, a stationary end or a run of
+    # coincident control points), drawing nothing from rng so that the points above stay put
+    best = None
+    for k, a, b in curve.spans():
+        ts = np.linspace(a, b, 257)
+        speed = np.linalg.norm(np.stack([np.broadcast_to(v, ts.shape) for v in curve.eval(k, ts, 1)[1]], axis=1), axis=1)
+        i = int(np.argmin(speed))
+        if best is None or speed[i] < best[0]:
+            best = (speed[i], k, float(ts[i]))
+    out.append([float(x) for x in curve.eval(best[1], best[2], 0)[0]])
     return out
 
 
