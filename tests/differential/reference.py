@@ -909,7 +909,17 @@ def intersect_reference(A: Curve, B: Curve | None, per_span=None, contact_rel=1e
         if same and abs(int(i) - int(j)) <= 2:
             continue
         starts.append((float(ta[i]), float(tb[j])))
-    # the four end pairs and each end against the other curve's samples
+    if same:
+        # small loops (near cusps) hide between two samples: from every local minimum of the
+        # sampled speed, start at (t - h, t + h) for h from a tenth of the span down to 1e-7
+        for k, lo_k, hi_k in A.spans():
+            ts_k = np.linspace(lo_k, hi_k, 4 * n)
+            speed = np.linalg.norm(np.stack([np.broadcast_to(v, ts_k.shape) for v in A.eval(k, ts_k, 1)[1]], axis=1), axis=1)
+            for i in range(len(ts_k)):
+                if (i == 0 or speed[i] <= speed[i - 1]) and (i == len(ts_k) - 1 or speed[i] <= speed[i + 1]):
+                    for h in 10.0 ** -np.arange(1, 8):
+                        h *= hi_k - lo_k
+                        starts.append((max(float(ts_k[i]) - h, A.domain[0]), min(float(ts_k[i]) + h, A.domain[1])))
     roots = []
     (a0, a1), (b0, b1) = A.domain, B.domain
     wa, wb = a1 - a0, b1 - b0

@@ -157,6 +157,17 @@ def test_parabola_and_its_tangent(cli):
     assert not problem, problem + "\n" + describe(a, b, rows)
 
 
+@pytest.mark.parametrize("delta", [0.0, 1e-8, 1e-6, 1e-4, 1e-2, 0.3])
+def test_self_intersections_from_cusp_to_loop(cli, delta):
+    """(0, 0), (1 + d, 1), (-d, 1), (1, 0): a cusp at t = 1/2 for d = 0 (no self-intersection:
+    s = t there), a loop growing with d, its crossing found by the reference from starts at
+    (t - h, t + h) around the slowest point (loops below the contact tolerance are not
+    counted)."""
+    a = Curve("bezier", 3, [(0.0, 0.0), (1.0 + delta, 1.0), (0.0 - delta, 1.0), (1.0, 0.0)])
+    problem, rows = check(cli, a, None)
+    assert not problem, problem + "\n" + describe(a, None, rows)
+
+
 @pytest.mark.parametrize("path", sorted(REGRESSIONS.glob("intersect-*.json")), ids=lambda p: p.name)
 def test_intersection_regressions(cli, path):
     case = json.loads(path.read_text())

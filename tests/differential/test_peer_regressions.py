@@ -9,7 +9,6 @@ their points: the control points are point1, point1 + handle1, point2 + handle2,
 """
 
 import mpmath as mp
-import pytest
 
 from harness import intersect, query
 from reference import Curve, judge_intersections, judge_nearest, nearest_curve
