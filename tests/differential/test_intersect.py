@@ -174,6 +174,17 @@ def test_parabola_and_its_tangent(cli):
     assert not problem, problem + "\n" + describe(a, b, rows)
 
 
+@pytest.mark.parametrize("lo,width", [(0.0, 1.0), (100.0, 0.01), (1e4, 1e-3), (1e4, 1.0), (0.0, 1e-3), (-5e5, 0.25)])
+def test_the_domain_does_not_change_the_contacts(cli, lo, width):
+    """The parabola (-1, 1), (0, -1), (1, 1) as a clamped quadratic B-spline on [lo, lo + width]
+    crosses y = 1/2 at s = lo + width (2 -+ sqrt(2)) / 4 whatever the domain (a linear
+    reparametrisation moves no point)."""
+    a = Curve("bspline", 2, [(-1.0, 1.0), (0.0, -1.0), (1.0, 1.0)], None, [lo] * 3 + [lo + width] * 3)
+    b = Curve("bezier", 1, [(-2.0, 0.5), (2.0, 0.5)])
+    problem, rows = check(cli, a, b)
+    assert not problem, problem + "\n" + describe(a, b, rows)
+
+
 @pytest.mark.parametrize("delta", [0.0, 1e-8, 1e-6, 1e-4, 1e-2, 0.3])
 def test_self_intersections_from_cusp_to_loop(cli, delta):
     """(0, 0), (1 + d, 1), (-d, 1), (1, 0): a cusp at t = 1/2 for d = 0 (no self-intersection:
