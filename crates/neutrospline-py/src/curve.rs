@@ -20,7 +20,7 @@ use pyo3::PyClassInitializer;
 use crate::arrays::{readonly_array, vector, Output, Params, Writer};
 use crate::errors::{invalid, invalid_at};
 use crate::model::{self, FigureRequest, Meta, PointArrays};
-use numpy::PyUntypedArrayMethods;
+use numpy::PyArrayMethods;
 
 /// Parameters evaluated per block when the output is not Fortran-ordered: the block is
 /// evaluated column by column into cache-resident scratch, then written row by row.
@@ -209,17 +209,24 @@ impl Construction<'_, '_> {
     /// Builds the curve of `kind` and its model.
     fn build(self, kind: CurveKind) -> PyResult<Curve> {
         let membership = model::membership(self.membership)?;
-        let arrays = PointArrays::read(self.positions, self.degrees, membership, false)?;
+        let arrays =
+            PointArrays::read(self.positions, "positions", self.degrees, membership, false)?;
         let weights = self
             .weights
-            .map(|w| crate::arrays::float_array(w, "weights"))
-            .transpose()?
-            .map(|w| w.as_array().iter().copied().collect::<Vec<f64>>());
+            .map(|w| {
+                crate::arrays::float_array(w, "weights")?
+                    .values()
+                    .map(<[f64]>::to_vec)
+            })
+            .transpose()?;
         let knots = self
             .knots
-            .map(|k| crate::arrays::float_array(k, "knots"))
-            .transpose()?
-            .map(|k| k.as_array().iter().copied().collect::<Vec<f64>>());
+            .map(|k| {
+                crate::arrays::float_array(k, "knots")?
+                    .values()
+                    .map(<[f64]>::to_vec)
+            })
+            .transpose()?;
         let settings = Settings {
             kind,
             weights,
@@ -317,8 +324,25 @@ impl Bezier {
         membership: &str,
     ) -> PyResult<Py<PyAny>> {
         let nodes = crate::arrays::float_array(nodes, "nodes")?;
-        let transposed = nodes.as_array().reversed_axes().to_owned();
-        let positions = numpy::PyArray::from_owned_array(py, transposed);
+        let (dimension, count) = match *nodes.shape() {
+            [d, n] => (d, n),
+            _ => {
+                return Err(invalid_at(
+                    "nodes",
+                    format!(
+                        "expected an array of shape (dimension, n) (one column per control \
+                         point), got shape {:?}",
+                        nodes.shape()
+                    ),
+                ))
+            }
+        };
+        // Row-major (dimension, n) values read column by column: the (n, dimension) rows.
+        let values = nodes.values()?;
+        let rows: Vec<f64> = (0..count)
+            .flat_map(|k| (0..dimension).map(move |c| values[c * count + k]))
+            .collect();
+        let positions = crate::arrays::new_array(py, rows, &[count, dimension])?;
         let curve = Construction {
             positions: positions.as_any(),
             degrees,
@@ -419,22 +443,23 @@ fn parameter_error(ts: &[f64], scalar: bool, domain: &std::ops::Range<f64>, e: E
 }
 
 /// Evaluates a model curve through the batch engine: straight into a Fortran-ordered output,
-/// by cache-sized blocks into any other.
+/// by cache-sized blocks into any other. The outer error is one of the output array, the
+/// inner one of a parameter.
 fn evaluate_batch<const D: usize>(
     py: Python<'_>,
     batch: &CurveBatch<D>,
     ts: &[f64],
     writer: &mut Writer<'_>,
-) -> Result<(), EvalError> {
+) -> PyResult<Result<(), EvalError>> {
     let options = BatchOptions::default();
     if ts.is_empty() {
-        return Ok(());
+        return Ok(Ok(()));
     }
-    if let Some(columns) = writer.columns() {
-        return py.detach(|| batch.evaluate(BatchParams::Values(ts), columns, &options));
+    if let Some(columns) = writer.columns()? {
+        return Ok(py.detach(|| batch.evaluate(BatchParams::Values(ts), columns, &options)));
     }
     let mut view = writer.view();
-    py.detach(|| {
+    Ok(py.detach(|| {
         let mut scratch = vec![0.0; (D + 3) * BLOCK.min(ts.len())];
         for (b, block) in ts.chunks(BLOCK).enumerate() {
             let m = block.len();
@@ -447,7 +472,7 @@ fn evaluate_batch<const D: usize>(
             }
         }
         Ok(())
-    })
+    }))
 }
 
 /// Evaluates `value` at every parameter into the rows of `writer`.
@@ -612,14 +637,20 @@ impl Curve {
     ) -> PyResult<Py<PyAny>> {
         let params = Params::read(t, "t")?;
         let scalar = matches!(params, Params::Scalar(_));
-        let ts = params.values();
+        let ts = params.values()?;
         let columns = self.state.dimension() + 3;
+        // A scalar parameter's result is one row: an `out` of that shape (columns,) gets it,
+        // checked before anything is evaluated.
+        let row_out = match (scalar, out) {
+            (true, Some(out)) => Some(crate::arrays::checked_out(out, &[columns])?),
+            _ => None,
+        };
         let output = Output::new(py, if scalar { None } else { out }, ts.len(), columns)?;
         let mut writer = output.write()?;
         let domain = self.domain_range();
         let result = match &self.state {
             State::Model { curve, .. } => {
-                on_dim!(curve, c => evaluate_batch(py, &c.batch, ts, &mut writer))
+                on_dim!(curve, c => evaluate_batch(py, &c.batch, ts, &mut writer))?
             }
             State::Derivative { derivative, .. } => on_dim!(derivative, d => {
                 evaluate_rows(py, ts, &mut writer, columns, |t| d.evaluate(t).map(derivative_row))
@@ -627,6 +658,16 @@ impl Curve {
         };
         drop(writer);
         result.map_err(|e| parameter_error(ts, scalar, &domain, e))?;
+        if let Some(target) = row_out {
+            let values = output.array().try_readonly()?;
+            target
+                .try_readwrite()
+                .map_err(|e| invalid_at("out", format!("cannot write into the array ({e})")))?
+                .as_array_mut()
+                .assign(&values.as_array().row(0));
+            drop(values);
+            return Ok(target.into_any().unbind());
+        }
         output.finish(scalar)
     }
 
@@ -640,11 +681,16 @@ impl Curve {
 
 #[pymethods]
 impl Curve {
-    /// Evaluates at `t` (a float, or a 1-D array of any float dtype and strides): an array of
-    /// shape (len(t), dimension + 3), columns x, y[, z], truth, indeterminacy, falsity (a
-    /// 1-D row for a float `t`). The result is Fortran-ordered (each column contiguous);
-    /// with `out` (float64, that shape) it is written there and `out` is returned, without
-    /// allocating. The GIL is released while the engine runs.
+    /// Evaluates at `t` (a float or 0-d array, or a 1-D array or sequence of any layout and
+    /// real dtype: unaligned, byte-swapped, strided, read-only, float16/32/64, integers; the
+    /// answer is the one for a fresh aligned float64 copy): an array of shape (len(t),
+    /// dimension + 3), columns x, y[, z], truth, indeterminacy, falsity (a 1-D row for a
+    /// scalar `t`; no rows for an empty `t`). `None`, complex, boolean and string values raise
+    /// `ModelError` naming the element (`t[3] = None is not a number`). The result is
+    /// Fortran-ordered (each column contiguous); with `out` (an aligned, writeable, native
+    /// float64 array of that shape, any strides) it is written there and `out` is returned,
+    /// without allocating; an `out` that cannot be written in place raises `ModelError`. The
+    /// GIL is released while the engine runs.
     ///
     /// >>> import numpy as np, neutrospline as ns
     /// >>> curve = ns.example1()
@@ -690,7 +736,7 @@ impl Curve {
         let output = Output::new(py, out, count, columns)?;
         let mut writer = output.write()?;
         if let (State::Model { curve, .. }, Some(columns), true) =
-            (&self.state, writer.columns(), count > 0)
+            (&self.state, writer.columns()?, count > 0)
         {
             let options = BatchOptions::default();
             let result = on_dim!(curve, c => py.detach(|| {
@@ -833,7 +879,7 @@ impl Curve {
     fn curvature(&self, py: Python<'_>, t: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
         let (_, curve) = self.model()?;
         let params = Params::read(t, "t")?;
-        let ts = params.values();
+        let ts = params.values()?;
         let mut values = Vec::with_capacity(ts.len());
         for (k, &t) in ts.iter().enumerate() {
             let value = match on_dim!(curve, c => c.curve.curvature(t)) {
@@ -878,7 +924,7 @@ impl Curve {
                 ),
             ));
         }
-        let flat: Vec<f64> = array.as_array().iter().copied().collect();
+        let flat = array.values()?;
         let (t, distance, rows) = on_dim!(curve, c => {
             let queries: Vec<_> = flat
                 .chunks_exact(dimension)

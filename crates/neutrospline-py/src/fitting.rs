@@ -217,9 +217,8 @@ pub fn fit<'py>(
         Source::Arrays { .. } => format!("Fitted to {} points by neutrospline.fit", source.len()),
     };
     let parameters = parameters
-        .map(|p| float_array(p, "parameters"))
+        .map(|p| float_array(p, "parameters")?.values().map(<[f64]>::to_vec))
         .transpose()?
-        .map(|p| p.as_array().iter().copied().collect::<Vec<f64>>())
         .or_else(|| match &source {
             Source::File(table) => table.parameters().map(<[f64]>::to_vec),
             Source::Arrays { .. } => None,
@@ -297,7 +296,7 @@ fn read_source(
             "missing: give the degrees of the data points (or a data file instead of arrays)",
         )
     })?;
-    let arrays = PointArrays::read(data, degrees, membership, false)?;
+    let arrays = PointArrays::read(data, "data", degrees, membership, false)?;
     Ok(Source::Arrays {
         positions: arrays.positions,
         dimension: arrays.dimension,
@@ -333,10 +332,6 @@ fn read_weights(
             )),
         };
     }
-    let values = float_array(weights, "weights")?
-        .as_array()
-        .iter()
-        .copied()
-        .collect();
+    let values = float_array(weights, "weights")?.values()?.to_vec();
     Ok((DataWeights::Given, Some(values)))
 }

@@ -5,7 +5,6 @@ use std::path::PathBuf;
 
 use neutrospline::{AxisSet, AxisSetName, Degrees, PointRelation};
 use neutrospline_io::{Format, Kind, KnotSpec, Model, ReadOptions};
-use numpy::PyUntypedArrayMethods;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 
@@ -87,11 +86,7 @@ fn knot_spec(knots: &Bound<'_, PyAny>, what: &str) -> PyResult<KnotSpec> {
     if let Ok(text) = knots.extract::<String>() {
         return KnotSpec::parse_option(&text).map_err(|e| invalid_at(what, e));
     }
-    let values = float_array(knots, what)?
-        .as_array()
-        .iter()
-        .copied()
-        .collect();
+    let values = float_array(knots, what)?.values()?.to_vec();
     Ok(KnotSpec::Explicit(values))
 }
 
@@ -141,7 +136,7 @@ fn measure(
             ),
         ));
     }
-    let values: Vec<f64> = array.as_array().iter().copied().collect();
+    let values = array.values()?;
     let results = values
         .chunks_exact(3)
         .enumerate()
@@ -226,6 +221,26 @@ fn relation_arrays<'py>(
     PyTuple::new(py, [positions, degrees])
 }
 
+/// `pairs`: an array or sequence of shape (k, 2), one `(r, s)` per row.
+fn read_pairs(pairs: &Bound<'_, PyAny>) -> PyResult<Vec<(f64, f64)>> {
+    let array = float_array(pairs, "pairs")?;
+    match *array.shape() {
+        [_, 2] => Ok(array
+            .values()?
+            .chunks_exact(2)
+            .map(|p| (p[0], p[1]))
+            .collect()),
+        [0] => Ok(Vec::new()),
+        _ => Err(invalid_at(
+            "pairs",
+            format!(
+                "expected an array of shape (k, 2) (one pair (r, s) per row), got shape {:?}",
+                array.shape()
+            ),
+        )),
+    }
+}
+
 /// The largest neutrosophic point relation of the axis sets `m` and `n` (the paper's Def. 4):
 /// each pair `(r, s)` gets the smaller of the two sets' degrees, degree by degree. The sets
 /// are sequences of `(value, (truth, indeterminacy, falsity))`; `pairs` (a sequence of
@@ -242,10 +257,11 @@ pub fn largest_relation<'py>(
     py: Python<'py>,
     m: &Bound<'py, PyAny>,
     n: &Bound<'py, PyAny>,
-    pairs: Option<Vec<(f64, f64)>>,
+    pairs: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyTuple>> {
     let m = axis_set(AxisSetName::M, m)?;
     let n = axis_set(AxisSetName::N, n)?;
+    let pairs = pairs.map(read_pairs).transpose()?;
     let relation = match pairs {
         Some(pairs) => PointRelation::largest_on_pairs(&m, &n, &pairs).map_err(invalid)?,
         None => PointRelation::largest(&m, &n),
@@ -276,6 +292,7 @@ pub fn check_relation(
     let n = axis_set(AxisSetName::N, n)?;
     let arrays = model::PointArrays::read(
         positions,
+        "positions",
         degrees,
         neutrospline::Membership::Neutrosophic,
         false,

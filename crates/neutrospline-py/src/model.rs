@@ -9,11 +9,10 @@ use std::str::FromStr;
 use neutrospline::{ControlPoint, Degrees, Membership};
 use neutrospline_io::{AtomicFile, Format, Model, ReadOptions, Shape};
 use neutrospline_plot::{render_png, render_svg, PlotModel, PlotOptions, View};
-use numpy::{PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pyo3::exceptions::PyOSError;
 use pyo3::prelude::*;
 
-use crate::arrays::float_array;
+use crate::arrays::{float_array, FloatArray};
 use crate::errors::{invalid, invalid_at, write_error};
 
 /// The name, description and point names given with the arrays.
@@ -86,14 +85,16 @@ pub struct PointArrays {
 }
 
 impl PointArrays {
-    /// Reads and checks the arrays; `grid` reads `(rows, cols, 3)` positions.
+    /// Reads and checks the arrays (the positions named `what` in messages: `positions`, or
+    /// `data` for fitting); `grid` reads `(rows, cols, 3)` positions.
     pub fn read(
         positions: &Bound<'_, PyAny>,
+        what: &str,
         degrees: &Bound<'_, PyAny>,
         membership: Membership,
         grid: bool,
     ) -> PyResult<PointArrays> {
-        let positions = float_array(positions, "positions")?;
+        let positions = float_array(positions, what)?;
         let degree_array = float_array(degrees, "degrees")?;
         let shape = positions.shape().to_vec();
         let (count, dimension, grid) = match (grid, shape.as_slice()) {
@@ -101,7 +102,7 @@ impl PointArrays {
             (true, &[rows, cols, 3]) => (rows * cols, 3, Some((rows, cols))),
             (false, _) => {
                 return Err(invalid_at(
-                    "positions",
+                    what,
                     format!(
                         "expected an array of shape (n, 2) or (n, 3) (one row x, y[, z] per \
                          control point), got shape {shape:?}"
@@ -110,7 +111,7 @@ impl PointArrays {
             }
             (true, _) => {
                 return Err(invalid_at(
-                    "positions",
+                    what,
                     format!(
                         "expected an array of shape (rows, cols, 3) (x, y, z of each control \
                          point of the grid), got shape {shape:?}"
@@ -118,7 +119,7 @@ impl PointArrays {
                 ))
             }
         };
-        let flat: Vec<f64> = positions.as_array().iter().copied().collect();
+        let flat = positions.values()?.to_vec();
         let degrees = read_degrees(&degree_array, &shape[..shape.len() - 1], membership)?;
         debug_assert_eq!(degrees.len(), count);
         Ok(PointArrays {
@@ -146,7 +147,7 @@ impl PointArrays {
 /// The degrees of `points` points (the leading shape `points`), one row each, checked under
 /// `membership`; a bad value is named as `degrees[i]` (or `degrees[i, j]` on a grid).
 fn read_degrees(
-    array: &PyReadonlyArrayDyn<'_, f64>,
+    array: &FloatArray<'_>,
     points: &[usize],
     membership: Membership,
 ) -> PyResult<Vec<Degrees>> {
@@ -178,25 +179,29 @@ fn read_degrees(
             ),
         ));
     };
-    let values: Vec<f64> = array.as_array().iter().copied().collect();
+    let values = array.values()?;
     let cols = points.get(1).copied();
     values
         .chunks_exact(width)
         .enumerate()
         .map(|(k, row)| {
+            let at = || match cols {
+                Some(c) if points.len() == 2 => format!("degrees[{}, {}]", k / c, k % c),
+                _ => format!("degrees[{k}]"),
+            };
             let (truth, indeterminacy, falsity) = match *row {
                 [t, i, f] => (t, Some(i), Some(f)),
                 [t, f] => (t, None, Some(f)),
                 [t] => (t, None, None),
-                _ => (f64::NAN, None, None),
+                _ => {
+                    return Err(invalid_at(
+                        at(),
+                        format!("a row of {} values (expected 1 to 3)", row.len()),
+                    ))
+                }
             };
-            Degrees::with_membership(membership, truth, indeterminacy, falsity).map_err(|e| {
-                let at = match cols {
-                    Some(c) if points.len() == 2 => format!("degrees[{}, {}]", k / c, k % c),
-                    _ => format!("degrees[{k}]"),
-                };
-                invalid_at(at, e)
-            })
+            Degrees::with_membership(membership, truth, indeterminacy, falsity)
+                .map_err(|e| invalid_at(at(), e))
         })
         .collect()
 }

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use neutrospline::{EvaluateSurface, KnotVector, Surface as CoreSurface, SurfaceKind};
 use neutrospline_io::{Model, Shape};
 use numpy::ndarray::{ArrayView, IxDyn};
-use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
+use numpy::PyArrayMethods;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 
@@ -77,7 +77,7 @@ fn knot_vector(
 ) -> PyResult<KnotVector> {
     match knots {
         Some(k) => {
-            let values = float_array(k, what)?.as_array().iter().copied().collect();
+            let values = float_array(k, what)?.values()?.to_vec();
             KnotVector::new(values, degree, count)
         }
         None => KnotVector::clamped_uniform(degree, count),
@@ -93,8 +93,10 @@ fn build(
     meta: Meta,
 ) -> PyResult<Surface> {
     let membership = model::membership(membership)?;
-    let arrays = PointArrays::read(positions, degrees, membership, true)?;
-    let (rows, cols) = arrays.grid.unwrap_or((0, 0));
+    let arrays = PointArrays::read(positions, "positions", degrees, membership, true)?;
+    let (rows, cols) = arrays
+        .grid
+        .ok_or_else(|| invalid_at("positions", "expected a grid of shape (rows, cols, 3)"))?;
     let points = arrays.points::<3>();
     let surface = match settings.kind {
         SurfaceKind::Bezier => CoreSurface::bezier(rows, cols, points),
@@ -107,7 +109,7 @@ fn build(
                     .map(|w| float_array(w, "weights"))
                     .transpose()?;
                 let weights = match weights {
-                    Some(w) if w.shape() == [rows, cols] => w.as_array().iter().copied().collect(),
+                    Some(w) if w.shape() == [rows, cols] => w.values()?.to_vec(),
                     Some(w) => {
                         return Err(invalid_at(
                             "weights",
@@ -147,9 +149,9 @@ fn parameters(u: &Bound<'_, PyAny>, v: &Bound<'_, PyAny>) -> PyResult<(Vec<[f64;
     }
     let shape = u.shape().to_vec();
     let params = u
-        .as_array()
+        .values()?
         .iter()
-        .zip(v.as_array().iter())
+        .zip(v.values()?)
         .map(|(&u, &v)| [u, v])
         .collect();
     Ok((params, shape))
@@ -179,17 +181,13 @@ fn emit<'py>(
     let Some(out) = out else {
         return Ok(crate::arrays::new_array(py, values, &full)?.unbind());
     };
-    let array = out
-        .cast::<PyArrayDyn<f64>>()
-        .map_err(|_| invalid_at("out", format!("expected a float64 array of shape {full:?}")))?;
-    if array.shape() != full.as_slice() {
-        return Err(invalid_at(
-            "out",
-            format!("expected shape {full:?}, got {:?}", array.shape()),
-        ));
-    }
+    let array = crate::arrays::checked_out(out, &full)?;
     let source = ArrayView::from_shape(IxDyn(&full), &values).map_err(invalid)?;
-    array.try_readwrite()?.as_array_mut().assign(&source);
+    array
+        .try_readwrite()
+        .map_err(|e| invalid_at("out", format!("cannot write into the array ({e})")))?
+        .as_array_mut()
+        .assign(&source);
     Ok(array.clone().into_any().unbind())
 }
 
@@ -278,9 +276,10 @@ impl Surface {
         build(positions, degrees, membership, settings, meta)
     }
 
-    /// Evaluates at `(u, v)` (numbers, or arrays of one shape S): an array of shape S + (6,),
-    /// columns x, y, z, truth, indeterminacy, falsity; written into `out` when given. The GIL
-    /// is released while the engine runs.
+    /// Evaluates at `(u, v)` (numbers, or arrays of one shape S, of any layout and real dtype
+    /// as for `Curve.evaluate`): an array of shape S + (6,), columns x, y, z, truth,
+    /// indeterminacy, falsity; written into `out` (an aligned, writeable, native float64 array
+    /// of that shape) when given. The GIL is released while the engine runs.
     #[pyo3(signature = (u, v, out = None))]
     fn evaluate(
         &self,
@@ -370,10 +369,7 @@ impl Surface {
             ));
         }
         let queries: Vec<[f64; 3]> = array
-            .as_array()
-            .iter()
-            .copied()
-            .collect::<Vec<f64>>()
+            .values()?
             .chunks_exact(3)
             .map(|p| [p[0], p[1], p[2]])
             .collect();

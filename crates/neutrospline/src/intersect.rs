@@ -20,7 +20,64 @@ pub struct Intersection {
     pub point_a: CurvePoint<2>,
     /// The second curve's point at [`Intersection::parameter_b`].
     pub point_b: CurvePoint<2>,
+    /// How the curves meet there.
+    pub contact: Contact,
 }
+
+/// How two curves meet at an [`Intersection`].
+///
+/// With `theta` the angle between the curves' tangents `A'(s)` and `B'(t)` at the point:
+/// a crossing has `|sin theta| > 1e-6` ([`TANGENT_SINE`]); a tangential contact has
+/// `|sin theta| <= 1e-6` or a vanishing tangent, or is a cluster of roots between which the
+/// curves stay within 1e-12 of their size of each other (touching, osculating and tangential
+/// crossings alike, each reported once). A point at an end of either curve's domain is an end
+/// contact, whatever the angle (a closed curve's seam is no end).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Contact {
+    /// The curves cross at an angle.
+    Crossing,
+    /// The tangents agree: the curves touch, osculate or cross tangentially.
+    Tangent,
+    /// The point is an end of either curve (of an open curve's domain).
+    End,
+}
+
+impl Contact {
+    /// Every contact, in the order of [`Contact::name`]'s documentation.
+    pub const ALL: [Contact; 3] = [Contact::Crossing, Contact::Tangent, Contact::End];
+
+    /// The name used in tables and files: `crossing`, `tangent` or `end`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Contact::Crossing => "crossing",
+            Contact::Tangent => "tangent",
+            Contact::End => "end",
+        }
+    }
+}
+
+impl core::fmt::Display for Contact {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl core::str::FromStr for Contact {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Contact::ALL
+            .into_iter()
+            .find(|c| c.name() == s)
+            .ok_or_else(|| format!("unknown contact `{s}` (expected crossing, tangent or end)"))
+    }
+}
+
+/// The largest `|sin theta|` between the tangents at which two curves count as tangent
+/// ([`Contact::Tangent`]): below it a crossing cannot be told from a touch at the precision of
+/// the roots (a root within 1e-12 of the curves' size moves by up to `1e-12 / sin theta`).
+pub const TANGENT_SINE: f64 = 1e-6;
 
 /// Why the intersections cannot be listed.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -47,6 +104,13 @@ const MAX_DEPTH: usize = 60;
 const CROWD: usize = 4096;
 /// Intersections closer than this (in each parameter, relative to its domain) are one.
 const SAME: f64 = 1e-9;
+/// Roots within this of each other (in each parameter, relative to its domain) may be one
+/// tangential contact ([`Search::collect`]); also the sine above which a root is a clear
+/// crossing for that purpose.
+const NEAR: f64 = 1e-3;
+/// Sample points of one curve within this fraction of the size of the other are on it (the
+/// overlap check; coincident curves agree to rounding, about 1e-15).
+const ON: f64 = 1e-12;
 
 /// Intersections of plane curves.
 ///
@@ -251,17 +315,37 @@ struct Search<'c, A, B> {
     same: bool,
     da: CurveDerivative<2>,
     db: CurveDerivative<2>,
+    /// `A''` and `B''`, for projecting onto the curves.
+    ha: CurveDerivative<2>,
+    hb: CurveDerivative<2>,
     scale: f64,
 }
 
 /// `A(s) - B(t)`, `A'(s)` and `B'(t)` at a parameter pair.
 type State = ([f64; 2], [f64; 2], [f64; 2]);
 
-/// A polished candidate: parameters.
+/// A stretch two curves share: its parameters on `A` and on `B`.
+type Stretch = (Range<f64>, Range<f64>);
+
+/// The parameters on `A` and on `B` of a sub-piece of `A` that lies on `B`.
+type Spans = ([f64; 2], [f64; 2]);
+
+/// How two roots are one contact.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Joined {
+    /// They are the same point (to 1e-6 of each domain).
+    Same,
+    /// The curves stay within the root tolerance of each other between them.
+    Along,
+}
+
+/// A polished candidate: parameters, and `|sin theta|` of the tangents there (1 where a
+/// tangent vanishes is not known: 0, tangent).
 #[derive(Clone, Copy, Debug)]
 struct Root {
     s: f64,
     t: f64,
+    sine: f64,
 }
 
 impl<'c, A, B> Search<'c, A, B>
@@ -270,12 +354,15 @@ where
     B: NearestPoint<2> + Derivative<Output = CurveDerivative<2>>,
 {
     fn new(a: &'c A, b: &'c B, same: bool) -> Self {
+        let (da, db) = (a.derivative(), b.derivative());
         Search {
             a,
             b,
             same,
-            da: a.derivative(),
-            db: b.derivative(),
+            ha: da.derivative(),
+            hb: db.derivative(),
+            da,
+            db,
             scale: 1.0,
         }
     }
@@ -322,16 +409,24 @@ where
                 pairs.push((x.clone(), y.clone()));
             }
         }
-        let mut roots: Vec<Root> = Vec::new();
+        let mut terminal: Vec<(Sub, Sub)> = Vec::new();
         let mut crowd = CROWD;
+        let mut small = SMALL * self.scale;
         while !pairs.is_empty() {
             if pairs.len() > crowd {
-                self.check_overlap(&pairs)?;
-                if pairs.len() > 64 * CROWD {
-                    // Still crowding after the check: the curves nearly coincide there.
-                    return Err(overlap(&pairs));
+                self.check_overlap(&pairs, &pa, &pb)?;
+                if pairs.len() > 16 * CROWD {
+                    // Still crowding, and no overlap: a contact of high order, where the curves
+                    // stay within the boxes' slack of each other along a stretch. The pairs
+                    // alive are polished where they are; halving them further would only
+                    // multiply them. Their roots are one contact (`collect`).
+                    small = pairs
+                        .iter()
+                        .fold(small, |m, (x, y)| m.max(x.size()).max(y.size()));
+                    crowd = usize::MAX;
+                } else {
+                    crowd = 4 * pairs.len();
                 }
-                crowd = 4 * pairs.len();
             }
             let mut next = Vec::new();
             for (x, y) in pairs {
@@ -353,16 +448,12 @@ where
                 if !x.overlaps(&y, slack) {
                     continue;
                 }
-                let small = SMALL * self.scale;
                 let (xs, ys) = (x.size(), y.size());
-                if (xs <= small && ys <= small) || x.depth.max(y.depth) >= MAX_DEPTH {
-                    let start = [
-                        0.5 * (x.range[0] + x.range[1]),
-                        0.5 * (y.range[0] + y.range[1]),
-                    ];
-                    if let Some(root) = self.polish(start)? {
-                        roots.push(root);
-                    }
+                if (xs <= small && ys <= small)
+                    || x.depth.max(y.depth) >= MAX_DEPTH
+                    || (xs.max(ys) <= NEAR * self.scale && self.touching(&x, &y)?)
+                {
+                    terminal.push((x, y));
                     continue;
                 }
                 if xs >= ys {
@@ -377,13 +468,98 @@ where
             }
             pairs = next;
         }
-        self.collect(roots)
+        let roots = self.polish_terminal(terminal)?;
+        self.collect(roots, &pa, &pb)
     }
 
-    /// Orders, merges and evaluates the roots.
-    fn collect(&self, mut roots: Vec<Root>) -> Result<Vec<Intersection>, IntersectError> {
+    /// Polishes the pairs that subdivision left (both sub-pieces below 1e-7 of the size):
+    /// pairs whose ranges touch in both parameters form a cluster, and a cluster is polished
+    /// from each of its pairs when it has at most four (a crossing on the boundary of
+    /// sub-pieces), else from its first and last pairs and from the pair whose middles are
+    /// nearest each other. Large clusters come from shallow crossings and from tangential
+    /// contacts, where the curves stay within the boxes' slack along a stretch (`y = x^4`
+    /// and `y = 0`: 2 x 10^4 pairs); Newton's method from any of their pairs reaches the same
+    /// point, so polishing each would only repeat it.
+    fn polish_terminal(&self, mut terminal: Vec<(Sub, Sub)>) -> Result<Vec<Root>, IntersectError> {
+        terminal.sort_by(|p, q| {
+            p.0.range[0]
+                .total_cmp(&q.0.range[0])
+                .then(p.1.range[0].total_cmp(&q.1.range[0]))
+        });
+        // (s end, t low, t high, members)
+        let mut clusters: Vec<(f64, f64, f64, Vec<usize>)> = Vec::new();
+        for (k, (x, y)) in terminal.iter().enumerate() {
+            let home = clusters
+                .iter_mut()
+                .rev()
+                .find(|c| x.range[0] <= c.0 && y.range[0] <= c.2 && y.range[1] >= c.1);
+            match home {
+                Some(c) => {
+                    c.0 = c.0.max(x.range[1]);
+                    c.1 = c.1.min(y.range[0]);
+                    c.2 = c.2.max(y.range[1]);
+                    c.3.push(k);
+                }
+                None => clusters.push((x.range[1], y.range[0], y.range[1], vec![k])),
+            }
+        }
+        let middle = |k: usize| {
+            let (x, y) = &terminal[k];
+            [
+                0.5 * (x.range[0] + x.range[1]),
+                0.5 * (y.range[0] + y.range[1]),
+            ]
+        };
+        let mut roots = Vec::new();
+        for (_, _, _, members) in &clusters {
+            let starts: Vec<usize> = if members.len() <= 4 {
+                members.clone()
+            } else {
+                let mut nearest = (f64::INFINITY, members[0]);
+                for &k in members {
+                    let [s, t] = middle(k);
+                    let (f, _, _) = self.state(s, t)?;
+                    let gap = f[0].hypot(f[1]);
+                    if gap < nearest.0 {
+                        nearest = (gap, k);
+                    }
+                }
+                vec![members[0], nearest.1, members[members.len() - 1]]
+            };
+            for k in starts {
+                if let Some((s, t)) = self.polish(middle(k))? {
+                    roots.push(Root {
+                        s,
+                        t,
+                        sine: self.sine(s, t)?,
+                    });
+                }
+            }
+        }
+        Ok(roots)
+    }
+
+    /// Groups the roots into contacts, orders them by `s` and evaluates them.
+    ///
+    /// Two roots are one contact when they are the same point (within 1e-9 of each domain,
+    /// times 1e3), or when they lie within 1e-3 of each domain of each other, at least one is
+    /// nearly tangent (`|sin theta| <= 1e-3`) and the curves stay within the root tolerance
+    /// (1e-12 of the size) of each other half-way between them: the roots that Newton's method
+    /// finds from every sub-piece along a tangential contact, where the curves separate only
+    /// at second or higher order. Distinct crossings near a tangency are apart by more than
+    /// that (the curves separate between them). A group of several roots is a tangential
+    /// contact, reported at its most tangent root (an end of a curve, when one is in it).
+    ///
+    /// A tangential contact may be a stretch the curves share: [`Search::shared_stretch`]
+    /// decides, and the stretch is refused as [`IntersectError::Overlap`].
+    fn collect(
+        &self,
+        mut roots: Vec<Root>,
+        pieces_a: &[Sub],
+        pieces_b: &[Sub],
+    ) -> Result<Vec<Intersection>, IntersectError> {
         let (ra, rb) = (self.a.domain(), self.b.domain());
-        let (wa, wb) = (width(&ra), width(&rb));
+        let wa = width(&ra);
         // A closed curve (its end is its start) meets at its end where it meets at its start:
         // the root is reported at the start, once.
         let (closed_a, closed_b) = (self.closed(self.a)?, self.closed(self.b)?);
@@ -403,33 +579,266 @@ where
                     if r.s <= r.t {
                         r
                     } else {
-                        Root { s: r.t, t: r.s }
+                        Root {
+                            s: r.t,
+                            t: r.s,
+                            sine: r.sine,
+                        }
                     }
                 })
                 .filter(|r| r.t - r.s > SAME * wa.max(1e-300) * 1e3)
                 .collect();
         }
         roots.sort_by(|p, q| p.s.total_cmp(&q.s).then(p.t.total_cmp(&q.t)));
-        let mut kept: Vec<Root> = Vec::new();
+        // Each group: its roots, and whether two of them are distinct points joined because the
+        // curves stay together between them (a tangential contact).
+        let mut groups: Vec<(Vec<Root>, bool)> = Vec::new();
         for r in roots {
-            let duplicate = kept.iter().any(|k| {
-                (k.s - r.s).abs() <= SAME * wa.max(1e-300) * 1e3
-                    && (k.t - r.t).abs() <= SAME * wb.max(1e-300) * 1e3
-            });
-            if !duplicate {
-                kept.push(r);
+            let mut home = None;
+            for (k, (g, _)) in groups.iter().enumerate().rev() {
+                let last = g[g.len() - 1];
+                if r.s - last.s > NEAR * wa.max(1e-300) {
+                    continue;
+                }
+                if let Some(joined) = self.one_contact(&last, &r)? {
+                    home = Some((k, joined));
+                    break;
+                }
+            }
+            match home {
+                Some((k, joined)) => {
+                    groups[k].0.push(r);
+                    groups[k].1 |= joined == Joined::Along;
+                }
+                None => groups.push((vec![r], false)),
             }
         }
-        kept.iter()
-            .map(|r| {
-                Ok(Intersection {
-                    parameter_a: r.s,
-                    parameter_b: r.t,
-                    point_a: self.a.evaluate(r.s)?,
-                    point_b: self.b.evaluate(r.t)?,
-                })
-            })
-            .collect()
+        let at_end = |r: &Root| {
+            (!closed_a && (r.s == ra.start || r.s == ra.end))
+                || (!closed_b && (r.t == rb.start || r.t == rb.end))
+        };
+        let mut found = Vec::with_capacity(groups.len());
+        for (g, along) in &groups {
+            let chosen = g
+                .iter()
+                .find(|r| at_end(r))
+                .or_else(|| g.iter().min_by(|p, q| p.sine.total_cmp(&q.sine)))
+                .copied()
+                .expect("a group holds a root");
+            let tangent = *along || chosen.sine <= TANGENT_SINE;
+            if tangent {
+                if let Some((a, b)) = self.shared_stretch(chosen, pieces_a, pieces_b)? {
+                    return Err(IntersectError::Overlap { a, b });
+                }
+            }
+            let contact = if at_end(&chosen) {
+                Contact::End
+            } else if tangent {
+                Contact::Tangent
+            } else {
+                Contact::Crossing
+            };
+            found.push(Intersection {
+                parameter_a: chosen.s,
+                parameter_b: chosen.t,
+                point_a: self.a.evaluate(chosen.s)?,
+                point_b: self.b.evaluate(chosen.t)?,
+                contact,
+            });
+        }
+        found.sort_by(|p, q| {
+            p.parameter_a
+                .total_cmp(&q.parameter_a)
+                .then(p.parameter_b.total_cmp(&q.parameter_b))
+        });
+        Ok(found)
+    }
+
+    /// Whether roots `p` and `q` (`p.s <= q.s`) are one contact (see [`Search::collect`]),
+    /// and how.
+    fn one_contact(&self, p: &Root, q: &Root) -> Result<Option<Joined>, EvalError> {
+        let (wa, wb) = (
+            width(&self.a.domain()).max(1e-300),
+            width(&self.b.domain()).max(1e-300),
+        );
+        let (ds, dt) = ((q.s - p.s).abs(), (q.t - p.t).abs());
+        if ds <= SAME * wa * 1e3 && dt <= SAME * wb * 1e3 {
+            return Ok(Some(Joined::Same));
+        }
+        if ds > NEAR * wa || dt > NEAR * wb || p.sine.min(q.sine) > NEAR {
+            return Ok(None);
+        }
+        let middle = self.a.evaluate(0.5 * (p.s + q.s))?.position;
+        let (lo, hi) = (p.t.min(q.t), p.t.max(q.t));
+        Ok(
+            (self.gap_to_b(middle, 0.5 * (lo + hi), lo, hi)? <= 1e-12 * self.scale)
+                .then_some(Joined::Along),
+        )
+    }
+
+    /// The distance from `point` to `B` on `[lo, hi]`, by Newton's method on
+    /// `(B(t) - point) . B'(t) = 0` from `t` (the smallest distance met).
+    fn gap_to_b(&self, point: [f64; 2], t: f64, lo: f64, hi: f64) -> Result<f64, EvalError> {
+        Ok(self.project_on_b(point, t, lo, hi)?.0)
+    }
+
+    /// [`Search::gap_to_b`], with the parameter on `B` where it is met.
+    fn project_on_b(
+        &self,
+        point: [f64; 2],
+        t: f64,
+        lo: f64,
+        hi: f64,
+    ) -> Result<(f64, f64), EvalError> {
+        project(self.b, &self.db, &self.hb, point, t, lo, hi)
+    }
+
+    /// The stretch the curves share around the tangential contact `root`, if they share one:
+    /// `A` is followed from `root` in both directions to the end of its piece (at 64 evenly
+    /// spaced points and at distances halving down to 2^-40 of the way), each point projected
+    /// onto `B`; the curves share the stretch when every point lies on `B` (within 1e-12 of
+    /// the size) until the end of `A`'s piece, or until `B`'s projection reaches the end of a
+    /// piece of `B` (for one curve: until it turns back onto itself, `s = t`). Two polynomial
+    /// (or rational) pieces that agree along an interval agree along the whole of both, so a
+    /// shared stretch can only stop where a piece stops; a contact of high order (`y = x^4` on
+    /// `y = 0`) stops in the middle of the pieces, where the curves separate.
+    fn shared_stretch(
+        &self,
+        root: Root,
+        pieces_a: &[Sub],
+        pieces_b: &[Sub],
+    ) -> Result<Option<Stretch>, EvalError> {
+        let rb = self.b.domain();
+        let wb = width(&rb).max(1e-300);
+        let on = ON * self.scale;
+        let boundary_near = |t: f64, reach: f64| {
+            pieces_b
+                .iter()
+                .any(|p| (t - p.range[0]).abs() <= reach || (t - p.range[1]).abs() <= reach)
+        };
+        let mut ends = [(root.s, root.t); 2];
+        for (k, forward) in [false, true].into_iter().enumerate() {
+            let Some(piece) = pieces_a
+                .iter()
+                .find(|p| p.range[0] <= root.s && root.s <= p.range[1])
+            else {
+                return Ok(None);
+            };
+            let limit = if forward {
+                piece.range[1]
+            } else {
+                piece.range[0]
+            };
+            let mut fractions: Vec<f64> = (1..=64)
+                .map(|i| f64::from(i) / 64.0)
+                .chain((1..=40).map(|i| 0.5_f64.powi(i)))
+                .collect();
+            fractions.sort_by(f64::total_cmp);
+            let (mut last, mut before) = ((root.s, root.t), root.t);
+            let mut reached = root.s == limit;
+            for f in fractions {
+                if reached {
+                    break;
+                }
+                let s = root.s + (limit - root.s) * f;
+                let point = self.a.evaluate(s)?.position;
+                let (gap, t) = self.project_on_b(point, last.1, rb.start, rb.end)?;
+                let step = (last.1 - before).abs() + 1e-9 * wb;
+                if gap > on {
+                    // The curves part between `last` and `s`: where, by bisection.
+                    let mut parted = s;
+                    for _ in 0..60 {
+                        let middle = 0.5 * (last.0 + parted);
+                        if middle == last.0 || middle == parted {
+                            break;
+                        }
+                        let point = self.a.evaluate(middle)?.position;
+                        let (gap, t) = self.project_on_b(point, last.1, rb.start, rb.end)?;
+                        if gap > on {
+                            parted = middle;
+                        } else {
+                            last = (middle, t);
+                        }
+                    }
+                    // A shared stretch ends here only at the end of a piece of B (or, for one
+                    // curve, where it turns back onto itself).
+                    reached = boundary_near(last.1, 2.0 * step)
+                        || (self.same && (last.0 - last.1).abs() <= 2.0 * step);
+                    break;
+                }
+                before = last.1;
+                last = (s, t);
+                reached = f == 1.0;
+            }
+            if !reached {
+                return Ok(None);
+            }
+            ends[k] = last;
+        }
+        // Ends within 1e-9 of a piece's end are on it.
+        let snap = |x: f64, pieces: &[Sub], w: f64| {
+            pieces
+                .iter()
+                .flat_map(|p| p.range)
+                .find(|&e| (x - e).abs() <= 1e-9 * w)
+                .unwrap_or(x)
+        };
+        let wa = width(&self.a.domain()).max(1e-300);
+        let mut snapped = [(0.0, 0.0); 2];
+        for (k, (s, t)) in ends.into_iter().enumerate() {
+            let (s, t) = (snap(s, pieces_a, wa), snap(t, pieces_b, wb));
+            // At the end of a piece of B, the end on A is where A passes B's end point.
+            let at_a = pieces_a.iter().any(|p| p.range.contains(&s));
+            let s = if !at_a && pieces_b.iter().any(|p| p.range.contains(&t)) {
+                let ra = self.a.domain();
+                let point = self.b.evaluate(t)?.position;
+                let (gap, on_a) = project(self.a, &self.da, &self.ha, point, s, ra.start, ra.end)?;
+                if gap <= on {
+                    snap(on_a, pieces_a, wa)
+                } else {
+                    s
+                }
+            } else {
+                s
+            };
+            snapped[k] = (s, t);
+        }
+        let ends = snapped;
+        let (s0, s1) = (ends[0].0.min(ends[1].0), ends[0].0.max(ends[1].0));
+        let (t0, t1) = (ends[0].1.min(ends[1].1), ends[0].1.max(ends[1].1));
+        if s1 - s0 <= SAME * 1e3 * width(&self.a.domain()) {
+            // A point, not a stretch (the contact is at the end of both pieces).
+            return Ok(None);
+        }
+        Ok(Some((s0..s1, t0..t1)))
+    }
+
+    /// Whether the middle of `x` lies on `y` (within the root tolerance, 1e-12 of the size):
+    /// a pair inside a tangential contact, where the curves stay together along a stretch.
+    /// Such a pair is polished where it is; halving it would only multiply the pairs of the
+    /// contact (the subdivision of `y = x^8` touching `y = 0` down to 1e-7 makes 3 x 10^5).
+    /// A crossing inside it is found by the polish (and a second one, if the curves stay
+    /// within the tolerance of each other between them, is the same contact).
+    fn touching(&self, x: &Sub, y: &Sub) -> Result<bool, EvalError> {
+        let middle = self.a.evaluate(0.5 * (x.range[0] + x.range[1]))?.position;
+        let gap = self.gap_to_b(
+            middle,
+            0.5 * (y.range[0] + y.range[1]),
+            y.range[0],
+            y.range[1],
+        )?;
+        Ok(gap <= 1e-12 * self.scale)
+    }
+
+    /// `|sin theta|` between `A'(s)` and `B'(t)`; 0 where a tangent vanishes.
+    fn sine(&self, s: f64, t: f64) -> Result<f64, EvalError> {
+        let (_, va, vb) = self.state(s, t)?;
+        let norm = va[0].hypot(va[1]) * vb[0].hypot(vb[1]);
+        Ok(if norm > 0.0 && norm.is_finite() {
+            ((va[0] * vb[1] - va[1] * vb[0]) / norm).abs()
+        } else {
+            0.0
+        })
     }
 
     /// Whether `curve` ends where it starts (to 1e-12 of the size).
@@ -449,7 +858,7 @@ where
 
     /// [`Search::newton`], with a root next to an end of a domain moved onto the end when the
     /// curves meet there too (curves that meet at their ends, the seam of a closed curve).
-    fn polish(&self, start: [f64; 2]) -> Result<Option<Root>, IntersectError> {
+    fn polish(&self, start: [f64; 2]) -> Result<Option<(f64, f64)>, IntersectError> {
         let Some(root) = self.newton(start)? else {
             return Ok(None);
         };
@@ -464,12 +873,9 @@ where
                 x
             }
         };
-        let snapped = Root {
-            s: near(root.s, &ra),
-            t: near(root.t, &rb),
-        };
-        if (snapped.s, snapped.t) != (root.s, root.t) {
-            let (f, _, _) = self.state(snapped.s, snapped.t)?;
+        let snapped = (near(root.0, &ra), near(root.1, &rb));
+        if snapped != root {
+            let (f, _, _) = self.state(snapped.0, snapped.1)?;
             if f[0].hypot(f[1]) <= 1e-12 * self.scale {
                 return Ok(Some(snapped));
             }
@@ -479,7 +885,7 @@ where
 
     /// Newton's method from `start` on `A(s) - B(t) = 0`, then, where the curves are nearly
     /// tangent, on the tangency system; `None` when the curves do not meet there.
-    fn newton(&self, start: [f64; 2]) -> Result<Option<Root>, IntersectError> {
+    fn newton(&self, start: [f64; 2]) -> Result<Option<(f64, f64)>, IntersectError> {
         let (ra, rb) = (self.a.domain(), self.b.domain());
         let clamp = |s: f64, t: f64| (s.clamp(ra.start, ra.end), t.clamp(rb.start, rb.end));
         let tolerance = 1e-12 * self.scale;
@@ -511,7 +917,7 @@ where
         let cross = (va[0] * vb[1] - va[1] * vb[0]).abs();
         let norm = va[0].hypot(va[1]) * vb[0].hypot(vb[1]);
         if gap <= tolerance && cross > 1e-6 * norm {
-            return Ok(Some(Root { s: bs, t: bt }));
+            return Ok(Some((bs, bt)));
         }
         // Nearly tangent: A' x B' = 0 and (A - B) . A' = 0.
         let (mut s, mut t) = (bs, bt);
@@ -542,63 +948,171 @@ where
         }
         let (f, _, _) = self.state(s, t)?;
         if f[0].hypot(f[1]) <= tolerance {
-            return Ok(Some(Root { s, t }));
+            return Ok(Some((s, t)));
         }
-        Ok(if gap <= tolerance {
-            Some(Root { s: bs, t: bt })
-        } else {
-            None
-        })
+        if gap <= tolerance {
+            return Ok(Some((bs, bt)));
+        }
+        // Both systems are singular where the curves run together (an overlap, a contact of
+        // high order, parallel lines): the start's point of A projected onto B.
+        let (s, t) = clamp(start[0], start[1]);
+        let point = self.a.evaluate(s)?.position;
+        let (gap, t) = self.project_on_b(point, t, rb.start, rb.end)?;
+        Ok((gap <= tolerance).then_some((s, t)))
     }
 
-    /// Pairs crowd: look for pairs where one sub-piece lies on the other (9 points of the
-    /// first within 1e-9 of the size of the second sub-piece); when at least a quarter of the
-    /// pairs do, the curves share a stretch: it is reported with the parameters it spans.
-    fn check_overlap(&self, pairs: &[(Sub, Sub)]) -> Result<(), IntersectError> {
-        let mut on: Vec<&(Sub, Sub)> = Vec::new();
-        for pair in pairs {
-            let (x, y) = pair;
-            if self.same && x.range == y.range {
-                continue;
+    /// Pairs crowd: look for sub-pieces of `A` that lie on `B`: nine points of each within
+    /// 1e-12 of the size of the sub-pieces of `B` it is paired with (at most 512 sub-pieces of
+    /// `A`, evenly spread in `s`, are tested; each test is nine nearest-point searches). The
+    /// curves share a stretch when at least a quarter of the tested sub-pieces lie on `B` and
+    /// the stretch they span ends, at both of its ends, where a piece of either curve ends
+    /// (or, for one curve, where it turns back onto itself, `s = t`): two polynomial (or
+    /// rational) pieces that agree along an interval agree along the whole of both pieces, so
+    /// a shared stretch can only stop where a piece stops. A contact of high order (`y = x^4`
+    /// touching `y = 0`) crowds the pairs too, but in the middle of the pieces: it is no
+    /// overlap, and its roots are one contact.
+    fn check_overlap(
+        &self,
+        pairs: &[(Sub, Sub)],
+        pieces_a: &[Sub],
+        pieces_b: &[Sub],
+    ) -> Result<(), IntersectError> {
+        // The pairs grouped by their sub-piece of A, in order of s.
+        let mut sorted: Vec<&(Sub, Sub)> = pairs
+            .iter()
+            .filter(|(x, y)| !(self.same && x.range == y.range))
+            .collect();
+        sorted.sort_by(|p, q| {
+            p.0.range[0]
+                .total_cmp(&q.0.range[0])
+                .then(p.0.range[1].total_cmp(&q.0.range[1]))
+        });
+        let mut groups: Vec<&[&(Sub, Sub)]> = Vec::new();
+        let mut start = 0;
+        for k in 1..=sorted.len() {
+            if k == sorted.len() || sorted[k].0.range != sorted[start].0.range {
+                groups.push(&sorted[start..k]);
+                start = k;
             }
-            let piece = Piece {
-                start: y.range[0],
-                end: y.range[1],
-                points: y.points.clone(),
-                weights: y.weights.clone(),
-                jump_at_end: false,
-            };
+        }
+        if groups.is_empty() {
+            return Ok(());
+        }
+        let stride = groups.len().div_ceil(512);
+        let tested: Vec<&[&(Sub, Sub)]> = groups.iter().step_by(stride).copied().collect();
+        // (s range, t range) of each tested sub-piece of A that lies on B.
+        let mut on: Vec<Spans> = Vec::new();
+        for group in &tested {
+            let x = &group[0].0;
+            let pieces: Vec<Piece<2>> = group
+                .iter()
+                .map(|(_, y)| Piece {
+                    start: y.range[0],
+                    end: y.range[1],
+                    points: y.points.clone(),
+                    weights: y.weights.clone(),
+                    jump_at_end: false,
+                })
+                .collect();
             let mut all = true;
             for k in 0..=8 {
                 let s = x.range[0] + (x.range[1] - x.range[0]) * k as f64 / 8.0;
                 let p = self.a.evaluate(s)?.position;
-                if distance_to_piece(piece.clone(), &p) > 1e-9 * self.scale {
+                let gap = pieces
+                    .iter()
+                    .map(|piece| distance_to_piece(piece.clone(), &p))
+                    .fold(f64::INFINITY, f64::min);
+                if gap > ON * self.scale {
                     all = false;
                     break;
                 }
             }
             if all {
-                on.push(pair);
+                let t = group
+                    .iter()
+                    .fold([f64::INFINITY, f64::NEG_INFINITY], |m, (_, y)| {
+                        [m[0].min(y.range[0]), m[1].max(y.range[1])]
+                    });
+                on.push((x.range, t));
             }
         }
-        if on.is_empty() || on.len() * 4 < pairs.len() {
+        if on.is_empty() || on.len() * 4 < tested.len() {
             return Ok(());
         }
-        let owned: Vec<(Sub, Sub)> = on.into_iter().cloned().collect();
-        Err(overlap(&owned))
+        let a = on.iter().fold(f64::INFINITY, |m, p| m.min(p.0[0]))
+            ..on.iter().fold(f64::NEG_INFINITY, |m, p| m.max(p.0[1]));
+        let b = on.iter().fold(f64::INFINITY, |m, p| m.min(p.1[0]))
+            ..on.iter().fold(f64::NEG_INFINITY, |m, p| m.max(p.1[1]));
+        // The stretch's ends, as (s, t): B runs along A or against it (`on` is in order of s).
+        let along = on[0].1[0] <= on[on.len() - 1].1[0];
+        let ends = if along {
+            [(a.start, b.start), (a.end, b.end)]
+        } else {
+            [(a.start, b.end), (a.end, b.start)]
+        };
+        // How far the tested stretch may stop short of its true end: the widths of the
+        // sub-pieces and the spacing of the tested ones.
+        let reach = |range: fn(&Spans) -> [f64; 2]| {
+            let mut starts: Vec<f64> = on.iter().map(|p| range(p)[0]).collect();
+            starts.sort_by(f64::total_cmp);
+            let gaps = starts.windows(2).fold(0.0_f64, |m, w| m.max(w[1] - w[0]));
+            on.iter()
+                .fold(gaps, |m, p| m.max(range(p)[1] - range(p)[0]))
+        };
+        let (reach_s, reach_t) = (reach(|p| p.0), reach(|p| p.1));
+        let boundary = |x: f64, pieces: &[Sub], reach: f64| {
+            pieces.iter().any(|p| {
+                (x - p.range[0]).abs() <= 2.0 * reach || (x - p.range[1]).abs() <= 2.0 * reach
+            })
+        };
+        let stops = |(s, t): (f64, f64)| {
+            boundary(s, pieces_a, reach_s)
+                || boundary(t, pieces_b, reach_t)
+                || (self.same && (s - t).abs() <= 2.0 * (reach_s + reach_t))
+        };
+        if ends.into_iter().all(stops) {
+            Err(IntersectError::Overlap { a, b })
+        } else {
+            Ok(())
+        }
     }
 }
 
-/// The parameter ranges covered by crowding pairs.
-fn overlap(pairs: &[(Sub, Sub)]) -> IntersectError {
-    let span = |f: fn(&(Sub, Sub)) -> [f64; 2]| {
-        pairs.iter().fold(f64::INFINITY, |m, p| m.min(f(p)[0]))
-            ..pairs.iter().fold(f64::NEG_INFINITY, |m, p| m.max(f(p)[1]))
-    };
-    IntersectError::Overlap {
-        a: span(|p| p.0.range),
-        b: span(|p| p.1.range),
+/// The distance from `point` to `curve` on `[lo, hi]`, by Newton's method on
+/// `(C(t) - point) . C'(t) = 0` from `t` (`first` and `second` are `C'` and `C''`): the
+/// smallest distance met, and its parameter.
+fn project<C: Evaluate<Point = CurvePoint<2>>>(
+    curve: &C,
+    first: &CurveDerivative<2>,
+    second: &CurveDerivative<2>,
+    point: [f64; 2],
+    mut t: f64,
+    lo: f64,
+    hi: f64,
+) -> Result<(f64, f64), EvalError> {
+    let mut gap = (f64::INFINITY, t);
+    for _ in 0..16 {
+        let q = curve.evaluate(t)?.position;
+        let d = [q[0] - point[0], q[1] - point[1]];
+        let here = d[0].hypot(d[1]);
+        if here < gap.0 {
+            gap = (here, t);
+        }
+        let v = first.evaluate(t)?.position;
+        let acc = second.evaluate(t)?.position;
+        let slope = d[0] * v[0] + d[1] * v[1];
+        let curvature = v[0] * v[0] + v[1] * v[1] + d[0] * acc[0] + d[1] * acc[1];
+        // Not a minimum there (or NaN): stop.
+        if curvature.is_nan() || curvature <= 0.0 {
+            break;
+        }
+        let next = (t - slope / curvature).clamp(lo, hi);
+        if next == t {
+            break;
+        }
+        t = next;
     }
+    Ok(gap)
 }
 
 fn width(r: &Range<f64>) -> f64 {

@@ -135,7 +135,9 @@ pub use fuzzy::{alpha_cut, centroid_curve, FuzzyError, Side, Spread};
 pub use geometry::{
     ArcAverages, CurveGeometry, GeometryError, DEFAULT_ACCURACY, FINEST_ACCURACY, MAX_SUBINTERVALS,
 };
-pub use intersect::{intersections, self_intersections, IntersectError, Intersection};
+pub use intersect::{
+    intersections, self_intersections, Contact, IntersectError, Intersection, TANGENT_SINE,
+};
 pub use knots::{KnotError, KnotVector};
 pub use nearest::{
     Nearest, NearestError, NearestPoint, Projector, SurfaceNearest, SurfaceProjector, TIE_TOLERANCE,

@@ -7,8 +7,8 @@
 
 use neutrospline::strategies;
 use neutrospline::{
-    intersections, self_intersections, AnyCurve, BSpline, Bezier, ControlPoint, Degrees, Evaluate,
-    IntersectError, KnotVector, Nurbs, Split,
+    intersections, self_intersections, AnyCurve, BSpline, Bezier, Contact, ControlPoint, Degrees,
+    Evaluate, IntersectError, Intersection, KnotVector, Nurbs, Split,
 };
 use proptest::prelude::*;
 use serde::Deserialize;
@@ -267,4 +267,169 @@ fn intersections_on_the_seam_of_closed_curves_are_reported_once() {
     assert_eq!(found.len(), 1, "{found:?}");
     assert_eq!((found[0].parameter_a, found[0].parameter_b), (0.0, 0.0));
     assert_eq!(found[0].point_a.position, [1.0, 0.0]);
+}
+
+fn bezier(points: &[[f64; 2]]) -> Bezier<2> {
+    let d = Degrees::new(0.5, 0.25, 0.125).unwrap();
+    Bezier::new(points.iter().map(|p| ControlPoint::new(*p, d)).collect()).unwrap()
+}
+
+/// The graph of `y = x^k` on `[-1, 1]` as a Bézier curve of degree `k` in `t = (x + 1) / 2`:
+/// `x^k = (2t - 1)^k = sum_i B_{k,i}(t) (-1)^(k - i)`, and `x` has the control values
+/// `-1 + 2i/k`.
+fn power_graph(k: usize) -> Bezier<2> {
+    let points: Vec<[f64; 2]> = (0..=k)
+        .map(|i| {
+            let sign = if (k - i).is_multiple_of(2) { 1.0 } else { -1.0 };
+            [-1.0 + 2.0 * i as f64 / k as f64, sign]
+        })
+        .collect();
+    bezier(&points)
+}
+
+fn one_contact(found: &[Intersection], s: f64, t: f64, contact: Contact, within: f64) {
+    assert_eq!(found.len(), 1, "{found:?}");
+    let i = &found[0];
+    assert!(
+        (i.parameter_a - s).abs() <= within && (i.parameter_b - t).abs() <= within,
+        "{i:?}, want ({s}, {t})"
+    );
+    assert_eq!(i.contact, contact, "{i:?}");
+}
+
+/// Tangential contacts of every order are one row each, of contact `tangent`: `y = x^k`
+/// touches (k even) or crosses tangentially (k odd) the line `y = 0` at `x = 0`, a contact
+/// of order k - 1. The curves are within 1e-12 of each other where `|x| < 1e-12^(1/k)`, so
+/// the parameter is known to that (3e-2 at k = 8); the old search gave an overlap for k >= 3.
+#[test]
+fn intersections_tangential_contacts_of_every_order_are_one_row() {
+    let axis = bezier(&[[-1.0, 0.0], [1.0, 0.0]]);
+    for k in 2..=8 {
+        let found = intersections(&power_graph(k), &axis).unwrap();
+        let within = 0.5 * 1e-12_f64.powf(1.0 / k as f64);
+        one_contact(&found, 0.5, 0.5, Contact::Tangent, within);
+        let swapped = intersections(&axis, &power_graph(k)).unwrap();
+        one_contact(&swapped, 0.5, 0.5, Contact::Tangent, within);
+    }
+}
+
+/// Two parabolas that touch with different curvatures (`y = x^2` and `y = -x^2`, and
+/// `y = x^2` and `y = 2x^2`), parametrised so that the contact is at neither curve's middle,
+/// and a tangent line: one row each, at the closed-form parameters.
+#[test]
+fn intersections_simple_tangencies_are_one_row_at_the_touching_point() {
+    // y = c x^2 on x in [a, b]: control points (a, c a^2), ((a + b) / 2, c a b), (b, c b^2);
+    // x = a + (b - a) t.
+    let parabola = |c: f64, a: f64, b: f64| {
+        bezier(&[[a, c * a * a], [0.5 * (a + b), c * a * b], [b, c * b * b]])
+    };
+    let upper = parabola(1.0, -0.3, 1.7);
+    for (other, t) in [
+        (parabola(-1.0, -1.1, 0.7), 1.1 / 1.8),
+        (parabola(2.0, -0.45, 0.85), 0.45 / 1.3),
+    ] {
+        let found = intersections(&upper, &other).unwrap();
+        one_contact(&found, 0.15, t, Contact::Tangent, 1e-7);
+    }
+    // The tangent y = 0.8 x - 0.16 touches y = x^2 at x = 0.4.
+    let tangent = bezier(&[[-1.0, -0.96], [2.0, 1.44]]);
+    let found = intersections(&upper, &tangent).unwrap();
+    one_contact(&found, 0.35, 1.4 / 3.0, Contact::Tangent, 1e-7);
+}
+
+/// Osculating curves (a contact of order 3): `y = x^2` and its circle of curvature at the
+/// origin, `x^2 + (y - 1/2)^2 = 1/4`, as a rational quadratic arc (the lower half, weight
+/// 0 at the middle control point is avoided by two quarter arcs).
+#[test]
+fn intersections_osculating_circle_is_one_tangent_row() {
+    let d = Degrees::new(0.5, 0.25, 0.125).unwrap();
+    let w = core::f64::consts::FRAC_1_SQRT_2;
+    let points: Vec<ControlPoint<2>> =
+        [[-0.5, 0.5], [-0.5, 0.0], [0.0, 0.0], [0.5, 0.0], [0.5, 0.5]]
+            .iter()
+            .map(|p| ControlPoint::new(*p, d))
+            .collect();
+    let knots = KnotVector::new(vec![0.0, 0.0, 0.0, 0.5, 0.5, 1.0, 1.0, 1.0], 2, 5).unwrap();
+    let circle = Nurbs::new(points, vec![1.0, w, 1.0, w, 1.0], knots).unwrap();
+    let parabola = bezier(&[[-0.5, 0.25], [0.0, -0.25], [0.5, 0.25]]);
+    let found = intersections(&parabola, &circle).unwrap();
+    // The separation grows like x^4 / 4 + ...: within 1e-12 for |x| < 1.4e-3.
+    one_contact(&found, 0.5, 0.5, Contact::Tangent, 3e-3);
+}
+
+/// Crossings near a tangency stay apart: `y = x^2` and `y = eps` cross at `x = +-sqrt(eps)`,
+/// where the curves separate by `eps` between them, far above the root tolerance.
+#[test]
+fn intersections_crossings_near_a_tangency_are_kept_apart() {
+    let parabola = bezier(&[[-1.0, 1.0], [0.0, -1.0], [1.0, 1.0]]);
+    for eps in [1e-2, 1e-4, 1e-6, 1e-8, 1e-10] {
+        let line = bezier(&[[-1.0, eps], [1.0, eps]]);
+        let found = intersections(&parabola, &line).unwrap();
+        assert_eq!(found.len(), 2, "eps = {eps}: {found:?}");
+        let root = eps.sqrt();
+        for (i, x) in found.iter().zip([-root, root]) {
+            let t = 0.5 * (x + 1.0);
+            assert!((i.parameter_a - t).abs() <= 1e-9, "eps = {eps}: {i:?}");
+            assert!((i.parameter_b - t).abs() <= 1e-9, "eps = {eps}: {i:?}");
+            let want = if eps >= 1e-10 {
+                Contact::Crossing
+            } else {
+                Contact::Tangent
+            };
+            assert_eq!(i.contact, want, "eps = {eps}: {i:?}");
+        }
+    }
+}
+
+/// The contact column: crossings, and ends (segments sharing an end point; a segment that
+/// ends on the other curve's interior), and a closed curve's seam is no end.
+#[test]
+fn intersections_name_their_contact() {
+    let a = bezier(&[[0.0, 0.0], [2.0, 2.0]]);
+    let b = bezier(&[[0.0, 2.0], [2.0, 0.0]]);
+    one_contact(
+        &intersections(&a, &b).unwrap(),
+        0.5,
+        0.5,
+        Contact::Crossing,
+        0.0,
+    );
+    let c = bezier(&[[2.0, 2.0], [3.0, 0.0]]);
+    one_contact(&intersections(&a, &c).unwrap(), 1.0, 0.0, Contact::End, 0.0);
+    let d = bezier(&[[1.0, 1.0], [1.0, 3.0]]);
+    one_contact(&intersections(&a, &d).unwrap(), 0.5, 0.0, Contact::End, 0.0);
+    let names: Vec<String> = Contact::ALL.iter().map(|c| c.to_string()).collect();
+    assert_eq!(names, ["crossing", "tangent", "end"]);
+    assert_eq!("tangent".parse::<Contact>(), Ok(Contact::Tangent));
+    assert_eq!(
+        "touch".parse::<Contact>(),
+        Err("unknown contact `touch` (expected crossing, tangent or end)".to_owned())
+    );
+}
+
+/// Overlaps whose sub-pieces do not align with the other curve's (a piece cut at 0.3 and
+/// 0.7, not at dyadic parameters; a reversed piece; segments offset by 0.35) are still
+/// refused, with the stretch they share.
+#[test]
+fn intersections_report_overlaps_that_do_not_align() {
+    let curve = neutrospline::example1();
+    let piece = curve.subsegment(0.3, 0.7).unwrap();
+    for other in [piece.clone(), piece.reversed()] {
+        match intersections(&curve, &other) {
+            Err(IntersectError::Overlap { a, b }) => {
+                assert!(
+                    (a.start - 0.3).abs() < 0.02 && (a.end - 0.7).abs() < 0.02,
+                    "{a:?}"
+                );
+                assert!(b.start < 0.03 && b.end > 0.97, "{b:?}");
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+    let a = segment([0.0, 0.0], [2.0, 2.0]);
+    let b = segment([0.7, 0.7], [3.1, 3.1]);
+    assert!(matches!(
+        intersections(&a, &b),
+        Err(IntersectError::Overlap { .. })
+    ));
 }

@@ -439,6 +439,9 @@ fn nearest_on_a_cubic_with_stationary_ends_regression_issue_22() {
         }
         let near = curve.nearest(q).unwrap();
         assert!(near.distance <= 1e-12 * size, "s = {s}: {near:?}");
-        assert!((near.parameter - lo).abs() <= 1e-9, "s = {s}: {near:?}, t = {lo}");
+        assert!(
+            (near.parameter - lo).abs() <= 1e-9,
+            "s = {s}: {near:?}, t = {lo}"
+        );
     }
 }

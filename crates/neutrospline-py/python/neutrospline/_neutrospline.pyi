@@ -1,4 +1,20 @@
-"""Type stubs of the extension module ``neutrospline._neutrospline``."""
+"""Type stubs of the extension module ``neutrospline._neutrospline``.
+
+Every ``ArrayLike`` argument (parameters ``t``, ``u``, ``v``; ``positions``, ``degrees``,
+``weights``, ``knots``, ``nodes``, query ``points``, fit data and ``parameters``) takes any numpy
+array or nested sequence of real numbers in any layout numpy makes: aligned or unaligned,
+native or byte-swapped, C- or Fortran-ordered or strided (negative strides too), read-only or
+writeable, a masked array without masked elements; float16/32/64 or long double, signed or
+unsigned integers. The answer is exactly the one for a fresh aligned float64 copy (an aligned,
+C-contiguous, native float64 array is read without a copy). A 0-d array is one parameter, an
+empty array zero rows. ``None``, booleans, complex numbers, strings, masked elements and values
+a float64 cannot hold exactly (integers beyond 2**53, long doubles with more digits) raise
+``ModelError`` naming the argument and the element, e.g. ``t[3] = None is not a number``.
+
+An ``out`` array must be a float64 array of native byte order, of the result's shape, aligned
+and writeable (C-, Fortran-ordered or strided); any other raises ``ModelError`` naming ``out``
+and is left untouched.
+"""
 
 import os
 from typing import Any, Literal, Optional, Sequence, Tuple, Union
@@ -6,6 +22,7 @@ from typing import Any, Literal, Optional, Sequence, Tuple, Union
 import numpy as np
 import numpy.typing as npt
 
+# Any array or nested sequence of real numbers, of any layout and real dtype (see above).
 ArrayLike = npt.ArrayLike
 FloatArray = npt.NDArray[np.float64]
 PathLike = Union[str, "os.PathLike[str]"]
@@ -246,7 +263,7 @@ def certainty(degrees: ArrayLike) -> Union[float, FloatArray]: ...
 def largest_relation(
     m: Sequence[Tuple[float, Triple]],
     n: Sequence[Tuple[float, Triple]],
-    pairs: Optional[Sequence[Tuple[float, float]]] = None,
+    pairs: Optional[ArrayLike] = None,
 ) -> Tuple[FloatArray, FloatArray]: ...
 def check_relation(
     positions: ArrayLike,
