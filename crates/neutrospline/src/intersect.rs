@@ -872,6 +872,20 @@ where
         Ok(gap <= 1e-12 * self.scale)
     }
 
+    /// The root tolerance at `(s, t)`: 1e-12 of the size, or what the parameters can resolve
+    /// there when that is more (a domain far from 0 and narrow, `[1e4, 1e4 + 1e-3]`, moves
+    /// the point by `|A'(s)| ulp(s)` per step of the float `s`).
+    fn tolerance(&self, s: f64, t: f64, va: [f64; 2], vb: [f64; 2]) -> f64 {
+        let resolution =
+            2.0 * f64::EPSILON * (s.abs() * va[0].hypot(va[1]) + t.abs() * vb[0].hypot(vb[1]));
+        1e-12 * self.scale
+            + if resolution.is_finite() {
+                resolution
+            } else {
+                0.0
+            }
+    }
+
     /// `|sin theta|` between `A'(s)` and `B'(t)`; 0 where a tangent vanishes.
     fn sine(&self, s: f64, t: f64) -> Result<f64, EvalError> {
         let (_, va, vb) = self.state(s, t)?;
@@ -930,7 +944,6 @@ where
     fn newton(&self, start: [f64; 2]) -> Result<Option<(f64, f64)>, IntersectError> {
         let (ra, rb) = (self.a.domain(), self.b.domain());
         let clamp = |s: f64, t: f64| (s.clamp(ra.start, ra.end), t.clamp(rb.start, rb.end));
-        let tolerance = 1e-12 * self.scale;
         let (mut s, mut t) = (start[0], start[1]);
         let mut best: Option<(f64, f64, f64)> = None;
         for _ in 0..60 {
@@ -956,6 +969,7 @@ where
         }
         let (gap, bs, bt) = best.unwrap_or((f64::INFINITY, s, t));
         let (_, va, vb) = self.state(bs, bt)?;
+        let tolerance = self.tolerance(bs, bt, va, vb);
         let cross = (va[0] * vb[1] - va[1] * vb[0]).abs();
         let norm = va[0].hypot(va[1]) * vb[0].hypot(vb[1]);
         if gap <= tolerance && cross > 1e-6 * norm {

@@ -359,9 +359,9 @@ impl<'a> SurfaceProjector<'a> {
             self.search_patch(&self.patches[k], &point, &mut best, &mut starts)?;
         }
         // Newton's method from the surviving pieces whose bound can still beat the best.
-        for (lower, start) in starts {
+        for (lower, start, patch) in starts {
             if lower <= best.limit() {
-                if let Some(c) = self.newton(start, &point) {
+                if let Some(c) = self.newton(start, &point, patch) {
                     best.offer(c);
                 }
             }
@@ -391,7 +391,7 @@ impl<'a> SurfaceProjector<'a> {
         patch: &Patch,
         point: &[f64; 3],
         best: &mut SurfaceBest,
-        starts: &mut Vec<(f64, [f64; 2])>,
+        starts: &mut Vec<(f64, [f64; 2], [[f64; 2]; 2])>,
     ) -> Result<(), NearestError> {
         let (p, q) = (patch.p, patch.q);
         let top = patch
@@ -495,7 +495,7 @@ impl<'a> SurfaceProjector<'a> {
                     global(0.5 * (su[0] + su[1]), patch.u),
                     global(0.5 * (sv[0] + sv[1]), patch.v),
                 ];
-                starts.push((lower, centre));
+                starts.push((lower, centre, [patch.u, patch.v]));
                 continue;
             }
             // Split across u at even depths, across v at odd ones.
@@ -516,13 +516,21 @@ impl<'a> SurfaceProjector<'a> {
         Ok(())
     }
 
-    /// Projected Newton on `f(u, v) = |S(u, v) - P|^2` from `start`, inside the domain: a
-    /// coordinate on an edge of the domain whose gradient points out stays there. Each step
-    /// must decrease `f` (halved up to 40 times); `None` if the surface cannot be evaluated.
-    fn newton(&self, start: [f64; 2], point: &[f64; 3]) -> Option<SurfaceCandidate> {
-        let [du, dv] = self.surface.domain();
-        let lo = [du.start, dv.start];
-        let hi = [du.end, dv.end];
+    /// Projected Newton on `f(u, v) = |S(u, v) - P|^2` from `start`, inside the start's patch
+    /// `[u0, u1] x [v0, v1]`: a coordinate on an edge of the patch whose gradient points out
+    /// stays there. Each step must decrease `f` (halved up to 40 times); `None` if the surface
+    /// cannot be evaluated.
+    fn newton(
+        &self,
+        start: [f64; 2],
+        point: &[f64; 3],
+        patch: [[f64; 2]; 2],
+    ) -> Option<SurfaceCandidate> {
+        // Inside the start's patch, where the surface is smooth: across a knot of full
+        // multiplicity minus one (a crease) the gradient jumps, and a minimum on the crease is
+        // the minimum on the patch's edge, of one patch or the other.
+        let lo = [patch[0][0], patch[1][0]];
+        let hi = [patch[0][1], patch[1][1]];
         let value = |uv: [f64; 2]| -> Option<f64> {
             let s = self.surface.evaluate(uv[0], uv[1]).ok()?;
             Some(distance(&s.position, point))
