@@ -749,8 +749,9 @@ def judge_nearest_surface(surface, q, u, v, distance, point, tol_rel=1e-9):
             f"wrong global minimum: ours (u, v)=({u!r}, {v!r}) at {mp.nstr(d_ours, 17)}, reference "
             f"({mp.nstr(ref[0], 17)}, {mp.nstr(ref[1], 17)}) at {mp.nstr(ref[2], 17)}"
         )
-    if d_ours < ref[2] - tol:
-        problems.append(f"REFERENCE missed a minimum: ours at {mp.nstr(d_ours, 17)} < reference {mp.nstr(ref[2], 17)}")
+    # Ours nearer than the reference's minimum is no disagreement: `d_ours` is the reference's
+    # own evaluation at our parameters, so ours is a true point of the surface, and the
+    # reference's refinement missed (it samples creases coarsely).
     gap = max(abs(mp.mpf(a) - b) for a, b in zip(point, s))
     if gap > tol:
         problems.append(f"reported point {point} is not S(u, v) (gap {mp.nstr(gap, 5)})")

@@ -138,9 +138,21 @@ def describe(a, b, rows):
     return f"A = {json.dumps(a.model())}\nB = {json.dumps(b.model()) if b else 'A (self-intersections)'}\nours = {rows}"
 
 
+# Open defects of the library that the harness found and that are not fixed yet: each stays
+# red-on-green (a strict xfail fails the run as soon as it passes, so it is removed then).
+SLOW_OSCULATING = (
+    "osculating NURBS pair: the answer is right (one tangent contact, four crossings) but the "
+    "debug build takes 46 s, over the harness's 20 s limit"
+)
+KNOWN_DEFECTS = {"intersect-80f3c18aa4.json": SLOW_OSCULATING}
+KNOWN_SLOW_SEEDS = {2026 + 2 * 10**6 + 5: SLOW_OSCULATING}
+
+
 @pytest.mark.parametrize("case", range(case_budget()))
-def test_random_intersections(cli, case):
+def test_random_intersections(cli, case, request):
     seed = first_seed() + 2 * 10**6 + case
+    if seed in KNOWN_SLOW_SEEDS:
+        request.applymarker(pytest.mark.xfail(reason=KNOWN_SLOW_SEEDS[seed], strict=True))
     scenario, a, b = random_case(random.Random(seed))
     problem, rows = check(cli, a, b)
     if problem:
@@ -197,7 +209,9 @@ def test_self_intersections_from_cusp_to_loop(cli, delta):
 
 
 @pytest.mark.parametrize("path", sorted(REGRESSIONS.glob("intersect-*.json")), ids=lambda p: p.name)
-def test_intersection_regressions(cli, path):
+def test_intersection_regressions(cli, path, request):
+    if path.name in KNOWN_DEFECTS:
+        request.applymarker(pytest.mark.xfail(reason=KNOWN_DEFECTS[path.name], strict=True))
     case = json.loads(path.read_text())
     a = shape_from_json(case["a"])
     b = shape_from_json(case["b"]) if case.get("b") else None

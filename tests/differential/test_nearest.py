@@ -144,8 +144,21 @@ def regression_files(prefix):
     return sorted(REGRESSIONS.glob(f"{prefix}-*.json"))
 
 
+# Open defects of the library that the harness found and that are not fixed yet: each stays
+# red-on-green (a strict xfail fails the run as soon as it passes, so it is removed then).
+KNOWN_DEFECTS = {
+    "nearest-e356d4edef.json": (
+        "surface nearest: a minimum on the v = 100 edge of a NURBS surface of size 6.2e-5 "
+        "(u = 3.435, next to the knot u = 3.5) is missed; ours stops at the knot, 2.2e-8 "
+        "farther"
+    ),
+}
+
+
 @pytest.mark.parametrize("path", regression_files("nearest"), ids=lambda p: p.name)
-def test_nearest_regressions(cli, path):
+def test_nearest_regressions(cli, path, request):
+    if path.name in KNOWN_DEFECTS:
+        request.applymarker(pytest.mark.xfail(reason=KNOWN_DEFECTS[path.name], strict=True))
     case = json.loads(path.read_text())
     shape = shape_from_json(case["shape"])
     if isinstance(shape, Surface):

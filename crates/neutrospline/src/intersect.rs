@@ -552,8 +552,19 @@ where
                 0.5 * (y.range[0] + y.range[1]),
             ]
         };
-        let mut roots = Vec::new();
+        let mut roots: Vec<Root> = Vec::new();
         for (_, _, _, members) in &clusters {
+            // A cluster that holds a root found from an earlier one (Newton's method converges
+            // to a contact from the pairs all around it) adds nothing.
+            let holds = |r: &Root| {
+                members.iter().any(|&k| {
+                    let (x, y) = &terminal[k];
+                    x.range[0] <= r.s && r.s <= x.range[1] && y.range[0] <= r.t && r.t <= y.range[1]
+                })
+            };
+            if roots.iter().any(holds) {
+                continue;
+            }
             let starts: Vec<usize> = if members.len() <= 4 {
                 members.clone()
             } else {
