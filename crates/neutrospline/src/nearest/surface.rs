@@ -8,6 +8,10 @@ use crate::point::CurvePoint;
 use crate::spline_curve::Nurbs;
 use crate::surface::{EvaluateSurface, Surface};
 
+/// A start of Newton's method: the lower bound of its piece, the point `[u, v]`, and the patch
+/// `[[u0, u1], [v0, v1]]` it belongs to.
+type Start = (f64, [f64; 2], [[f64; 2]; 2]);
+
 /// The nearest point of a surface to a query point.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SurfaceNearest {
@@ -391,7 +395,7 @@ impl<'a> SurfaceProjector<'a> {
         patch: &Patch,
         point: &[f64; 3],
         best: &mut SurfaceBest,
-        starts: &mut Vec<(f64, [f64; 2], [[f64; 2]; 2])>,
+        starts: &mut Vec<Start>,
     ) -> Result<(), NearestError> {
         let (p, q) = (patch.p, patch.q);
         let top = patch
