@@ -121,7 +121,9 @@ const ON: f64 = 1e-12;
 /// there Newton's method on `A(s) - B(t) = 0` polishes each candidate; where the curves are
 /// tangent (the Jacobian `[A', -B']` nearly singular) the tangency system
 /// `A'(s) x B'(t) = 0`, `(A(s) - B(t)) . A'(s) = 0` is solved instead, and the point is kept
-/// when the curves are within 1e-12 of their size there. Tangential and end-point
+/// when the curves are within 1e-12 of their size there (or within what the floats `s` and
+/// `t` resolve, `2 eps (|s| |A'(s)| + |t| |B'(t)|)`, when that is more: a short knot span far
+/// from 0). Roots are then grouped into contacts, each with its [`Contact`]. Tangential and end-point
 /// intersections are included, each reported once (a root within 1e-9 of an end of a domain
 /// is put on the end when the curves meet there; on a closed curve, whose end is its start, a
 /// root at the end is reported at the start). When the pairs crowd (more than 4,096
