@@ -140,12 +140,8 @@ def describe(a, b, rows):
 
 # Open defects of the library that the harness found and that are not fixed yet: each stays
 # red-on-green (a strict xfail fails the run as soon as it passes, so it is removed then).
-SLOW_OSCULATING = (
-    "osculating NURBS pair: the answer is right (one tangent contact, four crossings) but the "
-    "debug build takes 46 s, over the harness's 20 s limit"
-)
-KNOWN_DEFECTS = {"intersect-80f3c18aa4.json": SLOW_OSCULATING}
-KNOWN_SLOW_SEEDS = {2026 + 2 * 10**6 + 5: SLOW_OSCULATING}
+KNOWN_DEFECTS: dict = {}
+KNOWN_SLOW_SEEDS: dict = {}
 
 
 @pytest.mark.parametrize("case", range(case_budget()))

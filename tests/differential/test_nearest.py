@@ -146,13 +146,7 @@ def regression_files(prefix):
 
 # Open defects of the library that the harness found and that are not fixed yet: each stays
 # red-on-green (a strict xfail fails the run as soon as it passes, so it is removed then).
-KNOWN_DEFECTS = {
-    "nearest-e356d4edef.json": (
-        "surface nearest: a minimum on the v = 100 edge of a NURBS surface of size 6.2e-5 "
-        "(u = 3.435, next to the knot u = 3.5) is missed; ours stops at the knot, 2.2e-8 "
-        "farther"
-    ),
-}
+KNOWN_DEFECTS: dict = {}
 
 
 @pytest.mark.parametrize("path", regression_files("nearest"), ids=lambda p: p.name)

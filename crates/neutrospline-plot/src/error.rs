@@ -140,6 +140,14 @@ pub enum PlotError {
     /// The curve could not be evaluated.
     #[error("cannot sample the curve: {0}")]
     Evaluate(#[from] neutrospline::EvalError),
+    /// The nearest point of the curve to a data point could not be found (values overflow).
+    #[error("data point {index}: cannot find the nearest point of the curve: {source}")]
+    Nearest {
+        /// The data point's index.
+        index: usize,
+        /// Why.
+        source: neutrospline::NearestError,
+    },
     /// The SVG text could not be read by the rasterizer.
     #[error("cannot read the SVG: {message}")]
     Svg {

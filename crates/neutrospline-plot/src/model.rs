@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use neutrospline::{
     alpha_cut, centroid_curve, uniform_parameter, AnyCurve, Bezier, ControlPoint, ControlPolygon,
-    CurveKind, CurvePoint, Evaluate, EvaluateSurface, NeutrosophicPoint, Spread, Surface,
+    CurveKind, CurvePoint, EvaluateSurface, NearestPoint, NeutrosophicPoint, Spread, Surface,
     SurfaceKind,
 };
 
@@ -81,13 +81,17 @@ trait Sampler: Send + Sync {
     fn domain(&self) -> Range<f64>;
     /// The curve at parameter `t` (of the point `index` of the data overlay, for errors).
     fn at(&self, t: f64, index: usize) -> Result<Pt, PlotError>;
+    /// The parameter of the curve's global nearest point to `target` (the core's
+    /// [`NearestPoint`], as `neutrospline query` finds it; z ignored for a plane curve), for
+    /// the data point `index`.
+    fn nearest(&self, target: [f64; 3], index: usize) -> Result<f64, PlotError>;
 }
 
 struct CurveSampler<C, const D: usize>(C);
 
 impl<C, const D: usize> Sampler for CurveSampler<C, D>
 where
-    C: Evaluate<Point = CurvePoint<D>> + Send + Sync,
+    C: NearestPoint<D> + Send + Sync,
 {
     fn sample(&self, n: usize) -> Result<Vec<Pt>, PlotError> {
         let ts = parameters(self.0.domain(), n);
@@ -102,6 +106,14 @@ where
 
     fn at(&self, t: f64, index: usize) -> Result<Pt, PlotError> {
         to_pt(&self.0.evaluate(t)?, "curve point of data point", index)
+    }
+
+    fn nearest(&self, target: [f64; 3], index: usize) -> Result<f64, PlotError> {
+        let point: [f64; D] = core::array::from_fn(|a| target[a]);
+        self.0
+            .nearest(point)
+            .map(|near| near.parameter)
+            .map_err(|source| PlotError::Nearest { index, source })
     }
 }
 
@@ -163,9 +175,6 @@ fn polyline_at(samples: &[Pt], t: f64) -> Pt {
 
 /// The data points and, one each, the curve points their whiskers go to.
 pub(crate) type Residuals = (Vec<Pt>, Vec<Pt>);
-
-/// Samples per curve from which the nearest point to each data point is refined.
-pub(crate) const NEAREST_SAMPLES: usize = 1024;
 
 #[derive(Clone)]
 enum Geometry {
@@ -326,7 +335,7 @@ impl PlotModel {
         controls: &[ControlPoint<D>],
     ) -> Result<PlotModel, PlotError>
     where
-        C: Evaluate<Point = CurvePoint<D>> + Send + Sync + 'static,
+        C: NearestPoint<D> + Send + Sync + 'static,
     {
         check_dimension(D)?;
         if controls.is_empty() {
@@ -567,9 +576,10 @@ impl PlotModel {
     }
 
     /// The data points and, for each, the curve point it was fitted to: the curve at its
-    /// parameter, else the curve's point nearest to it (refined from `dense` samples).
+    /// parameter, else the curve's global nearest point to it (the core's `NearestPoint`; for a
+    /// model given as samples, the nearest point of the polyline).
     /// `None` without data or for a surface.
-    pub(crate) fn residuals(&self, dense: usize) -> Result<Option<Residuals>, PlotError> {
+    pub(crate) fn residuals(&self) -> Result<Option<Residuals>, PlotError> {
         let Some(data) = &self.data else {
             return Ok(None);
         };
@@ -587,18 +597,11 @@ impl PlotModel {
                 .map(|(k, &t)| c.at(t, k))
                 .collect::<Result<Vec<Pt>, PlotError>>()?,
             (Geometry::Samples(s), Some(ts)) => ts.iter().map(|&t| polyline_at(s, t)).collect(),
-            (Geometry::Curve(c), None) => {
-                let ts = parameters(c.domain(), dense);
-                let samples = c.sample(dense)?;
-                let pos: Vec<[f64; 3]> = samples.iter().map(|p| p.pos).collect();
-                let mut feet = Vec::with_capacity(points.len());
-                for (k, p) in points.iter().enumerate() {
-                    let at = |t: f64| c.at(t, k).map(|q| q.pos);
-                    let (t, _) = nearest(&at, &ts, &pos, p.pos)?;
-                    feet.push(c.at(t, k)?);
-                }
-                feet
-            }
+            (Geometry::Curve(c), None) => points
+                .iter()
+                .enumerate()
+                .map(|(k, p)| c.at(c.nearest(p.pos, k)?, k))
+                .collect::<Result<Vec<Pt>, PlotError>>()?,
             (Geometry::Samples(s), None) => {
                 let n = s.len();
                 let ts = parameters(SAMPLES_DOMAIN, n);
@@ -737,7 +740,7 @@ impl<const D: usize> From<&Bezier<D>> for PlotModel {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use neutrospline::{BSpline, Degrees};
+    use neutrospline::{BSpline, Degrees, Evaluate};
 
     #[test]
     fn model_from_any_bspline() {
@@ -764,7 +767,7 @@ mod tests {
         let data =
             DataOverlay::new(positions, vec![[0.3, 0.2, 0.1]; 5]).with_parameters(ts.to_vec());
         let model = PlotModel::from(&curve).with_data(data).unwrap();
-        let (points, feet) = model.residuals(NEAREST_SAMPLES).unwrap().unwrap();
+        let (points, feet) = model.residuals().unwrap().unwrap();
         assert_eq!(points[1].pos, [1.25, 0.875, 0.0], "z of 2-D data is 0");
         for (k, &t) in ts.iter().enumerate() {
             let p = curve.evaluate(t).unwrap();
@@ -773,6 +776,44 @@ mod tests {
             }
             assert_eq!(feet[k].pos[2], 0.0);
             assert!((feet[k].deg[0] - p.degrees.truth()).abs() < 1e-9);
+        }
+    }
+
+    /// The whiskers end at the core's global nearest point (`neutrospline query`'s): on the
+    /// straight cubic of issue 22 (first two control points 1e-13 apart, last two equal),
+    /// where a search from samples and the old root finder both went astray, each data point
+    /// on the line gets its foot on the line, at the nearest point's parameter exactly.
+    #[test]
+    fn model_residual_feet_are_the_global_nearest_points() {
+        use neutrospline::{ControlPoint, NearestPoint};
+        let d = Degrees::new(0.5, 0.25, 0.125).unwrap();
+        let curve = Bezier::new(
+            [
+                [461.0, 123.0],
+                [461.0 - 6e-14, 123.0 + 4e-14],
+                [111.0, 319.0],
+                [111.0, 319.0],
+            ]
+            .map(|p| ControlPoint::new(p, d))
+            .to_vec(),
+        )
+        .unwrap();
+        let data: Vec<[f64; 3]> = (1..10)
+            .map(|k| {
+                let s = f64::from(k) / 10.0;
+                [461.0 - 350.0 * s, 123.0 + 196.0 * s, 0.0]
+            })
+            .collect();
+        let overlay = DataOverlay::new(data.clone(), vec![[0.5, 0.25, 0.125]; data.len()]);
+        let model = PlotModel::from_bezier(&curve)
+            .unwrap()
+            .with_data(overlay)
+            .unwrap();
+        let (_, feet) = model.residuals().unwrap().unwrap();
+        for (q, foot) in data.iter().zip(&feet) {
+            let near = curve.nearest([q[0], q[1]]).unwrap();
+            assert_eq!([foot.pos[0], foot.pos[1]], near.point.position);
+            assert!(near.distance < 1e-11, "{q:?}: {near:?}");
         }
     }
 
@@ -789,7 +830,7 @@ mod tests {
         ];
         let data = DataOverlay::new(targets.to_vec(), vec![[0.5; 3]; 4]);
         let model = PlotModel::from(&curve).with_data(data).unwrap();
-        let (_, feet) = model.residuals(NEAREST_SAMPLES).unwrap().unwrap();
+        let (_, feet) = model.residuals().unwrap().unwrap();
         let dense = model.curve_points(20_000).unwrap();
         for (q, foot) in targets.iter().zip(&feet) {
             let d = |p: &[f64; 3]| ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt();

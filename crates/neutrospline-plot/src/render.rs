@@ -5,7 +5,7 @@
 use crate::ctx::{BandCtx, Ctx, DataCtx};
 use crate::drawing::Drawing;
 use crate::error::PlotError;
-use crate::model::{PlotModel, NEAREST_SAMPLES};
+use crate::model::PlotModel;
 use crate::options::PlotOptions;
 use crate::theme::Theme;
 use crate::view::View;
@@ -91,9 +91,7 @@ pub fn render_drawing(
     // take room).
     let (data, controls, names) = if figure.draws_data() {
         let overlay = model.data().ok_or(PlotError::NoData)?;
-        let (points, feet) = model
-            .residuals(NEAREST_SAMPLES.max(options.samples()))?
-            .ok_or(PlotError::NoData)?;
+        let (points, feet) = model.residuals()?.ok_or(PlotError::NoData)?;
         let data = DataCtx {
             points,
             feet,

@@ -566,10 +566,14 @@ impl<'a> SurfaceProjector<'a> {
                 [true, true] => break,
                 [true, false] | [false, true] => {
                     let c = if held[0] { 1 } else { 0 };
+                    let tangent = if c == 0 { dot(&su, &su) } else { dot(&sv, &sv) };
                     step[c] = if h[c][c] > 0.0 {
                         -g[c] / h[c][c]
                     } else {
-                        -g[c]
+                        // Not convex here: a gradient step scaled by the edge's speed (an
+                        // unscaled one is in the wrong units, 1e-10 of the edge on a surface
+                        // 1e-5 in size, and stalls at once).
+                        -g[c] / h[c][c].abs().max(tangent).max(f64::MIN_POSITIVE)
                     };
                 }
                 [false, false] => {
