@@ -12,7 +12,10 @@ the model's rules written out here:
 - cells are trimmed of Unicode White_Space; a row of one empty cell is an empty line;
 - the first row is the header; every other row needs one cell per column, numbers are
   decimal numbers (finite), degrees lie in [0, 1];
-- a file that ends inside a quoted cell is refused on the line where that row starts.
+- a file that ends inside a quoted cell is refused on the line where that row starts;
+- a comment after the header that holds a full row (as many comma-separated cells as the
+  header, at least 3, no quote, every cell after the first a number) is refused on its line:
+  a name starting with `#` written unquoted would otherwise be dropped without a word.
 
 The reader must give the same rows (count, names, numbers) or refuse, exit 1, naming the line
 of the first bad row. Three formats: control points (`export FILE -o OUT.dxf`, which keeps the
@@ -73,7 +76,8 @@ def python_rows(text):
     a quoted cell."""
     if text.startswith("\ufeff"):
         text = text[1:]
-    state = {"at_start": True, "line": 1, "start": 1, "raw": []}
+    state = {"at_start": True, "line": 1, "start": 1, "raw": [], "comment": [], "rows": 0}
+    comments = []  # (line, text, rows read before it)
 
     def pieces():
         in_comment = False
@@ -83,7 +87,12 @@ def python_rows(text):
             state["line"] += piece.count("\n")
             if state["at_start"]:
                 if in_comment or piece.startswith("#"):
+                    if not in_comment:
+                        state["comment"] = []
+                    state["comment"].append(piece)
                     in_comment = not piece.endswith("\n")
+                    if not in_comment:
+                        comments.append((here, "".join(state["comment"]), state["rows"]))
                     continue
                 state["at_start"] = False
                 state["start"] = here
@@ -100,6 +109,11 @@ def python_rows(text):
         if not cells or cells == [""]:
             continue
         rows.append((last[0], cells))
+        state["rows"] = len(rows)
+    if state["at_start"] and state["comment"] and not "".join(state["comment"]).endswith("\n"):
+        # a comment on the last line, without its line end
+        comments.append((state["line"], "".join(state["comment"]), state["rows"]))
+    state["hidden"] = hidden_row(comments, rows)
     if last is not None:
         # A line end added after a row read to the end of the file changes it only when the
         # file ends inside a quoted cell.
@@ -107,18 +121,48 @@ def python_rows(text):
         alone = next(csv.reader(io.StringIO(raw, newline="")), [])
         closed = next(csv.reader(io.StringIO(raw + "\n", newline="")), [])
         if alone != closed:
-            return rows, Refusal(start)
-    return rows, None
+            return rows, Refusal(start), state["hidden"]
+    return rows, None, state["hidden"]
+
+
+def _number(cell):
+    """Whether Rust's `f64::from_str` reads `cell` (Python's float, without its underscores)."""
+    if not cell or "_" in cell or cell != cell.strip():
+        return False
+    try:
+        float(cell)
+    except ValueError:
+        return False
+    return True
+
+
+def hidden_row(comments, rows):
+    """The line of the first comment after the header that holds a full row, or None."""
+    if not rows:
+        return None
+    count = len(rows[0][1])
+    for line, text, before in comments:
+        if before < 1 or count < 3:
+            continue
+        body = text.rstrip("\r\n")
+        if '"' in body:
+            continue
+        cells = [c.strip(WHITE_SPACE) for c in body.split(",")]
+        if len(cells) == count and all(_number(c) for c in cells[1:]):
+            return line
+    return None
 
 
 def expected(fmt, text):
     """What the command line must report: a list of rows (name, numbers) or a Refusal."""
-    rows, eof_refusal = python_rows(text)
+    rows, eof_refusal, hidden = python_rows(text)
     if not rows:
         return eof_refusal or Refusal(None)
     header = [c.lower() for c in rows[0][1]]
     out = []
     for line, cells in rows[1:]:
+        if hidden is not None and hidden < line:
+            return Refusal(hidden)
         if len(cells) != len(header):
             return Refusal(line)
         record = dict(zip(header, cells))
@@ -133,6 +177,8 @@ def expected(fmt, text):
             values.append(value)
         name = record.get("name", "")
         out.append((name or None, values))
+    if hidden is not None:
+        return Refusal(hidden)
     if eof_refusal is not None:
         return eof_refusal
     if not out:

@@ -97,6 +97,9 @@ struct Input<R> {
     end_mark: usize,
     /// The first problem: every later `read` repeats it.
     failed: Option<Located>,
+    /// The comment being read, and the comments read since the last row, with their lines.
+    comment: Vec<u8>,
+    comments: Vec<(usize, String)>,
 }
 
 impl<R: BufRead> Input<R> {
@@ -113,6 +116,8 @@ impl<R: BufRead> Input<R> {
             handed: 0,
             end_mark: 0,
             failed: None,
+            comment: Vec::new(),
+            comments: Vec::new(),
         }
     }
 
@@ -203,14 +208,20 @@ impl<R: BufRead> Input<R> {
             }
         }
         self.check_utf8(piece)?;
+        if self.place == Place::Comment {
+            self.comment.extend_from_slice(piece);
+        }
         let last = piece[piece.len() - 1];
         self.piece_start = matches!(last, b'\r' | b'\n');
         if last == b'\n' {
-            self.line += 1;
-            self.line_bytes = 0;
             if self.place == Place::Comment {
                 self.place = Place::Between;
+                let text = String::from_utf8_lossy(&self.comment).into_owned();
+                self.comments.push((self.line, text));
+                self.comment.clear();
             }
+            self.line += 1;
+            self.line_bytes = 0;
         }
         self.last = last;
         self.handed += piece.len() as u64;
@@ -285,6 +296,8 @@ pub(crate) struct Records<R> {
     reader: ::csv::Reader<Input<R>>,
     row: ::csv::StringRecord,
     done: bool,
+    /// The number of cells of the first row (the header), once read.
+    header_cells: Option<usize>,
 }
 
 impl<R: BufRead> Records<R> {
@@ -301,7 +314,53 @@ impl<R: BufRead> Records<R> {
             reader,
             row: ::csv::StringRecord::new(),
             done: false,
+            header_cells: None,
         }
+    }
+
+    /// Refuses a comment read since the last row that holds a full row after the header: as
+    /// many cells as the header, all but the first of them numbers (`#1,3,6,0.8,0.1,0.1`).
+    /// Spreadsheets and Python's `csv` module write a name that starts with `#` unquoted, and
+    /// the format reads such a line as a comment: the point would be dropped without a word.
+    fn refuse_rows_in_comments(&mut self, file: &str) -> Result<(), InputError> {
+        let input = self.reader.get_mut();
+        let mut comments = std::mem::take(&mut input.comments);
+        if self.done && !input.comment.is_empty() {
+            // A comment on the last line, without its line end.
+            comments.push((
+                input.line,
+                String::from_utf8_lossy(&input.comment).into_owned(),
+            ));
+            input.comment.clear();
+        }
+        let Some(count) = self.header_cells else {
+            return Ok(());
+        };
+        for (line, text) in comments {
+            let body = text.trim_end_matches(['\r', '\n']);
+            if count < 3 || body.contains('"') {
+                continue;
+            }
+            let cells: Vec<&str> = body.split(',').map(str::trim).collect();
+            let numbers = cells[1..]
+                .iter()
+                .all(|c| !c.is_empty() && c.parse::<f64>().is_ok());
+            if cells.len() == count && numbers {
+                return Err(InputError::new(
+                    file,
+                    Some(line),
+                    None,
+                    format!(
+                        "`{body}` starts with `#`, so it is a comment, yet it holds a full row \
+                         ({count} cells, as the header): a name that starts with `#` must be \
+                         quoted (`\"{first}\"`), and a row to leave out must be deleted (a \
+                         comment would drop it without a word)",
+                        first = cells[0]
+                    ),
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// The next row that is not empty, split into trimmed cells, with the line it starts on;
@@ -321,6 +380,7 @@ impl<R: BufRead> Records<R> {
                 Ok(true) => {}
                 Ok(false) => {
                     self.done = true;
+                    self.refuse_rows_in_comments(file)?;
                     return Ok(None);
                 }
                 Err(e) => {
@@ -353,9 +413,12 @@ impl<R: BufRead> Records<R> {
             if input.read_to_the_end(end.byte()) {
                 self.done = true;
                 if self.row.len() == 1 && &self.row[0] == "\0" {
+                    self.refuse_rows_in_comments(file)?;
                     return Ok(None);
                 }
-                // The file ends inside a quoted cell: the row holds the end mark.
+                // The file ends inside a quoted cell: the row holds the end mark (a row hidden
+                // in a comment before it is the earlier error).
+                self.refuse_rows_in_comments(file)?;
                 let start = after.saturating_sub(inner_ends);
                 debug_assert_eq!(Some(start), row_start);
                 return Err(at(
@@ -373,6 +436,10 @@ impl<R: BufRead> Records<R> {
             self.row.trim();
             if self.row.len() == 1 && self.row[0].is_empty() {
                 continue;
+            }
+            self.refuse_rows_in_comments(file)?;
+            if self.header_cells.is_none() {
+                self.header_cells = Some(self.row.len());
             }
             return Ok(Some((start, self.row.clone())));
         }
@@ -691,6 +758,36 @@ mod tests {
         assert_eq!(m.points[0].position, vec![1.0, 2.0, 3.0]);
         assert_eq!(m.points[0].degrees.to_array(), [0.5, 0.25, 0.0]);
         assert_eq!(m.points[0].origin.line, Some(5));
+    }
+
+    /// A spreadsheet writes a name that starts with `#` unquoted; the format reads that line
+    /// as a comment, which would drop the point with exit 0. Such a comment (as many cells as
+    /// the header, numbers after the first) is refused with its line; prose, a commented
+    /// header and quoted `#` names are not.
+    #[test]
+    fn csv_parse_refuses_a_row_hidden_in_a_comment() {
+        let text = "name,x,y,truth,indeterminacy,falsity\nC0,1,3,0.3,0.6,0.1\n#1,3,6,0.8,0.1,0.1\nC2,6,2,0.7,0.1,0.2\n";
+        let err = parse("t.csv", text.as_bytes(), &rule(Membership::Neutrosophic)).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "t.csv:3: `#1,3,6,0.8,0.1,0.1` starts with `#`, so it is a comment, yet it holds a \
+             full row (6 cells, as the header): a name that starts with `#` must be quoted \
+             (`\"#1\"`), and a row to leave out must be deleted (a comment would drop it \
+             without a word)"
+        );
+        // The same at the end of the file, without a line end.
+        let last = "name,x,y,truth,indeterminacy,falsity\nC0,1,3,0.3,0.6,0.1\nC1,3,6,0.8,0.1,0.1\n# C3, 9, 5, 0.2, 0.4, 0.4";
+        let err = parse("t.csv", last.as_bytes(), &rule(Membership::Neutrosophic)).unwrap_err();
+        assert!(
+            err.to_string()
+                .starts_with("t.csv:4: `# C3, 9, 5, 0.2, 0.4, 0.4` starts with"),
+            "{err}"
+        );
+        // Prose, a commented header and a quoted name are fine.
+        let fine = "# The paper's Example 1, with 4 points, 2 of them, 1, 2\nname,x,y,truth,indeterminacy,falsity\n# name,x,y,truth,indeterminacy,falsity\nC0,1,3,0.3,0.6,0.1\n\"#1\",3,6,0.8,0.1,0.1\n# note: 1, 2, 3\n";
+        let parsed = parse_ok(fine);
+        let names: Vec<Option<&str>> = parsed.points.iter().map(|p| p.name.as_deref()).collect();
+        assert_eq!(names, [Some("C0"), Some("#1")]);
     }
 
     #[test]
