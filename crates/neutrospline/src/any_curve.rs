@@ -144,6 +144,10 @@ impl<const D: usize> Evaluate for AnyCurve<D> {
     fn evaluate(&self, t: f64) -> Result<CurvePoint<D>, EvalError> {
         forward!(self, c => c.evaluate(t))
     }
+
+    fn evaluate_sum(&self, origin: f64, offset: f64) -> Result<CurvePoint<D>, EvalError> {
+        forward!(self, c => c.evaluate_sum(origin, offset))
+    }
 }
 
 impl<const D: usize> Derivative for AnyCurve<D> {

@@ -185,6 +185,25 @@ pub trait Evaluate {
     /// derivative whose value is not representable.
     fn evaluate(&self, t: f64) -> Result<Self::Point, EvalError>;
 
+    /// The point at the exact sum `origin + offset` of two floats, a parameter finer than one
+    /// float holds near a large `origin` (the nodes of a quadrature on a knot span of width
+    /// `1e-3` at `t = 1e4` are otherwise rounded by `1e-12` of the span). Splines and their
+    /// derivatives take each knot difference as `(origin - u_i) + offset`; other kinds
+    /// evaluate at the rounded sum, which is as fine on their domain `[0, 1]`.
+    ///
+    /// ```
+    /// use neutrospline::Evaluate;
+    /// let curve = neutrospline::example1();
+    /// assert_eq!(curve.evaluate_sum(0.25, 0.25)?, curve.evaluate(0.5)?);
+    /// # Ok::<(), neutrospline::EvalError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Evaluate::evaluate`] at `origin + offset`.
+    fn evaluate_sum(&self, origin: f64, offset: f64) -> Result<Self::Point, EvalError> {
+        self.evaluate(origin + offset)
+    }
+
     /// The point at the start of the domain (for every kind of neutrosophic curve with
     /// clamped knots, the first control point exactly).
     ///

@@ -123,7 +123,7 @@ impl<const D: usize> CurveDerivative<D> {
 
     /// The rational derivative's value at `t` into `out`: Leibniz's rule on the homogeneous
     /// values, with scratch rows on the stack up to order [`STACK_ORDERS`].
-    fn rational_value(chain: &[Spline], t: f64, out: &mut [f64]) {
+    fn rational_value(chain: &[Spline], t: (f64, f64), out: &mut [f64]) {
         let k = chain.len() - 1;
         if k <= STACK_ORDERS {
             let mut rows = [[0.0; ROW]; 2 * (STACK_ORDERS + 1)];
@@ -146,14 +146,14 @@ impl<const D: usize> CurveDerivative<D> {
 /// `c[j]` for `j = 0 ..= k`. `binomials` (length `k + 1`, all ones) is scratch for Pascal's rows.
 fn leibniz(
     chain: &[Spline],
-    t: f64,
+    (origin, offset): (f64, f64),
     a: &mut [[f64; ROW]],
     c: &mut [[f64; ROW]],
     binomials: &mut [f64],
 ) {
     let s = chain[0].stride - 1;
     for (spline, row) in chain.iter().zip(a.iter_mut()) {
-        spline.evaluate(t, row);
+        spline.evaluate_sum(origin, offset, row);
     }
     let w = a[0][s];
     for j in 0..a.len() {
@@ -184,13 +184,23 @@ impl<const D: usize> Evaluate for CurveDerivative<D> {
     /// `t` not finite or outside the domain; [`EvalError::Overflow`] when a value is not
     /// representable (control positions near the largest float).
     fn evaluate(&self, t: f64) -> Result<DerivativeValue<D>, EvalError> {
+        self.evaluate_sum(t, 0.0)
+    }
+
+    /// The derivative at the exact sum `origin + offset`, with every knot difference taken as
+    /// `(origin - u_i) + offset`.
+    ///
+    /// # Errors
+    /// As [`Evaluate::evaluate`] at `origin + offset`.
+    fn evaluate_sum(&self, origin: f64, offset: f64) -> Result<DerivativeValue<D>, EvalError> {
+        let t = origin + offset;
         check_parameter(t, &self.domain)?;
         let mut row = [0.0; ROW];
         match &self.form {
             Form::Polynomial(spline) => {
-                spline.evaluate(t, &mut row);
+                spline.evaluate_sum(origin, offset, &mut row);
             }
-            Form::Rational(chain) => Self::rational_value(chain, t, &mut row),
+            Form::Rational(chain) => Self::rational_value(chain, (origin, offset), &mut row),
         }
         if row[..stride(D)].iter().any(|v| !v.is_finite()) {
             return Err(EvalError::Overflow { t });

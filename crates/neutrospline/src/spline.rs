@@ -61,7 +61,7 @@ pub(crate) fn blossom(
     data: &[f64],
     weights: Option<&[f64]>,
     k: usize,
-    param: impl Fn(usize) -> f64,
+    param: impl Fn(usize) -> (f64, f64),
     out: &mut [f64],
 ) -> f64 {
     let p = knots.degree();
@@ -89,11 +89,11 @@ pub(crate) fn blossom(
         w.copy_from_slice(&ws[first..=k]);
     }
     for r in 1..=p {
-        let t = param(r);
+        let (origin, offset) = param(r);
         for j in (r..=p).rev() {
             let lo = u[j + k - p];
             let hi = u[j + 1 + k - r];
-            let alpha = ((t - lo) / (hi - lo)).clamp(0.0, 1.0);
+            let alpha = (((origin - lo) + offset) / (hi - lo)).clamp(0.0, 1.0);
             let pair = weights.map(|_| (w[j - 1], w[j]));
             w[j] = combine(scratch, stride, (j, j - 1, j), (1.0 - alpha, alpha), pair);
         }
@@ -143,7 +143,12 @@ impl Spline {
     /// Level r replaces `d_j` (j = p down to r) by the combination of `d_{j-1}` and `d_j`
     /// with `alpha = (t_r - u_{j+k-p}) / (u_{j+1+k-r} - u_{j+k-p})`, which lies in \[0, 1\]
     /// when `t_r` is in the span.
-    pub(crate) fn blossom(&self, k: usize, param: impl Fn(usize) -> f64, out: &mut [f64]) -> f64 {
+    pub(crate) fn blossom(
+        &self,
+        k: usize,
+        param: impl Fn(usize) -> (f64, f64),
+        out: &mut [f64],
+    ) -> f64 {
         blossom(
             &self.knots,
             self.stride,
@@ -157,8 +162,15 @@ impl Spline {
 
     /// The value at `t` (in the domain) into `out`; returns the weight.
     pub(crate) fn evaluate(&self, t: f64, out: &mut [f64]) -> f64 {
-        let k = self.knots.span(t);
-        self.blossom(k, |_| t, out)
+        self.evaluate_sum(t, 0.0, out)
+    }
+
+    /// The value at the exact sum `origin + offset` (its rounding in the domain) into `out`;
+    /// returns the weight. Each knot difference is `(origin - u_i) + offset`, so a parameter
+    /// finer than the floats near `origin` still moves the value.
+    pub(crate) fn evaluate_sum(&self, origin: f64, offset: f64, out: &mut [f64]) -> f64 {
+        let k = self.knots.span(origin + offset);
+        self.blossom(k, |_| (origin, offset), out)
     }
 
     /// Boehm's knot insertion of `u` once: for `k - p + 1 <= i <= k`,
@@ -249,7 +261,7 @@ impl Spline {
             let mut weights = Vec::with_capacity(p + 1);
             for i in 0..=p {
                 // Levels 1..=p-i use a, the remaining i levels use b.
-                let w = self.blossom(k, |r| if r <= p - i { a } else { b }, &mut out);
+                let w = self.blossom(k, |r| (if r <= p - i { a } else { b }, 0.0), &mut out);
                 data.extend_from_slice(&out);
                 weights.push(w);
             }

@@ -356,9 +356,18 @@ impl<const D: usize, W: Weighting> Evaluate for SplineCurve<D, W> {
     /// # Errors
     /// `t` not finite or outside the domain.
     fn evaluate(&self, t: f64) -> Result<CurvePoint<D>, EvalError> {
-        check_parameter(t, &self.domain())?;
+        self.evaluate_sum(t, 0.0)
+    }
+
+    /// The point at the exact sum `origin + offset`, each knot difference taken as
+    /// `(origin - u_i) + offset`.
+    ///
+    /// # Errors
+    /// `origin + offset` not finite or outside the domain.
+    fn evaluate_sum(&self, origin: f64, offset: f64) -> Result<CurvePoint<D>, EvalError> {
+        check_parameter(origin + offset, &self.domain())?;
         let mut row = [0.0; 6];
-        self.spline.evaluate(t, &mut row);
+        self.spline.evaluate_sum(origin, offset, &mut row);
         Ok(point_from_row(&row))
     }
 }

@@ -365,7 +365,7 @@ impl Surface {
                 row,
                 row_w,
                 kv,
-                |_| v,
+                |_| (v, 0.0),
                 &mut column[i * stride..(i + 1) * stride],
             );
         }
@@ -376,7 +376,7 @@ impl Surface {
             &column,
             column_weights,
             ku,
-            |_| u,
+            |_| (u, 0.0),
             out,
         );
     }
@@ -442,7 +442,7 @@ impl Surface {
                 &line,
                 None,
                 k,
-                |_| fixed,
+                |_| (fixed, 0.0),
                 &mut iso[a * hs..(a + 1) * hs],
             );
         }
@@ -623,7 +623,15 @@ impl Surface {
                 line_w[f] = self.weights.as_ref().map_or(1.0, |w| w[src]);
             }
             let lw = self.weights.as_ref().map(|_| line_w.as_slice());
-            weights.push(blossom(fixed_knots, S, &line, lw, k, |_| value, &mut out));
+            weights.push(blossom(
+                fixed_knots,
+                S,
+                &line,
+                lw,
+                k,
+                |_| (value, 0.0),
+                &mut out,
+            ));
             points.push(point_from_row::<3>(&out));
         }
         let built = match self.kind {

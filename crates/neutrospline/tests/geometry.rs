@@ -179,6 +179,79 @@ fn straight_line_length_is_the_chord() {
     assert!((tangent[1] - 2.0 / 5.0_f64.sqrt()).abs() < 1e-15);
 }
 
+/// The unit circle of [`unit_circle`] with its knots moved to `origin + 0.1 u` (an affine map
+/// of the parameter, which keeps the curve and its length).
+fn circle_with_knots_at(origin: f64) -> Nurbs<2> {
+    let unit = unit_circle();
+    let knots: Vec<f64> = unit
+        .knots()
+        .knots()
+        .iter()
+        .map(|u| origin + 0.1 * u)
+        .collect();
+    let points = (0..9).map(|i| unit.control_point(i)).collect();
+    let weights = unit.weights().unwrap().to_vec();
+    Nurbs::new(points, weights, KnotVector::new(knots, 2, 9).unwrap()).unwrap()
+}
+
+#[test]
+fn length_on_knots_far_from_zero_is_as_exact_as_on_the_unit_interval() {
+    // Knots near 1.7e9 (a time stamp in seconds) 0.025 apart: one float there is 2.4e-7, a
+    // part 1e-5 of a span. The quadrature's nodes are carried as an origin and an offset.
+    for origin in [0.0, -9.5, 1e6, 1.7e9] {
+        let circle = circle_with_knots_at(origin);
+        let length = circle.length().unwrap();
+        assert!(
+            relative_error(length, 2.0 * PI) <= 1e-14,
+            "origin {origin}: {length}"
+        );
+        let averages = circle.arc_averages(DEFAULT_ACCURACY).unwrap();
+        assert!(relative_error(averages.length, 2.0 * PI) <= 1e-14);
+    }
+}
+
+/// Found by `nurbs_length_is_additive_and_at_least_the_chord` in CI: three straight rational
+/// pieces (degree 1, double knots) on knots near -9.49 a span of 0.005 apart, with weight
+/// ratios up to 54. The rule's nodes rounded to the floats near -9.49 made the length
+/// 1.9e-12 of itself short of the chords (asked for 1e-12).
+#[test]
+fn straight_rational_pieces_on_short_spans_have_the_chords_length_regression() {
+    let rows = [
+        [887.6167597620141, -818.8758933753064],
+        [-163.87863098548888, -467.40288332740323],
+        [-86.77862484238905, -961.7747639930916],
+        [974.2311271667082, 955.9607299815106],
+        [742.4710803200949, -942.9846469428896],
+        [478.9013885170063, -452.0483683798562],
+    ];
+    let weights = vec![0.13685787323246615, 7.454788748274259, 1.0, 1.0, 10.0, 1.0];
+    let knots = vec![
+        -9.48932809074735,
+        -9.48932809074735,
+        -9.484328090747349,
+        -9.484328090747349,
+        -9.47932809074735,
+        -9.47932809074735,
+        -9.474328090747349,
+        -9.46622553855121,
+    ];
+    let d = degrees(0.5, 0.2, 0.1);
+    let points = rows.iter().map(|&p| ControlPoint::new(p, d)).collect();
+    let curve = Nurbs::new(points, weights, KnotVector::new(knots, 1, 6).unwrap()).unwrap();
+    let chords: f64 = [(0, 1), (2, 3), (4, 5)]
+        .iter()
+        .map(|&(a, b)| distance(&rows[a], &rows[b]))
+        .sum();
+    for accuracy in [DEFAULT_ACCURACY, 1e-14] {
+        let domain = curve.domain();
+        let length = curve.arc_length(domain, accuracy).unwrap();
+        assert!(
+            relative_error(length, chords) <= 4.0 * f64::EPSILON,
+            "accuracy {accuracy}: {length} vs {chords}"
+        );
+    }
+}
+
 #[test]
 fn cubic_beziers_against_mpmath() {
     let curve = neutrospline::example1();
