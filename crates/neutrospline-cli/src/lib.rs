@@ -12,6 +12,7 @@ mod input;
 mod limits;
 mod output;
 mod progress;
+mod request;
 mod shape;
 mod signals;
 

@@ -257,13 +257,13 @@ fn bad_data_and_options_have_exact_messages_and_write_nothing() {
             "x,y,T,I,F\n0,0,1,0,0\n",
             &["--tolerance", "0"],
             2,
-            "error: --tolerance 0: the tolerance must be a positive finite number\n",
+            "error: tolerance = 0: the tolerance must be a positive finite number\n",
         ),
         (
             "x,y,T,I,F\n0,0,1,0,0\n",
             &["--weights", "column"],
             2,
-            "error: --weights column: d.csv has no `weight` column\n",
+            "error: weights = column: d.csv has no `weight` column\n",
         ),
         (
             "x,y,T,I,F\n0,0,1,inf,0\n",
@@ -293,5 +293,172 @@ fn bad_data_and_options_have_exact_messages_and_write_nothing() {
         assert_eq!(stdout, "");
         let left: Vec<_> = fs::read_dir(dir.path()).unwrap().collect();
         assert_eq!(left.len(), 1, "{options:?}: only d.csv remains");
+    }
+}
+
+/// The studio's answer to `POST /api/fit` with `options`: the status and the error message.
+fn studio_fit(port: u16, data: &str, options: &serde_json::Value) -> (u16, String) {
+    use std::io::{Read, Write};
+    let body = serde_json::json!({ "data": { "name": "d.csv", "text": data }, "options": options })
+        .to_string();
+    let raw = format!(
+        "POST /api/fit HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nOrigin: http://127.0.0.1:{port}\r\n\
+         Content-Type: application/json\r\nContent-Length: {}\r\nConnection: close\r\n\r\n{body}",
+        body.len()
+    );
+    let mut stream = std::net::TcpStream::connect(("127.0.0.1", port)).unwrap();
+    stream.write_all(raw.as_bytes()).unwrap();
+    let mut answer = Vec::new();
+    let _ = stream.read_to_end(&mut answer);
+    let split = answer.windows(4).position(|w| w == b"\r\n\r\n").unwrap();
+    let status = String::from_utf8_lossy(&answer[9..12]).parse().unwrap();
+    let value: serde_json::Value = serde_json::from_slice(&answer[split + 4..]).unwrap();
+    let message = value["error"]["message"].as_str().unwrap_or("").to_owned();
+    (status, message)
+}
+
+/// Contradictions and values out of range get one message, the library's `FitRequest`'s, on
+/// the command line (exit 2) and in the studio (400); so does data whose weight column and
+/// `weights` disagree (exit 2, 422).
+#[test]
+fn option_errors_are_the_same_on_the_command_line_and_in_the_studio() {
+    use serde_json::json;
+    let dir = tempfile::tempdir().unwrap();
+    let plain = "x,y,T,I,F\n0,0,1,0,0\n1,1,1,0,0\n2,0,1,0,0\n3,1,1,0,0\n4,0,1,0,0\n";
+    let weighted = "x,y,T,I,F,weight\n0,0,1,0,0,1\n1,1,1,0,0,2\n2,0,1,0,0,1\n3,1,1,0,0,1\n";
+    let targets = "(give one target: interpolate, control-points or tolerance)";
+    let cases: Vec<(&str, Vec<&str>, serde_json::Value, u16, String)> = vec![
+        (
+            plain,
+            vec!["--interpolate", "--control-points", "4"],
+            json!({ "interpolate": true, "control-points": 4 }),
+            400,
+            format!("interpolate and control-points exclude each other {targets}"),
+        ),
+        (
+            plain,
+            vec!["--tolerance", "0.5", "--control-points", "4"],
+            json!({ "tolerance": 0.5, "control-points": 4 }),
+            400,
+            format!("control-points and tolerance exclude each other {targets}"),
+        ),
+        (
+            plain,
+            vec!["--tolerance", "0.5", "--interpolate"],
+            json!({ "interpolate": true, "tolerance": 0.5 }),
+            400,
+            format!("interpolate and tolerance exclude each other {targets}"),
+        ),
+        (
+            plain,
+            vec!["--tolerance", "0"],
+            json!({ "tolerance": 0 }),
+            400,
+            "tolerance = 0: the tolerance must be a positive finite number".to_owned(),
+        ),
+        (
+            plain,
+            vec!["--smoothing", "-1"],
+            json!({ "smoothing": -1 }),
+            400,
+            "smoothing = -1: the smoothing weight must be a non-negative finite number".to_owned(),
+        ),
+        (
+            plain,
+            vec!["--weights", "column"],
+            json!({ "weights": "column" }),
+            422,
+            "weights = column: d.csv has no `weight` column".to_owned(),
+        ),
+        (
+            weighted,
+            vec![],
+            json!({}),
+            422,
+            "d.csv has a `weight` column: set weights to column to use it (or remove the column)"
+                .to_owned(),
+        ),
+    ];
+    let port = neutrospline_studio::Server::bind(0, neutrospline_studio::Studio::example())
+        .unwrap()
+        .spawn();
+    for (data, args, options, status, message) in cases {
+        fs::write(dir.path().join("d.csv"), data).unwrap();
+        let mut argv = vec!["fit", "d.csv"];
+        argv.extend(&args);
+        let (code, stdout, stderr) = run(dir.path(), &argv);
+        assert_eq!((code, stdout.as_str()), (2, ""), "{args:?}: {stderr}");
+        assert_eq!(stderr, format!("error: {message}\n"), "{args:?}");
+        assert_eq!(
+            studio_fit(port, data, &options),
+            (status, message),
+            "{options}"
+        );
+    }
+}
+
+/// A value of the wrong type is named as it was given: a command-line word as typed, a JSON
+/// value as JSON writes it; a misspelled option is refused with the list of options.
+#[test]
+fn wrong_types_and_unknown_options_are_refused() {
+    use serde_json::json;
+    let dir = tempfile::tempdir().unwrap();
+    let plain = "x,y,T,I,F\n0,0,1,0,0\n1,1,1,0,0\n2,0,1,0,0\n3,1,1,0,0\n4,0,1,0,0\n";
+    fs::write(dir.path().join("d.csv"), plain).unwrap();
+    for (args, message) in [
+        (
+            vec!["--degree", "5.0"],
+            "degree = 5.0: expected a whole number",
+        ),
+        (
+            vec!["--degree", "-1"],
+            "degree = -1: expected a whole number",
+        ),
+        (
+            vec!["--parametrization", "even"],
+            "parametrization = even: expected one of uniform, chord-length, centripetal",
+        ),
+    ] {
+        let mut argv = vec!["fit", "d.csv"];
+        argv.extend(&args);
+        let (code, _, stderr) = run(dir.path(), &argv);
+        assert_eq!(
+            (code, stderr),
+            (2, format!("error: {message}\n")),
+            "{args:?}"
+        );
+    }
+    let port = neutrospline_studio::Server::bind(0, neutrospline_studio::Studio::example())
+        .unwrap()
+        .spawn();
+    let known = "degree, interpolate, control-points, tolerance, closed, parametrization, \
+                 weights, smoothing, kind, membership";
+    for (options, message) in [
+        (
+            json!({ "degree": 5.0 }),
+            "degree = 5.0: expected a whole number".to_owned(),
+        ),
+        (
+            json!({ "degree": "5" }),
+            "degree = \"5\": expected a whole number".to_owned(),
+        ),
+        (
+            json!({ "closed": "yes" }),
+            "closed = \"yes\": expected true or false".to_owned(),
+        ),
+        (
+            json!({ "controlPoints": 10 }),
+            format!("unknown option \"controlPoints\" (the options are {known})"),
+        ),
+        (
+            json!({ "kind": ["bspline"] }),
+            "invalid type: sequence, expected a boolean, a number or a string".to_owned(),
+        ),
+    ] {
+        assert_eq!(
+            studio_fit(port, plain, &options),
+            (400, message),
+            "{options}"
+        );
     }
 }

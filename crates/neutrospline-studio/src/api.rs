@@ -22,7 +22,7 @@ use std::str::FromStr;
 use std::sync::Mutex;
 use std::time::Instant;
 
-use neutrospline::fit::{fit, DataWeights, FitKind, FitOptions, FitTarget, Parametrization};
+use neutrospline::fit::{fit, FitRequest};
 use neutrospline::{
     uniform_parameter, AnyCurve, ControlPolygon, DegreeKind, Evaluate, EvaluateSurface, Membership,
 };
@@ -653,62 +653,35 @@ fn data(body: &Value) -> Result<Response, Response> {
     ))
 }
 
-/// `fit`'s options from the page: the same names and defaults as `neutrospline fit`.
-fn fit_options(o: &Value, membership: Membership) -> Result<FitOptions, Response> {
-    let bad = |m: String| Response::error(422, &m);
-    let count = |key: &str| {
-        o[key]
-            .as_u64()
-            .map(|v| usize::try_from(v).unwrap_or(usize::MAX))
-    };
-    let mut options = FitOptions::default()
-        .with_degree(count("degree").unwrap_or(3))
-        .with_closed(o["closed"].as_bool().unwrap_or(false))
-        .with_membership(membership)
-        .with_smoothing(o["smoothing"].as_f64().unwrap_or(0.0));
-    options = options.with_parametrization(match o["parametrization"].as_str() {
-        None | Some("chord-length") => Parametrization::ChordLength,
-        Some("uniform") => Parametrization::Uniform,
-        Some("centripetal") => Parametrization::Centripetal,
-        Some(p) => return Err(bad(format!("--parametrization {p}: not a parametrization"))),
-    });
-    options = options.with_weights(match o["weights"].as_str() {
-        None | Some("none") => DataWeights::None,
-        Some("column") => DataWeights::Given,
-        Some("score") => DataWeights::Score,
-        Some(w) => return Err(bad(format!("--weights {w}: give none, column or score"))),
-    });
-    options = options.with_kind(match o["kind"].as_str() {
-        None | Some("bspline") => FitKind::BSpline,
-        Some("bezier") => FitKind::Bezier,
-        Some(k) => return Err(bad(format!("--kind {k}: give bspline or bezier"))),
-    });
-    if o["interpolate"].as_bool().unwrap_or(false) {
-        options = options.with_target(FitTarget::Interpolate);
-    } else if let Some(n) = count("controlPoints") {
-        options = options.with_target(FitTarget::ControlPoints(n));
-    } else if let Some(e) = o["tolerance"].as_f64() {
-        if !(e > 0.0 && e.is_finite()) {
-            return Err(bad(format!(
-                "--tolerance {e}: the tolerance must be a positive finite number"
-            )));
-        }
-        options = options.with_target(FitTarget::Tolerance(e));
+/// The fit's request from the page: `options` maps the canonical names of
+/// [`FitRequest`](neutrospline::fit::FitRequest)'s options (those of `neutrospline fit`) to
+/// values; a wrong type, an unknown name or a contradiction is a 400 with the library's
+/// message, the one the command line prints.
+fn fit_request(body: &Value) -> Result<FitRequest, Response> {
+    if body.get("membership").is_some() {
+        return Err(Response::error(
+            400,
+            "membership is a fit option: give it in `options`",
+        ));
     }
-    let smoothing = o["smoothing"].as_f64().unwrap_or(0.0);
-    if !(smoothing >= 0.0 && smoothing.is_finite()) {
-        return Err(bad(format!(
-            "--smoothing {smoothing}: the smoothing weight must be a non-negative finite number"
-        )));
+    match body.get("options") {
+        None | Some(Value::Null) => Ok(FitRequest::default()),
+        Some(options) => serde_json::from_value(options.clone())
+            .map_err(|e| Response::error(400, &e.to_string())),
     }
-    Ok(options)
 }
 
 fn fit_data(body: &Value) -> Result<Response, Response> {
-    let membership = membership(body, Membership::Neutrosophic)?;
+    let request = fit_request(body)?;
+    let options = request
+        .validate()
+        .map_err(|e| Response::error(400, &e.to_string()))?;
+    let membership = request.membership;
     let table = data_table(&body["data"], membership)?
         .ok_or_else(|| Response::error(400, "no data given"))?;
-    let options = fit_options(&body["options"], membership)?;
+    request
+        .check_data_weights(table.file(), table.weights().is_some())
+        .map_err(|e| Response::error(422, &e.to_string()))?;
     let located =
         |e: neutrospline::fit::FitError| Response::error(422, &table.locate(&e).to_string());
     let (model, report) = if table.dimension() == 3 {

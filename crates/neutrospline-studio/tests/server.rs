@@ -479,7 +479,7 @@ fn data_and_fit_use_the_readers_and_the_fit() {
     let (status, answer, _) = post(
         port,
         "/api/fit",
-        &json!({ "data": data, "options": { "controlPoints": 12, "weights": "score" } }),
+        &json!({ "data": data, "options": { "control-points": 12, "weights": "score" } }),
     );
     assert_eq!(status, 200, "{answer}");
     assert_eq!(answer["report"]["control_points"], 12);

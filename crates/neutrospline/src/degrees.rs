@@ -69,6 +69,17 @@ pub struct ParseNameError {
     expected: &'static str,
 }
 
+impl ParseNameError {
+    /// The error for `given`, which is not a `what` (one of `expected`).
+    pub(crate) fn new(what: &'static str, given: &str, expected: &'static str) -> Self {
+        ParseNameError {
+            what,
+            given: given.to_owned(),
+            expected,
+        }
+    }
+}
+
 impl FromStr for DegreeKind {
     type Err = ParseNameError;
 

@@ -110,6 +110,7 @@ mod intersect;
 mod knots;
 mod layout;
 mod nearest;
+pub mod options;
 mod point;
 mod relation;
 pub mod sample;

@@ -4,49 +4,15 @@
 use std::io::Write;
 use std::path::PathBuf;
 
-use neutrospline::fit::{
-    channel_names, fit, DataWeights, Fit, FitKind, FitOptions, FitReport, FitTarget,
-    Parametrization,
-};
+use neutrospline::fit::{channel_names, fit, Fit, FitOptions, FitReport, FitRequest};
 use neutrospline::{DegreeKind, Membership};
 use neutrospline_io::{DataTable, Format, Model};
 use neutrospline_plot::{DataOverlay, PlotModel, PlotOptions, View};
 
 use crate::commands::plot::{write_figure, FigureFormat};
-use crate::commands::MembershipArg;
 use crate::input::{UsageError, STDIN_NAME};
 use crate::output::{self, number};
-
-/// `--parametrization` values.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum ParametrizationArg {
-    /// Evenly spaced parameters.
-    Uniform,
-    /// Proportional to the distance between consecutive points.
-    ChordLength,
-    /// Proportional to the square root of that distance.
-    Centripetal,
-}
-
-/// `--weights` values.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum WeightsArg {
-    /// Every point counts the same.
-    None,
-    /// The data's `weight` column.
-    Column,
-    /// Each point weighted by its score (2 + T - I - F) / 3: doubtful points pull less.
-    Score,
-}
-
-/// `--kind` values of a fit.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum FitKindArg {
-    /// A clamped (or, with --closed, periodic) B-spline.
-    Bspline,
-    /// One Bézier segment.
-    Bezier,
-}
+use crate::request::RequestArgs;
 
 /// `--report` values.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -103,45 +69,9 @@ pub struct FitArgs {
     #[arg(short = 'o', long = "output", value_name = "MODEL")]
     pub output: Option<PathBuf>,
 
-    /// Degree of the fitted curve
-    #[arg(long, value_name = "P", default_value_t = 3)]
-    pub degree: usize,
-
-    /// Least squares with this many control points
-    #[arg(long, value_name = "N", conflicts_with_all = ["tolerance", "interpolate"])]
-    pub control_points: Option<usize>,
-
-    /// Least squares to this tolerance: every position residual at most E (absolute)
-    #[arg(long, value_name = "E", conflicts_with = "interpolate")]
-    pub tolerance: Option<f64>,
-
-    /// Interpolate: the curve passes through every data point
-    #[arg(long)]
-    pub interpolate: bool,
-
-    /// A closed (periodic) curve, C^(p-1) at the seam
-    #[arg(long)]
-    pub closed: bool,
-
-    /// How data points get parameters when the file has no `parameter` column
-    #[arg(long, value_enum, value_name = "RULE", default_value = "chord-length")]
-    pub parametrization: ParametrizationArg,
-
-    /// How the points are weighted in least squares
-    #[arg(long, value_enum, value_name = "WEIGHTS", default_value = "none")]
-    pub weights: WeightsArg,
-
-    /// Smoothing: a penalty LAMBDA times the integral of the squared second derivative
-    #[arg(long, value_name = "LAMBDA", default_value_t = 0.0)]
-    pub smoothing: f64,
-
-    /// The kind of curve fitted
-    #[arg(long, value_enum, value_name = "KIND", default_value = "bspline")]
-    pub kind: FitKindArg,
-
-    /// Membership rule of the data's degrees and of the fitted curve's
-    #[arg(long, value_enum, value_name = "RULE", default_value = "neutrosophic")]
-    pub membership: MembershipArg,
+    /// The fit's options (defined by the library's `FitRequest`)
+    #[command(flatten)]
+    pub request: RequestArgs<FitRequest>,
 
     /// The report's format (on standard error)
     #[arg(long, value_enum, value_name = "FORMAT", default_value = "text")]
@@ -158,41 +88,6 @@ pub struct FitArgs {
     /// The model's name
     #[arg(long, value_name = "TEXT")]
     pub name: Option<String>,
-}
-
-impl FitArgs {
-    fn options(&self) -> FitOptions {
-        let target = if self.interpolate {
-            Some(FitTarget::Interpolate)
-        } else if let Some(n) = self.control_points {
-            Some(FitTarget::ControlPoints(n))
-        } else {
-            self.tolerance.map(FitTarget::Tolerance)
-        };
-        let mut options = FitOptions::default()
-            .with_degree(self.degree)
-            .with_closed(self.closed)
-            .with_parametrization(match self.parametrization {
-                ParametrizationArg::Uniform => Parametrization::Uniform,
-                ParametrizationArg::ChordLength => Parametrization::ChordLength,
-                ParametrizationArg::Centripetal => Parametrization::Centripetal,
-            })
-            .with_weights(match self.weights {
-                WeightsArg::None => DataWeights::None,
-                WeightsArg::Column => DataWeights::Given,
-                WeightsArg::Score => DataWeights::Score,
-            })
-            .with_smoothing(self.smoothing)
-            .with_kind(match self.kind {
-                FitKindArg::Bspline => FitKind::BSpline,
-                FitKindArg::Bezier => FitKind::Bezier,
-            })
-            .with_membership(self.membership.into());
-        if let Some(target) = target {
-            options = options.with_target(target);
-        }
-        options
-    }
 }
 
 /// The fitted curve of either dimension, with its parameters and report.
@@ -256,38 +151,14 @@ pub fn run(args: &FitArgs) -> anyhow::Result<()> {
         .as_deref()
         .map(FigureFormat::from_path)
         .transpose()?;
-    if let Some(e) = args.tolerance {
-        if !(e > 0.0 && e.is_finite()) {
-            return Err(UsageError(format!(
-                "--tolerance {e}: the tolerance must be a positive finite number"
-            ))
-            .into());
-        }
-    }
-    if !(args.smoothing >= 0.0 && args.smoothing.is_finite()) {
-        return Err(UsageError(format!(
-            "--smoothing {}: the smoothing weight must be a non-negative finite number",
-            args.smoothing
-        ))
-        .into());
-    }
-    let membership: Membership = args.membership.into();
+    let request = args.request.request()?;
+    let options = request.validate().map_err(|e| UsageError(e.to_string()))?;
+    let membership = request.membership;
     let table = read_data(&args.data, membership)?;
-    if args.weights == WeightsArg::Column && table.weights().is_none() {
-        return Err(UsageError(format!(
-            "--weights column: {} has no `weight` column",
-            table.file()
-        ))
-        .into());
-    }
-    if args.weights != WeightsArg::Column && table.weights().is_some() {
-        return Err(UsageError(format!(
-            "{} has a `weight` column: give --weights column to use it (or remove the column)",
-            table.file()
-        ))
-        .into());
-    }
-    let fitted = fit_table(&table, &args.options())?;
+    request
+        .check_data_weights(table.file(), table.weights().is_some())
+        .map_err(|e| UsageError(e.to_string()))?;
+    let fitted = fit_table(&table, &options)?;
     let mut model = match &fitted {
         Fitted::Planar(f) => Model::new(f.curve.clone()),
         Fitted::Spatial(f) => Model::new(f.curve.clone()),

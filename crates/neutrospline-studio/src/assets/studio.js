@@ -911,10 +911,10 @@
       closed: $('#fit-closed').checked,
     };
     if (target === 'interpolate') options.interpolate = true;
-    else if (target === 'control-points' && value) options.controlPoints = Number(value);
+    else if (target === 'control-points' && value) options['control-points'] = Number(value);
     else if (target === 'tolerance' && value) options.tolerance = Number(value);
-    const membership = (state.model && state.model.membership) || 'neutrosophic';
-    const r = await postJson('/api/fit', { data: state.data, membership, options });
+    options.membership = (state.model && state.model.membership) || 'neutrosophic';
+    const r = await postJson('/api/fit', { data: state.data, options });
     if (!r.ok) { alertMessage(r.value.error.message); return; }
     const rep = r.value.report;
     $('#fit-report').textContent = [

@@ -38,6 +38,7 @@ mod choose;
 mod knots;
 mod qp;
 mod report;
+mod request;
 mod solve;
 mod system;
 mod width;
@@ -50,6 +51,7 @@ use crate::degrees::{DegreeError, DegreeKind, Degrees, Membership};
 
 pub use knots::Parametrization;
 pub use report::{AtBound, FitReport};
+pub use request::FitRequest;
 
 /// Data to fit: points with their degrees, and optionally their parameters and weights.
 #[derive(Clone, Debug, PartialEq)]
@@ -329,6 +331,11 @@ impl FitOptions {
     /// The membership rule.
     pub fn membership(&self) -> Membership {
         self.membership
+    }
+
+    /// The target, or `None` for the default (a tolerance of 1e-3 of the data's diagonal).
+    pub fn target(&self) -> Option<FitTarget> {
+        self.target
     }
 }
 
