@@ -3,18 +3,19 @@
 use std::path::PathBuf;
 
 use neutrospline::fit::{
-    channel_names, fit as fit_curve, DataWeights, Fit, FitData, FitError, FitKind, FitOptions,
-    FitReport, FitTarget, Parametrization,
+    channel_names, fit as fit_curve, DataWeights, Fit, FitData, FitError, FitReport, FitRequest,
 };
+use neutrospline::options::{OptionSet, OptionValue};
 use neutrospline::{Degrees, Membership};
 use neutrospline_io::{load_data, DataTable, Model};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyTuple};
+use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 
 use crate::arrays::{float_array, vector};
 use crate::curve;
 use crate::errors::{invalid, invalid_at};
-use crate::model::{self, PointArrays};
+use crate::model::PointArrays;
+use crate::options;
 
 /// Where the data comes from: arrays, or a CSV data file (its errors located by line).
 enum Source {
@@ -87,35 +88,6 @@ impl Source {
     }
 }
 
-/// Parses a parametrization name.
-fn parametrization(name: &str) -> PyResult<Parametrization> {
-    [
-        Parametrization::Uniform,
-        Parametrization::ChordLength,
-        Parametrization::Centripetal,
-    ]
-    .into_iter()
-    .find(|p| p.name() == name)
-    .ok_or_else(|| {
-        invalid_at(
-            "parametrization",
-            format!("{name:?} is not one of \"uniform\", \"chord-length\", \"centripetal\""),
-        )
-    })
-}
-
-/// Parses a fitted kind name.
-fn fit_kind(name: &str) -> PyResult<FitKind> {
-    match name {
-        "bspline" => Ok(FitKind::BSpline),
-        "bezier" => Ok(FitKind::Bezier),
-        other => Err(invalid_at(
-            "kind",
-            format!("{other:?} is not one of \"bspline\", \"bezier\""),
-        )),
-    }
-}
-
 /// The report as the dictionary of `neutrospline fit --report json`, plus the fitted
 /// parameters of the points.
 fn report_dict<'py>(
@@ -168,6 +140,10 @@ fn report_dict<'py>(
 /// per point. The report is the dictionary of `neutrospline fit --report json` with the
 /// points' fitted `parameters` added.
 ///
+/// The fit's options are keyword arguments named as the command line's flags
+/// (`control_points` for `--control-points`), with the library's defaults and messages:
+/// `fit_options()` lists them (degree 3, chord-length parameters, ...).
+///
 /// >>> import numpy as np, neutrospline as ns
 /// >>> t = np.linspace(0.0, 1.0, 50)
 /// >>> positions = np.column_stack([t, t * t])
@@ -176,37 +152,24 @@ fn report_dict<'py>(
 /// >>> type(curve).__name__, report["control_points"], report["max_error"]["y"] < 1e-14
 /// ('BSpline', 4, True)
 #[pyfunction]
-#[pyo3(signature = (data, degrees = None, *, parameters = None, weights = None, degree = 3, control_points = None, tolerance = None, interpolate = false, closed = false, parametrization = "chord-length", smoothing = 0.0, kind = "bspline", membership = "neutrosophic", name = None))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (data, degrees = None, *, parameters = None, weights = None, name = None, **options))]
 pub fn fit<'py>(
     py: Python<'py>,
     data: &Bound<'py, PyAny>,
     degrees: Option<&Bound<'py, PyAny>>,
     parameters: Option<&Bound<'py, PyAny>>,
     weights: Option<&Bound<'py, PyAny>>,
-    degree: usize,
-    control_points: Option<usize>,
-    tolerance: Option<f64>,
-    interpolate: bool,
-    closed: bool,
-    parametrization: &str,
-    smoothing: f64,
-    kind: &str,
-    membership: &str,
     name: Option<String>,
+    options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyTuple>> {
-    let membership_rule = model::membership(membership)?;
-    let target = match (control_points, tolerance, interpolate) {
-        (None, None, false) => None,
-        (Some(n), None, false) => Some(FitTarget::ControlPoints(n)),
-        (None, Some(e), false) => Some(FitTarget::Tolerance(e)),
-        (None, None, true) => Some(FitTarget::Interpolate),
-        _ => {
-            return Err(invalid(
-                "control_points, tolerance and interpolate exclude each other (give one)",
-            ))
-        }
-    };
+    let mut request = FitRequest::default();
+    options::set_from_kwargs(&mut request, options)?;
+    if let Some(rule) = weights.filter(|w| w.is_instance_of::<PyString>()) {
+        request
+            .set("weights", OptionValue::Text(rule.extract()?))
+            .map_err(invalid)?;
+    }
+    let membership_rule = request.membership;
     let source = read_source(data, degrees, membership_rule)?;
     let description = match &source {
         Source::File(table) => format!(
@@ -223,18 +186,8 @@ pub fn fit<'py>(
             Source::File(table) => table.parameters().map(<[f64]>::to_vec),
             Source::Arrays { .. } => None,
         });
-    let (data_weights, weight_values) = read_weights(weights, &source)?;
-    let mut options = FitOptions::default()
-        .with_degree(degree)
-        .with_closed(closed)
-        .with_parametrization(self::parametrization(parametrization)?)
-        .with_weights(data_weights)
-        .with_smoothing(smoothing)
-        .with_kind(fit_kind(kind)?)
-        .with_membership(membership_rule);
-    if let Some(target) = target {
-        options = options.with_target(target);
-    }
+    let weight_values = read_weights(weights, &mut request, &source)?;
+    let options = request.validate().map_err(invalid)?;
     let fitted = py
         .detach(|| -> Result<Fitted, FitError> {
             Ok(if source.dimension() == 3 {
@@ -304,34 +257,45 @@ fn read_source(
     })
 }
 
-/// Reads `weights`: None, `"score"`, `"column"` or one weight per point.
+/// The data's weights: an array of weights (then the `weights` option is `column`), or the
+/// file's weight column, which the `weights` option must ask for (and only then).
 fn read_weights(
     weights: Option<&Bound<'_, PyAny>>,
+    request: &mut FitRequest,
     source: &Source,
-) -> PyResult<(DataWeights, Option<Vec<f64>>)> {
-    let Some(weights) = weights else {
-        return Ok((DataWeights::None, None));
-    };
-    if let Ok(text) = weights.extract::<String>() {
-        return match (text.as_str(), source) {
-            ("score", _) => Ok((DataWeights::Score, None)),
-            ("column", Source::File(table)) => match table.weights() {
-                Some(w) => Ok((DataWeights::Given, Some(w.to_vec()))),
-                None => Err(invalid_at(
-                    "weights",
-                    format!("\"column\": {} has no weight column", table.file()),
-                )),
-            },
-            ("column", Source::Arrays { .. }) => Err(invalid_at(
-                "weights",
-                "\"column\" reads a data file's weight column; with arrays, give the weights",
-            )),
-            (other, _) => Err(invalid_at(
-                "weights",
-                format!("{other:?} is not \"score\", \"column\" or an array of weights"),
-            )),
-        };
+) -> PyResult<Option<Vec<f64>>> {
+    if let Some(array) = weights.filter(|w| !w.is_instance_of::<PyString>()) {
+        request
+            .set("weights", OptionValue::Text("column".into()))
+            .map_err(invalid)?;
+        return Ok(Some(float_array(array, "weights")?.values()?.to_vec()));
     }
-    let values = float_array(weights, "weights")?.values()?.to_vec();
-    Ok((DataWeights::Given, Some(values)))
+    match source {
+        Source::File(table) => {
+            request
+                .check_data_weights(table.file(), table.weights().is_some())
+                .map_err(invalid)?;
+            Ok(table
+                .weights()
+                .filter(|_| request.weights == DataWeights::Given)
+                .map(<[f64]>::to_vec))
+        }
+        Source::Arrays { .. } if request.weights == DataWeights::Given => Err(invalid_at(
+            "weights",
+            "\"column\" reads a data file's weight column; with arrays, give the weights",
+        )),
+        Source::Arrays { .. } => Ok(None),
+    }
+}
+
+/// The options of `fit`, from the library that defines them: one dictionary per option with
+/// its keyword `name`, the command line's `option`, `kind`, `choices`, `default`,
+/// `default_text` (as the command line writes it) and `help`.
+///
+/// >>> import neutrospline as ns
+/// >>> [o["default"] for o in ns.fit_options() if o["name"] == "degree"]
+/// [3]
+#[pyfunction]
+pub fn fit_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
+    options::table::<FitRequest>(py)
 }

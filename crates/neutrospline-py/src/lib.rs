@@ -15,6 +15,7 @@ mod errors;
 mod fitting;
 mod functions;
 mod model;
+mod options;
 mod surface;
 
 /// The extension module `neutrospline._neutrospline`.
@@ -36,6 +37,7 @@ fn _neutrospline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(functions::check_relation, m)?)?;
     m.add_function(wrap_pyfunction!(functions::_restore, m)?)?;
     m.add_function(wrap_pyfunction!(fitting::fit, m)?)?;
+    m.add_function(wrap_pyfunction!(fitting::fit_options, m)?)?;
     m.add("instruction_set", neutrospline::batch::instruction_set())?;
     Ok(())
 }

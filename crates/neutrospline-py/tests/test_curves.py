@@ -440,8 +440,80 @@ def test_fit_interpolates_and_reports():
         ns.fit(positions, degrees, interpolate=True, control_points=5)
     with pytest.raises(ns.ModelError, match="^degrees: missing"):
         ns.fit(positions)
-    with pytest.raises(ns.ModelError, match="^parametrization: "):
+    with pytest.raises(ns.ModelError, match="^parametrization = "):
         ns.fit(positions, degrees, parametrization="arc")
+
+
+TARGETS = "(give one target: interpolate, control-points or tolerance)"
+
+
+@pytest.mark.parametrize(
+    "options, message",
+    [
+        # The same messages as `neutrospline fit` and the studio print (crates/neutrospline-cli/tests/fit.rs).
+        (dict(interpolate=True, control_points=4), f"interpolate and control-points exclude each other {TARGETS}"),
+        (dict(tolerance=0.5, control_points=4), f"control-points and tolerance exclude each other {TARGETS}"),
+        (dict(interpolate=True, tolerance=0.5), f"interpolate and tolerance exclude each other {TARGETS}"),
+        (dict(tolerance=0), "tolerance = 0: the tolerance must be a positive finite number"),
+        (dict(smoothing=-1), "smoothing = -1: the smoothing weight must be a non-negative finite number"),
+        (dict(degree=5.0), "degree = 5.0: expected a whole number"),
+        (dict(degree=-1), "degree = -1: expected a whole number"),
+        (dict(degree="5"), 'degree = "5": expected a whole number'),
+        (dict(closed="yes"), 'closed = "yes": expected true or false'),
+        (dict(parametrization="arc"), 'parametrization = "arc": expected one of uniform, chord-length, centripetal'),
+        (
+            dict(controlpoints=4),
+            'unknown option "controlpoints" (the options are degree, interpolate, control-points, '
+            "tolerance, closed, parametrization, weights, smoothing, kind, membership)",
+        ),
+    ],
+)
+def test_fit_options_are_refused_with_the_librarys_messages(options, message):
+    t = np.linspace(0.0, 1.0, 10)
+    positions = np.column_stack([t, t * t])
+    degrees = np.column_stack([t, 0.5 * np.ones_like(t), 1 - t])
+    with pytest.raises(ns.ModelError) as raised:
+        ns.fit(positions, degrees, **options)
+    assert str(raised.value) == message
+
+
+def test_a_weight_column_is_used_only_when_asked_for(tmp_path):
+    data = tmp_path / "d.csv"
+    data.write_text("x,y,T,I,F,weight\n0,0,1,0,0,1\n1,1,1,0,0,2\n2,0,1,0,0,1\n3,1,1,0,0,1\n")
+    with pytest.raises(ns.ModelError) as raised:
+        ns.fit(str(data), control_points=3, degree=2)
+    assert str(raised.value) == (
+        f"{data} has a `weight` column: set weights to column to use it (or remove the column)"
+    )
+    curve, report = ns.fit(str(data), control_points=3, degree=2, weights="column")
+    plain = tmp_path / "p.csv"
+    plain.write_text("x,y,T,I,F\n0,0,1,0,0\n1,1,1,0,0\n2,0,1,0,0\n3,1,1,0,0\n")
+    with pytest.raises(ns.ModelError) as raised:
+        ns.fit(str(plain), weights="column")
+    assert str(raised.value) == f"weights = column: {plain} has no `weight` column"
+
+
+def test_fit_options_are_the_librarys_and_the_stubs_defaults(cli, root):
+    import ast
+
+    options = {o["name"]: o for o in ns.fit_options()}
+    assert options["degree"]["default"] == 3 and options["degree"]["option"] == "degree"
+    assert options["control_points"]["default"] is None
+    assert options["parametrization"]["choices"] == ["uniform", "chord-length", "centripetal"]
+    # The stub documents the same defaults.
+    stub = ast.parse((root / "crates/neutrospline-py/python/neutrospline/_neutrospline.pyi").read_text())
+    fit = next(n for n in stub.body if isinstance(n, ast.FunctionDef) and n.name == "fit")
+    documented = {a.arg: ast.literal_eval(d) for a, d in zip(fit.args.kwonlyargs, fit.args.kw_defaults)}
+    for name, option in options.items():
+        # `weights` also takes the weights themselves; None is the rule "none".
+        want = None if name == "weights" else option["default"]
+        assert documented[name] == want, name
+    # And the command line shows them in its help.
+    helptext = run_cli(cli, "fit", "--help", cwd=root).stdout
+    for option in options.values():
+        assert f"--{option['option']}" in helptext
+        if option["kind"] != "bool" and option["default"] is not None:
+            assert f"[default: {option['default_text']}]" in helptext
 
 
 # ---- threads ----

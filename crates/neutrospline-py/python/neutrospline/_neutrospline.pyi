@@ -283,7 +283,8 @@ def fit(
     degrees: Optional[ArrayLike] = None,
     *,
     parameters: Optional[ArrayLike] = None,
-    weights: Union[None, Literal["score", "column"], ArrayLike] = None,
+    weights: Union[None, Literal["none", "score", "column"], ArrayLike] = None,
+    name: Optional[str] = None,
     degree: int = 3,
     control_points: Optional[int] = None,
     tolerance: Optional[float] = None,
@@ -293,6 +294,6 @@ def fit(
     smoothing: float = 0.0,
     kind: Literal["bspline", "bezier"] = "bspline",
     membership: Membership = "neutrosophic",
-    name: Optional[str] = None,
 ) -> Tuple[Union[Bezier, BSpline], dict[str, Any]]: ...
+def fit_options() -> list[dict[str, Any]]: ...
 def _restore(text: str, order: int) -> Model: ...
