@@ -24,10 +24,8 @@ use neutrospline::{
     Evaluate, EvaluateSurface, KnotVector, Membership, Nurbs, Surface,
 };
 
-use neutrospline_io::{
-    ExportFormat, ExportOptions, Format, Kind, KnotRule, KnotSpec, Limits, Model, ReadError,
-    ReadOptions,
-};
+use neutrospline_exchange::{ExportFormat, ExportOptions};
+use neutrospline_io::{Format, Kind, KnotRule, KnotSpec, Limits, Model, ReadError, ReadOptions};
 
 use crate::shape::{Extras, Param, Shape, Table};
 
@@ -123,7 +121,7 @@ fn import_defaults() -> Degrees {
 pub fn dxf_model(data: &[u8]) {
     imported(
         "DXF",
-        neutrospline_io::parse_dxf(FILE, data, import_defaults(), &Limits::default()),
+        neutrospline_exchange::parse_dxf(FILE, data, import_defaults(), &Limits::default()),
     );
 }
 
@@ -131,7 +129,7 @@ pub fn dxf_model(data: &[u8]) {
 pub fn svg_model(data: &[u8]) {
     imported(
         "SVG",
-        neutrospline_io::parse_svg(FILE, data, import_defaults(), &Limits::default()),
+        neutrospline_exchange::parse_svg(FILE, data, import_defaults(), &Limits::default()),
     );
 }
 
@@ -147,10 +145,11 @@ fn imported(read_as: &str, result: Result<Vec<Model>, ReadError>) {
         }
         check_shape(model.shape());
         check_round_trip(model, read_as);
-        let dxf = neutrospline_io::export(model, ExportFormat::Dxf, &ExportOptions::new())
+        let dxf = neutrospline_exchange::export(model, ExportFormat::Dxf, &ExportOptions::new())
             .unwrap_or_else(|e| panic!("{read_as} read, DXF export: {e}"));
-        let back = neutrospline_io::parse_dxf(FILE, &dxf, import_defaults(), &Limits::default())
-            .unwrap_or_else(|e| panic!("{read_as} read, DXF written, read back: {e}"));
+        let back =
+            neutrospline_exchange::parse_dxf(FILE, &dxf, import_defaults(), &Limits::default())
+                .unwrap_or_else(|e| panic!("{read_as} read, DXF written, read back: {e}"));
         assert_eq!(
             back,
             std::slice::from_ref(model),

@@ -5,7 +5,8 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
-use neutrospline_io::{load, ColorBy, ExportFormat, ExportOptions, ReadOptions};
+use neutrospline_exchange::{ColorBy, ExportFormat, ExportOptions};
+use neutrospline_io::{load, ReadOptions};
 
 const BIN: &str = env!("CARGO_BIN_EXE_neutrospline");
 
@@ -117,7 +118,7 @@ fn export_writes_the_library_bytes_for_every_format() {
         let written = std::fs::read(dir.path().join(out)).unwrap();
         let model = load(&path, &ReadOptions::default()).unwrap();
         let format = ExportFormat::from_path(out).unwrap();
-        let expected = neutrospline_io::export(&model, format, &options).unwrap();
+        let expected = neutrospline_exchange::export(&model, format, &options).unwrap();
         assert!(written == expected, "{out}: not the library's export");
     }
     // Nothing but the seven files (no temporary file left behind).

@@ -1,4 +1,5 @@
-//! [`AtomicFile`]: a new version of a file that replaces the old one only when complete.
+//! [`AtomicFile`]: a new version of a file that replaces the old one only when complete;
+//! [`write_atomically`] for bytes held in memory.
 
 use std::ffi::OsString;
 use std::fs::{self, File, OpenOptions};
@@ -139,6 +140,20 @@ impl Drop for AtomicFile {
     }
 }
 
+/// Replaces the file at `path` by `bytes` through an [`AtomicFile`]: readers see the old
+/// contents or the new, never a part, and on any error the old file is left as it was and the
+/// temporary file removed. A symbolic link is followed: its target is replaced. (A writer that
+/// streams what it computes, or must check for an interruption before the rename, uses
+/// [`AtomicFile`] itself.)
+///
+/// # Errors
+/// As [`AtomicFile::create`], a write error, and as [`AtomicFile::commit`].
+pub fn write_atomically(path: impl AsRef<Path>, bytes: &[u8]) -> io::Result<()> {
+    let mut file = AtomicFile::create(path)?;
+    file.write_all(bytes)?;
+    file.commit()
+}
+
 /// Creates `.NAME.PID-N.tmp` in `dir`, a name no other file has.
 fn create_temp(dir: &Path, file_name: &std::ffi::OsStr) -> io::Result<(PathBuf, File)> {
     let mut attempt = 0u32;
@@ -183,6 +198,24 @@ mod tests {
         file.commit().unwrap();
         assert_eq!(fs::read_to_string(&path).unwrap(), "new\n");
         assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
+    #[test]
+    fn write_atomically_replaces_or_keeps() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("out.glb");
+        fs::write(&path, "old\n").unwrap();
+        write_atomically(&path, b"new\0bytes").unwrap();
+        assert_eq!(fs::read(&path).unwrap(), b"new\0bytes");
+        assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 1);
+        // A directory is refused and left alone; nothing is left behind.
+        let sub = dir.path().join("sub");
+        fs::create_dir(&sub).unwrap();
+        let e = write_atomically(&sub, b"x").unwrap_err();
+        assert_eq!(e.to_string(), "it is a directory");
+        assert!(sub.is_dir());
+        assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 2);
+        assert_eq!(fs::read(&path).unwrap(), b"new\0bytes");
     }
 
     #[test]

@@ -27,8 +27,10 @@ pub struct InputError {
 }
 
 impl InputError {
-    /// An error in `file`.
-    pub(crate) fn new(
+    /// An error in `file` (the name shown), at its 1-based `line` and in its `field` when they
+    /// are known: `message` names the value and the rule it breaks. For a reader of another
+    /// format whose errors should read as this crate's (the DXF and SVG importers).
+    pub fn new(
         file: &str,
         line: Option<usize>,
         field: Option<String>,
@@ -85,6 +87,19 @@ pub struct UnsupportedFormat {
 }
 
 impl UnsupportedFormat {
+    /// `path`, whose extension (lowercased; `None` if it has none) names no format of the
+    /// caller's: [`Format::from_path`] gives it, and so does a front end choosing among formats
+    /// of its own (the export formats).
+    pub fn new(path: impl AsRef<std::path::Path>) -> UnsupportedFormat {
+        let path = path.as_ref();
+        UnsupportedFormat {
+            path: path.display().to_string(),
+            extension: path
+                .extension()
+                .map(|e| e.to_string_lossy().to_ascii_lowercase()),
+        }
+    }
+
     /// The message with `accepted` as the list of what is accepted: a front end that accepts
     /// more (standard input, say) says so. [`Display`](fmt::Display) uses
     /// [`Format::ACCEPTED`].

@@ -49,10 +49,7 @@ impl Format {
         let extension = path.extension().map(|e| e.to_string_lossy());
         match extension.as_deref().map(Format::from_extension) {
             Some(Some(format)) => Ok(format),
-            _ => Err(UnsupportedFormat {
-                path: path.display().to_string(),
-                extension: extension.map(|e| e.to_ascii_lowercase()),
-            }),
+            _ => Err(UnsupportedFormat::new(path)),
         }
     }
 }
@@ -74,9 +71,10 @@ pub const DEFAULT_MAX_CONTROL_POINTS: u64 = 1_000_000;
 pub const DEFAULT_MAX_FILE_SIZE: u64 = 256 * 1024 * 1024;
 /// The longest line (or quoted multi-line record) a CSV file may have, in bytes: a control
 /// point row is a few dozen bytes.
-pub const MAX_CSV_LINE: usize = 1024 * 1024;
+pub(crate) const MAX_CSV_LINE: usize = 1024 * 1024;
 /// The largest degree or count of control points accepted in files (larger values are surely
-/// mistakes; every integer up to it is exact in a 64-bit float).
+/// mistakes; every integer up to it is exact in a 64-bit float). A front end that takes a
+/// degree or a count as an option (`--degree`, `--rows`) accepts the same range.
 pub const MAX_INTEGER: u64 = 1_000_000_000;
 
 /// Resource limits of reading, so that an absurd input is refused with a clear error instead
@@ -103,6 +101,21 @@ impl Default for Limits {
     }
 }
 
+impl Limits {
+    /// The message refusing a model with more than [`Limits::max_control_points`] control
+    /// points, naming the option and the environment variable that raise the limit: a reader of
+    /// another format (DXF, SVG) refuses with the same words, located in its file
+    /// ([`InputError::new`](crate::InputError::new)).
+    ///
+    /// ```
+    /// let limits = neutrospline_io::Limits::default();
+    /// assert!(limits.too_many_control_points().starts_with("more than 1000000 control points"));
+    /// ```
+    pub fn too_many_control_points(&self) -> String {
+        too_many_points(self.max_control_points)
+    }
+}
+
 /// The message for a model with too many control points.
 pub(crate) fn too_many_points(limit: u64) -> String {
     format!(
@@ -117,14 +130,6 @@ pub(crate) fn too_large(limit: u64) -> String {
         "the file is larger than {limit} bytes, the limit for a TOML or JSON file (raise it \
          with --max-file-size or NEUTROSPLINE_MAX_FILE_SIZE; CSV files are streamed and have no \
          size limit)"
-    )
-}
-
-/// The message for a DXF or SVG file larger than `limit` bytes.
-pub(crate) fn too_large_drawing(limit: u64) -> String {
-    format!(
-        "the file is larger than {limit} bytes, the limit for a file read whole (raise it with \
-         --max-file-size or NEUTROSPLINE_MAX_FILE_SIZE)"
     )
 }
 

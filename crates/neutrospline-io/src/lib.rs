@@ -15,18 +15,15 @@
 //!   `parameter` and `weight` columns) into a [`DataTable`], whose errors and fitting errors
 //!   are located by line.
 //! - Writing: [`to_toml_string`], [`to_json_string`], [`to_csv_string`] and [`save`], which
-//!   replaces a file atomically ([`AtomicFile`]). Whatever is written reads back to an equal
-//!   model, numbers to the last bit.
-//! - Exporting to CAD and 3-D programs: [`export`] and [`export_file`] write DXF (a curve as
-//!   one exact SPLINE entity, a surface as a POLYFACE mesh), glTF 2.0 (`.glb`, `.gltf`), PLY
-//!   and OBJ (sampled polylines and triangle meshes), with the degrees kept where the format
-//!   can carry them ([`ExportFormat`], [`ExportOptions`]).
-//! - Importing curves from CAD programs: [`load_dxf`] and [`parse_dxf`] read the SPLINE
-//!   entities of a DXF file exactly, with the degrees the exporter keeps in their extended data
-//!   (a DXF export reads back to an equal model, numbers to the last bit); [`load_svg`] and
-//!   [`parse_svg`] read the path data of an SVG file's `<path>` elements (lines, Bézier
-//!   segments, elliptical arcs as exact rational quadratic pieces), `<polyline>`s and
-//!   `<polygon>`s as curves.
+//!   replaces a file atomically. Whatever is written reads back to an equal model, numbers to
+//!   the last bit.
+//! - For programs built on these files (the command line, the studio, the exchange crate
+//!   `neutrospline-exchange`, which reads DXF and SVG into a [`Model`] and exports models to
+//!   CAD and 3-D formats): [`AtomicFile`] and [`write_atomically`] replace any file atomically;
+//!   [`format_number`] and [`push_number`] write a number as every table and message of the
+//!   workspace does (shortest round trip, no exponent); [`InputError::new`] locates an error
+//!   of another reader, [`Limits::too_many_control_points`] words its refusal, and
+//!   [`MAX_INTEGER`] is the largest degree or count a file (or an option) may give.
 //!
 //! ```
 //! use neutrospline_io::{parse, to_json_string, Format, ReadOptions};
@@ -56,10 +53,7 @@ mod atomic;
 mod build;
 mod csv;
 mod data;
-mod dxf_import;
-mod dxf_xdata;
 mod error;
-mod export;
 mod format;
 mod model;
 mod number;
@@ -69,22 +63,14 @@ mod points;
 mod read;
 mod settings;
 mod shape;
-mod svg_import;
 mod tree;
 mod walker;
 mod write;
 
-pub use atomic::AtomicFile;
+pub use atomic::{write_atomically, AtomicFile};
 pub use data::{load_data, read_data, DataTable};
-pub use dxf_import::{load_dxf, parse_dxf};
 pub use error::{InputError, ReadError, UnsupportedFormat, WriteError};
-pub use export::{
-    export, export_file, ColorBy, ExportError, ExportFormat, ExportOptions, MAX_CURVE_SAMPLES,
-    MAX_SURFACE_SAMPLES,
-};
-pub use format::{
-    Format, Limits, DEFAULT_MAX_CONTROL_POINTS, DEFAULT_MAX_FILE_SIZE, MAX_CSV_LINE, MAX_INTEGER,
-};
+pub use format::{Format, Limits, DEFAULT_MAX_CONTROL_POINTS, DEFAULT_MAX_FILE_SIZE, MAX_INTEGER};
 pub use model::{KnotSource, Model, ModelError};
 pub use number::{format_number, push_number};
 pub use options::ReadOptions;
@@ -92,5 +78,4 @@ pub use points::{load_points, read_points, PointTable};
 pub use read::{load, parse, read_csv};
 pub use settings::{Kind, KnotRule, KnotSpec};
 pub use shape::Shape;
-pub use svg_import::{load_svg, parse_svg};
 pub use write::{save, to_csv_string, to_json_string, to_string, to_toml_string};

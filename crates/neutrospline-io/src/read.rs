@@ -112,28 +112,6 @@ pub(crate) fn open_file(path: &Path) -> Result<(std::fs::File, String), ReadErro
     Ok((file, shown))
 }
 
-/// Reads the file at `path` whole, at most `limit` bytes (one more byte read at most: a file
-/// may grow while it is read); a larger file is refused with `too_large(limit)`. Returns the
-/// path as messages show it and the bytes.
-pub(crate) fn read_whole(
-    path: &Path,
-    limit: u64,
-    too_large: fn(u64) -> String,
-) -> Result<(String, Vec<u8>), ReadError> {
-    let (file, shown) = open_file(path)?;
-    let mut bytes = Vec::new();
-    file.take(limit.saturating_add(1))
-        .read_to_end(&mut bytes)
-        .map_err(|error| ReadError::Io {
-            path: shown.clone(),
-            error,
-        })?;
-    if bytes.len() as u64 > limit {
-        return Err(InputError::new(&shown, None, None, too_large(limit)).into());
-    }
-    Ok((shown, bytes))
-}
-
 /// Refuses a model with more control points than the limit, then builds the shape.
 fn build(parsed: Parsed, options: &ReadOptions) -> Result<Model, ReadError> {
     let limit = options.limits.max_control_points;

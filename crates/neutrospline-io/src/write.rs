@@ -320,7 +320,7 @@ fn csv_name(out: &mut String, name: &str) {
 /// # Errors
 /// [`WriteError::Unrepresentable`] for a control point name that a CSV cell cannot hold
 /// (empty, or with leading or trailing whitespace), or a row longer than the CSV reader's
-/// line limit ([`crate::MAX_CSV_LINE`]).
+/// line limit (1 MiB: 1,048,576 bytes).
 pub fn to_csv_string(model: &Model) -> Result<String, WriteError> {
     let unrepresentable = |message: String| WriteError::Unrepresentable {
         path: None,

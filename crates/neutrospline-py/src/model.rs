@@ -2,12 +2,11 @@
 //! a membership rule, names), saving it through the formats crate, drawing it with the plot
 //! crate, and carrying it through pickle.
 
-use std::io::Write;
 use std::path::Path;
 use std::str::FromStr;
 
 use neutrospline::{ControlPoint, Degrees, Membership};
-use neutrospline_io::{AtomicFile, Format, Model, ReadOptions, Shape};
+use neutrospline_io::{write_atomically, Format, Model, ReadOptions, Shape};
 use neutrospline_plot::{render_png, render_svg, PlotModel, PlotOptions, View};
 use pyo3::exceptions::PyOSError;
 use pyo3::prelude::*;
@@ -318,9 +317,7 @@ pub fn save_figure(
         .map_err(invalid)?;
     let failed =
         |e: std::io::Error| PyOSError::new_err(format!("{}: cannot write: {e}", path.display()));
-    let mut file = AtomicFile::create(path).map_err(failed)?;
-    file.write_all(&bytes).map_err(failed)?;
-    file.commit().map_err(failed)
+    write_atomically(path, &bytes).map_err(failed)
 }
 
 /// The model as JSON text (17 significant digits: the round trip is exact), for pickle.

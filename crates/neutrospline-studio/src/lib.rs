@@ -12,17 +12,16 @@
 //! canvases (`paint.js`), which is several times faster for the browser than laying out SVG.
 //!
 //! ## The public items
-//! - [`Studio`]: the model the studio was started with and the one file it may write;
-//!   answers the page's requests ([`Handler`]; the routes are listed in the `api` module).
+//! What starts the studio, as the CLI's `studio` command does:
+//! - [`Studio`]: the model the studio was started with and the one file it may write; it
+//!   answers the page's requests (the routes are listed in the `api` module).
 //! - [`Server`]: the HTTP/1.1 server, one thread per connection, listening on 127.0.0.1
-//!   only; it refuses requests whose `Host` or `Origin` is not its own ([`check_origin`]) and
-//!   bodies over [`MAX_BODY`].
-//! - [`figure_options`]: the options `neutrospline plot` draws a model with by default; the
-//!   figure itself is `neutrospline_plot::PlotModel::from_model` (and
-//!   `DataOverlay::from_table` for data), the command's own code path, so an exported SVG is
-//!   the command's bytes; [`handles`] and [`space_handles`] locate the control points in a
-//!   `plane` view and say how dragging one moves it.
+//!   only; it refuses requests whose `Host` or `Origin` is not its own, and bodies over its
+//!   limit.
 //! - [`open_browser`]: asks the desktop to open a URL, quietly.
+//!
+//! The figures are `neutrospline_plot::PlotModel::from_model` (and `DataOverlay::from_table`
+//! for data), the `plot` command's own code path, so an exported SVG is the command's bytes.
 //!
 //! ```no_run
 //! use neutrospline_studio::{Server, Studio};
@@ -39,8 +38,7 @@ mod figure;
 mod http;
 
 pub use api::Studio;
-pub use figure::{figure_options, handles, space_handles, Handles};
-pub use http::{check_origin, Handler, Request, Response, Server, MAX_BODY};
+pub use http::Server;
 
 /// Asks the desktop to open `url` in the default browser (`xdg-open`, or `open` on macOS),
 /// without waiting and without output. Returns whether a program could be started.

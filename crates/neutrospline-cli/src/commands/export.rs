@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use neutrospline_io::{ColorBy, ExportError, ExportFormat, ExportOptions};
+use neutrospline_exchange::{ColorBy, ExportError, ExportFormat, ExportOptions};
 
 use crate::commands::options::ModelArgs;
 use crate::input::{self, UsageError};
@@ -73,7 +73,7 @@ pub fn run(args: &ExportArgs) -> anyhow::Result<()> {
         .with_mesh(args.mesh)
         .with_ascii(args.ascii);
     let model = input::read_model(&args.file, &args.model)?;
-    let bytes = neutrospline_io::export(&model, format, &options).map_err(|e| match e {
+    let bytes = neutrospline_exchange::export(&model, format, &options).map_err(|e| match e {
         e if e.is_usage() => anyhow::Error::new(UsageError(e.to_string())),
         ExportError::SurfaceNeedsMesh { .. } => {
             anyhow::Error::msg(format!("{}: {e}", input::label(&args.file)))

@@ -109,9 +109,9 @@ pub fn run(args: &ImportArgs) -> anyhow::Result<()> {
     let limits = crate::limits::current().file_limits();
     // The messages name the file and the cause already: no error chain.
     let models = if extension.as_deref() == Some("svg") {
-        neutrospline_io::load_svg(&args.input, defaults, &limits)
+        neutrospline_exchange::load_svg(&args.input, defaults, &limits)
     } else {
-        neutrospline_io::load_dxf(&args.input, defaults, &limits)
+        neutrospline_exchange::load_dxf(&args.input, defaults, &limits)
     }
     .map_err(|e| anyhow::Error::msg(e.to_string()))?;
     let shown = args.input.display();

@@ -22,7 +22,7 @@
 
 use neutrospline::{Degrees, Membership};
 
-use crate::Kind;
+use neutrospline_io::Kind;
 
 /// The application name of the extended data.
 pub(crate) const APP: &str = "NEUTROSPLINE";
@@ -406,7 +406,7 @@ mod tests {
                 XValue::Text(s) => s.clone(),
                 XValue::Short(n) => n.to_string(),
                 XValue::Long(n) => n.to_string(),
-                XValue::Real(r) => crate::format_number(*r),
+                XValue::Real(r) => neutrospline_io::format_number(*r),
             })
             .collect();
         let tags: Vec<XTag<'_>> = values

@@ -22,9 +22,8 @@ use neutrospline::{
 };
 
 use crate::dxf_xdata::{self, ModelInfo, XTag};
-use crate::format::{too_large_drawing, too_many_points};
 use crate::read::read_whole;
-use crate::{InputError, Kind, Limits, Model, ReadError};
+use neutrospline_io::{InputError, Kind, Limits, Model, ReadError};
 
 /// One group: its code, its value and the line of its code (1-based).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -294,7 +293,7 @@ fn model(
         return Err(at(s.line, message));
     }
     if s.points.len() as u64 > limits.max_control_points {
-        return Err(at(s.line, too_many_points(limits.max_control_points)));
+        return Err(at(s.line, limits.too_many_control_points()));
     }
     if s.knots.len() != knot_count {
         return Err(at(
@@ -419,7 +418,7 @@ fn model(
         }
         _ => vec![defaults; point_count],
     };
-    let shape: crate::Shape = match dimension {
+    let shape: neutrospline_io::Shape = match dimension {
         2 => curve::<2>(file, s, kind, degree, knots, weights, &positions, &degrees)?.into(),
         _ => curve::<3>(file, s, kind, degree, knots, weights, &positions, &degrees)?.into(),
     };
@@ -540,7 +539,7 @@ pub fn load_dxf(
     defaults: Degrees,
     limits: &Limits,
 ) -> Result<Vec<Model>, ReadError> {
-    let (shown, bytes) = read_whole(path.as_ref(), limits.max_file_size, too_large_drawing)?;
+    let (shown, bytes) = read_whole(path.as_ref(), limits.max_file_size)?;
     parse_dxf(&shown, &bytes, defaults, limits)
 }
 
@@ -553,7 +552,8 @@ mod tests {
     use neutrospline::{Evaluate, Membership};
 
     use super::*;
-    use crate::{export, load, ExportFormat, ExportOptions, ReadOptions, Shape};
+    use crate::{export, ExportFormat, ExportOptions};
+    use neutrospline_io::{load, ReadOptions, Shape};
 
     fn example(name: &str) -> Model {
         let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))

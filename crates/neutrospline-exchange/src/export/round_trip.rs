@@ -11,7 +11,7 @@ use serde_json::Value;
 
 use super::dxf_reader::{entities, groups, Spline};
 use super::{export, export_file, ColorBy, ExportError, ExportFormat, ExportOptions, Samples};
-use crate::{load, Model, ReadOptions, Shape};
+use neutrospline_io::{load, Model, ReadOptions, Shape};
 
 fn example(name: &str) -> Model {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))

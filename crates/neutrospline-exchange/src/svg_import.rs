@@ -31,9 +31,8 @@ use neutrospline::{
     AnyCurve, BSpline, Bezier, ControlPoint, ControlPolygon, Degrees, Elevate, KnotVector, Nurbs,
 };
 
-use crate::format::{too_large_drawing, too_many_points};
 use crate::read::read_whole;
-use crate::{InputError, Limits, Model, ReadError};
+use neutrospline_io::{InputError, Limits, Model, ReadError};
 
 /// An affine map of the plane, SVG's `matrix(a b c d e f)`: (x, y) -> (a x + c y + e,
 /// b x + d y + f).
@@ -821,7 +820,7 @@ pub fn parse_svg(
         for segments in subpaths {
             let curve = curve(&segments, &element.matrix, defaults).map_err(located)?;
             if curve.len() as u64 > limits.max_control_points {
-                return Err(located(too_many_points(limits.max_control_points)));
+                return Err(located(limits.too_many_control_points()));
             }
             let mut model = Model::new(curve);
             if let Some(id) = attribute("id") {
@@ -853,7 +852,7 @@ pub fn load_svg(
     defaults: Degrees,
     limits: &Limits,
 ) -> Result<Vec<Model>, ReadError> {
-    let (shown, bytes) = read_whole(path.as_ref(), limits.max_file_size, too_large_drawing)?;
+    let (shown, bytes) = read_whole(path.as_ref(), limits.max_file_size)?;
     parse_svg(&shown, &bytes, defaults, limits)
 }
 
@@ -863,7 +862,7 @@ mod tests {
     use proptest::prelude::*;
 
     use super::*;
-    use crate::{Kind, Shape};
+    use neutrospline_io::{Kind, Shape};
 
     fn defaults() -> Degrees {
         Degrees::new(0.6, 0.3, 0.1).unwrap()

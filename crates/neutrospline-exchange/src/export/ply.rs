@@ -8,8 +8,8 @@
 use std::fmt::Write as _;
 
 use super::{comment_text, title, ColorBy, Samples};
-use crate::number::push_number;
-use crate::Model;
+use neutrospline_io::push_number;
+use neutrospline_io::Model;
 
 /// The header, up to and including `end_header`.
 fn header(model: &Model, samples: &Samples, by: ColorBy, ascii: bool) -> String {

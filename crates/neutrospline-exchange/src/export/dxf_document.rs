@@ -10,7 +10,7 @@
 use std::fmt::Write as _;
 
 use crate::dxf_xdata::{XValue, APP};
-use crate::number::push_number;
+use neutrospline_io::push_number;
 
 /// DXF text being written: one group code (right-aligned in three columns, as AutoCAD writes
 /// it) and one value per line, with the next free handle.

@@ -9,8 +9,8 @@
 use std::fmt::Write as _;
 
 use super::{comment_text, title, ColorBy, Samples};
-use crate::format_number as number;
-use crate::Model;
+use neutrospline_io::format_number as number;
+use neutrospline_io::Model;
 
 /// The most vertices of one `l` line.
 pub(crate) const LINE_LENGTH: usize = 64;

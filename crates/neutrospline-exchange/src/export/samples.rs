@@ -8,7 +8,7 @@ use neutrospline::sample::{
 use neutrospline::{AnyCurve, Degrees, Evaluate, EvaluateSurface, Surface};
 
 use super::{ColorBy, ExportError};
-use crate::Shape;
+use neutrospline_io::Shape;
 
 /// Sampled points of a curve (a polyline through them, in order) or a surface (a triangle
 /// mesh with normals).

@@ -7,7 +7,7 @@ use neutrospline::{AnyCurve, Bounded, ControlPolygon, KnotVector};
 use super::dxf_document::{document, Extent, Tags};
 use super::{ColorBy, ExportError, Samples};
 use crate::dxf_xdata::{ModelInfo, XValue};
-use crate::{Model, Shape};
+use neutrospline_io::{Model, Shape};
 
 /// What the extended data of the model's entity says, with or without the control points'
 /// degrees and names.

@@ -13,7 +13,7 @@
 use serde_json::{json, Map, Value};
 
 use super::{ColorBy, Samples};
-use crate::Model;
+use neutrospline_io::Model;
 
 /// Component type FLOAT and UNSIGNED_INT; buffer view targets.
 const FLOAT: u32 = 5126;
@@ -161,7 +161,7 @@ fn build(model: &Model, samples: &Samples, by: ColorBy) -> (Map<String, Value>, 
     let document = json!({
         "asset": {
             "version": "2.0",
-            "generator": concat!("neutrospline-io ", env!("CARGO_PKG_VERSION")),
+            "generator": concat!("neutrospline-exchange ", env!("CARGO_PKG_VERSION")),
             "extras": extras,
         },
         "scene": 0,

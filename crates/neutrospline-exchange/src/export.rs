@@ -17,13 +17,12 @@ mod round_trip;
 mod samples;
 
 use std::fmt;
-use std::io::Write as _;
 use std::path::Path;
 use std::str::FromStr;
 
 use neutrospline::{Degrees, EvalError};
 
-use crate::{AtomicFile, Model, UnsupportedFormat};
+use neutrospline_io::{write_atomically, Model, UnsupportedFormat};
 
 pub(crate) use samples::Samples;
 
@@ -86,10 +85,7 @@ impl ExportFormat {
         ExportFormat::ALL
             .into_iter()
             .find(|f| extension.as_deref() == Some(f.extension()))
-            .ok_or_else(|| UnsupportedFormat {
-                path: path.display().to_string(),
-                extension,
-            })
+            .ok_or_else(|| UnsupportedFormat::new(path))
     }
 }
 
@@ -356,13 +352,10 @@ pub fn export_file(
     let path = path.as_ref();
     let format = ExportFormat::from_path(path).map_err(ExportError::Format)?;
     let bytes = export(model, format, options)?;
-    let io = |error| ExportError::Io {
+    write_atomically(path, &bytes).map_err(|error| ExportError::Io {
         path: path.display().to_string(),
         error,
-    };
-    let mut file = AtomicFile::create(path).map_err(io)?;
-    file.write_all(&bytes).map_err(io)?;
-    file.commit().map_err(io)
+    })
 }
 
 /// Text for one line of a comment in a file: control characters as spaces, and (for headers

@@ -1,0 +1,45 @@
+//! CAD and 3-D exchange of neutrospline models: curves imported from DXF and SVG drawings, and
+//! models exported to the formats of CAD and 3-D programs. The models are
+//! [`neutrospline_io::Model`]s, read and written as files by `neutrospline-io`; this crate adds
+//! the formats that only the command line (`neutrospline import`, `neutrospline export`)
+//! needs.
+//!
+//! - Exporting: [`export`] and [`export_file`] write DXF (a curve as one exact SPLINE entity, a
+//!   surface as a POLYFACE mesh), glTF 2.0 (`.glb`, `.gltf`), PLY and OBJ (sampled polylines
+//!   and triangle meshes), with the degrees kept where the format can carry them
+//!   ([`ExportFormat`], [`ExportOptions`], [`ColorBy`]).
+//! - Importing: [`load_dxf`] and [`parse_dxf`] read the SPLINE entities of a DXF file exactly,
+//!   with the degrees the exporter keeps in their extended data (a DXF export reads back to an
+//!   equal model, numbers to the last bit); [`load_svg`] and [`parse_svg`] read the path data
+//!   of an SVG file's `<path>` elements (lines, Bézier segments, elliptical arcs as exact
+//!   rational quadratic pieces), `<polyline>`s and `<polygon>`s as curves. Errors are
+//!   `neutrospline-io`'s [`ReadError`](neutrospline_io::ReadError)s, located at the file's line.
+//!
+//! ```
+//! use neutrospline::{example1, AnyCurve, Degrees};
+//! use neutrospline_exchange::{export, parse_dxf, ExportFormat, ExportOptions};
+//! use neutrospline_io::{Limits, Model};
+//!
+//! let model = Model::new(AnyCurve::Bezier(example1())).with_name("Example 1");
+//! let dxf = export(&model, ExportFormat::Dxf, &ExportOptions::new())?;
+//! // The degrees of a spline without neutrospline's extended data (another program's).
+//! let defaults = Degrees::new(1.0, 0.0, 0.0)?;
+//! let back = parse_dxf("example1.dxf", &dxf, defaults, &Limits::default())?;
+//! assert_eq!(back, [model]);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+#![deny(missing_docs)]
+#![forbid(unsafe_code)]
+
+mod dxf_import;
+mod dxf_xdata;
+mod export;
+mod read;
+mod svg_import;
+
+pub use dxf_import::{load_dxf, parse_dxf};
+pub use export::{
+    export, export_file, ColorBy, ExportError, ExportFormat, ExportOptions, MAX_CURVE_SAMPLES,
+    MAX_SURFACE_SAMPLES,
+};
+pub use svg_import::{load_svg, parse_svg};
