@@ -89,3 +89,103 @@ impl Drawing {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::drawing::Painter;
+
+    /// Writes each call as one line: the method and its numbers.
+    #[derive(Default)]
+    struct Calls(Vec<String>);
+
+    impl<'a> Encoder<'a> for Calls {
+        fn group(&mut self, class: &'a str) {
+            self.0.push(format!("group {class}"));
+        }
+        fn mesh_group(&mut self, class: &'a str, stroke_width: f64) {
+            self.0.push(format!("mesh_group {class} {stroke_width}"));
+        }
+        fn clip(&mut self, id: &'a str, rect: [f64; 4]) {
+            self.0.push(format!("clip {id} {rect:?}"));
+        }
+        fn end(&mut self) {
+            self.0.push("end".into());
+        }
+        fn rect(&mut self, rect: [f64; 4], _: &'a Style) {
+            self.0.push(format!("rect {rect:?}"));
+        }
+        fn line(&mut self, a: (f64, f64), b: (f64, f64), _: &'a Style) {
+            self.0.push(format!("line {a:?} {b:?}"));
+        }
+        fn polyline(&mut self, points: &'a [(f64, f64)], _: &'a Style) {
+            self.0.push(format!("polyline {points:?}"));
+        }
+        fn polygon(&mut self, points: &'a [(f64, f64)], _: &'a Style) {
+            self.0.push(format!("polygon {points:?}"));
+        }
+        fn circle(&mut self, centre: (f64, f64), radius: f64, _: &'a Style) {
+            self.0.push(format!("circle {centre:?} {radius}"));
+        }
+        fn text(&mut self, x: f64, y: f64, text: &'a str, _: &'a TextStyle) {
+            self.0.push(format!("text {x} {y} {text}"));
+        }
+        fn face(&mut self, points: &'a [(f64, f64)], color: Color) {
+            self.0.push(format!("face {points:?} {}", color.hex()));
+        }
+        fn edge(&mut self, a: (f64, f64), b: (f64, f64), color: Color) {
+            self.0.push(format!("edge {a:?} {b:?} {}", color.hex()));
+        }
+        fn gradient(&mut self, id: &'a str, stops: &'a [Color]) {
+            self.0.push(format!("gradient {id} {}", stops.len()));
+        }
+        fn gradient_rect(&mut self, id: &'a str, rect: [f64; 4]) {
+            self.0.push(format!("gradient_rect {id} {rect:?}"));
+        }
+    }
+
+    /// Every primitive reaches its own method, in drawing order, with negative sizes as 0.
+    #[test]
+    fn each_primitive_reaches_its_method_in_order() {
+        let black = Color(0, 0, 0);
+        let style = Style::stroke(black, 1.0);
+        let mut p = Painter::new(10, 10, "t");
+        p.begin_group("g");
+        p.begin_mesh_group("m", 0.5);
+        p.begin_clip("c", 1.0, 2.0, -3.0, 4.0);
+        p.rect(1.0, 2.0, 3.0, -4.0, &style);
+        p.line((0.0, 1.0), (2.0, 3.0), &style);
+        p.polyline(&[(0.0, 0.0), (1.0, 1.0)], &style);
+        p.polygon(&[(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)], &style);
+        p.circle((5.0, 6.0), -2.0, &style);
+        p.text(7.0, 8.0, "hi", &TextStyle::new(12.0, black));
+        p.face(&[(0.0, 0.0), (2.0, 0.0), (0.0, 2.0)], Color(255, 0, 0));
+        p.edge((1.0, 1.0), (2.0, 2.0), Color(0, 255, 0));
+        p.vertical_gradient("v", &[black, Color::WHITE]);
+        p.gradient_rect("v", 0.0, 0.0, -1.0, 5.0);
+        let drawing = p.finish();
+        let mut calls = Calls::default();
+        drawing.encode(&mut calls);
+        assert_eq!(
+            calls.0,
+            [
+                "group g",
+                "mesh_group m 0.5",
+                "clip c [1.0, 2.0, 0.0, 4.0]",
+                "rect [1.0, 2.0, 3.0, 0.0]",
+                "line (0.0, 1.0) (2.0, 3.0)",
+                "polyline [(0.0, 0.0), (1.0, 1.0)]",
+                "polygon [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)]",
+                "circle (5.0, 6.0) 0",
+                "text 7 8 hi",
+                "face [(0.0, 0.0), (2.0, 0.0), (0.0, 2.0)] #ff0000",
+                "edge (1.0, 1.0) (2.0, 2.0) #00ff00",
+                "gradient v 2",
+                "gradient_rect v [0.0, 0.0, 0.0, 5.0]",
+                "end",
+                "end",
+                "end",
+            ]
+        );
+    }
+}
