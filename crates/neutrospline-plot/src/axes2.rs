@@ -4,8 +4,8 @@
 use crate::drawing::Painter;
 use crate::font::text_width;
 use crate::layout::{text_centred, Rect, TEXT_BOX};
-use crate::model::Pt;
-use crate::svg::{Anchor, Style, TextStyle};
+use crate::point::Pt;
+use crate::style::{Anchor, Style, TextStyle};
 use crate::theme::{self, Theme};
 use crate::ticks::{padded, ticks_inside, widen_degenerate, Ticks};
 

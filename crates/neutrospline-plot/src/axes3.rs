@@ -5,7 +5,7 @@ use crate::camera::{Camera, Projected};
 use crate::drawing::Painter;
 use crate::font::text_width;
 use crate::layout::{support, text_centred, Rect, TEXT_BOX};
-use crate::svg::{Style, TextStyle};
+use crate::style::{Style, TextStyle};
 use crate::theme::{self, Theme};
 use crate::ticks::{ticks_inside, Ticks};
 

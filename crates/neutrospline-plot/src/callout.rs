@@ -7,7 +7,7 @@ use neutrospline::DegreeKind;
 use crate::drawing::Painter;
 use crate::font::text_width;
 use crate::layout::{support, text_centred, Rect, BASELINE_FROM_CENTRE};
-use crate::svg::{Anchor, Color, Style, TextStyle};
+use crate::style::{Anchor, Color, Style, TextStyle};
 use crate::theme::{self, Theme};
 
 /// Above this many control points the callouts shrink to three bars and the name.

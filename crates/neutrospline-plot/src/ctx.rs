@@ -9,8 +9,8 @@ use crate::callout::{draw_names, Keep, Obstacle};
 use crate::camera::Camera;
 use crate::drawing::{Drawing, Painter};
 use crate::layout::{Frame, Legend, LegendPlace, Rect};
-use crate::model::Pt;
 use crate::options::PlotOptions;
+use crate::point::Pt;
 use crate::theme::Theme;
 use crate::ticks::{padded, ticks_loose, Ticks};
 

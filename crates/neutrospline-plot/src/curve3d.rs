@@ -9,7 +9,7 @@ use crate::drawing::Painter;
 use crate::layout::{ColorBar, Entry, Legend, Rect};
 use crate::quantity::Quantity;
 use crate::scene::{flat, Scene, Shape, CHUNK, DATA, FLOOR, OVER};
-use crate::svg::{Color, Style};
+use crate::style::{Color, Style};
 use crate::theme::{self, marker_style, Marker, Theme};
 
 /// The 3-D box of a curve fitted into `area` clear of `avoid` and drawn into `svg`, and a

@@ -29,23 +29,22 @@
 
 use std::fmt::Write as _;
 
-use crate::drawing::{Drawing, Element};
+use crate::drawing::Drawing;
+use crate::encode::Encoder;
 use crate::font::FONT_FAMILY_CSS;
-use crate::svg::{num, Anchor, Style, TextStyle};
+use crate::style::{num, write_points, Anchor, Color, Style, TextStyle};
 
 impl Drawing {
     /// The drawing as a display list for an HTML canvas (the format is in the module
     /// documentation of `display_list.rs` and in `docs/architecture.md`).
     pub fn to_display_list(&self) -> String {
-        let mut styles: Vec<&Style> = Vec::new();
-        let mut texts: Vec<&TextStyle> = Vec::new();
-        let mut ops = String::with_capacity(32 * 1024);
-        for (i, element) in self.elements.iter().enumerate() {
-            if i > 0 {
-                ops.push(',');
-            }
-            op(&mut ops, element, &mut styles, &mut texts);
-        }
+        let mut list = DisplayList {
+            ops: String::with_capacity(32 * 1024),
+            styles: Vec::new(),
+            texts: Vec::new(),
+        };
+        self.encode(&mut list);
+        let DisplayList { ops, styles, texts } = list;
         let mut out = String::with_capacity(ops.len() + 4096);
         let _ = write!(
             out,
@@ -74,6 +73,31 @@ impl Drawing {
     }
 }
 
+/// The display list being written: the ops so far, and the tables of the distinct shape and
+/// text styles they index, in order of first use.
+struct DisplayList<'a> {
+    ops: String,
+    styles: Vec<&'a Style>,
+    texts: Vec<&'a TextStyle>,
+}
+
+impl<'a> DisplayList<'a> {
+    /// Starts an op: a comma after the previous one, `[` and the quoted `code`; returns the
+    /// text to write its arguments to (each after a comma) and its closing `]`.
+    fn op(&mut self, code: &str) -> &mut String {
+        if !self.ops.is_empty() {
+            self.ops.push(',');
+        }
+        let _ = write!(self.ops, "[\"{code}\"");
+        &mut self.ops
+    }
+
+    /// The index of `style` in the shape styles, added when new.
+    fn style(&mut self, style: &'a Style) -> usize {
+        index_of(&mut self.styles, style)
+    }
+}
+
 /// The index of `item` in `table`, added when new.
 fn index_of<'a, T: PartialEq>(table: &mut Vec<&'a T>, item: &'a T) -> usize {
     match table.iter().position(|t| *t == item) {
@@ -85,130 +109,120 @@ fn index_of<'a, T: PartialEq>(table: &mut Vec<&'a T>, item: &'a T) -> usize {
     }
 }
 
-fn op<'a>(
-    out: &mut String,
-    element: &'a Element,
-    styles: &mut Vec<&'a Style>,
-    texts: &mut Vec<&'a TextStyle>,
-) {
-    match element {
-        Element::Group(_) => out.push_str("[\"g\"]"),
-        Element::MeshGroup(_, width) => {
-            let _ = write!(out, "[\"m\",{}]", num(*width));
-        }
-        Element::Clip(_, [x, y, w, h]) => {
-            let _ = write!(
-                out,
-                "[\"c\",{},{},{},{}]",
-                num(*x),
-                num(*y),
-                num(w.max(0.0)),
-                num(h.max(0.0))
-            );
-        }
-        Element::End => out.push_str("[\"e\"]"),
-        Element::Rect([x, y, w, h], style) => {
-            let _ = write!(
-                out,
-                "[\"r\",{},{},{},{},{}]",
-                num(*x),
-                num(*y),
-                num(w.max(0.0)),
-                num(h.max(0.0)),
-                index_of(styles, style)
-            );
-        }
-        Element::Line(a, b, style) => {
-            let _ = write!(
-                out,
-                "[\"l\",{},{},{},{},{}]",
-                num(a.0),
-                num(a.1),
-                num(b.0),
-                num(b.1),
-                index_of(styles, style)
-            );
-        }
-        Element::Polyline(points, style) | Element::Polygon(points, style) => {
-            let code = if matches!(element, Element::Polygon(..)) {
-                "P"
-            } else {
-                "p"
-            };
-            let _ = write!(out, "[\"{code}\",");
-            flat_points(out, points);
-            let _ = write!(out, ",{}]", index_of(styles, style));
-        }
-        Element::Circle(c, r, style) => {
-            let _ = write!(
-                out,
-                "[\"o\",{},{},{},{}]",
-                num(c.0),
-                num(c.1),
-                num(r.max(0.0)),
-                index_of(styles, style)
-            );
-        }
-        Element::Text(x, y, text, style) => {
-            let _ = write!(out, "[\"t\",{},{},", num(*x), num(*y));
-            json_string(out, text);
-            let _ = write!(out, ",{}]", index_of(texts, style));
-        }
-        Element::Face(points, color) => {
-            out.push_str("[\"f\",");
-            flat_points(out, points);
-            let _ = write!(out, ",\"{}\"]", color.hex());
-        }
-        Element::Edge(a, b, color) => {
-            let _ = write!(
-                out,
-                "[\"k\",{},{},{},{},\"{}\"]",
-                num(a.0),
-                num(a.1),
-                num(b.0),
-                num(b.1),
-                color.hex()
-            );
-        }
-        Element::Gradient(id, stops) => {
-            out.push_str("[\"G\",");
-            json_string(out, id);
-            out.push_str(",[");
-            for (i, c) in stops.iter().enumerate() {
-                if i > 0 {
-                    out.push(',');
-                }
-                let _ = write!(out, "\"{}\"", c.hex());
+impl<'a> Encoder<'a> for DisplayList<'a> {
+    fn group(&mut self, _class: &'a str) {
+        self.op("g").push(']');
+    }
+
+    fn mesh_group(&mut self, _class: &'a str, stroke_width: f64) {
+        let _ = write!(self.op("m"), ",{}]", num(stroke_width));
+    }
+
+    fn clip(&mut self, _id: &'a str, rect: [f64; 4]) {
+        let out = self.op("c");
+        numbers(out, &rect);
+        out.push(']');
+    }
+
+    fn end(&mut self) {
+        self.op("e").push(']');
+    }
+
+    fn rect(&mut self, rect: [f64; 4], style: &'a Style) {
+        let s = self.style(style);
+        let out = self.op("r");
+        numbers(out, &rect);
+        let _ = write!(out, ",{s}]");
+    }
+
+    fn line(&mut self, a: (f64, f64), b: (f64, f64), style: &'a Style) {
+        let s = self.style(style);
+        let out = self.op("l");
+        numbers(out, &[a.0, a.1, b.0, b.1]);
+        let _ = write!(out, ",{s}]");
+    }
+
+    fn polyline(&mut self, points: &'a [(f64, f64)], style: &'a Style) {
+        let s = self.style(style);
+        let out = self.op("p");
+        flat_points(out, points);
+        let _ = write!(out, ",{s}]");
+    }
+
+    fn polygon(&mut self, points: &'a [(f64, f64)], style: &'a Style) {
+        let s = self.style(style);
+        let out = self.op("P");
+        flat_points(out, points);
+        let _ = write!(out, ",{s}]");
+    }
+
+    fn circle(&mut self, centre: (f64, f64), radius: f64, style: &'a Style) {
+        let s = self.style(style);
+        let out = self.op("o");
+        numbers(out, &[centre.0, centre.1, radius]);
+        let _ = write!(out, ",{s}]");
+    }
+
+    fn text(&mut self, x: f64, y: f64, text: &'a str, style: &'a TextStyle) {
+        let t = index_of(&mut self.texts, style);
+        let out = self.op("t");
+        numbers(out, &[x, y]);
+        out.push(',');
+        json_string(out, text);
+        let _ = write!(out, ",{t}]");
+    }
+
+    fn face(&mut self, points: &'a [(f64, f64)], color: Color) {
+        let out = self.op("f");
+        flat_points(out, points);
+        let _ = write!(out, ",\"{}\"]", color.hex());
+    }
+
+    fn edge(&mut self, a: (f64, f64), b: (f64, f64), color: Color) {
+        let out = self.op("k");
+        numbers(out, &[a.0, a.1, b.0, b.1]);
+        let _ = write!(out, ",\"{}\"]", color.hex());
+    }
+
+    fn gradient(&mut self, id: &'a str, stops: &'a [Color]) {
+        let out = self.op("G");
+        out.push(',');
+        json_string(out, id);
+        out.push_str(",[");
+        for (i, c) in stops.iter().enumerate() {
+            if i > 0 {
+                out.push(',');
             }
-            out.push_str("]]");
+            let _ = write!(out, "\"{}\"", c.hex());
         }
-        Element::GradientRect(id, [x, y, w, h]) => {
-            out.push_str("[\"R\",");
-            json_string(out, id);
-            let _ = write!(
-                out,
-                ",{},{},{},{}]",
-                num(*x),
-                num(*y),
-                num(w.max(0.0)),
-                num(h.max(0.0))
-            );
-        }
+        out.push_str("]]");
+    }
+
+    fn gradient_rect(&mut self, id: &'a str, rect: [f64; 4]) {
+        let out = self.op("R");
+        out.push(',');
+        json_string(out, id);
+        numbers(out, &rect);
+        out.push(']');
     }
 }
 
-fn flat_points(out: &mut String, points: &[(f64, f64)]) {
-    out.push('[');
-    for (i, p) in points.iter().enumerate() {
-        if i > 0 {
-            out.push(',');
-        }
-        let _ = write!(out, "{},{}", num(p.0), num(p.1));
+/// Writes each of `values` after a comma.
+fn numbers(out: &mut String, values: &[f64]) {
+    for v in values {
+        out.push(',');
+        out.push_str(&num(*v));
     }
+}
+
+/// Writes `,[x0,y0,x1,y1,...]`: the points as one flat list, after a comma.
+fn flat_points(out: &mut String, points: &[(f64, f64)]) {
+    out.push_str(",[");
+    write_points(out, points, ',');
     out.push(']');
 }
 
-fn color_or_null(out: &mut String, color: Option<crate::svg::Color>) {
+fn color_or_null(out: &mut String, color: Option<Color>) {
     match color {
         Some(c) => {
             let _ = write!(out, "\"{}\"", c.hex());
@@ -273,7 +287,7 @@ fn json_string(out: &mut String, text: &str) {
 #[cfg(test)]
 mod tests {
     use crate::drawing::Painter;
-    use crate::svg::{Color, Style, TextStyle};
+    use crate::style::{Color, Style, TextStyle};
 
     #[test]
     fn ops_styles_and_texts() {

@@ -6,10 +6,10 @@
 //! - [`Drawing::to_display_list`], a compact JSON list that a page paints on an HTML canvas
 //!   (the studio's frames while a point is dragged), documented in `docs/architecture.md`.
 //!
-//! Both write numbers with at most two decimals ([`num`](crate::svg::num)), so they place
-//! every primitive on the same pixel.
+//! Both walk the primitives through `encode::Encoder` and write numbers with at most two
+//! decimals ([`num`](crate::style::num)), so they place every primitive on the same pixel.
 
-use crate::svg::{Color, Style, TextStyle};
+use crate::style::{Color, Style, TextStyle};
 
 /// One recorded drawing call.
 #[derive(Debug, Clone, PartialEq)]

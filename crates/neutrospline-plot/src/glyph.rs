@@ -6,9 +6,9 @@ use neutrospline::DegreeKind;
 
 use crate::drawing::Painter;
 use crate::layout::{median_spacing, Rect};
-use crate::model::Pt;
+use crate::point::Pt;
 use crate::scene::flat;
-use crate::svg::{Color, Style};
+use crate::style::{Color, Style};
 use crate::theme::{self, Theme};
 
 /// Most control points drawn with their degrees; larger nets show a regular subset.

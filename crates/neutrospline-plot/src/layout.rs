@@ -4,7 +4,7 @@ use neutrospline::DegreeKind;
 
 use crate::drawing::Painter;
 use crate::font::text_width;
-use crate::svg::{Anchor, Color, Style, TextStyle};
+use crate::style::{Anchor, Color, Style, TextStyle};
 use crate::theme::{self, Marker, Theme};
 use crate::ticks::ticks_inside;
 

@@ -157,12 +157,19 @@
 //!   point's degrees, taken by `lifted`, `curve3d` and `mesh`);
 //! - geometry: `nearest` (the point of a curve nearest to a given point: dense samples, then
 //!   a golden-section search);
+//! - style: `style` (colours, shape and text styles, and `num`, the number formatting of both
+//!   encodings), `theme` (sizes and colours), `font` (the bundled font and its metrics);
+//!   `style` and `point` (the sampled point, a position and its degrees) import nothing from
+//!   the crate;
 //! - output: `scene` (depth-sorted drawing), `drawing` (the `Painter` and the [`Drawing`] it
-//!   records), `svg` (colours, styles and the SVG encoding), `display_list` (the canvas
-//!   encoding), `theme` (sizes and colours), `font` (the bundled font and its metrics), `png`
-//!   (rasterizing);
+//!   records), `encode` (the `Encoder` trait, one method per primitive, and `Drawing::encode`,
+//!   the one `match` over the primitives), its two implementations `svg` (the SVG encoding)
+//!   and `display_list` (the canvas encoding), and `png` (rasterizing);
 //! - the public types: `model`, `overlay` (the data overlay and its checks), `options`,
 //!   `view`, `error`.
+//!
+//! No two modules import each other: `drawing` knows neither encoding, and a view module
+//! takes its `Figure` trait from `views::figure`, not from the dispatch that imports it.
 //!
 //! Adding a view means adding its variant and name to [`View`], one module in `views`, and
 //! its arm in `views::figure`.
@@ -192,6 +199,7 @@ mod ctx;
 mod curve3d;
 mod display_list;
 mod drawing;
+mod encode;
 mod error;
 mod font;
 mod glyph;
@@ -205,9 +213,11 @@ mod options;
 mod overlay;
 mod panels;
 mod png;
+mod point;
 mod quantity;
 mod render;
 mod scene;
+mod style;
 mod svg;
 mod theme;
 mod ticks;

@@ -10,10 +10,10 @@ use crate::ctx::Ctx;
 use crate::curve3d::drop_line;
 use crate::drawing::Drawing;
 use crate::layout::{Entry, Legend, LegendPlace};
-use crate::model::Pt;
+use crate::point::Pt;
 use crate::quantity::Quantity;
 use crate::scene::{flat, Scene, Shape, CHUNK, DATA, FLOOR};
-use crate::svg::Style;
+use crate::style::Style;
 use crate::theme::{self, marker_style, Marker};
 use crate::ticks::{padded, ticks_inside, ticks_loose};
 

@@ -12,7 +12,7 @@ use crate::model::Mesh;
 use crate::net::draw_net;
 use crate::quantity::Quantity;
 use crate::scene::{Scene, Shape, DATA};
-use crate::svg::{Color, Style};
+use crate::style::{Color, Style};
 use crate::theme::{self, Marker, Theme};
 
 /// Light direction in camera coordinates (right, up, towards the viewer): from the upper

@@ -13,15 +13,8 @@ use neutrospline::{
 use crate::error::PlotError;
 use crate::nearest::nearest;
 use crate::overlay::DataOverlay;
+use crate::point::Pt;
 use crate::quantity::Quantity;
-
-/// A point as the renderer uses it: position padded to 3-D (z = 0 for planar models) and
-/// the degrees `[truth, indeterminacy, falsity]`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Pt {
-    pub pos: [f64; 3],
-    pub deg: [f64; 3],
-}
 
 const CHANNELS: [&str; 6] = ["x", "y", "z", "truth", "indeterminacy", "falsity"];
 

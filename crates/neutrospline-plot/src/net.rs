@@ -8,7 +8,7 @@ use crate::ctx::Ctx;
 use crate::drawing::Painter;
 use crate::layout::median_spacing;
 use crate::model::Mesh;
-use crate::svg::{Color, Style};
+use crate::style::{Color, Style};
 use crate::theme::{self, marker_style, Theme};
 
 /// Pieces each control-net edge is cut into to find where the surface hides it.

@@ -12,7 +12,7 @@ use neutrospline::DegreeKind;
 use crate::ctx::Ctx;
 use crate::drawing::{Drawing, Painter};
 use crate::layout::{text_centred, Frame, Legend, LegendPlace, Rect};
-use crate::svg::TextStyle;
+use crate::style::TextStyle;
 use crate::theme::{self, Theme};
 
 /// Shortest colour bar, relative to the default length, before an arrangement is rejected.

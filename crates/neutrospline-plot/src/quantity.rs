@@ -4,8 +4,8 @@
 
 use neutrospline::DegreeKind;
 
-use crate::model::Pt;
-use crate::svg::Color;
+use crate::point::Pt;
+use crate::style::Color;
 use crate::theme::{self, Marker};
 
 /// A value in \[0, 1\] read off a point's degrees: one degree, or the score.

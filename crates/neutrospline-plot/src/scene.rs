@@ -2,7 +2,7 @@
 
 use crate::drawing::Painter;
 use crate::layout::marker;
-use crate::svg::{Color, Style};
+use crate::style::{Color, Style};
 use crate::theme::Marker;
 
 /// Segments per depth-sorted chunk of a curve.

@@ -2,7 +2,7 @@
 
 use neutrospline::DegreeKind;
 
-use crate::svg::{Color, Style};
+use crate::style::{Color, Style};
 
 /// Text colour.
 pub(crate) const INK: Color = Color(0x1a, 0x1a, 0x1a);

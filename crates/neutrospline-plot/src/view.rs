@@ -77,8 +77,8 @@ impl View {
         View::Band,
     ];
 
-    /// The views that draw any model (every view but `data`, which needs data points), in
-    /// the order of [`View::ALL`].
+    /// The views that draw any model (every view but `data`, which needs data points, and
+    /// `band`, which draws curves only), in the order of [`View::ALL`].
     pub const MODEL: [View; 7] = [
         View::Controls,
         View::Truth,

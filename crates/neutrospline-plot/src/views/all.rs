@@ -19,7 +19,7 @@ use crate::panels;
 use crate::quantity::Quantity;
 use crate::theme;
 
-use super::Figure;
+use super::figure::Figure;
 
 /// The `all` view.
 pub(crate) struct All;

@@ -18,11 +18,12 @@ use crate::ctx::Ctx;
 use crate::curve3d::shadowed_box;
 use crate::drawing::{Drawing, Painter};
 use crate::layout::{Entry, Legend, LegendPlace, Swatch};
-use crate::model::{Mesh, Pt};
-use crate::svg::{Color, Style};
+use crate::model::Mesh;
+use crate::point::Pt;
+use crate::style::{Color, Style};
 use crate::theme::{self, marker_style, Marker, Theme};
 
-use super::Figure;
+use super::figure::Figure;
 
 /// The `band` view.
 pub(crate) struct Band;

@@ -18,10 +18,10 @@ use crate::mesh::{draw_mesh, Paint};
 use crate::model::Mesh;
 use crate::net::{draw_net, net_edges};
 use crate::scene::{flat, Shape, CHUNK, DATA, OVER};
-use crate::svg::{Color, Style};
+use crate::style::{Color, Style};
 use crate::theme::{self, marker_style, Marker, Theme};
 
-use super::Figure;
+use super::figure::Figure;
 
 /// The `controls` view.
 pub(crate) struct Controls;

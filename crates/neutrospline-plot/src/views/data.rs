@@ -19,10 +19,10 @@ use crate::drawing::Drawing;
 use crate::layout::{ColorBar, Entry, Legend, LegendPlace, Swatch};
 use crate::model::Mesh;
 use crate::scene::{Shape, CHUNK, DATA, OVER};
-use crate::svg::{Color, Style};
+use crate::style::{Color, Style};
 use crate::theme::{self, Marker, Theme};
 
-use super::Figure;
+use super::figure::Figure;
 
 /// The `data` view.
 pub(crate) struct Data;

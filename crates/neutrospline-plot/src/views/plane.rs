@@ -18,10 +18,10 @@ use crate::drawing::{Drawing, Painter};
 use crate::layout::{ColorBar, Entry, Legend, LegendPlace, Rect, Swatch};
 use crate::model::Mesh;
 use crate::panels;
-use crate::svg::{Color, Style};
+use crate::style::{Color, Style};
 use crate::theme::{self, marker_style, Marker, Theme};
 
-use super::Figure;
+use super::figure::Figure;
 
 /// The `plane` view.
 pub(crate) struct Plane;

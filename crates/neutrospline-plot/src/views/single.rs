@@ -20,7 +20,7 @@ use crate::model::Mesh;
 use crate::quantity::Quantity;
 use crate::theme::Marker;
 
-use super::Figure;
+use super::figure::Figure;
 
 /// The view of one quantity.
 pub(crate) struct Single(pub Quantity);
