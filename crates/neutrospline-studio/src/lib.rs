@@ -40,7 +40,7 @@ mod http;
 
 pub use api::Studio;
 pub use figure::{figure_options, handles, space_handles, Handles};
-pub use http::{check_origin, Handler, Request, Response, Server, MAX_BODY};
+pub use http::{check_origin, Handler, Request, Response, Server, ServerConfig, LINGER, MAX_BODY};
 
 /// Asks the desktop to open `url` in the default browser (`xdg-open`, or `open` on macOS),
 /// without waiting and without output. Returns whether a program could be started.
