@@ -18,6 +18,9 @@
 //! - `HEAD` is answered with the head `GET` would have, `Content-Length` included, and no body
 //!   (RFC 9110 9.3.2).
 //!
+//! A request that passes is answered by the [`Handler`], except `GET /modules/NAME.js`, the
+//! page's modules (the `assets` module), which the server answers itself.
+//!
 //! After a refusal the connection is closed; a body that was not read is drained for at most
 //! [`LINGER`] first, so that the client reads the answer rather than a reset.
 //!
@@ -808,12 +811,18 @@ fn connection(
             request.body = body;
         }
         set_phase(slots, id, Phase::Answering);
-        // A bug in a handler answers 500 and leaves the server running.
-        let response = match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            handler.handle(&request)
-        })) {
-            Ok(r) => r,
-            Err(_) => Response::error(500, "internal error (the studio keeps running)"),
+        let page_module = crate::assets::module(&request.path)
+            .filter(|_| request.method == "GET" || request.method == "HEAD");
+        let response = if let Some(text) = page_module {
+            Response::new(200, "text/javascript; charset=utf-8", text)
+        } else {
+            // A bug in a handler answers 500 and leaves the server running.
+            match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                handler.handle(&request)
+            })) {
+                Ok(r) => r,
+                Err(_) => Response::error(500, "internal error (the studio keeps running)"),
+            }
         };
         let head_only = request.method == "HEAD";
         if response

@@ -35,6 +35,7 @@
 #![deny(missing_docs)]
 
 mod api;
+mod assets;
 mod figure;
 mod http;
 

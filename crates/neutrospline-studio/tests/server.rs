@@ -922,3 +922,69 @@ fn connections_being_answered_are_never_closed_for_a_new_one() {
         assert_eq!((status, body.as_slice()), (200, b"done".as_slice()));
     }
 }
+
+/// The `./NAME.js` modules a page script imports.
+fn imports_of(script: &str) -> Vec<String> {
+    script
+        .lines()
+        .filter(|l| l.starts_with("import "))
+        .map(|l| {
+            let from = l.split(" from '").nth(1).expect("import ... from '...'");
+            from.split('\'').next().unwrap().to_owned()
+        })
+        .collect()
+}
+
+#[test]
+fn every_module_the_page_imports_is_served() {
+    let port = example_server();
+    let (_, _, page) = get(port, "/", &host(port));
+    assert!(String::from_utf8(page)
+        .unwrap()
+        .contains(r#"<script type="module" src="/studio.js"></script>"#));
+    // From the entry module, each import resolved against the importer's path, as the browser
+    // does; all six modules are reached.
+    let mut seen = std::collections::BTreeSet::new();
+    let mut todo = vec!["/studio.js".to_owned()];
+    while let Some(path) = todo.pop() {
+        if !seen.insert(path.clone()) {
+            continue;
+        }
+        let (status, head, body) = get(port, &path, &host(port));
+        assert_eq!(status, 200, "{path}");
+        assert!(head.contains("Content-Type: text/javascript"), "{path}");
+        let dir = &path[..path.rfind('/').unwrap()];
+        for import in imports_of(&String::from_utf8(body).unwrap()) {
+            todo.push(format!("{dir}/{}", import.strip_prefix("./").unwrap()));
+        }
+    }
+    let modules: Vec<_> = seen.into_iter().collect();
+    assert_eq!(
+        modules,
+        [
+            "/modules/figures.js",
+            "/modules/files.js",
+            "/modules/fitting.js",
+            "/modules/panel.js",
+            "/modules/queue.js",
+            "/modules/state.js",
+            "/studio.js"
+        ]
+    );
+    let (status, head, _) = http(
+        port,
+        format!(
+            "HEAD /modules/queue.js HTTP/1.1\r\n{}Connection: close\r\n\r\n",
+            host(port)
+        )
+        .as_bytes(),
+    );
+    assert_eq!(status, 200);
+    assert!(head.contains("Content-Type: text/javascript"));
+    assert_eq!(get(port, "/modules/other.js", &host(port)).0, 404);
+    // The Host check comes first.
+    assert_eq!(
+        get(port, "/modules/state.js", "Host: attacker.example\r\n").0,
+        403
+    );
+}
