@@ -29,7 +29,7 @@ async function fitData() {
     closed: $('#fit-closed').checked,
   };
   if (target === 'interpolate') options.interpolate = true;
-  else if (target === 'control-points' && value) options.controlPoints = Number(value);
+  else if (target === 'control-points' && value) options['control-points'] = Number(value);
   else if (target === 'tolerance' && value) options.tolerance = Number(value);
   const membership = (state.model && state.model.membership) || 'neutrosophic';
   const r = await postJson('/api/fit', { data: state.data, membership, options });
