@@ -424,7 +424,11 @@ def test_points_rules_files_data_and_camera(start_studio, page, binary, out_dir,
     page.click("#data-section summary")
     page.select_option("#fit-target", "control-points")
     page.fill("#fit-value", "12")
-    page.click("#fit")
+    with page.expect_request("**/api/fit") as fit_request:
+        page.click("#fit")
+    # The options under `neutrospline fit`'s flag names.
+    sent = fit_request.value.post_data_json["options"]
+    assert sent["control-points"] == 12 and "controlPoints" not in sent, sent
     page.wait_for_function("window.studio.model().control_points.length === 12")
     idle(page)
     assert page.locator("[role=status]").inner_text() == "fitted 12 control points to survey.csv"

@@ -34,11 +34,56 @@
 #![deny(missing_docs)]
 
 mod api;
+mod assets;
 mod figure;
 mod http;
 
 pub use api::Studio;
-pub use http::Server;
+pub use http::ServerConfig;
+
+/// The studio's HTTP/1.1 server on 127.0.0.1, answering with a [`Studio`]: one thread per
+/// connection, the limits and deadlines of [`ServerConfig`] (its module documents the policy).
+pub struct Server(http::Listener<Studio>);
+
+impl Server {
+    /// Listens on `127.0.0.1:port` (0: any free port), with the default [`ServerConfig`].
+    ///
+    /// # Errors
+    /// The port cannot be bound.
+    pub fn bind(port: u16, studio: Studio) -> std::io::Result<Server> {
+        http::Listener::bind(port, studio).map(Server)
+    }
+
+    /// Sets the body limit.
+    pub fn with_max_body(self, max_body: usize) -> Server {
+        Server(self.0.with_max_body(max_body))
+    }
+
+    /// Sets the limits and deadlines.
+    pub fn with_config(self, config: ServerConfig) -> Server {
+        Server(self.0.with_config(config))
+    }
+
+    /// The port it listens on.
+    pub fn port(&self) -> u16 {
+        self.0.port()
+    }
+
+    /// The page's address, `http://127.0.0.1:PORT/`.
+    pub fn url(&self) -> String {
+        self.0.url()
+    }
+
+    /// Serves until the process ends; bad requests never stop it.
+    pub fn serve(self) {
+        self.0.serve();
+    }
+
+    /// Serves on a background thread (for tests and embedding); returns the port.
+    pub fn spawn(self) -> u16 {
+        self.0.spawn()
+    }
+}
 
 /// Asks the desktop to open `url` in the default browser (`xdg-open`, or `open` on macOS),
 /// without waiting and without output. Returns whether a program could be started.

@@ -1,15 +1,17 @@
 //! The studio's server over real sockets: the guards (Host, Origin, body limit, methods,
 //! paths), the JSON API against figures drawn directly with the plot crate and the reader's
-//! exact messages, and saving (only the started file, atomically).
+//! exact messages, and saving (only the started file, atomically); HTTP itself (HEAD,
+//! `Expect: 100-continue`, the Host syntax) and the deadlines and connection limit, measured.
 
 use std::io::{Read, Write};
 use std::net::TcpStream;
 use std::path::Path;
+use std::time::{Duration, Instant};
 
 use neutrospline::{ControlPolygon, Evaluate};
 use neutrospline_io::{Format, Model, ReadOptions, Shape};
 use neutrospline_plot::{render_png, render_svg, PlotModel, PlotOptions, View};
-use neutrospline_studio::{Server, Studio};
+use neutrospline_studio::{Server, ServerConfig, Studio};
 use serde_json::{json, Value};
 
 const EXAMPLE1_JSON: &str = include_str!("../../../examples/example1.json");
@@ -18,6 +20,8 @@ const BSPLINE_TOML: &str = include_str!("../../../examples/bspline.toml");
 /// One request on its own connection: (status, head, body).
 fn http(port: u16, raw: &[u8]) -> (u16, String, Vec<u8>) {
     let mut s = TcpStream::connect(("127.0.0.1", port)).unwrap();
+    // A server that never answers fails the test instead of hanging it.
+    s.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
     s.write_all(raw).unwrap();
     let mut answer = Vec::new();
     let _ = s.read_to_end(&mut answer);
@@ -92,7 +96,8 @@ fn server_refuses_foreign_host_and_origin() {
         &format!("{}Origin: http://attacker.example\r\n", host(port)),
     );
     assert_eq!(status, 403);
-    assert_eq!(get(port, "/", "").0, 403, "no Host header");
+    // No Host at all is malformed HTTP/1.1 (RFC 9112 3.2).
+    assert_eq!(get(port, "/", "").0, 400, "no Host header");
 }
 
 #[test]
@@ -509,5 +514,428 @@ fn data_and_fit_use_the_readers_and_the_fit() {
     assert_eq!(
         answer["error"]["message"],
         "bad.csv:2: truth = 1.5 is outside [0, 1] (every degree must be in [0, 1])"
+    );
+}
+
+const STUDIO_CSS: &str = include_str!("../src/assets/studio.css");
+
+/// Reads one answer of a kept-alive connection: (head, body), by its `Content-Length`
+/// (`head_only`: a HEAD answer, which has none of the body).
+fn read_answer(s: &mut TcpStream, head_only: bool) -> (String, Vec<u8>) {
+    let mut bytes = Vec::new();
+    let mut byte = [0];
+    while !bytes.ends_with(b"\r\n\r\n") {
+        assert_eq!(
+            s.read(&mut byte).unwrap(),
+            1,
+            "the head ends early: {bytes:?}"
+        );
+        bytes.push(byte[0]);
+    }
+    let head = String::from_utf8(bytes).unwrap();
+    let length: usize = head
+        .lines()
+        .find_map(|l| l.strip_prefix("Content-Length: "))
+        .unwrap()
+        .parse()
+        .unwrap();
+    let mut body = vec![0; if head_only { 0 } else { length }];
+    s.read_exact(&mut body).unwrap();
+    (head, body)
+}
+
+fn content_length(head: &str) -> usize {
+    head.lines()
+        .find_map(|l| l.strip_prefix("Content-Length: "))
+        .unwrap()
+        .parse()
+        .unwrap()
+}
+
+fn first_line(answer: &[u8]) -> String {
+    let text = String::from_utf8_lossy(answer);
+    text.split("\r\n").next().unwrap().to_owned()
+}
+
+#[test]
+fn head_has_the_get_head_and_no_body() {
+    let port = example_server();
+    let (status, get_head, page) = get(port, "/", &host(port));
+    assert_eq!(status, 200);
+    // HEAD then GET on one connection: were HEAD to send a body, the next answer would start
+    // inside it.
+    let mut s = TcpStream::connect(("127.0.0.1", port)).unwrap();
+    let raw = format!(
+        "HEAD / HTTP/1.1\r\n{h}\r\nGET /studio.css HTTP/1.1\r\n{h}Connection: close\r\n\r\n",
+        h = host(port)
+    );
+    s.write_all(raw.as_bytes()).unwrap();
+    let mut answer = Vec::new();
+    s.read_to_end(&mut answer).unwrap();
+    let text = String::from_utf8(answer).unwrap();
+    let (head, rest) = text.split_once("\r\n\r\n").unwrap();
+    assert_eq!(Some(head), get_head.strip_suffix("\r\nConnection: close"));
+    assert_eq!(content_length(head), page.len());
+    let (css_head, css) = rest.split_once("\r\n\r\n").unwrap();
+    assert!(css_head.starts_with("HTTP/1.1 200 OK\r\n"), "{css_head}");
+    assert_eq!(css, STUDIO_CSS);
+}
+
+#[test]
+fn expect_100_continue_is_answered_before_the_body() {
+    let port = Server::bind(0, Studio::example())
+        .unwrap()
+        .with_max_body(100_000)
+        .spawn();
+    let body = json!({ "model": EXAMPLE1_JSON, "views": ["plane"] }).to_string();
+    let mut s = TcpStream::connect(("127.0.0.1", port)).unwrap();
+    s.set_read_timeout(Some(Duration::from_secs(10))).unwrap();
+    let asked = Instant::now();
+    let raw = format!(
+        "POST /api/render HTTP/1.1\r\n{}Content-Length: {}\r\nExpect: 100-continue\r\n\r\n",
+        host(port),
+        body.len()
+    );
+    s.write_all(raw.as_bytes()).unwrap();
+    let mut interim = [0; 25];
+    s.read_exact(&mut interim).unwrap();
+    assert_eq!(&interim, b"HTTP/1.1 100 Continue\r\n\r\n");
+    // curl waits 1 s for it before sending the body anyway.
+    assert!(
+        asked.elapsed() < Duration::from_millis(900),
+        "{:?}",
+        asked.elapsed()
+    );
+    s.write_all(body.as_bytes()).unwrap();
+    let (head, answer) = read_answer(&mut s, false);
+    assert!(head.starts_with("HTTP/1.1 200 OK\r\n"), "{head}");
+    let answer: Value = serde_json::from_slice(&answer).unwrap();
+    assert!(answer["figures"]["plane"]
+        .as_str()
+        .unwrap()
+        .contains("<svg"));
+
+    // Refused heads get their final status, never 100, and the body is not awaited.
+    let cases = [
+        (
+            format!("{}Content-Length: 100001\r\n", host(port)),
+            "HTTP/1.1 413 Payload Too Large",
+        ),
+        (
+            format!(
+                "{}Origin: http://attacker.example\r\nContent-Length: 10\r\n",
+                host(port)
+            ),
+            "HTTP/1.1 403 Forbidden",
+        ),
+        (
+            format!("Host: attacker.example:{port}\r\nContent-Length: 10\r\n"),
+            "HTTP/1.1 403 Forbidden",
+        ),
+    ];
+    for (headers, status) in cases {
+        let raw = format!("POST /api/render HTTP/1.1\r\n{headers}Expect: 100-continue\r\n\r\n");
+        let started = Instant::now();
+        let (_, head, _) = http(port, raw.as_bytes());
+        assert_eq!(head.lines().next().unwrap(), status, "{headers}");
+        assert!(started.elapsed() < Duration::from_secs(2), "{headers}");
+    }
+    let raw = format!(
+        "POST /api/render HTTP/1.1\r\n{}Expect: 200-ok\r\n\r\n",
+        host(port)
+    );
+    assert_eq!(http(port, raw.as_bytes()).0, 417);
+}
+
+#[test]
+fn host_must_be_one_strict_header() {
+    let port = example_server();
+    let cases = [
+        format!("Host : 127.0.0.1:{port}\r\n"),
+        format!("Host\t: 127.0.0.1:{port}\r\n"),
+        format!("Host: 127.0.0.1:{port}\r\nHost: 127.0.0.1:{port}\r\n"),
+        format!("Host: 127.0.0.1:{port}\r\nhost: attacker.example\r\n"),
+        format!("Host: 127.0.0.1:{port} attacker.example\r\n"),
+        format!("Host: attacker.example@127.0.0.1:{port}\r\n"),
+        format!("Host: 127.0.0.1:{port}/\r\n"),
+        format!("Host: 127.0.0.1:{port}\r\n folded\r\n"),
+        "Host:\r\n".to_owned(),
+        String::new(),
+    ];
+    for headers in cases {
+        let (_, head, body) = get(port, "/", &headers);
+        assert_eq!(
+            head.lines().next().unwrap(),
+            "HTTP/1.1 400 Bad Request",
+            "{headers:?}"
+        );
+        assert!(!String::from_utf8_lossy(&body).contains("<html"));
+    }
+    let (_, _, body) = get(port, "/", &format!("Host : 127.0.0.1:{port}\r\n"));
+    assert_eq!(
+        serde_json::from_slice::<Value>(&body).unwrap()["error"]["message"],
+        "header `Host`: whitespace between the name and the colon (RFC 9112 5.1)"
+    );
+    // Well-formed but not this server: 403; this server: 200.
+    assert_eq!(get(port, "/", "Host: 127.0.0.1\r\n").0, 403);
+    assert_eq!(
+        get(port, "/", &format!("Host: 127.0.0.1:0{port}\r\n")).0,
+        403
+    );
+    assert_eq!(get(port, "/", &format!("Host:127.0.0.1:{port}\r\n")).0, 200);
+    assert_eq!(
+        get(port, "/", &format!("host: LOCALHOST:{port}\r\n")).0,
+        200
+    );
+}
+
+fn short_deadlines() -> ServerConfig {
+    ServerConfig {
+        head_timeout: Duration::from_millis(600),
+        idle_timeout: Duration::from_millis(400),
+        body_timeout: Duration::from_millis(500),
+        body_rate: 1 << 30,
+        ..ServerConfig::default()
+    }
+}
+
+/// Sends `prefix`, then one byte of `trickle` every 50 ms (cycling) until the server closes
+/// or 20 s pass; returns when the connection was closed and the bytes the server sent.
+fn slow_client(port: u16, prefix: String, trickle: &'static [u8]) -> (Instant, Vec<u8>) {
+    let mut s = TcpStream::connect(("127.0.0.1", port)).unwrap();
+    s.write_all(prefix.as_bytes()).unwrap();
+    let mut writer = s.try_clone().unwrap();
+    let sender = std::thread::spawn(move || {
+        let started = Instant::now();
+        for &byte in trickle.iter().cycle() {
+            if started.elapsed() > Duration::from_secs(20) || writer.write_all(&[byte]).is_err() {
+                return;
+            }
+            std::thread::sleep(Duration::from_millis(50));
+        }
+    });
+    s.set_read_timeout(Some(Duration::from_secs(20))).unwrap();
+    let mut answer = Vec::new();
+    let _ = s.read_to_end(&mut answer);
+    let closed = Instant::now();
+    drop(s);
+    sender.join().unwrap();
+    (closed, answer)
+}
+
+#[test]
+fn a_slow_head_is_dropped_at_its_deadline_while_others_are_served() {
+    let port = Server::bind(0, Studio::example())
+        .unwrap()
+        .with_config(ServerConfig {
+            // Long enough for the other client to be served under load.
+            head_timeout: Duration::from_millis(1500),
+            ..short_deadlines()
+        })
+        .spawn();
+    let started = Instant::now();
+    // A header byte every 50 ms: each read is quick, the head never ends.
+    let loris = std::thread::spawn(move || {
+        slow_client(
+            port,
+            format!("GET / HTTP/1.1\r\n{}X-Slow: ", host(port)),
+            b"abcdefgh",
+        )
+    });
+    // Meanwhile another client is served at once.
+    std::thread::sleep(Duration::from_millis(100));
+    let (status, _, _) = get(port, "/api/state", &host(port));
+    let served = Instant::now();
+    assert_eq!(status, 200);
+    let (closed, answer) = loris.join().unwrap();
+    assert_eq!(first_line(&answer), "HTTP/1.1 408 Request Timeout");
+    let held = closed - started;
+    assert!(
+        held >= Duration::from_millis(1450) && held < Duration::from_secs(5),
+        "{held:?}"
+    );
+    assert!(served < closed, "the other client waited for the slow one");
+}
+
+#[test]
+fn a_slow_body_is_dropped_at_its_deadline() {
+    let port = Server::bind(0, Studio::example())
+        .unwrap()
+        .with_config(short_deadlines())
+        .spawn();
+    let started = Instant::now();
+    let (closed, answer) = slow_client(
+        port,
+        format!(
+            "POST /api/render HTTP/1.1\r\n{}Content-Length: 100000\r\n\r\n{{",
+            host(port)
+        ),
+        b" ",
+    );
+    assert_eq!(first_line(&answer), "HTTP/1.1 408 Request Timeout");
+    let held = closed - started;
+    // The body's deadline: 500 ms plus 100 kB at 1 GiB/s.
+    assert!(
+        held >= Duration::from_millis(450) && held < Duration::from_secs(5),
+        "{held:?}"
+    );
+}
+
+#[test]
+fn idle_and_silent_connections_are_closed_at_their_deadlines() {
+    let port = Server::bind(0, Studio::example())
+        .unwrap()
+        .with_config(short_deadlines())
+        .spawn();
+    // Kept alive after an answer: closed after the idle timeout, without a byte.
+    let mut s = TcpStream::connect(("127.0.0.1", port)).unwrap();
+    s.set_read_timeout(Some(Duration::from_secs(10))).unwrap();
+    s.write_all(format!("GET /api/state HTTP/1.1\r\n{}\r\n", host(port)).as_bytes())
+        .unwrap();
+    let (head, _) = read_answer(&mut s, false);
+    assert!(head.starts_with("HTTP/1.1 200 OK\r\n"));
+    let answered = Instant::now();
+    let mut rest = Vec::new();
+    s.read_to_end(&mut rest).unwrap();
+    let idle = answered.elapsed();
+    assert_eq!(rest, b"");
+    assert!(
+        idle >= Duration::from_millis(350) && idle < Duration::from_secs(5),
+        "{idle:?}"
+    );
+    // A connection that never sends anything: closed after the head timeout.
+    let mut s = TcpStream::connect(("127.0.0.1", port)).unwrap();
+    s.set_read_timeout(Some(Duration::from_secs(10))).unwrap();
+    let opened = Instant::now();
+    let mut rest = Vec::new();
+    s.read_to_end(&mut rest).unwrap();
+    let silent = opened.elapsed();
+    assert_eq!(rest, b"");
+    assert!(
+        silent >= Duration::from_millis(550) && silent < Duration::from_secs(5),
+        "{silent:?}"
+    );
+}
+
+/// Whether the server closed `s` (within `wait`).
+fn is_closed(s: &mut TcpStream, wait: Duration) -> bool {
+    s.set_read_timeout(Some(wait)).unwrap();
+    let mut byte = [0];
+    match s.read(&mut byte) {
+        Ok(0) => true,
+        Ok(_) => panic!("unexpected bytes"),
+        Err(e)
+            if matches!(
+                e.kind(),
+                std::io::ErrorKind::WouldBlock | std::io::ErrorKind::TimedOut
+            ) =>
+        {
+            false
+        }
+        Err(_) => true, // reset
+    }
+}
+
+#[test]
+fn at_the_limit_the_longest_waiting_connection_makes_room() {
+    let config = ServerConfig {
+        max_connections: 3,
+        ..ServerConfig::default()
+    };
+    let port = Server::bind(0, Studio::example())
+        .unwrap()
+        .with_config(config)
+        .spawn();
+    // Three connections that send nothing hold every slot (for 10 s each, by default)...
+    let mut silent: Vec<TcpStream> = (0..3)
+        .map(|_| TcpStream::connect(("127.0.0.1", port)).unwrap())
+        .collect();
+    // ... and one that is kept alive after a request, the most recent to wait.
+    let mut kept = silent.pop().unwrap();
+    kept.write_all(format!("GET /api/state HTTP/1.1\r\n{}\r\n", host(port)).as_bytes())
+        .unwrap();
+    kept.set_read_timeout(Some(Duration::from_secs(10)))
+        .unwrap();
+    assert!(read_answer(&mut kept, false).0.starts_with("HTTP/1.1 200"));
+    // A new client is served at once: the oldest silent one was closed for it.
+    let started = Instant::now();
+    assert_eq!(get(port, "/api/state", &host(port)).0, 200);
+    assert!(started.elapsed() < Duration::from_secs(2));
+    assert!(is_closed(&mut silent[0], Duration::from_secs(5)));
+    assert!(!is_closed(&mut silent[1], Duration::from_millis(200)));
+    // Full again: the next oldest goes, then the kept-alive one, which waited after it.
+    let mut newer = TcpStream::connect(("127.0.0.1", port)).unwrap();
+    assert_eq!(get(port, "/api/state", &host(port)).0, 200);
+    assert!(is_closed(&mut silent[1], Duration::from_secs(5)));
+    assert!(!is_closed(&mut kept, Duration::from_millis(200)));
+    let _newest = TcpStream::connect(("127.0.0.1", port)).unwrap();
+    assert_eq!(get(port, "/api/state", &host(port)).0, 200);
+    assert!(is_closed(&mut kept, Duration::from_secs(5)));
+    assert!(!is_closed(&mut newer, Duration::from_millis(200)));
+}
+
+/// The `./NAME.js` modules a page script imports.
+fn imports_of(script: &str) -> Vec<String> {
+    script
+        .lines()
+        .filter(|l| l.starts_with("import "))
+        .map(|l| {
+            let from = l.split(" from '").nth(1).expect("import ... from '...'");
+            from.split('\'').next().unwrap().to_owned()
+        })
+        .collect()
+}
+
+#[test]
+fn every_module_the_page_imports_is_served() {
+    let port = example_server();
+    let (_, _, page) = get(port, "/", &host(port));
+    assert!(String::from_utf8(page)
+        .unwrap()
+        .contains(r#"<script type="module" src="/studio.js"></script>"#));
+    // From the entry module, each import resolved against the importer's path, as the browser
+    // does; all six modules are reached.
+    let mut seen = std::collections::BTreeSet::new();
+    let mut todo = vec!["/studio.js".to_owned()];
+    while let Some(path) = todo.pop() {
+        if !seen.insert(path.clone()) {
+            continue;
+        }
+        let (status, head, body) = get(port, &path, &host(port));
+        assert_eq!(status, 200, "{path}");
+        assert!(head.contains("Content-Type: text/javascript"), "{path}");
+        let dir = &path[..path.rfind('/').unwrap()];
+        for import in imports_of(&String::from_utf8(body).unwrap()) {
+            todo.push(format!("{dir}/{}", import.strip_prefix("./").unwrap()));
+        }
+    }
+    let modules: Vec<_> = seen.into_iter().collect();
+    assert_eq!(
+        modules,
+        [
+            "/modules/figures.js",
+            "/modules/files.js",
+            "/modules/fitting.js",
+            "/modules/panel.js",
+            "/modules/queue.js",
+            "/modules/state.js",
+            "/studio.js"
+        ]
+    );
+    let (status, head, _) = http(
+        port,
+        format!(
+            "HEAD /modules/queue.js HTTP/1.1\r\n{}Connection: close\r\n\r\n",
+            host(port)
+        )
+        .as_bytes(),
+    );
+    assert_eq!(status, 200);
+    assert!(head.contains("Content-Type: text/javascript"));
+    assert_eq!(get(port, "/modules/other.js", &host(port)).0, 404);
+    // The Host check comes first.
+    assert_eq!(
+        get(port, "/modules/state.js", "Host: attacker.example\r\n").0,
+        403
     );
 }
