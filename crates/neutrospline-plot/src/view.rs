@@ -89,6 +89,17 @@ impl View {
         View::Score,
     ];
 
+    /// The names of [`View::ALL`], in its order.
+    pub const NAMES: [&'static str; 9] = {
+        let mut names = [""; 9];
+        let mut i = 0;
+        while i < 9 {
+            names[i] = View::ALL[i].name();
+            i += 1;
+        }
+        names
+    };
+
     /// The view's name, as parsed and displayed.
     pub const fn name(self) -> &'static str {
         match self {

@@ -31,6 +31,8 @@ pub enum ValueKind {
     Whole,
     /// A number (a whole number is one too).
     Number,
+    /// A list of numbers (on the command line, comma-separated: `0,0.5,1`).
+    Numbers,
     /// One of these names.
     Choice(&'static [&'static str]),
     /// Any text.
@@ -44,6 +46,7 @@ impl ValueKind {
             ValueKind::Flag => "expected true or false".to_owned(),
             ValueKind::Whole => "expected a whole number".to_owned(),
             ValueKind::Number => "expected a number".to_owned(),
+            ValueKind::Numbers => "expected a list of numbers".to_owned(),
             ValueKind::Choice(names) => format!("expected one of {}", names.join(", ")),
             ValueKind::Text => "expected text".to_owned(),
         }
@@ -104,6 +107,24 @@ impl OptionSpec {
                 .parse::<f64>()
                 .map(Read::Number)
                 .map_err(|_| invalid()),
+            (ValueKind::Numbers, OptionValue::Word(word)) => word
+                .split(',')
+                .map(|item| item.trim().parse::<f64>())
+                .collect::<Result<_, _>>()
+                .map(Read::Numbers)
+                .map_err(|_| invalid()),
+            // Every integer up to 2^53 is a float exactly; beyond, the nearest one.
+            #[allow(clippy::cast_precision_loss)]
+            (ValueKind::Numbers, OptionValue::List(items)) => items
+                .iter()
+                .map(|item| match item {
+                    OptionValue::Number(x) => Some(*x),
+                    OptionValue::Integer(n) => Some(*n as f64),
+                    _ => None,
+                })
+                .collect::<Option<_>>()
+                .map(Read::Numbers)
+                .ok_or_else(invalid),
             (ValueKind::Choice(names), OptionValue::Word(word) | OptionValue::Text(word)) => names
                 .iter()
                 .find(|name| name.eq_ignore_ascii_case(word.trim()))
@@ -129,8 +150,10 @@ pub enum OptionValue {
     /// A JSON or Python string: only a choice or text, never a number or a flag.
     Text(String),
     /// A command-line word, read as the option's kind (`5` for a whole number, `true` for a
-    /// flag).
+    /// flag, `0,0.5,1` for a list of numbers).
     Word(String),
+    /// A JSON array or a Python list or tuple.
+    List(Vec<OptionValue>),
 }
 
 impl fmt::Display for OptionValue {
@@ -142,6 +165,16 @@ impl fmt::Display for OptionValue {
             OptionValue::Number(x) => write!(f, "{x:?}"),
             OptionValue::Text(text) => write!(f, "{text:?}"),
             OptionValue::Word(word) => f.write_str(word),
+            OptionValue::List(items) => {
+                f.write_str("[")?;
+                for (i, item) in items.iter().enumerate() {
+                    if i > 0 {
+                        f.write_str(", ")?;
+                    }
+                    write!(f, "{item}")?;
+                }
+                f.write_str("]")
+            }
         }
     }
 }
@@ -155,6 +188,8 @@ pub enum Read {
     Whole(usize),
     /// A number.
     Number(f64),
+    /// A list of numbers.
+    Numbers(Vec<f64>),
     /// One of the choices (its canonical spelling).
     Choice(&'static str),
     /// Text.
@@ -262,6 +297,79 @@ pub fn find(specs: &'static [OptionSpec], name: &str) -> Result<&'static OptionS
         })
 }
 
+/// Reads a map of canonical option names to values into `R` through [`OptionSet::set`], so
+/// that an unknown key or a value of another kind is refused with the message every front end
+/// prints (a JSON `5.0` for a whole number stays a float; a string is never read as a number).
+///
+/// # Errors
+/// The first [`OptionError`], as a custom error of the deserializer; a value that is not a
+/// boolean, a number, a string or a list of them.
+#[cfg(feature = "serde")]
+pub fn deserialize<'de, R: OptionSet, D: serde::Deserializer<'de>>(
+    deserializer: D,
+) -> Result<R, D::Error> {
+    struct MapVisitor<R>(core::marker::PhantomData<R>);
+    impl<'de, R: OptionSet> serde::de::Visitor<'de> for MapVisitor<R> {
+        type Value = R;
+        fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+            f.write_str("a map of options")
+        }
+        fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<R, A::Error> {
+            let mut request = R::default();
+            while let Some(name) = map.next_key::<String>()? {
+                let value: OptionValue = map.next_value()?;
+                request
+                    .set(&name, value)
+                    .map_err(serde::de::Error::custom)?;
+            }
+            Ok(request)
+        }
+    }
+    deserializer.deserialize_map(MapVisitor(core::marker::PhantomData))
+}
+
+#[cfg(feature = "serde")]
+impl<'de> serde::Deserialize<'de> for OptionValue {
+    /// A boolean, an integer, a float, a string or a list of them, kept as it came.
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct ValueVisitor;
+        impl<'de> serde::de::Visitor<'de> for ValueVisitor {
+            type Value = OptionValue;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a boolean, a number or a string")
+            }
+            fn visit_bool<E>(self, v: bool) -> Result<OptionValue, E> {
+                Ok(OptionValue::Flag(v))
+            }
+            fn visit_u64<E>(self, v: u64) -> Result<OptionValue, E> {
+                // Beyond i64, the nearest float: too large for any count anyway.
+                #[allow(clippy::cast_precision_loss)]
+                Ok(i64::try_from(v).map_or(OptionValue::Number(v as f64), OptionValue::Integer))
+            }
+            fn visit_i64<E>(self, v: i64) -> Result<OptionValue, E> {
+                Ok(OptionValue::Integer(v))
+            }
+            fn visit_f64<E>(self, v: f64) -> Result<OptionValue, E> {
+                Ok(OptionValue::Number(v))
+            }
+            fn visit_str<E>(self, v: &str) -> Result<OptionValue, E> {
+                Ok(OptionValue::Text(v.to_owned()))
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> Result<OptionValue, A::Error> {
+                let mut items = Vec::new();
+                while let Some(item) = seq.next_element()? {
+                    items.push(item);
+                }
+                Ok(OptionValue::List(items))
+            }
+        }
+        deserializer.deserialize_any(ValueVisitor)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -335,6 +443,30 @@ mod tests {
                 .unwrap_err()
                 .to_string(),
             "count = \"even\": expected one of uniform, chord-length"
+        );
+    }
+
+    #[test]
+    fn lists_of_numbers_are_words_with_commas_or_lists() {
+        let list = OptionSpec {
+            kind: ValueKind::Numbers,
+            ..SPEC
+        };
+        assert_eq!(
+            list.read(&OptionValue::Word("0, 0.5,1".into())),
+            Ok(Read::Numbers(vec![0.0, 0.5, 1.0]))
+        );
+        assert_eq!(
+            list.read(&OptionValue::List(vec![
+                OptionValue::Integer(0),
+                OptionValue::Number(0.5)
+            ])),
+            Ok(Read::Numbers(vec![0.0, 0.5]))
+        );
+        let bad = OptionValue::List(vec![OptionValue::Text("a".into())]);
+        assert_eq!(
+            list.read(&bad).unwrap_err().to_string(),
+            "count = [\"a\"]: expected a list of numbers"
         );
     }
 

@@ -2,12 +2,15 @@
 
 use std::path::{Path, PathBuf};
 
-use neutrospline_plot::{render_png, render_svg, DataOverlay, PlotModel, PlotOptions, View};
+use neutrospline_plot::{
+    render_png, render_svg, DataOverlay, FigureRequest, PlotModel, PlotOptions, View,
+};
 
-use crate::commands::fit::{read_data, ColorByArg};
+use crate::commands::fit::read_data;
 use crate::commands::options::ModelArgs;
 use crate::input::{self, UsageError};
 use crate::output;
+use crate::request::RequestArgs;
 
 /// The figure formats, chosen by the output file's extension.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -39,28 +42,6 @@ impl FigureFormat {
     }
 }
 
-/// The alpha levels of `--alpha`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct AlphaLevels(pub Vec<f64>);
-
-/// Parses `--alpha A1,A2,...`: numbers in [0, 1].
-fn parse_alphas(text: &str) -> Result<AlphaLevels, String> {
-    text.split(',')
-        .map(|item| match item.trim().parse::<f64>() {
-            Ok(a) if (0.0..=1.0).contains(&a) => Ok(a),
-            _ => Err(format!(
-                "`{}` is not a number in [0, 1] (alpha levels of the band view, such as 0,0.5,1)",
-                item.trim()
-            )),
-        })
-        .collect::<Result<_, _>>()
-        .map(AlphaLevels)
-}
-
-fn parse_view(text: &str) -> Result<View, String> {
-    text.parse::<View>().map_err(|e| e.to_string())
-}
-
 /// Arguments of `plot`.
 #[derive(Debug, clap::Args)]
 #[command(after_help = "Views:\n  \
@@ -90,52 +71,15 @@ pub struct PlotArgs {
     #[arg(short = 'o', long = "output", value_name = "OUT")]
     pub output: PathBuf,
 
-    /// Which view to draw: controls, truth, indeterminacy, falsity, all, plane, score, data,
-    /// band (default: data with --data, else all)
-    #[arg(long, value_name = "VIEW", value_parser = parse_view)]
-    pub view: Option<View>,
-
     /// Measured points (a CSV data file, as `neutrospline fit` reads) to draw over the curve in
     /// the data view, with whiskers to the curve at their `parameter` column, or to the
     /// nearest point of the curve without one
     #[arg(long, value_name = "DATA.csv")]
     pub data: Option<String>,
 
-    /// The degree that colours the data points
-    #[arg(long, value_enum, value_name = "DEGREE", default_value = "truth")]
-    pub color_by: ColorByArg,
-
-    /// Width in pixels (the SVG's size too)
-    #[arg(long, value_name = "PX", default_value_t = PlotOptions::DEFAULT_WIDTH)]
-    pub width: u32,
-
-    /// Height in pixels
-    #[arg(long, value_name = "PX", default_value_t = PlotOptions::DEFAULT_HEIGHT)]
-    pub height: u32,
-
-    /// Title above the figure (default: the kind of model and the view; "" for none)
-    #[arg(long, value_name = "TEXT")]
-    pub title: Option<String>,
-
-    /// Caption under the figure (default: the model's description, if it has one)
-    #[arg(long, value_name = "TEXT")]
-    pub caption: Option<String>,
-
-    /// 3-D camera: angle around the vertical axis, in degrees
-    #[arg(long, value_name = "DEG", default_value_t = PlotOptions::DEFAULT_AZIMUTH, allow_hyphen_values = true)]
-    pub azimuth: f64,
-
-    /// 3-D camera: angle above the horizontal plane, in degrees
-    #[arg(long, value_name = "DEG", default_value_t = PlotOptions::DEFAULT_ELEVATION, allow_hyphen_values = true)]
-    pub elevation: f64,
-
-    /// The alpha levels of the band view, A1,A2,... each in [0, 1] (default 0,0.5,1)
-    #[arg(long, value_name = "A1,A2,...", value_parser = parse_alphas, allow_hyphen_values = true)]
-    pub alpha: Option<AlphaLevels>,
-
-    /// Points sampled along a curve (surfaces: samples per direction of the mesh; default 40)
-    #[arg(long, value_name = "N")]
-    pub samples: Option<usize>,
+    /// The figure's options (defined by the plot crate's `FigureRequest`)
+    #[command(flatten)]
+    pub figure: RequestArgs<FigureRequest>,
 
     #[command(flatten)]
     pub model: ModelArgs,
@@ -169,37 +113,24 @@ pub fn write_figure(
 /// error or a write error.
 pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
     let format = FigureFormat::from_path(&args.output)?;
-    let mut options = PlotOptions::new()
-        .with_size(args.width, args.height)
-        .with_camera(args.azimuth, args.elevation);
-    if let Some(n) = args.samples {
-        options = options.with_samples(n);
-    }
-    if let Some(AlphaLevels(alphas)) = &args.alpha {
-        options = options.with_alphas(alphas.iter().copied());
-    }
-    options.validate().map_err(|e| UsageError(e.to_string()))?;
+    let request = args.figure.request()?;
+    let mut options = request
+        .plot_options()
+        .map_err(|e| UsageError(e.to_string()))?;
     let model = input::read_model(&args.file, &args.model)?;
     let membership = model.membership();
     let mut plot = PlotModel::from_model(&model)?;
     let description = model.description().map(str::to_owned);
     let shape = model.into_shape();
-    if shape.is_surface() && args.samples.is_some() {
+    if shape.is_surface() && request.samples.is_some() {
         options
             .validate_surface()
             .map_err(|e| UsageError(e.to_string()))?;
     }
-    if let Some(title) = &args.title {
-        options = options.with_title(title.clone());
+    if let (None, Some(description)) = (&request.caption, description) {
+        options = options.with_caption(description);
     }
-    if let Some(caption) = args.caption.clone().or(description) {
-        options = options.with_caption(caption);
-    }
-    let view = args.view.unwrap_or(if args.data.is_some() {
-        View::Data
-    } else {
-        View::All
-    });
+    let view = request.view(args.data.is_some());
     match (&args.data, view) {
         (Some(file), View::Data) => {
             let table = read_data(file, membership)?;
@@ -212,7 +143,7 @@ pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
                     shape.dimension()
                 ));
             }
-            let overlay = DataOverlay::from_table(&table, args.color_by.into());
+            let overlay = DataOverlay::from_table(&table, request.color_by);
             plot = plot
                 .with_data(overlay)
                 .map_err(|e| anyhow::anyhow!("{}: {e}", table.file()))?;

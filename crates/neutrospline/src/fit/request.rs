@@ -395,12 +395,11 @@ mod serde_impl {
     //! [`FitRequest::set`] and [`FitRequest::validate`], so an unknown key, a value of another
     //! type or a contradiction is refused with the same message as on the command line.
 
-    use serde::de::{self, MapAccess, Visitor};
+    use serde::de;
     use serde::ser::SerializeMap;
     use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
     use super::FitRequest;
-    use crate::options::{OptionSet, OptionValue};
 
     impl Serialize for FitRequest {
         fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
@@ -423,61 +422,11 @@ mod serde_impl {
         }
     }
 
-    /// One value of the map, kept as it came.
-    struct Value(OptionValue);
-
-    impl<'de> Deserialize<'de> for Value {
-        fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-            struct ValueVisitor;
-            impl Visitor<'_> for ValueVisitor {
-                type Value = Value;
-                fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-                    f.write_str("a boolean, a number or a string")
-                }
-                fn visit_bool<E>(self, v: bool) -> Result<Value, E> {
-                    Ok(Value(OptionValue::Flag(v)))
-                }
-                fn visit_u64<E>(self, v: u64) -> Result<Value, E> {
-                    // Beyond i64, the nearest float: too large for any count anyway.
-                    #[allow(clippy::cast_precision_loss)]
-                    Ok(Value(i64::try_from(v).map_or(
-                        OptionValue::Number(v as f64),
-                        OptionValue::Integer,
-                    )))
-                }
-                fn visit_i64<E>(self, v: i64) -> Result<Value, E> {
-                    Ok(Value(OptionValue::Integer(v)))
-                }
-                fn visit_f64<E>(self, v: f64) -> Result<Value, E> {
-                    Ok(Value(OptionValue::Number(v)))
-                }
-                fn visit_str<E>(self, v: &str) -> Result<Value, E> {
-                    Ok(Value(OptionValue::Text(v.to_owned())))
-                }
-            }
-            deserializer.deserialize_any(ValueVisitor)
-        }
-    }
-
     impl<'de> Deserialize<'de> for FitRequest {
         fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-            struct RequestVisitor;
-            impl<'de> Visitor<'de> for RequestVisitor {
-                type Value = FitRequest;
-                fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-                    f.write_str("a map of fit options")
-                }
-                fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<FitRequest, A::Error> {
-                    let mut request = FitRequest::default();
-                    while let Some(name) = map.next_key::<String>()? {
-                        let Value(value) = map.next_value()?;
-                        request.set(&name, value).map_err(de::Error::custom)?;
-                    }
-                    request.validate().map_err(de::Error::custom)?;
-                    Ok(request)
-                }
-            }
-            deserializer.deserialize_map(RequestVisitor)
+            let request: FitRequest = crate::options::deserialize(deserializer)?;
+            request.validate().map_err(de::Error::custom)?;
+            Ok(request)
         }
     }
 }
