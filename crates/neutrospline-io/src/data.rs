@@ -30,7 +30,7 @@
 use std::io::BufRead;
 use std::path::Path;
 
-use neutrospline::fit::{FitData, FitError};
+use neutrospline::fit::{fit_rows, DynFit, FitData, FitError, FitOptions};
 use neutrospline::{DegreeError, Degrees, Membership};
 
 use crate::csv::Records;
@@ -147,6 +147,29 @@ impl DataTable {
             data = data.with_weights(weights.clone())?;
         }
         Ok(data)
+    }
+
+    /// Fits a curve of the table's dimension to its points, with its parameters and weights:
+    /// [`fit_rows`], its errors located in the file ([`DataTable::locate`]).
+    ///
+    /// # Errors
+    /// The located [`FitError`].
+    pub fn fit(&self, options: &FitOptions) -> Result<DynFit, InputError> {
+        let d = self.dimension();
+        let positions: Vec<f64> = self
+            .positions
+            .iter()
+            .flat_map(|p| p[..d].to_vec())
+            .collect();
+        fit_rows(
+            d,
+            &positions,
+            self.degrees.clone(),
+            self.parameters.clone(),
+            self.weights.clone(),
+            options,
+        )
+        .map_err(|e| self.locate(&e))
     }
 
     /// A fitting error located in this file: an error about one point names the point's line

@@ -3,7 +3,8 @@
 use core::ops::Range;
 
 use neutrospline::{
-    AnyCurve, Bounded, ControlPoint, ControlPolygon, Evaluate, Interval, KnotVector, Surface,
+    AnyCurve, Bounded, ControlPoint, ControlPolygon, DynCurve, Evaluate, Interval, KnotVector,
+    Surface,
 };
 
 use crate::Kind;
@@ -28,6 +29,15 @@ impl From<AnyCurve<2>> for Shape {
 impl From<AnyCurve<3>> for Shape {
     fn from(curve: AnyCurve<3>) -> Shape {
         Shape::Spatial(curve)
+    }
+}
+
+impl From<DynCurve> for Shape {
+    fn from(curve: DynCurve) -> Shape {
+        match curve {
+            DynCurve::Planar(c) => Shape::Planar(c),
+            DynCurve::Spatial(c) => Shape::Spatial(c),
+        }
     }
 }
 

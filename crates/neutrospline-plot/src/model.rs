@@ -6,8 +6,8 @@ use std::sync::Arc;
 
 use neutrospline::{
     alpha_cut, centroid_curve, uniform_parameter, AnyCurve, Bezier, ControlPoint, ControlPolygon,
-    CurveKind, CurvePoint, EvaluateSurface, NearestPoint, NeutrosophicPoint, Spread, Surface,
-    SurfaceKind,
+    CurveKind, CurvePoint, DynCurve, EvaluateSurface, NearestPoint, NeutrosophicPoint, Spread,
+    Surface, SurfaceKind,
 };
 
 use crate::error::PlotError;
@@ -379,6 +379,17 @@ impl PlotModel {
         };
         let model = PlotModel::from_curve(curve.clone(), &curve.control_points())?;
         Ok(model.with_label(label))
+    }
+
+    /// [`PlotModel::from_any`] for a curve of either dimension.
+    ///
+    /// # Errors
+    /// As [`PlotModel::from_any`].
+    pub fn from_dyn(curve: &DynCurve) -> Result<PlotModel, PlotError> {
+        match curve {
+            DynCurve::Planar(c) => PlotModel::from_any(c),
+            DynCurve::Spatial(c) => PlotModel::from_any(c),
+        }
     }
 
     /// A model from curve points computed elsewhere (drawn as given, in order) and control

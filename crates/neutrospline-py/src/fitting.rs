@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 
 use neutrospline::fit::{
-    channel_names, fit as fit_curve, DataWeights, Fit, FitData, FitError, FitReport, FitRequest,
+    channel_names, fit_rows, DataWeights, DynFit, FitError, FitOptions, FitReport, FitRequest,
 };
 use neutrospline::options::{OptionSet, OptionValue};
 use neutrospline::{Degrees, Membership};
@@ -27,12 +27,6 @@ enum Source {
     File(DataTable),
 }
 
-/// The fitted curve of either dimension.
-enum Fitted {
-    Planar(Fit<2>),
-    Spatial(Fit<3>),
-}
-
 impl Source {
     fn dimension(&self) -> usize {
         match self {
@@ -48,35 +42,43 @@ impl Source {
         }
     }
 
-    /// The core's data of dimension `D`, with the given parameters and weights.
-    fn data<const D: usize>(
+    /// The fit of the points, with the given parameters and weights.
+    fn fit(
         &self,
         parameters: Option<Vec<f64>>,
         weights: Option<Vec<f64>>,
-    ) -> Result<FitData<D>, FitError> {
-        let mut data = match self {
+        options: &FitOptions,
+    ) -> Result<DynFit, FitError> {
+        match self {
             Source::Arrays {
-                positions, degrees, ..
-            } => {
-                let rows = positions
-                    .chunks_exact(D)
-                    .map(|p| {
-                        let mut row = [0.0; D];
-                        row.copy_from_slice(p);
-                        row
-                    })
+                positions,
+                dimension,
+                degrees,
+            } => fit_rows(
+                *dimension,
+                positions,
+                degrees.clone(),
+                parameters,
+                weights,
+                options,
+            ),
+            Source::File(table) => {
+                let d = table.dimension();
+                let rows: Vec<f64> = table
+                    .positions()
+                    .iter()
+                    .flat_map(|p| p[..d].to_vec())
                     .collect();
-                FitData::new(rows, degrees.clone())?
+                fit_rows(
+                    d,
+                    &rows,
+                    table.degrees().to_vec(),
+                    parameters,
+                    weights,
+                    options,
+                )
             }
-            Source::File(table) => table.fit_data::<D>()?,
-        };
-        if let Some(parameters) = parameters {
-            data = data.with_parameters(parameters)?;
         }
-        if let Some(weights) = weights {
-            data = data.with_weights(weights)?;
-        }
-        Ok(data)
     }
 
     /// The message of a fitting error: located in the file, or as the core says it.
@@ -189,30 +191,10 @@ pub fn fit<'py>(
     let weight_values = read_weights(weights, &mut request, &source)?;
     let options = request.validate().map_err(invalid)?;
     let fitted = py
-        .detach(|| -> Result<Fitted, FitError> {
-            Ok(if source.dimension() == 3 {
-                Fitted::Spatial(fit_curve(
-                    &source.data::<3>(parameters, weight_values)?,
-                    &options,
-                )?)
-            } else {
-                Fitted::Planar(fit_curve(
-                    &source.data::<2>(parameters, weight_values)?,
-                    &options,
-                )?)
-            })
-        })
+        .detach(|| source.fit(parameters, weight_values, &options))
         .map_err(|e| invalid(source.message(&e)))?;
-    let (model, report) = match &fitted {
-        Fitted::Planar(f) => (
-            Model::new(f.curve.clone()),
-            report_dict(py, &f.report, 2, &f.parameters)?,
-        ),
-        Fitted::Spatial(f) => (
-            Model::new(f.curve.clone()),
-            report_dict(py, &f.report, 3, &f.parameters)?,
-        ),
-    };
+    let report = report_dict(py, &fitted.report, source.dimension(), &fitted.parameters)?;
+    let model = Model::new(fitted.curve);
     let mut model = model
         .with_membership(membership_rule)
         .map_err(invalid)?

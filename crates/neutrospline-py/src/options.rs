@@ -4,12 +4,13 @@
 
 use neutrospline::options::{OptionSet, OptionValue, ValueKind};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString};
+use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
 
 use crate::errors::invalid;
 
 /// The Python value as the library's [`OptionValue`], kept as it was given: `True` is a
-/// flag, `5` an integer, `5.0` a number, `"score"` text; anything else is refused with the
+/// flag, `5` an integer, `5.0` a number, `"score"` text, a list or tuple a list (a numpy
+/// array of numbers too); anything else is refused with the
 /// option's name and what it expects.
 fn option_value(name: &str, kind: ValueKind, value: &Bound<'_, PyAny>) -> PyResult<OptionValue> {
     // bool before int: True is an int in Python.
@@ -28,7 +29,18 @@ fn option_value(name: &str, kind: ValueKind, value: &Bound<'_, PyAny>) -> PyResu
     if value.is_instance_of::<PyString>() {
         return Ok(OptionValue::Text(value.extract()?));
     }
-    // numpy scalars: an integer type has __index__, a float type __float__.
+    if value.is_instance_of::<PyList>() || value.is_instance_of::<PyTuple>() {
+        return value
+            .try_iter()?
+            .map(|item| option_value(name, kind, &item?))
+            .collect::<PyResult<_>>()
+            .map(OptionValue::List);
+    }
+    // A numpy array as its list; numpy scalars: an integer type has __index__, a float type
+    // __float__.
+    if value.hasattr("dtype")? && value.getattr("ndim")?.extract::<usize>()? > 0 {
+        return option_value(name, kind, &value.call_method0("tolist")?);
+    }
     if value.hasattr("__index__")? {
         return Ok(OptionValue::Integer(
             value.call_method0("__index__")?.extract()?,
@@ -110,6 +122,21 @@ pub fn table<'py, R: OptionSet>(py: Python<'py>) -> PyResult<Bound<'py, PyList>>
                 None,
                 default
                     .map(|d| d.parse::<f64>())
+                    .transpose()
+                    .map_err(invalid)?
+                    .into_pyobject(py)?
+                    .into_any()
+                    .unbind(),
+            ),
+            ValueKind::Numbers => (
+                "list[float]",
+                None,
+                default
+                    .map(|d| {
+                        d.split(',')
+                            .map(str::parse::<f64>)
+                            .collect::<Result<Vec<_>, _>>()
+                    })
                     .transpose()
                     .map_err(invalid)?
                     .into_pyobject(py)?

@@ -22,7 +22,7 @@ use std::str::FromStr;
 use std::sync::Mutex;
 use std::time::Instant;
 
-use neutrospline::fit::{fit, FitRequest};
+use neutrospline::fit::FitRequest;
 use neutrospline::{
     uniform_parameter, AnyCurve, ControlPolygon, DegreeKind, Evaluate, EvaluateSurface, Membership,
 };
@@ -682,15 +682,10 @@ fn fit_data(body: &Value) -> Result<Response, Response> {
     request
         .check_data_weights(table.file(), table.weights().is_some())
         .map_err(|e| Response::error(422, &e.to_string()))?;
-    let located =
-        |e: neutrospline::fit::FitError| Response::error(422, &table.locate(&e).to_string());
-    let (model, report) = if table.dimension() == 3 {
-        let f = fit(&table.fit_data::<3>().map_err(located)?, &options).map_err(located)?;
-        (Model::new(f.curve), f.report)
-    } else {
-        let f = fit(&table.fit_data::<2>().map_err(located)?, &options).map_err(located)?;
-        (Model::new(f.curve), f.report)
-    };
+    let fitted = table
+        .fit(&options)
+        .map_err(|e| Response::error(422, &e.to_string()))?;
+    let (model, report) = (Model::new(fitted.curve), fitted.report);
     let model = model
         .with_membership(membership)
         .map_err(|e| Response::error(422, &e.to_string()))?

@@ -102,6 +102,7 @@ pub mod color;
 mod curve;
 mod degrees;
 mod derivative;
+mod dyn_curve;
 mod example;
 pub mod fit;
 mod fuzzy;
@@ -131,6 +132,7 @@ pub use degrees::{
     DegreeError, DegreeKind, Degrees, Membership, ParseNameError, HESITATION_TOLERANCE,
 };
 pub use derivative::CurveDerivative;
+pub use dyn_curve::DynCurve;
 pub use example::{example1, EXAMPLE1_NAMES, EXAMPLE1_TABLE};
 pub use fuzzy::{alpha_cut, centroid_curve, FuzzyError, Side, Spread};
 pub use geometry::{

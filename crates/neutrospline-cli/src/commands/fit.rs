@@ -4,7 +4,7 @@
 use std::io::Write;
 use std::path::PathBuf;
 
-use neutrospline::fit::{channel_names, fit, Fit, FitOptions, FitReport, FitRequest};
+use neutrospline::fit::{channel_names, DynFit, FitReport, FitRequest};
 use neutrospline::{DegreeKind, Membership};
 use neutrospline_io::{DataTable, Format, Model};
 use neutrospline_plot::{DataOverlay, PlotModel, PlotOptions, View};
@@ -90,42 +90,6 @@ pub struct FitArgs {
     pub name: Option<String>,
 }
 
-/// The fitted curve of either dimension, with its parameters and report.
-enum Fitted {
-    Planar(Fit<2>),
-    Spatial(Fit<3>),
-}
-
-impl Fitted {
-    fn report(&self) -> &FitReport {
-        match self {
-            Fitted::Planar(f) => &f.report,
-            Fitted::Spatial(f) => &f.report,
-        }
-    }
-
-    fn parameters(&self) -> &[f64] {
-        match self {
-            Fitted::Planar(f) => &f.parameters,
-            Fitted::Spatial(f) => &f.parameters,
-        }
-    }
-}
-
-/// Fits `table` with `options`, errors located in the data file.
-fn fit_table(table: &DataTable, options: &FitOptions) -> anyhow::Result<Fitted> {
-    fn one<const D: usize>(table: &DataTable, options: &FitOptions) -> anyhow::Result<Fit<D>> {
-        let located = |e: neutrospline::fit::FitError| anyhow::Error::msg(table.locate(&e));
-        let data = table.fit_data::<D>().map_err(located)?;
-        fit(&data, options).map_err(located)
-    }
-    Ok(if table.dimension() == 3 {
-        Fitted::Spatial(one::<3>(table, options)?)
-    } else {
-        Fitted::Planar(one::<2>(table, options)?)
-    })
-}
-
 /// Reads the data, fits, writes the model, the report and the figure.
 ///
 /// # Errors
@@ -158,17 +122,16 @@ pub fn run(args: &FitArgs) -> anyhow::Result<()> {
     request
         .check_data_weights(table.file(), table.weights().is_some())
         .map_err(|e| UsageError(e.to_string()))?;
-    let fitted = fit_table(&table, &options)?;
-    let mut model = match &fitted {
-        Fitted::Planar(f) => Model::new(f.curve.clone()),
-        Fitted::Spatial(f) => Model::new(f.curve.clone()),
-    }
-    .with_membership(membership)?
-    .with_description(format!(
-        "Fitted to {} ({} points) by neutrospline fit",
-        table.file(),
-        table.len()
-    ));
+    let fitted = table
+        .fit(&options)
+        .map_err(|e| anyhow::Error::msg(e.to_string()))?;
+    let mut model = Model::new(fitted.curve.clone())
+        .with_membership(membership)?
+        .with_description(format!(
+            "Fitted to {} ({} points) by neutrospline fit",
+            table.file(),
+            table.len()
+        ));
     if let Some(name) = &args.name {
         model = model.with_name(name.clone());
     }
@@ -182,7 +145,7 @@ pub fn run(args: &FitArgs) -> anyhow::Result<()> {
         w.write_all(text.as_bytes())?;
         Ok(())
     })?;
-    let report = fitted.report();
+    let report = &fitted.report;
     let dimension = table.dimension();
     let mut err = std::io::stderr().lock();
     match args.report {
@@ -208,19 +171,16 @@ pub fn read_data(file: &str, membership: Membership) -> anyhow::Result<DataTable
 /// The `data` view's model: the fitted curve, the data coloured by `color_by`, whiskers to
 /// the curve at the fitted parameters.
 fn data_plot(
-    fitted: &Fitted,
+    fitted: &DynFit,
     table: &DataTable,
     color_by: DegreeKind,
 ) -> anyhow::Result<PlotModel> {
-    let model = match fitted {
-        Fitted::Planar(f) => PlotModel::from_any(&f.curve)?,
-        Fitted::Spatial(f) => PlotModel::from_any(&f.curve)?,
-    };
+    let model = PlotModel::from_dyn(&fitted.curve)?;
     let overlay = DataOverlay::new(
         table.positions().to_vec(),
         table.degrees().iter().map(|d| d.to_array()).collect(),
     )
-    .with_parameters(fitted.parameters().to_vec())
+    .with_parameters(fitted.parameters.clone())
     .with_color_by(color_by);
     Ok(model.with_data(overlay)?)
 }

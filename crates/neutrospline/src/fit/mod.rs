@@ -48,6 +48,7 @@ use core::fmt;
 use crate::any_curve::AnyCurve;
 use crate::curve::CurveError;
 use crate::degrees::{DegreeError, DegreeKind, Degrees, Membership};
+use crate::dyn_curve::DynCurve;
 
 pub use knots::Parametrization;
 pub use report::{AtBound, FitReport};
@@ -443,6 +444,14 @@ pub enum FitError {
     /// An option is out of range or does not fit the others.
     #[error("{0}")]
     Option(String),
+    /// Positions that are not rows of 2 or 3 coordinates.
+    #[error("{values} coordinates are not rows of {dimension} (a fit needs points of 2 or 3 coordinates)")]
+    Dimension {
+        /// The coordinates per point given.
+        dimension: usize,
+        /// The number of coordinates.
+        values: usize,
+    },
     /// The normal equations are not numerically positive definite.
     #[error("the least-squares system is singular (condition beyond double precision); use fewer control points or smoothing")]
     Singular,
@@ -469,6 +478,92 @@ impl fmt::Display for FitTarget {
             FitTarget::Tolerance(e) => write!(f, "least squares to a tolerance of {e}"),
         }
     }
+}
+
+/// A fitted curve of either dimension ([`fit_rows`]), with the parameters of the data on it
+/// and the report.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DynFit {
+    /// The curve.
+    pub curve: DynCurve,
+    /// The parameter of each data point on the curve.
+    pub parameters: Vec<f64>,
+    /// The error report.
+    pub report: FitReport,
+}
+
+impl<const D: usize> From<Fit<D>> for DynFit
+where
+    DynCurve: From<AnyCurve<D>>,
+{
+    fn from(fit: Fit<D>) -> DynFit {
+        DynFit {
+            curve: fit.curve.into(),
+            parameters: fit.parameters,
+            report: fit.report,
+        }
+    }
+}
+
+/// Fits a curve to points given as rows of `dimension` (2 or 3) coordinates, `positions`
+/// holding them one row after another: [`fit`] for a dimension known at run time, with
+/// optional parameters and weights as [`FitData::with_parameters`] and
+/// [`FitData::with_weights`] take them.
+///
+/// ```
+/// use neutrospline::fit::{fit_rows, FitOptions, FitTarget};
+/// use neutrospline::Degrees;
+/// let positions = [0.0, 0.0, 1.0, 1.0, 2.0, 0.0];
+/// let degrees = vec![Degrees::new(0.5, 0.2, 0.1)?; 3];
+/// let options = FitOptions::default().with_degree(2).with_target(FitTarget::Interpolate);
+/// let fitted = fit_rows(2, &positions, degrees, None, None, &options)?;
+/// assert_eq!(fitted.curve.dimension(), 2);
+/// assert_eq!(fitted.parameters.len(), 3);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
+/// # Errors
+/// [`FitError::Dimension`] for a dimension other than 2 or 3 or positions that are not whole
+/// rows; the errors of [`FitData`] and [`fit`].
+pub fn fit_rows(
+    dimension: usize,
+    positions: &[f64],
+    degrees: Vec<Degrees>,
+    parameters: Option<Vec<f64>>,
+    weights: Option<Vec<f64>>,
+    options: &FitOptions,
+) -> Result<DynFit, FitError> {
+    fn rows<const D: usize>(
+        positions: &[f64],
+        degrees: Vec<Degrees>,
+        parameters: Option<Vec<f64>>,
+        weights: Option<Vec<f64>>,
+        options: &FitOptions,
+    ) -> Result<Fit<D>, FitError> {
+        let points = positions
+            .chunks_exact(D)
+            .map(|row| core::array::from_fn(|a| row[a]))
+            .collect();
+        let mut data = FitData::new(points, degrees)?;
+        if let Some(parameters) = parameters {
+            data = data.with_parameters(parameters)?;
+        }
+        if let Some(weights) = weights {
+            data = data.with_weights(weights)?;
+        }
+        fit(&data, options)
+    }
+    if !(dimension == 2 || dimension == 3) || !positions.len().is_multiple_of(dimension) {
+        return Err(FitError::Dimension {
+            dimension,
+            values: positions.len(),
+        });
+    }
+    Ok(if dimension == 3 {
+        rows::<3>(positions, degrees, parameters, weights, options)?.into()
+    } else {
+        rows::<2>(positions, degrees, parameters, weights, options)?.into()
+    })
 }
 
 /// The channel names of a `D`-dimensional fit: `x`, `y`, \[`z`,\] `truth`, `indeterminacy`,
