@@ -282,7 +282,7 @@ def test_canvas_frames_match_the_svg_figures(start_studio, page, out_dir):
                 const model = (await post('/api/open', {name, text})).model;
                 const views = ['plane', 'controls', 'truth', 'indeterminacy', 'falsity', 'all', 'score'];
                 const ask = (encoding) => post('/api/render', {model: JSON.stringify(model), views,
-                    encoding, azimuth: 30, elevation: 20, at: ''});
+                    encoding, figure: {azimuth: 30, elevation: 20}, at: ''});
                 const [svgs, lists] = [await ask('svg'), await ask('display-list')];
                 const W = 800, H = 600, out = {};
                 const pixels = (canvas) => canvas.getContext('2d').getImageData(0, 0, W, H).data;

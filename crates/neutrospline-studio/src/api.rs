@@ -7,14 +7,19 @@
 //! |---|---|---|
 //! | `GET /`, `/studio.js`, `/studio.css`, `/paint.js` | | the page (embedded in the binary) |
 //! | `GET /api/state` | | `{model, file, canSave}`: the model the studio was started with |
-//! | `POST /api/render` | `{model, views, encoding: svg\|display-list, samples, azimuth, elevation, at, data, colorBy}` | `{model, figures (SVG) or drawings (display lists), errors, handles, table, info, ms}` |
-//! | `POST /api/export` | `{model, view, format: svg\|png, azimuth, elevation, data, colorBy}` | the figure's bytes |
+//! | `POST /api/render` | `{model, views, encoding: svg\|display-list, at, data, figure}` | `{model, figures (SVG) or drawings (display lists), errors, handles, table, info, ms}` |
+//! | `POST /api/export` | `{model, format: svg\|png, data, figure}` | the figure's bytes |
 //! | `POST /api/open` | `{name, text}` | `{model}`: a TOML, JSON or CSV model read like a file |
 //! | `POST /api/convert` | `{model, format: toml\|json}` | `{text, filename}` (a download) |
 //! | `POST /api/save` | `{model}` | `{saved}`: written atomically to the file the studio was started with |
 //! | `POST /api/data` | `{name, text, membership}` | `{points, dimension}` |
-//! | `POST /api/fit` | `{data: {name, text}, membership, options}` | `{model, report}` |
+//! | `POST /api/fit` | `{data: {name, text}, options}` | `{model, report}` |
 //!
+//! `figure` holds the figure's options by the names of the plot crate's `FigureRequest` (view,
+//! width, height, title, caption, azimuth, elevation, samples, alpha, color-by), `options` the
+//! fit's by those of `neutrospline::fit::FitRequest` (the membership rule among them): the
+//! command line's flags, read by the libraries, so a wrong type, an unknown name or a value out
+//! of range is a 400 with the command line's message.
 //! A refused model is answered 422 with `{"error": {"message", "field", "line"}}`.
 
 use std::path::{Path, PathBuf};
@@ -28,11 +33,12 @@ use neutrospline::{
 };
 use neutrospline_io::{format_number, DataTable, Format, Model, ReadError, ReadOptions, Shape};
 use neutrospline_plot::{
-    render_drawing, render_png, render_svg, DataOverlay, Drawing, PlotModel, PlotOptions, View,
+    render_drawing, render_png, render_svg, DataOverlay, Drawing, FigureRequest, PlotModel,
+    PlotOptions, View,
 };
 use serde_json::{json, Map, Value};
 
-use crate::figure::{figure_options, handles, space_handles};
+use crate::figure::{handles, space_handles};
 use crate::http::{Handler, Request, Response};
 
 const INDEX_HTML: &str = include_str!("assets/index.html");
@@ -248,15 +254,43 @@ fn page_model(body: &Value) -> Result<Model, Response> {
     .map_err(|e| refused(&e, true))
 }
 
-fn camera(body: &Value) -> (f64, f64) {
-    (
-        body["azimuth"]
-            .as_f64()
-            .unwrap_or(PlotOptions::DEFAULT_AZIMUTH),
-        body["elevation"]
-            .as_f64()
-            .unwrap_or(PlotOptions::DEFAULT_ELEVATION),
-    )
+/// The figure's request from the page: `figure` maps the canonical names of
+/// [`FigureRequest`]'s options (those of `neutrospline plot`: view, width, height, title,
+/// caption, azimuth, elevation, samples, alpha, color-by) to values; a wrong type, an unknown
+/// name or a value out of range is a 400 with the library's message.
+fn figure_request(body: &Value) -> Result<FigureRequest, Response> {
+    for key in [
+        "azimuth",
+        "elevation",
+        "samples",
+        "colorBy",
+        "color-by",
+        "view",
+    ] {
+        if body.get(key).is_some() {
+            return Err(Response::error(
+                400,
+                &format!("{key} is a figure option: give it in `figure`"),
+            ));
+        }
+    }
+    match body.get("figure") {
+        None | Some(Value::Null) => Ok(FigureRequest::default()),
+        Some(figure) => neutrospline::options::deserialize::<FigureRequest, _>(figure.clone())
+            .map_err(|e| Response::error(400, &e.to_string())),
+    }
+}
+
+/// The plot options of `request`, with the model's description as the caption when the
+/// request gives none (as `neutrospline plot` does).
+fn figure_options(model: &Model, request: &FigureRequest) -> Result<PlotOptions, Response> {
+    let options = request
+        .plot_options()
+        .map_err(|e| Response::error(400, &e.to_string()))?;
+    Ok(match (&request.caption, model.description()) {
+        (None, Some(description)) => options.with_caption(description),
+        _ => options,
+    })
 }
 
 fn membership(body: &Value, default: Membership) -> Result<Membership, Response> {
@@ -288,7 +322,11 @@ fn file_label(name: &str) -> String {
 }
 
 /// The plot model, with the data of `body["data"]` when there is any.
-fn prepare(model: &Model, body: &Value) -> Result<(PlotModel, Option<String>), Response> {
+fn prepare(
+    model: &Model,
+    body: &Value,
+    color_by: DegreeKind,
+) -> Result<(PlotModel, Option<String>), Response> {
     let plot = PlotModel::from_model(model).map_err(|e| Response::error(422, &e.to_string()))?;
     let table = match data_table(&body["data"], model.membership()) {
         Ok(t) => t,
@@ -318,10 +356,6 @@ fn prepare(model: &Model, body: &Value) -> Result<(PlotModel, Option<String>), R
         );
         return Ok((plot, Some(message)));
     }
-    let color_by = body["colorBy"]
-        .as_str()
-        .and_then(|c| DegreeKind::from_str(c).ok())
-        .unwrap_or(DegreeKind::Truth);
     match plot
         .clone()
         .with_data(DataOverlay::from_table(&table, color_by))
@@ -361,18 +395,14 @@ fn render(body: &Value) -> Result<Response, Response> {
             ))
         }
     };
-    let (azimuth, elevation) = camera(body);
-    let mut options = figure_options(&model, azimuth, elevation);
+    let mut request = figure_request(body)?;
     // A preview while a point is dragged: fewer samples along a curve (the figure after the
-    // drag, and every export, use the default).
-    if let Some(n) = body["samples"].as_u64() {
-        if !model.shape().is_surface() {
-            let n = usize::try_from(n).unwrap_or(usize::MAX);
-            options = options
-                .with_samples(n.clamp(PlotOptions::MIN_SAMPLES, PlotOptions::DEFAULT_SAMPLES));
-        }
+    // drag, and every export, use the default); a surface keeps its mesh.
+    if model.shape().is_surface() {
+        request.samples = None;
     }
-    let (plot, data_error) = prepare(&model, body)?;
+    let options = figure_options(&model, &request)?;
+    let (plot, data_error) = prepare(&model, body, request.color_by)?;
     // Each view's figure as JSON text: an SVG string or a display-list object.
     let mut figures = Vec::new();
     let mut errors = Map::new();
@@ -603,10 +633,10 @@ fn table(shape: &Shape, at: &str) -> Result<(Vec<String>, Vec<Vec<String>>), Str
 
 fn export(body: &Value) -> Result<Response, Response> {
     let model = page_model(body)?;
-    let view = parse_view(body["view"].as_str().unwrap_or("all"))?;
-    let (azimuth, elevation) = camera(body);
-    let options = figure_options(&model, azimuth, elevation);
-    let (plot, _) = prepare(&model, body)?;
+    let request = figure_request(body)?;
+    let options = figure_options(&model, &request)?;
+    let (plot, _) = prepare(&model, body, request.color_by)?;
+    let view = request.view(body.get("data").is_some_and(|d| !d.is_null()));
     let fail = |e: neutrospline_plot::PlotError| Response::error(422, &e.to_string());
     match body["format"].as_str() {
         Some("png") => Ok(Response::new(

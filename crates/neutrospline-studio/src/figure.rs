@@ -1,20 +1,7 @@
 //! Figures of a model, drawn the way `neutrospline plot` draws them: one code path for the
 //! command and the studio, so that the studio's "export SVG" writes the command's bytes.
 
-use neutrospline_io::Model;
-use neutrospline_plot::{Drawing, PlotOptions};
-
-/// The options `neutrospline plot FILE --azimuth A --elevation E` draws with: the default
-/// size and samples, the default title, and the model's description as the caption.
-pub fn figure_options(model: &Model, azimuth: f64, elevation: f64) -> PlotOptions {
-    let options = PlotOptions::new()
-        .with_size(PlotOptions::DEFAULT_WIDTH, PlotOptions::DEFAULT_HEIGHT)
-        .with_camera(azimuth, elevation);
-    match model.description() {
-        Some(caption) => options.with_caption(caption),
-        None => options,
-    }
-}
+use neutrospline_plot::Drawing;
 
 /// Where the control points of a curve are drawn in a `plane` view, and how dragging one
 /// moves it.
@@ -188,7 +175,7 @@ fn least_move(a: &[[f64; 3]; 2]) -> Option<Vec<[f64; 2]>> {
 mod tests {
     use super::*;
     use neutrospline::ControlPolygon;
-    use neutrospline_plot::{render_drawing, PlotModel, View};
+    use neutrospline_plot::{render_drawing, PlotModel, PlotOptions, View};
 
     /// A space curve's drag map: a pointer move, mapped to a model move, is that move again
     /// when projected by the fitted map.

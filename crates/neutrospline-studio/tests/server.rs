@@ -222,7 +222,7 @@ fn render_gives_display_lists_for_drag_frames() {
         let (status, answer, _) = post(
             port,
             "/api/render",
-            &json!({ "model": EXAMPLE1_JSON, "views": views, "encoding": encoding, "samples": 40 }),
+            &json!({ "model": EXAMPLE1_JSON, "views": views, "encoding": encoding, "figure": { "samples": 40 } }),
         );
         assert_eq!(status, 200, "{answer}");
         answer
@@ -359,7 +359,7 @@ fn export_gives_the_figure_bytes() {
     let (status, _, svg) = post(
         port,
         "/api/export",
-        &json!({ "model": EXAMPLE1_JSON, "view": "truth", "format": "svg" }),
+        &json!({ "model": EXAMPLE1_JSON, "format": "svg", "figure": { "view": "truth" } }),
     );
     assert_eq!(status, 200);
     assert_eq!(
@@ -369,13 +369,49 @@ fn export_gives_the_figure_bytes() {
     let (status, _, png) = post(
         port,
         "/api/export",
-        &json!({ "model": EXAMPLE1_JSON, "view": "controls", "format": "png", "azimuth": 10, "elevation": 40 }),
+        &json!({ "model": EXAMPLE1_JSON, "format": "png", "figure": { "view": "controls", "azimuth": 10, "elevation": 40 } }),
     );
     assert_eq!(status, 200);
     assert_eq!(
         png,
         render_png(&plot, View::Controls, &options.with_camera(10.0, 40.0)).unwrap()
     );
+}
+
+/// The figure's options are the plot crate's `FigureRequest`, under `figure`: a value out of
+/// range gets `neutrospline plot`'s message, a misspelled or misplaced option is refused, never
+/// drawn with a default in its place.
+#[test]
+fn figure_options_are_refused_with_the_librarys_messages() {
+    let port = example_server();
+    for (body, message) in [
+        (
+            json!({ "model": EXAMPLE1_JSON, "figure": { "view": "truth", "elevation": 95 } }),
+            "camera elevation = 95 degrees is not supported (must be between -90 and 90)"
+                .to_owned(),
+        ),
+        (
+            json!({ "model": EXAMPLE1_JSON, "figure": { "azimuth": "30" } }),
+            "azimuth = \"30\": expected a number".to_owned(),
+        ),
+        (
+            json!({ "model": EXAMPLE1_JSON, "figure": { "colorBy": "truth" } }),
+            "unknown option \"colorBy\" (the options are view, width, height, title, caption, \
+             azimuth, elevation, samples, alpha, color-by)"
+                .to_owned(),
+        ),
+        (
+            json!({ "model": EXAMPLE1_JSON, "azimuth": 30 }),
+            "azimuth is a figure option: give it in `figure`".to_owned(),
+        ),
+    ] {
+        let (status, answer, _) = post(port, "/api/export", &body);
+        assert_eq!(
+            (status, answer["error"]["message"].as_str().unwrap_or("")),
+            (400, message.as_str()),
+            "{body}"
+        );
+    }
 }
 
 fn listing(dir: &Path) -> Vec<String> {

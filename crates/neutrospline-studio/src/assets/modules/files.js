@@ -37,7 +37,7 @@ async function save() {
 
 async function exportFigure(format) {
   const view = $('#export-view').value;
-  const response = await post('/api/export', Object.assign({ model: JSON.stringify(state.model), view, format }, extra()));
+  const response = await post('/api/export', Object.assign({ model: JSON.stringify(state.model), format }, extra({ view })));
   if (!response.ok) {
     const v = await response.json().catch(() => ({ error: { message: response.statusText } }));
     alertMessage(v.error.message);

@@ -24,12 +24,16 @@ async function postJson(path, body) {
   return { ok: response.ok, status: response.status, value };
 }
 
-function extra() {
+// The figure's options go in `figure`, by the names of the plot crate's FigureRequest (those of
+// `neutrospline plot`); the data beside them.
+function extra(figure = {}) {
   return {
-    azimuth: state.camera.azimuth,
-    elevation: state.camera.elevation,
     data: state.data,
-    colorBy: state.colorBy,
+    figure: Object.assign({
+      azimuth: state.camera.azimuth,
+      elevation: state.camera.elevation,
+      'color-by': state.colorBy,
+    }, figure),
   };
 }
 
@@ -92,11 +96,8 @@ async function send(job) {
     views: shownViews(),
     at: state.at,
   };
-  if (job.preview) {
-    request.samples = PREVIEW_SAMPLES;
-    request.encoding = 'display-list';
-  }
-  Object.assign(request, extra());
+  if (job.preview) request.encoding = 'display-list';
+  Object.assign(request, extra(job.preview ? { samples: PREVIEW_SAMPLES } : {}));
   const tSent = performance.now();
   const result = await postJson('/api/render', request).catch(unreachable);
   return { job, result, tSent, tAnswered: performance.now() };
