@@ -531,7 +531,7 @@ impl Surface {
     /// surface is degenerate (the partial derivatives parallel).
     ///
     /// >>> import neutrospline as ns
-    /// >>> flat = ns.Surface.bezier([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], [[[1, 0, 0]] * 2] * 2)
+    /// >>> flat = ns.BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], [[[1, 0, 0]] * 2] * 2)
     /// >>> flat.normal(0.5, 0.5).tolist()
     /// [0.0, 0.0, 1.0]
     fn normal(
@@ -561,7 +561,7 @@ impl Surface {
     /// one of each for a single point.
     ///
     /// >>> import neutrospline as ns
-    /// >>> flat = ns.Surface.bezier([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], [[[1, 0, 0]] * 2] * 2)
+    /// >>> flat = ns.BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], [[[1, 0, 0]] * 2] * 2)
     /// >>> uv, distance, row = flat.nearest([0.25, 0.5, 2.0])
     /// >>> uv.round(12).tolist(), round(distance, 12)
     /// ([0.25, 0.5], 2.0)

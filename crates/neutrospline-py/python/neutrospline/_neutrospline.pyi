@@ -19,10 +19,9 @@ and is left untouched.
 import os
 from typing import Any, List, Literal, Optional, Sequence, Tuple, Union, overload
 
-from typing_extensions import deprecated
-
 import numpy as np
 import numpy.typing as npt
+from typing_extensions import deprecated
 
 # Any array or nested sequence of real numbers, of any layout and real dtype (see above).
 ArrayLike = npt.ArrayLike
@@ -212,7 +211,7 @@ class Surface(Shape):
     @property
     def domain(self) -> Tuple[Tuple[float, float], Tuple[float, float]]: ...
     @property
-    def kind(self) -> Literal["bezier", "bspline", "nurbs"]: ...
+    def kind(self) -> Literal["bezier-surface", "bspline-surface", "nurbs-surface"]: ...
     @property
     def degree(self) -> Tuple[int, int]: ...
     @property
