@@ -103,7 +103,7 @@ def main(argv=None):
         same_fits = all(
             a == b
             and np.array_equal(a.positions, b.positions)
-            and np.array_equal(a.degrees, b.degrees)
+            and np.array_equal(a.membership_degrees, b.membership_degrees)
             and ea == eb
             for (a, ea), (b, eb) in zip(cluster_fits, local_fits)
         )

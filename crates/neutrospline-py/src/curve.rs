@@ -1,30 +1,27 @@
-//! The curve classes: one base `Curve` holding the state and every method, and the kinds
+//! The curve classes: `Curve` (extending the base `Shape`, which holds the model and the
+//! methods shared with surfaces) holding the evaluator and every curve method, and the kinds
 //! `Bezier`, `BSpline` and `Nurbs` that add only their constructors. A curve is immutable;
 //! operations return new curves (of the class the result is: a Bézier curve with a knot
 //! inserted is a B-spline).
+//!
+//! The constructors are in `construction`, evaluation in `evaluation`, the derived curves
+//! (split, elevate, insert_knot) in `derived`.
 
-use std::path::PathBuf;
+use std::sync::Arc;
 
-use neutrospline::alpha_cut;
 use neutrospline::{
-    AnyCurve, BSpline as BSplineCurve, BatchOptions, BatchParams, Bezier as BezierCurve, Bounded,
-    BoundingBox, ControlPoint, ControlPolygon, CurveBatch, CurveDerivative, CurveError,
-    CurveGeometry, CurveKind, Degrees, Derivative, Elevate, EvalError, Evaluate, KnotVector,
-    Membership, NearestPoint, Nurbs as NurbsCurve, Split, Spread,
+    AnyCurve, BatchOptions, BatchParams, Bounded, BoundingBox, ControlPolygon, CurveBatch,
+    CurveDerivative, CurveGeometry, CurveKind, Derivative, Elevate, Evaluate, NearestPoint, Split,
 };
 use neutrospline_io::{Model, Shape};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 use pyo3::PyClassInitializer;
 
-use crate::arrays::{readonly_array, vector, Output, Params, Writer};
+use crate::arrays::{readonly_array, vector, Output, Params};
 use crate::errors::{invalid, invalid_at};
-use crate::model::{self, FigureRequest, Meta, PointArrays};
-use numpy::PyArrayMethods;
-
-/// Parameters evaluated per block when the output is not Fortran-ordered: the block is
-/// evaluated column by column into cache-resident scratch, then written row by row.
-const BLOCK: usize = 1 << 14;
+use crate::model;
+use crate::shape::BaseShape;
 
 /// A curve of either dimension.
 #[derive(Clone, Debug, PartialEq)]
@@ -42,6 +39,11 @@ macro_rules! on_dim {
         }
     };
 }
+
+mod construction;
+mod derived;
+use derived::bezier_as_bspline;
+mod evaluation;
 
 /// A model curve with its prepared batch evaluator.
 #[derive(Clone, Debug)]
@@ -62,13 +64,13 @@ impl<const D: usize> Prepared<D> {
 pub enum State {
     /// A curve of a model: control points with degrees, saved and drawn as a model.
     Model {
-        model: Model,
+        model: Arc<Model>,
         curve: Planarity<Prepared<2>, Prepared<3>>,
     },
     /// The derivative of order `order` of the curve of `base`: evaluable and differentiable;
     /// its values are rates of change, not degrees.
     Derivative {
-        base: Model,
+        base: Arc<Model>,
         order: usize,
         derivative: Planarity<CurveDerivative<2>, CurveDerivative<3>>,
     },
@@ -82,11 +84,14 @@ impl State {
             Shape::Spatial(c) => Planarity::Spatial(Prepared::new(c.clone())),
             Shape::Surface(_) => return None,
         };
-        Some(State::Model { model, curve })
+        Some(State::Model {
+            model: Arc::new(model),
+            curve,
+        })
     }
 
     /// The derivative of order `order` (>= 1) of the curve of `base`.
-    fn derivative_of(base: Model, order: usize) -> Option<State> {
+    fn derivative_of(base: Arc<Model>, order: usize) -> Option<State> {
         fn nth<const D: usize>(curve: &AnyCurve<D>, order: usize) -> CurveDerivative<D> {
             let mut derivative = curve.derivative();
             for _ in 1..order {
@@ -106,7 +111,7 @@ impl State {
         })
     }
 
-    fn base(&self) -> &Model {
+    fn base(&self) -> &Arc<Model> {
         match self {
             State::Model { model, .. } => model,
             State::Derivative { base, .. } => base,
@@ -137,7 +142,7 @@ impl State {
 ///
 /// Evaluating gives one row per parameter with the columns `x, y[, z], truth,
 /// indeterminacy, falsity` (the command line's `eval` columns).
-#[pyclass(subclass, frozen, module = "neutrospline")]
+#[pyclass(extends = BaseShape, subclass, frozen, module = "neutrospline")]
 pub struct Curve {
     pub(crate) state: State,
 }
@@ -178,7 +183,7 @@ pub struct Nurbs;
 /// The Python object of the right class for `state`.
 pub fn into_py(py: Python<'_>, state: State) -> PyResult<Py<PyAny>> {
     let kind = state.kind();
-    let base = PyClassInitializer::from(Curve { state });
+    let base = Curve { state }.initializer();
     Ok(match kind {
         CurveKind::Bezier => Py::new(py, base.add_subclass(Bezier))?.into_any(),
         CurveKind::BSpline => Py::new(py, base.add_subclass(BSpline))?.into_any(),
@@ -192,316 +197,6 @@ pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
         Some(state) => into_py(py, state),
         None => Err(invalid("a surface is not a curve")),
     }
-}
-
-/// What the constructors read: the arrays, the kind's settings and the names.
-struct Construction<'a, 'py> {
-    positions: &'a Bound<'py, PyAny>,
-    degrees: &'a Bound<'py, PyAny>,
-    weights: Option<&'a Bound<'py, PyAny>>,
-    degree: Option<usize>,
-    knots: Option<&'a Bound<'py, PyAny>>,
-    membership: &'a str,
-    meta: Meta,
-}
-
-impl Construction<'_, '_> {
-    /// Builds the curve of `kind` and its model.
-    fn build(self, kind: CurveKind) -> PyResult<Curve> {
-        let membership = model::membership(self.membership)?;
-        let arrays =
-            PointArrays::read(self.positions, "positions", self.degrees, membership, false)?;
-        let weights = self
-            .weights
-            .map(|w| {
-                crate::arrays::float_array(w, "weights")?
-                    .values()
-                    .map(<[f64]>::to_vec)
-            })
-            .transpose()?;
-        let knots = self
-            .knots
-            .map(|k| {
-                crate::arrays::float_array(k, "knots")?
-                    .values()
-                    .map(<[f64]>::to_vec)
-            })
-            .transpose()?;
-        let settings = Settings {
-            kind,
-            weights,
-            degree: self.degree,
-            knots,
-        };
-        let shape: Shape = if arrays.dimension == 2 {
-            settings.curve(arrays.points::<2>())?.into()
-        } else {
-            settings.curve(arrays.points::<3>())?.into()
-        };
-        let model = model::model(shape, membership, self.meta)?;
-        Ok(Curve {
-            state: State::of_model(model).expect("a curve shape"),
-        })
-    }
-}
-
-/// The kind's settings of a constructor.
-struct Settings {
-    kind: CurveKind,
-    weights: Option<Vec<f64>>,
-    degree: Option<usize>,
-    knots: Option<Vec<f64>>,
-}
-
-impl Settings {
-    fn curve<const D: usize>(&self, points: Vec<ControlPoint<D>>) -> PyResult<AnyCurve<D>> {
-        let count = points.len();
-        let knots = || -> PyResult<KnotVector> {
-            let degree = self.degree.unwrap_or(3);
-            match &self.knots {
-                Some(knots) => KnotVector::new(knots.clone(), degree, count),
-                None => KnotVector::clamped_uniform(degree, count),
-            }
-            .map_err(|e| invalid_at("knots", e))
-        };
-        let curve: Result<AnyCurve<D>, CurveError> = match self.kind {
-            CurveKind::Bezier => BezierCurve::new(points).map(Into::into),
-            CurveKind::BSpline => BSplineCurve::new(points, knots()?).map(Into::into),
-            CurveKind::Nurbs => {
-                let weights = self.weights.clone().unwrap_or_default();
-                NurbsCurve::new(points, weights, knots()?).map(Into::into)
-            }
-        };
-        curve.map_err(invalid)
-    }
-}
-
-#[pymethods]
-impl Bezier {
-    /// A Bézier curve from `positions` (shape (n, 2) or (n, 3)) and `degrees` (shape (n, 3):
-    /// truth, indeterminacy, falsity; (n, 2) truth, falsity under the intuitionistic rule;
-    /// (n,) truth under the fuzzy rule).
-    #[new]
-    #[pyo3(signature = (positions, degrees, membership = "neutrosophic", *, name = None, description = None, point_names = None))]
-    fn new(
-        positions: &Bound<'_, PyAny>,
-        degrees: &Bound<'_, PyAny>,
-        membership: &str,
-        name: Option<String>,
-        description: Option<String>,
-        point_names: Option<Vec<Option<String>>>,
-    ) -> PyResult<PyClassInitializer<Self>> {
-        let curve = Construction {
-            positions,
-            degrees,
-            weights: None,
-            degree: None,
-            knots: None,
-            membership,
-            meta: Meta {
-                name,
-                description,
-                point_names,
-            },
-        }
-        .build(CurveKind::Bezier)?;
-        Ok(PyClassInitializer::from(curve).add_subclass(Bezier))
-    }
-
-    /// A Bézier curve from the `bezier` package's node layout: `nodes` of shape
-    /// (dimension, n), one column per control point; `degrees` as for `Bezier(...)`.
-    ///
-    /// >>> import neutrospline as ns
-    /// >>> curve = ns.Bezier.from_nodes([[0.0, 0.5, 1.0], [0.0, 1.0, 0.0]], [[1, 0, 0]] * 3)
-    /// >>> curve(0.5)[:2].tolist()
-    /// [0.5, 0.5]
-    #[staticmethod]
-    #[pyo3(signature = (nodes, degrees, membership = "neutrosophic"))]
-    fn from_nodes(
-        py: Python<'_>,
-        nodes: &Bound<'_, PyAny>,
-        degrees: &Bound<'_, PyAny>,
-        membership: &str,
-    ) -> PyResult<Py<PyAny>> {
-        let nodes = crate::arrays::float_array(nodes, "nodes")?;
-        let (dimension, count) = match *nodes.shape() {
-            [d, n] => (d, n),
-            _ => {
-                return Err(invalid_at(
-                    "nodes",
-                    format!(
-                        "expected an array of shape (dimension, n) (one column per control \
-                         point), got shape {:?}",
-                        nodes.shape()
-                    ),
-                ))
-            }
-        };
-        // Row-major (dimension, n) values read column by column: the (n, dimension) rows.
-        let values = nodes.values()?;
-        let rows: Vec<f64> = (0..count)
-            .flat_map(|k| (0..dimension).map(move |c| values[c * count + k]))
-            .collect();
-        let positions = crate::arrays::new_array(py, rows, &[count, dimension])?;
-        let curve = Construction {
-            positions: positions.as_any(),
-            degrees,
-            weights: None,
-            degree: None,
-            knots: None,
-            membership,
-            meta: Meta::default(),
-        }
-        .build(CurveKind::Bezier)?;
-        into_py(py, curve.state)
-    }
-}
-
-#[pymethods]
-impl BSpline {
-    /// A B-spline curve of `degree` from `positions` and `degrees` (as for `Bezier`), on
-    /// `knots` (n + degree + 1 non-decreasing values) or clamped uniform knots on [0, 1].
-    #[new]
-    #[pyo3(signature = (positions, degrees, degree = 3, knots = None, membership = "neutrosophic", *, name = None, description = None, point_names = None))]
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        positions: &Bound<'_, PyAny>,
-        degrees: &Bound<'_, PyAny>,
-        degree: usize,
-        knots: Option<&Bound<'_, PyAny>>,
-        membership: &str,
-        name: Option<String>,
-        description: Option<String>,
-        point_names: Option<Vec<Option<String>>>,
-    ) -> PyResult<PyClassInitializer<Self>> {
-        let curve = Construction {
-            positions,
-            degrees,
-            weights: None,
-            degree: Some(degree),
-            knots,
-            membership,
-            meta: Meta {
-                name,
-                description,
-                point_names,
-            },
-        }
-        .build(CurveKind::BSpline)?;
-        Ok(PyClassInitializer::from(curve).add_subclass(BSpline))
-    }
-}
-
-#[pymethods]
-impl Nurbs {
-    /// A NURBS curve of `degree` from `positions`, `degrees` (as for `Bezier`) and one
-    /// positive `weights` value per control point, on `knots` or clamped uniform knots.
-    #[new]
-    #[pyo3(signature = (positions, degrees, weights, degree = 3, knots = None, membership = "neutrosophic", *, name = None, description = None, point_names = None))]
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        positions: &Bound<'_, PyAny>,
-        degrees: &Bound<'_, PyAny>,
-        weights: &Bound<'_, PyAny>,
-        degree: usize,
-        knots: Option<&Bound<'_, PyAny>>,
-        membership: &str,
-        name: Option<String>,
-        description: Option<String>,
-        point_names: Option<Vec<Option<String>>>,
-    ) -> PyResult<PyClassInitializer<Self>> {
-        let curve = Construction {
-            positions,
-            degrees,
-            weights: Some(weights),
-            degree: Some(degree),
-            knots,
-            membership,
-            meta: Meta {
-                name,
-                description,
-                point_names,
-            },
-        }
-        .build(CurveKind::Nurbs)?;
-        Ok(PyClassInitializer::from(curve).add_subclass(Nurbs))
-    }
-}
-
-/// The message of an evaluation error, naming the first bad parameter `t[k]`.
-fn parameter_error(ts: &[f64], scalar: bool, domain: &std::ops::Range<f64>, e: EvalError) -> PyErr {
-    if scalar {
-        return invalid_at("t", e);
-    }
-    let bad = ts
-        .iter()
-        .position(|t| !t.is_finite() || *t < domain.start || *t > domain.end);
-    match bad {
-        Some(k) => invalid_at(format!("t[{k}]"), e),
-        None => invalid_at("t", e),
-    }
-}
-
-/// Evaluates a model curve through the batch engine: straight into a Fortran-ordered output,
-/// by cache-sized blocks into any other. The outer error is one of the output array, the
-/// inner one of a parameter.
-fn evaluate_batch<const D: usize>(
-    py: Python<'_>,
-    batch: &CurveBatch<D>,
-    ts: &[f64],
-    writer: &mut Writer<'_>,
-) -> PyResult<Result<(), EvalError>> {
-    let options = BatchOptions::default();
-    if ts.is_empty() {
-        return Ok(Ok(()));
-    }
-    if let Some(columns) = writer.columns()? {
-        return Ok(py.detach(|| batch.evaluate(BatchParams::Values(ts), columns, &options)));
-    }
-    let mut view = writer.view();
-    Ok(py.detach(|| {
-        let mut scratch = vec![0.0; (D + 3) * BLOCK.min(ts.len())];
-        for (b, block) in ts.chunks(BLOCK).enumerate() {
-            let m = block.len();
-            let scratch = &mut scratch[..(D + 3) * m];
-            batch.evaluate(BatchParams::Values(block), scratch, &options)?;
-            for c in 0..D + 3 {
-                for k in 0..m {
-                    view[[b * BLOCK + k, c]] = scratch[c * m + k];
-                }
-            }
-        }
-        Ok(())
-    }))
-}
-
-/// Evaluates `value` at every parameter into the rows of `writer`.
-fn evaluate_rows(
-    py: Python<'_>,
-    ts: &[f64],
-    writer: &mut Writer<'_>,
-    columns: usize,
-    value: impl Fn(f64) -> Result<[f64; 6], EvalError> + Send + Sync,
-) -> Result<(), EvalError> {
-    let mut view = writer.view();
-    py.detach(|| {
-        for (k, &t) in ts.iter().enumerate() {
-            let row = value(t)?;
-            for (c, &v) in row[..columns].iter().enumerate() {
-                view[[k, c]] = v;
-            }
-        }
-        Ok(())
-    })
-}
-
-/// The row `x, y[, z], truth, indeterminacy, falsity` of a derivative value (the first
-/// `D + 3` of the six values).
-fn derivative_row<const D: usize>(v: neutrospline::DerivativeValue<D>) -> [f64; 6] {
-    let mut row = [0.0; 6];
-    row[..D].copy_from_slice(&v.position);
-    row[D..D + 3].copy_from_slice(&[v.truth, v.indeterminacy, v.falsity]);
-    row
 }
 
 /// The bounding box as rows `min`, `max` of the columns `x, y[, z], truth, indeterminacy,
@@ -520,161 +215,22 @@ fn box_rows<const D: usize>(b: &BoundingBox<D>) -> Vec<f64> {
         .collect()
 }
 
-/// Control points with degrees re-derived under `membership` (the intuitionistic
-/// indeterminacy `1 - truth - falsity` recomputed after blending, which rounds).
-fn under_rule<const D: usize>(curve: AnyCurve<D>, membership: Membership) -> PyResult<AnyCurve<D>> {
-    if membership != Membership::Intuitionistic {
-        return Ok(curve);
-    }
-    let points: Vec<ControlPoint<D>> = curve
-        .control_points()
-        .into_iter()
-        .map(|p| {
-            let [t, _, f] = p.degrees.to_array();
-            let d = Degrees::with_membership(membership, t, None, Some(f)).map_err(invalid)?;
-            Ok(ControlPoint::new(p.position, d))
-        })
-        .collect::<PyResult<_>>()?;
-    let rebuilt: Result<AnyCurve<D>, CurveError> = match &curve {
-        AnyCurve::Bezier(_) => BezierCurve::new(points).map(Into::into),
-        AnyCurve::BSpline(c) => BSplineCurve::new(points, c.knots().clone()).map(Into::into),
-        AnyCurve::Nurbs(c) => NurbsCurve::new(
-            points,
-            c.weights().map(<[f64]>::to_vec).unwrap_or_default(),
-            c.knots().clone(),
-        )
-        .map(Into::into),
-    };
-    rebuilt.map_err(invalid)
-}
-
-/// The spreads of the control points of `crisp` whose alpha = 0 cut curves are `lower` and
-/// `upper` (the same kind and knots): `left = crisp - lower`, `right = upper - crisp` per axis
-/// (non-negative up to rounding, which is clamped).
-fn spreads_between<const D: usize>(
-    crisp: &AnyCurve<D>,
-    lower: &AnyCurve<D>,
-    upper: &AnyCurve<D>,
-) -> Vec<Spread<3>> {
-    let (c, lo, hi) = (
-        crisp.control_points(),
-        lower.control_points(),
-        upper.control_points(),
-    );
-    c.iter()
-        .zip(lo.iter().zip(&hi))
-        .map(|(p, (l, h))| {
-            let left = core::array::from_fn(|a| (p.position[a] - l.position[a]).max(0.0));
-            let right = core::array::from_fn(|a| (h.position[a] - p.position[a]).max(0.0));
-            Spread::<D>::new(left, right).resize::<3>()
-        })
-        .collect()
-}
-
-/// A Bézier curve as the B-spline it is (clamped knots `0^(n+1) 1^(n+1)`).
-fn bezier_as_bspline<const D: usize>(curve: &BezierCurve<D>) -> PyResult<BSplineCurve<D>> {
-    let points = curve.control_points();
-    let n = points.len();
-    let knots = KnotVector::clamped_uniform(n - 1, n).map_err(invalid)?;
-    BSplineCurve::new(points, knots).map_err(invalid)
-}
-
 impl Curve {
+    /// The class chain of this curve: the base `Shape` (the model and the derivative order)
+    /// and the curve.
+    fn initializer(self) -> PyClassInitializer<Curve> {
+        let base = BaseShape::new(self.state.base().clone(), self.state.order());
+        PyClassInitializer::from(base).add_subclass(self)
+    }
+
+    /// The model and its curve; an error for a derivative (see `BaseShape::model`).
     fn model(&self) -> PyResult<(&Model, &Planarity<Prepared<2>, Prepared<3>>)> {
         match &self.state {
-            State::Model { model, curve } => Ok((model, curve)),
+            State::Model { model, curve } => Ok((&**model, curve)),
             State::Derivative { order, .. } => Err(invalid(format!(
                 "this is a derivative (order {order}): its values are rates of change, not \
                  degrees in [0, 1], so it is not a model; apply this to the curve itself"
             ))),
-        }
-    }
-
-    /// New curve objects from the curves `op` derives from this one's `source` (same
-    /// metadata). `split`, `elevate` and `insert_knot` map the control points by convex
-    /// combinations, so applied to the alpha = 0 cut curves they give the derived curves' cut
-    /// curves (docs/model.md section 9): a fuzzy model's spreads are carried along.
-    fn derive<const D: usize>(
-        &self,
-        py: Python<'_>,
-        source: &AnyCurve<D>,
-        op: impl Fn(&AnyCurve<D>) -> PyResult<Vec<AnyCurve<D>>>,
-    ) -> PyResult<Vec<Py<PyAny>>>
-    where
-        Shape: From<AnyCurve<D>>,
-    {
-        let (model, _) = self.model()?;
-        let crisp = op(source)?;
-        let spreads: Vec<Option<Vec<Spread<3>>>> = match model.spreads() {
-            None => vec![None; crisp.len()],
-            Some(spreads) => {
-                let local: Vec<Spread<D>> = spreads.iter().map(Spread::resize).collect();
-                let (lower, upper) = alpha_cut(source, &local, 0.0).map_err(invalid)?;
-                let (lower, upper) = (op(&lower)?, op(&upper)?);
-                crisp
-                    .iter()
-                    .zip(lower.iter().zip(&upper))
-                    .map(|(c, (lo, hi))| Some(spreads_between(c, lo, hi)))
-                    .collect()
-            }
-        };
-        crisp
-            .into_iter()
-            .zip(spreads)
-            .map(|(curve, spreads)| {
-                let curve = under_rule(curve, model.membership())?;
-                let model = model::derived(model, curve, spreads)?;
-                model_into_py(py, model)
-            })
-            .collect()
-    }
-
-    fn evaluate_impl(
-        &self,
-        py: Python<'_>,
-        t: &Bound<'_, PyAny>,
-        out: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<Py<PyAny>> {
-        let params = Params::read(t, "t")?;
-        let scalar = matches!(params, Params::Scalar(_));
-        let ts = params.values()?;
-        let columns = self.state.dimension() + 3;
-        // A scalar parameter's result is one row: an `out` of that shape (columns,) gets it,
-        // checked before anything is evaluated.
-        let row_out = match (scalar, out) {
-            (true, Some(out)) => Some(crate::arrays::checked_out(out, &[columns])?),
-            _ => None,
-        };
-        let output = Output::new(py, if scalar { None } else { out }, ts.len(), columns)?;
-        let mut writer = output.write()?;
-        let domain = self.domain_range();
-        let result = match &self.state {
-            State::Model { curve, .. } => {
-                on_dim!(curve, c => evaluate_batch(py, &c.batch, ts, &mut writer))?
-            }
-            State::Derivative { derivative, .. } => on_dim!(derivative, d => {
-                evaluate_rows(py, ts, &mut writer, columns, |t| d.evaluate(t).map(derivative_row))
-            }),
-        };
-        drop(writer);
-        result.map_err(|e| parameter_error(ts, scalar, &domain, e))?;
-        if let Some(target) = row_out {
-            let values = output.array().try_readonly()?;
-            target
-                .try_readwrite()
-                .map_err(|e| invalid_at("out", format!("cannot write into the array ({e})")))?
-                .as_array_mut()
-                .assign(&values.as_array().row(0));
-            drop(values);
-            return Ok(target.into_any().unbind());
-        }
-        output.finish(scalar)
-    }
-
-    fn domain_range(&self) -> std::ops::Range<f64> {
-        match &self.state {
-            State::Model { curve, .. } => on_dim!(curve, c => c.curve.domain()),
-            State::Derivative { derivative, .. } => on_dim!(derivative, d => d.domain()),
         }
     }
 }
@@ -1061,24 +617,6 @@ impl Curve {
         self.state.order()
     }
 
-    /// The membership rule: `"neutrosophic"`, `"intuitionistic"` or `"fuzzy"`.
-    #[getter]
-    fn membership(&self) -> &'static str {
-        self.state.base().membership().name()
-    }
-
-    /// The model's name, if any.
-    #[getter]
-    fn name(&self) -> Option<String> {
-        self.state.base().name().map(str::to_owned)
-    }
-
-    /// The model's description, if any.
-    #[getter]
-    fn description(&self) -> Option<String> {
-        self.state.base().description().map(str::to_owned)
-    }
-
     /// The control points' names (None for an unnamed one).
     #[getter]
     fn point_names(&self) -> PyResult<Vec<Option<String>>> {
@@ -1100,9 +638,15 @@ impl Curve {
         readonly_array(py, positions, &[n, d])
     }
 
-    /// The control points' degrees, shape (n, 3): truth, indeterminacy, falsity, read-only.
+    /// The control points' membership degrees, shape (n, 3): truth, indeterminacy, falsity,
+    /// read-only (of a polynomial derivative: their rates of change). Not the polynomial
+    /// `degree`.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> ns.example1().membership_degrees[0].tolist()
+    /// [0.3, 0.6, 0.1]
     #[getter]
-    fn degrees<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+    fn membership_degrees<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let (_, degrees, n, _) = self.control_rows()?;
         readonly_array(py, degrees, &[n, 3])
     }
@@ -1143,83 +687,10 @@ impl Curve {
             .transpose()
     }
 
-    /// Writes the model to `path`: TOML, JSON or CSV by the extension, replaced atomically;
-    /// `neutrospline.load(path)` gives back an equal curve.
-    fn save(&self, path: PathBuf) -> PyResult<()> {
-        let (model, _) = self.model()?;
-        model::save(model, &path)
-    }
-
-    /// The SVG text of the figure `view` (`all`, `controls`, `truth`, `indeterminacy`,
-    /// `falsity`, `plane`, `score`), as `neutrospline plot` draws it.
-    ///
-    /// >>> import neutrospline as ns
-    /// >>> svg = ns.example1().to_svg("truth")
-    /// >>> svg.startswith("<?xml") and "curve: truth</title>" in svg
-    /// True
-    #[pyo3(signature = (view = "all".to_owned(), width = None, height = None, title = None, caption = None))]
-    fn to_svg(
-        &self,
-        py: Python<'_>,
-        view: String,
-        width: Option<u32>,
-        height: Option<u32>,
-        title: Option<String>,
-        caption: Option<String>,
-    ) -> PyResult<String> {
-        let (model, _) = self.model()?;
-        let request = FigureRequest {
-            view,
-            width,
-            height,
-            title,
-            caption,
-        };
-        model::svg(py, model, request)
-    }
-
-    /// Writes the figure `view` to `path` (`.svg` or `.png`), atomically.
-    #[pyo3(signature = (path, view = "all".to_owned(), width = None, height = None, title = None, caption = None))]
-    #[allow(clippy::too_many_arguments)]
-    fn save_figure(
-        &self,
-        py: Python<'_>,
-        path: PathBuf,
-        view: String,
-        width: Option<u32>,
-        height: Option<u32>,
-        title: Option<String>,
-        caption: Option<String>,
-    ) -> PyResult<()> {
-        let (model, _) = self.model()?;
-        let request = FigureRequest {
-            view,
-            width,
-            height,
-            title,
-            caption,
-        };
-        model::save_figure(py, model, &path, request)
-    }
-
-    /// The `all` view, shown inline by Jupyter.
-    fn _repr_svg_(&self, py: Python<'_>) -> PyResult<String> {
-        let (model, _) = self.model()?;
-        model::svg(py, model, FigureRequest::all())
-    }
-
     /// The number of control points.
     fn __len__(&self) -> PyResult<usize> {
         let (_, _, n, _) = self.control_rows()?;
         Ok(n)
-    }
-
-    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-        let Ok(other) = other.cast::<Curve>() else {
-            return false;
-        };
-        let other = &other.get().state;
-        self.state.base() == other.base() && self.state.order() == other.order()
     }
 
     fn __repr__(&self) -> String {
@@ -1244,17 +715,6 @@ impl Curve {
             0 => text,
             k => format!("<derivative of order {k} of {text}>"),
         }
-    }
-
-    /// Pickling: the model as exact JSON and the derivative order.
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (String, usize))> {
-        let restore = py
-            .import("neutrospline._neutrospline")?
-            .getattr("_restore")?;
-        Ok((
-            restore,
-            (model::to_state(self.state.base()), self.state.order()),
-        ))
     }
 }
 
@@ -1305,7 +765,7 @@ pub fn restore(py: Python<'_>, text: &str, order: usize) -> PyResult<Py<PyAny>> 
     let state = if order == 0 {
         State::of_model(model)
     } else {
-        State::derivative_of(model, order)
+        State::derivative_of(Arc::new(model), order)
     }
     .ok_or_else(|| invalid("a surface is not a curve"))?;
     into_py(py, state)

@@ -12,13 +12,13 @@ use crate::arrays::{float_array, new_array};
 use crate::curve;
 use crate::errors::{invalid, invalid_at};
 use crate::model;
-use crate::surface::Surface;
+use crate::surface;
 
-/// The Python object of any model: a `Bezier`, `BSpline`, `Nurbs` or `Surface`.
+/// The Python object of any model: a `Bezier`, `BSpline`, `Nurbs`, `BezierSurface`,
+/// `BSplineSurface` or `NurbsSurface`.
 pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
     if model.shape().is_surface() {
-        let surface = Surface::of_model(model).ok_or_else(|| invalid("not a surface"))?;
-        Ok(Py::new(py, surface)?.into_any())
+        surface::model_into_py(py, model)
     } else {
         curve::model_into_py(py, model)
     }

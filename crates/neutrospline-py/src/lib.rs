@@ -16,6 +16,7 @@ mod fitting;
 mod functions;
 mod model;
 mod options;
+mod shape;
 mod surface;
 
 /// The extension module `neutrospline._neutrospline`.
@@ -23,11 +24,15 @@ mod surface;
 fn _neutrospline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
     m.add("ModelError", py.get_type::<errors::ModelError>())?;
+    m.add_class::<shape::BaseShape>()?;
     m.add_class::<curve::Curve>()?;
     m.add_class::<curve::Bezier>()?;
     m.add_class::<curve::BSpline>()?;
     m.add_class::<curve::Nurbs>()?;
     m.add_class::<surface::Surface>()?;
+    m.add_class::<surface::BezierSurface>()?;
+    m.add_class::<surface::BSplineSurface>()?;
+    m.add_class::<surface::NurbsSurface>()?;
     m.add_function(wrap_pyfunction!(functions::load, m)?)?;
     m.add_function(wrap_pyfunction!(functions::example1, m)?)?;
     m.add_function(wrap_pyfunction!(functions::score, m)?)?;

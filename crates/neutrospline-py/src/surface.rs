@@ -1,6 +1,10 @@
-//! The `Surface` class: tensor-product Bézier, B-spline and NURBS surfaces in space.
+//! The surface classes: `Surface` (extending the base `Shape`, which holds the model and the
+//! methods shared with curves) holding the tensor-product surface and every surface method,
+//! and the kinds `BezierSurface`, `BSplineSurface` and `NurbsSurface` that add only their
+//! constructors, shaped as the curve kinds' (`Bezier`, `BSpline`, `Nurbs`). The factories
+//! `Surface.bezier`, `Surface.bspline` and `Surface.nurbs` are aliases of those constructors.
 
-use std::path::PathBuf;
+use std::sync::Arc;
 
 use neutrospline::{EvaluateSurface, KnotVector, Surface as CoreSurface, SurfaceKind};
 use neutrospline_io::{Model, Shape};
@@ -8,27 +12,48 @@ use numpy::ndarray::{ArrayView, IxDyn};
 use numpy::PyArrayMethods;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
+use pyo3::PyClassInitializer;
 
 use crate::arrays::{float_array, readonly_array};
 use crate::errors::{invalid, invalid_at};
-use crate::model::{self, FigureRequest, Meta, PointArrays};
+use crate::model::{self, Meta, PointArrays};
+use crate::shape::BaseShape;
 
 /// A neutrosophic tensor-product surface `S(u, v) = sum_i sum_j B_i(u) B_j(v) P_ij` (Bézier,
-/// B-spline or NURBS) in space, the degrees blended as extra coordinates. Build one with
-/// `Surface.bezier`, `Surface.bspline` or `Surface.nurbs` from grids of shape
+/// B-spline or NURBS) in space, the degrees blended as extra coordinates: the base class of
+/// `BezierSurface`, `BSplineSurface` and `NurbsSurface`, built from grids of shape
 /// (rows, cols, 3).
 ///
 /// >>> import neutrospline as ns
 /// >>> grid = [[[0, 0, 0], [1, 0, 0]], [[0, 1, 0], [1, 1, 1]]]
 /// >>> degrees = [[[1, 0, 0], [1, 0, 0]], [[0, 0, 1], [0, 0, 1]]]
-/// >>> patch = ns.Surface.bezier(grid, degrees)
+/// >>> patch = ns.BezierSurface(grid, degrees)
 /// >>> patch.evaluate(0.5, 0.5).tolist()
 /// [0.5, 0.5, 0.25, 0.5, 0.0, 0.5]
-#[pyclass(frozen, module = "neutrospline")]
+#[pyclass(extends = BaseShape, subclass, frozen, module = "neutrospline")]
 pub struct Surface {
-    model: Model,
+    model: Arc<Model>,
     surface: CoreSurface,
 }
+
+/// A Bézier surface `S(u, v) = sum_i sum_j B_i^m(u) B_j^n(v) P_ij` over [0, 1] x [0, 1].
+///
+/// >>> import neutrospline as ns
+/// >>> patch = ns.BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], [[[1, 0, 0]] * 2] * 2)
+/// >>> patch(0.25, 0.5).tolist()
+/// [0.25, 0.5, 0.0, 1.0, 0.0, 0.0]
+#[pyclass(extends = Surface, frozen, module = "neutrospline")]
+pub struct BezierSurface;
+
+/// A B-spline surface `S(u, v) = sum_i sum_j N_{i,p}(u) N_{j,q}(v) P_ij` on the knot vectors
+/// `knots_u` and `knots_v` (clamped uniform unless given).
+#[pyclass(extends = Surface, frozen, module = "neutrospline")]
+pub struct BSplineSurface;
+
+/// A NURBS surface `S(u, v) = sum_ij N_{i,p}(u) N_{j,q}(v) w_ij P_ij / sum_ij N_{i,p}(u)
+/// N_{j,q}(v) w_ij`, positive weights.
+#[pyclass(extends = Surface, frozen, module = "neutrospline")]
+pub struct NurbsSurface;
 
 impl Surface {
     /// The surface of a surface model (`None` for a curve).
@@ -36,16 +61,33 @@ impl Surface {
         match model.shape() {
             Shape::Surface(s) => Some(Surface {
                 surface: s.clone(),
-                model,
+                model: Arc::new(model),
             }),
             _ => None,
         }
     }
 
-    /// The model.
-    pub fn model(&self) -> &Model {
-        &self.model
+    /// The class chain of this surface: the base `Shape` (the model) and the surface.
+    fn initializer(self) -> PyClassInitializer<Surface> {
+        PyClassInitializer::from(BaseShape::new(self.model.clone(), 0)).add_subclass(self)
     }
+}
+
+/// The Python object of the kind's class for `surface`.
+pub fn into_py(py: Python<'_>, surface: Surface) -> PyResult<Py<PyAny>> {
+    let kind = surface.surface.kind();
+    let base = surface.initializer();
+    Ok(match kind {
+        SurfaceKind::Bezier => Py::new(py, base.add_subclass(BezierSurface))?.into_any(),
+        SurfaceKind::BSpline => Py::new(py, base.add_subclass(BSplineSurface))?.into_any(),
+        SurfaceKind::Nurbs => Py::new(py, base.add_subclass(NurbsSurface))?.into_any(),
+    })
+}
+
+/// The Python object of a surface model.
+pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
+    let surface = Surface::of_model(model).ok_or_else(|| invalid("a curve is not a surface"))?;
+    into_py(py, surface)
 }
 
 /// What the constructors read besides the grids.
@@ -191,39 +233,128 @@ fn emit<'py>(
     Ok(array.clone().into_any().unbind())
 }
 
+/// The settings of a B-spline or NURBS surface: `degree` (one number for both directions, or
+/// `(degree_u, degree_v)`; 3 when omitted) and the knot vectors.
+fn spline_settings<'a, 'py>(
+    kind: SurfaceKind,
+    weights: Option<&'a Bound<'py, PyAny>>,
+    degree: Option<&Bound<'py, PyAny>>,
+    knots_u: Option<&'a Bound<'py, PyAny>>,
+    knots_v: Option<&'a Bound<'py, PyAny>>,
+) -> PyResult<Settings<'a, 'py>> {
+    Ok(Settings {
+        kind,
+        weights,
+        degree: degree.map(degrees_uv).transpose()?.unwrap_or((3, 3)),
+        knots: (knots_u, knots_v),
+    })
+}
+
+/// The model's names of a constructor (surfaces have no point names).
+fn names(name: Option<String>, description: Option<String>) -> Meta {
+    Meta {
+        name,
+        description,
+        point_names: None,
+    }
+}
+
+/// A Bézier surface (the body of `BezierSurface(...)` and `Surface.bezier`).
+fn new_bezier(
+    positions: &Bound<'_, PyAny>,
+    degrees: &Bound<'_, PyAny>,
+    membership: &str,
+    name: Option<String>,
+    description: Option<String>,
+) -> PyResult<Surface> {
+    let settings = Settings {
+        kind: SurfaceKind::Bezier,
+        weights: None,
+        degree: (0, 0),
+        knots: (None, None),
+    };
+    build(
+        positions,
+        degrees,
+        membership,
+        settings,
+        names(name, description),
+    )
+}
+
+/// A B-spline surface (the body of `BSplineSurface(...)` and `Surface.bspline`).
+#[allow(clippy::too_many_arguments)]
+fn new_bspline(
+    positions: &Bound<'_, PyAny>,
+    degrees: &Bound<'_, PyAny>,
+    degree: Option<&Bound<'_, PyAny>>,
+    knots_u: Option<&Bound<'_, PyAny>>,
+    knots_v: Option<&Bound<'_, PyAny>>,
+    membership: &str,
+    name: Option<String>,
+    description: Option<String>,
+) -> PyResult<Surface> {
+    let settings = spline_settings(SurfaceKind::BSpline, None, degree, knots_u, knots_v)?;
+    build(
+        positions,
+        degrees,
+        membership,
+        settings,
+        names(name, description),
+    )
+}
+
+/// A NURBS surface (the body of `NurbsSurface(...)` and `Surface.nurbs`).
+#[allow(clippy::too_many_arguments)]
+fn new_nurbs(
+    positions: &Bound<'_, PyAny>,
+    degrees: &Bound<'_, PyAny>,
+    weights: &Bound<'_, PyAny>,
+    degree: Option<&Bound<'_, PyAny>>,
+    knots_u: Option<&Bound<'_, PyAny>>,
+    knots_v: Option<&Bound<'_, PyAny>>,
+    membership: &str,
+    name: Option<String>,
+    description: Option<String>,
+) -> PyResult<Surface> {
+    let settings = spline_settings(SurfaceKind::Nurbs, Some(weights), degree, knots_u, knots_v)?;
+    build(
+        positions,
+        degrees,
+        membership,
+        settings,
+        names(name, description),
+    )
+}
+
 #[pymethods]
-impl Surface {
+impl BezierSurface {
     /// A Bézier surface from `positions` of shape (rows, cols, 3) and `degrees` of shape
-    /// (rows, cols, 3) (truth, indeterminacy, falsity; see `Bezier` for the other rules).
-    #[staticmethod]
+    /// (rows, cols, 3) (truth, indeterminacy, falsity; (rows, cols, 2) truth, falsity under
+    /// the intuitionistic rule; (rows, cols) truth under the fuzzy rule).
+    #[new]
     #[pyo3(signature = (positions, degrees, membership = "neutrosophic", *, name = None, description = None))]
-    fn bezier(
+    fn new(
         positions: &Bound<'_, PyAny>,
         degrees: &Bound<'_, PyAny>,
         membership: &str,
         name: Option<String>,
         description: Option<String>,
-    ) -> PyResult<Surface> {
-        let settings = Settings {
-            kind: SurfaceKind::Bezier,
-            weights: None,
-            degree: (0, 0),
-            knots: (None, None),
-        };
-        let meta = Meta {
-            name,
-            description,
-            point_names: None,
-        };
-        build(positions, degrees, membership, settings, meta)
+    ) -> PyResult<PyClassInitializer<Self>> {
+        let surface = new_bezier(positions, degrees, membership, name, description)?;
+        Ok(surface.initializer().add_subclass(BezierSurface))
     }
+}
 
-    /// A B-spline surface of `degree` (one number, or `(degree_u, degree_v)`) on `knots_u`
-    /// and `knots_v` (clamped uniform by default).
-    #[staticmethod]
+#[pymethods]
+impl BSplineSurface {
+    /// A B-spline surface of `degree` (one number, or `(degree_u, degree_v)`; 3 when omitted)
+    /// from `positions` and `degrees` (as for `BezierSurface`), on `knots_u` and `knots_v`
+    /// (clamped uniform by default).
+    #[new]
     #[pyo3(signature = (positions, degrees, degree = None, knots_u = None, knots_v = None, membership = "neutrosophic", *, name = None, description = None))]
     #[allow(clippy::too_many_arguments)]
-    fn bspline(
+    fn new(
         positions: &Bound<'_, PyAny>,
         degrees: &Bound<'_, PyAny>,
         degree: Option<&Bound<'_, PyAny>>,
@@ -232,26 +363,28 @@ impl Surface {
         membership: &str,
         name: Option<String>,
         description: Option<String>,
-    ) -> PyResult<Surface> {
-        let settings = Settings {
-            kind: SurfaceKind::BSpline,
-            weights: None,
-            degree: degree.map(degrees_uv).transpose()?.unwrap_or((3, 3)),
-            knots: (knots_u, knots_v),
-        };
-        let meta = Meta {
+    ) -> PyResult<PyClassInitializer<Self>> {
+        let surface = new_bspline(
+            positions,
+            degrees,
+            degree,
+            knots_u,
+            knots_v,
+            membership,
             name,
             description,
-            point_names: None,
-        };
-        build(positions, degrees, membership, settings, meta)
+        )?;
+        Ok(surface.initializer().add_subclass(BSplineSurface))
     }
+}
 
-    /// A NURBS surface: as `Surface.bspline`, with positive `weights` of shape (rows, cols).
-    #[staticmethod]
+#[pymethods]
+impl NurbsSurface {
+    /// A NURBS surface: as `BSplineSurface`, with positive `weights` of shape (rows, cols).
+    #[new]
     #[pyo3(signature = (positions, degrees, weights, degree = None, knots_u = None, knots_v = None, membership = "neutrosophic", *, name = None, description = None))]
     #[allow(clippy::too_many_arguments)]
-    fn nurbs(
+    fn new(
         positions: &Bound<'_, PyAny>,
         degrees: &Bound<'_, PyAny>,
         weights: &Bound<'_, PyAny>,
@@ -261,19 +394,97 @@ impl Surface {
         membership: &str,
         name: Option<String>,
         description: Option<String>,
-    ) -> PyResult<Surface> {
-        let settings = Settings {
-            kind: SurfaceKind::Nurbs,
-            weights: Some(weights),
-            degree: degree.map(degrees_uv).transpose()?.unwrap_or((3, 3)),
-            knots: (knots_u, knots_v),
-        };
-        let meta = Meta {
+    ) -> PyResult<PyClassInitializer<Self>> {
+        let surface = new_nurbs(
+            positions,
+            degrees,
+            weights,
+            degree,
+            knots_u,
+            knots_v,
+            membership,
             name,
             description,
-            point_names: None,
-        };
-        build(positions, degrees, membership, settings, meta)
+        )?;
+        Ok(surface.initializer().add_subclass(NurbsSurface))
+    }
+}
+
+#[pymethods]
+impl Surface {
+    /// Alias of `BezierSurface(...)`, kept for existing code: the same arguments and result.
+    #[staticmethod]
+    #[pyo3(signature = (positions, degrees, membership = "neutrosophic", *, name = None, description = None))]
+    fn bezier(
+        py: Python<'_>,
+        positions: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        membership: &str,
+        name: Option<String>,
+        description: Option<String>,
+    ) -> PyResult<Py<PyAny>> {
+        into_py(
+            py,
+            new_bezier(positions, degrees, membership, name, description)?,
+        )
+    }
+
+    /// Alias of `BSplineSurface(...)`, kept for existing code: the same arguments and result.
+    #[staticmethod]
+    #[pyo3(signature = (positions, degrees, degree = None, knots_u = None, knots_v = None, membership = "neutrosophic", *, name = None, description = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn bspline(
+        py: Python<'_>,
+        positions: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        degree: Option<&Bound<'_, PyAny>>,
+        knots_u: Option<&Bound<'_, PyAny>>,
+        knots_v: Option<&Bound<'_, PyAny>>,
+        membership: &str,
+        name: Option<String>,
+        description: Option<String>,
+    ) -> PyResult<Py<PyAny>> {
+        let surface = new_bspline(
+            positions,
+            degrees,
+            degree,
+            knots_u,
+            knots_v,
+            membership,
+            name,
+            description,
+        )?;
+        into_py(py, surface)
+    }
+
+    /// Alias of `NurbsSurface(...)`, kept for existing code: the same arguments and result.
+    #[staticmethod]
+    #[pyo3(signature = (positions, degrees, weights, degree = None, knots_u = None, knots_v = None, membership = "neutrosophic", *, name = None, description = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn nurbs(
+        py: Python<'_>,
+        positions: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        weights: &Bound<'_, PyAny>,
+        degree: Option<&Bound<'_, PyAny>>,
+        knots_u: Option<&Bound<'_, PyAny>>,
+        knots_v: Option<&Bound<'_, PyAny>>,
+        membership: &str,
+        name: Option<String>,
+        description: Option<String>,
+    ) -> PyResult<Py<PyAny>> {
+        let surface = new_nurbs(
+            positions,
+            degrees,
+            weights,
+            degree,
+            knots_u,
+            knots_v,
+            membership,
+            name,
+            description,
+        )?;
+        into_py(py, surface)
     }
 
     /// Evaluates at `(u, v)` (numbers, or arrays of one shape S, of any layout and real dtype
@@ -320,7 +531,7 @@ impl Surface {
     /// surface is degenerate (the partial derivatives parallel).
     ///
     /// >>> import neutrospline as ns
-    /// >>> flat = ns.Surface.bezier([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], [[[1, 0, 0]] * 2] * 2)
+    /// >>> flat = ns.BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], [[[1, 0, 0]] * 2] * 2)
     /// >>> flat.normal(0.5, 0.5).tolist()
     /// [0.0, 0.0, 1.0]
     fn normal(
@@ -350,7 +561,7 @@ impl Surface {
     /// one of each for a single point.
     ///
     /// >>> import neutrospline as ns
-    /// >>> flat = ns.Surface.bezier([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], [[[1, 0, 0]] * 2] * 2)
+    /// >>> flat = ns.BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], [[[1, 0, 0]] * 2] * 2)
     /// >>> uv, distance, row = flat.nearest([0.25, 0.5, 2.0])
     /// >>> uv.round(12).tolist(), round(distance, 12)
     /// ([0.25, 0.5], 2.0)
@@ -427,24 +638,6 @@ impl Surface {
         3
     }
 
-    /// The membership rule.
-    #[getter]
-    fn membership(&self) -> &'static str {
-        self.model.membership().name()
-    }
-
-    /// The model's name, if any.
-    #[getter]
-    fn name(&self) -> Option<String> {
-        self.model.name().map(str::to_owned)
-    }
-
-    /// The model's description, if any.
-    #[getter]
-    fn description(&self) -> Option<String> {
-        self.model.description().map(str::to_owned)
-    }
-
     /// The control grid's positions, shape (rows, cols, 3), read-only.
     #[getter]
     fn positions<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
@@ -456,9 +649,10 @@ impl Surface {
         )
     }
 
-    /// The control grid's degrees, shape (rows, cols, 3), read-only.
+    /// The control grid's membership degrees, shape (rows, cols, 3): truth, indeterminacy,
+    /// falsity, read-only. Not the polynomial `degree`.
     #[getter]
-    fn degrees<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+    fn membership_degrees<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let (_, degrees) = model::point_rows(&self.surface.control_points());
         readonly_array(py, degrees, &[self.surface.rows(), self.surface.cols(), 3])
     }
@@ -507,66 +701,6 @@ impl Surface {
         readonly_array(py, rows, &[2, 6])
     }
 
-    /// Writes the model to `path` (TOML, JSON or CSV by the extension), atomically.
-    fn save(&self, path: PathBuf) -> PyResult<()> {
-        model::save(&self.model, &path)
-    }
-
-    /// The SVG text of the figure `view` (see `Curve.to_svg`).
-    #[pyo3(signature = (view = "all".to_owned(), width = None, height = None, title = None, caption = None))]
-    fn to_svg(
-        &self,
-        py: Python<'_>,
-        view: String,
-        width: Option<u32>,
-        height: Option<u32>,
-        title: Option<String>,
-        caption: Option<String>,
-    ) -> PyResult<String> {
-        let request = FigureRequest {
-            view,
-            width,
-            height,
-            title,
-            caption,
-        };
-        model::svg(py, &self.model, request)
-    }
-
-    /// Writes the figure `view` to `path` (`.svg` or `.png`), atomically.
-    #[pyo3(signature = (path, view = "all".to_owned(), width = None, height = None, title = None, caption = None))]
-    #[allow(clippy::too_many_arguments)]
-    fn save_figure(
-        &self,
-        py: Python<'_>,
-        path: PathBuf,
-        view: String,
-        width: Option<u32>,
-        height: Option<u32>,
-        title: Option<String>,
-        caption: Option<String>,
-    ) -> PyResult<()> {
-        let request = FigureRequest {
-            view,
-            width,
-            height,
-            title,
-            caption,
-        };
-        model::save_figure(py, &self.model, &path, request)
-    }
-
-    /// The `all` view, shown inline by Jupyter.
-    fn _repr_svg_(&self, py: Python<'_>) -> PyResult<String> {
-        model::svg(py, &self.model, FigureRequest::all())
-    }
-
-    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-        other
-            .cast::<Surface>()
-            .is_ok_and(|other| other.get().model == self.model)
-    }
-
     fn __repr__(&self) -> String {
         let mut text = format!(
             "Surface(kind='{}', rows={}, cols={}, degree=({}, {}), membership='{}'",
@@ -582,13 +716,5 @@ impl Surface {
         }
         text.push(')');
         text
-    }
-
-    /// Pickling: the model as exact JSON.
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (String, usize))> {
-        let restore = py
-            .import("neutrospline._neutrospline")?
-            .getattr("_restore")?;
-        Ok((restore, (model::to_state(&self.model), 0)))
     }
 }

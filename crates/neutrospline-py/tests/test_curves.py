@@ -119,7 +119,7 @@ def test_example1_closed_forms():
     assert curve.name == "Example 1"
     assert curve.point_names == ["C0", "C1", "C2", "C3"]
     # C(1/2) = (P0 + 3 P1 + 3 P2 + P3) / 8 in every column.
-    p = np.hstack([curve.positions, curve.degrees])
+    p = np.hstack([curve.positions, curve.membership_degrees])
     assert_close(curve(0.5), (p[0] + 3 * p[1] + 3 * p[2] + p[3]) / 8, scale=1.0, rel=1e-15)
     # The second derivative at 0 is 6 (P2 - 2 P1 + P0).
     assert_close(curve.derivative(2)(0.0), 6 * (p[2] - 2 * p[1] + p[0]), rel=1e-15)
@@ -254,15 +254,15 @@ def test_bad_models_have_the_command_line_messages(cli, tmp_path):
 
 def test_membership_rules():
     intuitionistic = ns.Bezier([[0, 0], [1, 0]], [[0.5, 0.2], [0.1, 0.7]], membership="intuitionistic")
-    np.testing.assert_allclose(intuitionistic.degrees, [[0.5, 0.3, 0.2], [0.1, 0.2, 0.7]], rtol=0, atol=1e-15)
+    np.testing.assert_allclose(intuitionistic.membership_degrees, [[0.5, 0.3, 0.2], [0.1, 0.2, 0.7]], rtol=0, atol=1e-15)
     fuzzy = ns.BSpline([[0, 0], [1, 0], [2, 1]], [0.2, 0.4, 0.9], degree=2, membership="fuzzy")
     assert fuzzy.membership == "fuzzy"
-    np.testing.assert_array_equal(fuzzy.degrees[:, 1:], 0.0)
+    np.testing.assert_array_equal(fuzzy.membership_degrees[:, 1:], 0.0)
     with pytest.raises(ns.ModelError, match="intuitionistic rule"):
         ns.Bezier([[0, 0]], [[0.6, 0.6]], membership="intuitionistic")
     # Operations keep the rule: the intuitionistic indeterminacy is re-derived after blending.
     left, _ = intuitionistic.elevate(3).split(0.3)
-    np.testing.assert_allclose(left.degrees.sum(axis=1), 1.0, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(left.membership_degrees.sum(axis=1), 1.0, rtol=0, atol=1e-15)
 
 
 # ---- scores and relations ----
@@ -326,7 +326,7 @@ def test_save_and_load_round_trip(tmp_path, root, extension):
         assert type(back) is type(model)
         if extension == "csv":
             # A CSV table holds the control points, knots and weights, not the names.
-            for field in ["positions", "degrees", "weights", "knots", "membership"]:
+            for field in ["positions", "membership_degrees", "weights", "knots", "membership"]:
                 np.testing.assert_array_equal(getattr(back, field), getattr(model, field))
         else:
             assert back == model
@@ -418,7 +418,7 @@ def test_fit_matches_the_command_line(cli, root, tmp_path):
     want = ns.load(out)
     curve, report = ns.fit(str(data), control_points=8)
     np.testing.assert_array_equal(curve.positions, want.positions)
-    np.testing.assert_array_equal(curve.degrees, want.degrees)
+    np.testing.assert_array_equal(curve.membership_degrees, want.membership_degrees)
     np.testing.assert_array_equal(curve.knots, want.knots)
     assert report["control_points"] == 8 and report["degree"] == 3
     assert set(report["max_error"]) == {"x", "y", "truth", "indeterminacy", "falsity"}

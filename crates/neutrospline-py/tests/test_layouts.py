@@ -142,12 +142,12 @@ def canonical(result):
         return ("dict", tuple(sorted((k, canonical(v)) for k, v in result.items())))
     if isinstance(result, ns.Curve):
         t = np.linspace(*result.domain, 17)
-        parts = [result.positions, result.degrees, result.weights, result.knots, result(t)]
+        parts = [result.positions, result.membership_degrees, result.weights, result.knots, result(t)]
         return ("curve", type(result).__name__, canonical(parts))
     if isinstance(result, ns.Surface):
         (u0, u1), (v0, v1) = result.domain
         u, v = np.meshgrid(np.linspace(u0, u1, 5), np.linspace(v0, v1, 4))
-        parts = [result.positions, result.degrees, result.weights, result.knots_u, result.knots_v]
+        parts = [result.positions, result.membership_degrees, result.weights, result.knots_u, result.knots_v]
         return ("surface", canonical(parts + [result(u, v)]))
     return ("other", repr(result))
 
@@ -232,10 +232,10 @@ def other_cases():
     yield "bezier-2d.nearest(point)", BEZIER.nearest, np.array([4.5, 4.0])
     yield "bspline-3d.nearest(points)", BSPLINE.nearest, np.array([[1.0, 1.0, 1.0], [4.0, 0.5, 2.0]])
     yield "surface.nearest(points)", SURFACE.nearest, np.array([[0.5, 0.5, 2.0], [1.5, 1.0, -1.0]])
-    yield "Bezier(positions)", lambda p: ns.Bezier(p, BEZIER.degrees), BEZIER.positions
-    yield "Bezier(degrees)", lambda d: ns.Bezier(BEZIER.positions, d), BEZIER.degrees
-    yield "Bezier.from_nodes(nodes)", lambda n: ns.Bezier.from_nodes(n, BEZIER.degrees), BEZIER.positions.T
-    yield "Bezier.from_nodes(degrees)", lambda d: ns.Bezier.from_nodes(BEZIER.positions.T, d), BEZIER.degrees
+    yield "Bezier(positions)", lambda p: ns.Bezier(p, BEZIER.membership_degrees), BEZIER.positions
+    yield "Bezier(degrees)", lambda d: ns.Bezier(BEZIER.positions, d), BEZIER.membership_degrees
+    yield "Bezier.from_nodes(nodes)", lambda n: ns.Bezier.from_nodes(n, BEZIER.membership_degrees), BEZIER.positions.T
+    yield "Bezier.from_nodes(degrees)", lambda d: ns.Bezier.from_nodes(BEZIER.positions.T, d), BEZIER.membership_degrees
     yield "BSpline(positions)", lambda p: ns.BSpline(p, BSPLINE_DEGREES, 3, BSPLINE_KNOTS), BSPLINE_POSITIONS
     yield "BSpline(degrees)", lambda d: ns.BSpline(BSPLINE_POSITIONS, d, 3, BSPLINE_KNOTS), BSPLINE_DEGREES
     yield "BSpline(knots)", lambda k: ns.BSpline(BSPLINE_POSITIONS, BSPLINE_DEGREES, 3, k), BSPLINE_KNOTS

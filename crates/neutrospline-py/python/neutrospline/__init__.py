@@ -14,10 +14,14 @@ line's, as SVG text, files, or inline in Jupyter.
 
 from ._neutrospline import (
     BSpline,
+    BSplineSurface,
     Bezier,
+    BezierSurface,
     Curve,
     ModelError,
     Nurbs,
+    NurbsSurface,
+    Shape,
     Surface,
     accuracy,
     certainty,
@@ -33,10 +37,14 @@ from ._neutrospline import (
 
 __all__ = [
     "BSpline",
+    "BSplineSurface",
     "Bezier",
+    "BezierSurface",
     "Curve",
     "ModelError",
     "Nurbs",
+    "NurbsSurface",
+    "Shape",
     "Surface",
     "accuracy",
     "certainty",

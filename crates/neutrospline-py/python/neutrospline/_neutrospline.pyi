@@ -21,6 +21,7 @@ from typing import Any, List, Literal, Optional, Sequence, Tuple, Union, overloa
 
 import numpy as np
 import numpy.typing as npt
+from typing_extensions import deprecated
 
 # Any array or nested sequence of real numbers, of any layout and real dtype (see above).
 ArrayLike = npt.ArrayLike
@@ -36,7 +37,43 @@ instruction_set: str
 
 class ModelError(ValueError): ...
 
-class Curve:
+class Shape:
+    """The base of every curve and surface: the model and the methods shared by all kinds."""
+
+    @property
+    def membership(self) -> Membership: ...
+    @property
+    def name(self) -> Optional[str]: ...
+    @property
+    def description(self) -> Optional[str]: ...
+    @property
+    @deprecated("use membership_degrees")
+    def degrees(self) -> FloatArray:
+        """Deprecated alias of ``membership_degrees`` (warns with a ``DeprecationWarning``)."""
+        ...
+    def save(self, path: PathLike) -> None: ...
+    def to_svg(
+        self,
+        view: ViewName = "all",
+        width: Optional[int] = None,
+        height: Optional[int] = None,
+        title: Optional[str] = None,
+        caption: Optional[str] = None,
+    ) -> str: ...
+    def save_figure(
+        self,
+        path: PathLike,
+        view: ViewName = "all",
+        width: Optional[int] = None,
+        height: Optional[int] = None,
+        title: Optional[str] = None,
+        caption: Optional[str] = None,
+    ) -> None: ...
+    def _repr_svg_(self) -> str: ...
+    def __eq__(self, value: object, /) -> bool: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[str, int]]: ...
+
+class Curve(Shape):
     def evaluate(self, t: ArrayLike, out: Optional[FloatArray] = None) -> FloatArray: ...
     def __call__(self, t: ArrayLike, out: Optional[FloatArray] = None) -> FloatArray: ...
     def sample(self, count: int, out: Optional[FloatArray] = None) -> FloatArray: ...
@@ -70,43 +107,16 @@ class Curve:
     @property
     def order(self) -> int: ...
     @property
-    def membership(self) -> Membership: ...
-    @property
-    def name(self) -> Optional[str]: ...
-    @property
-    def description(self) -> Optional[str]: ...
-    @property
     def point_names(self) -> list[Optional[str]]: ...
     @property
     def positions(self) -> FloatArray: ...
     @property
-    def degrees(self) -> FloatArray: ...
+    def membership_degrees(self) -> FloatArray: ...
     @property
     def weights(self) -> Optional[FloatArray]: ...
     @property
     def knots(self) -> Optional[FloatArray]: ...
-    def save(self, path: PathLike) -> None: ...
-    def to_svg(
-        self,
-        view: ViewName = "all",
-        width: Optional[int] = None,
-        height: Optional[int] = None,
-        title: Optional[str] = None,
-        caption: Optional[str] = None,
-    ) -> str: ...
-    def save_figure(
-        self,
-        path: PathLike,
-        view: ViewName = "all",
-        width: Optional[int] = None,
-        height: Optional[int] = None,
-        title: Optional[str] = None,
-        caption: Optional[str] = None,
-    ) -> None: ...
-    def _repr_svg_(self) -> str: ...
     def __len__(self) -> int: ...
-    def __eq__(self, value: object, /) -> bool: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str, int]]: ...
 
 class Bezier(Curve):
     def __init__(
@@ -153,7 +163,7 @@ class Nurbs(Curve):
         point_names: Optional[Sequence[Optional[str]]] = None,
     ) -> None: ...
 
-class Surface:
+class Surface(Shape):
     @staticmethod
     def bezier(
         positions: ArrayLike,
@@ -162,7 +172,7 @@ class Surface:
         *,
         name: Optional[str] = None,
         description: Optional[str] = None,
-    ) -> "Surface": ...
+    ) -> "BezierSurface": ...
     @staticmethod
     def bspline(
         positions: ArrayLike,
@@ -174,7 +184,7 @@ class Surface:
         *,
         name: Optional[str] = None,
         description: Optional[str] = None,
-    ) -> "Surface": ...
+    ) -> "BSplineSurface": ...
     @staticmethod
     def nurbs(
         positions: ArrayLike,
@@ -187,7 +197,7 @@ class Surface:
         *,
         name: Optional[str] = None,
         description: Optional[str] = None,
-    ) -> "Surface": ...
+    ) -> "NurbsSurface": ...
     def evaluate(
         self, u: ArrayLike, v: ArrayLike, out: Optional[FloatArray] = None
     ) -> FloatArray: ...
@@ -201,21 +211,15 @@ class Surface:
     @property
     def domain(self) -> Tuple[Tuple[float, float], Tuple[float, float]]: ...
     @property
-    def kind(self) -> Literal["bezier", "bspline", "nurbs"]: ...
+    def kind(self) -> Literal["bezier-surface", "bspline-surface", "nurbs-surface"]: ...
     @property
     def degree(self) -> Tuple[int, int]: ...
     @property
     def dimension(self) -> int: ...
     @property
-    def membership(self) -> Membership: ...
-    @property
-    def name(self) -> Optional[str]: ...
-    @property
-    def description(self) -> Optional[str]: ...
-    @property
     def positions(self) -> FloatArray: ...
     @property
-    def degrees(self) -> FloatArray: ...
+    def membership_degrees(self) -> FloatArray: ...
     @property
     def weights(self) -> Optional[FloatArray]: ...
     @property
@@ -223,29 +227,48 @@ class Surface:
     @property
     def knots_v(self) -> FloatArray: ...
     def bounding_box(self) -> FloatArray: ...
-    def save(self, path: PathLike) -> None: ...
-    def to_svg(
-        self,
-        view: ViewName = "all",
-        width: Optional[int] = None,
-        height: Optional[int] = None,
-        title: Optional[str] = None,
-        caption: Optional[str] = None,
-    ) -> str: ...
-    def save_figure(
-        self,
-        path: PathLike,
-        view: ViewName = "all",
-        width: Optional[int] = None,
-        height: Optional[int] = None,
-        title: Optional[str] = None,
-        caption: Optional[str] = None,
-    ) -> None: ...
-    def _repr_svg_(self) -> str: ...
-    def __eq__(self, value: object, /) -> bool: ...
-    def __reduce__(self) -> Tuple[Any, Tuple[str, int]]: ...
 
-Model = Union[Bezier, BSpline, Nurbs, Surface]
+class BezierSurface(Surface):
+    def __init__(
+        self,
+        positions: ArrayLike,
+        degrees: ArrayLike,
+        membership: Membership = "neutrosophic",
+        *,
+        name: Optional[str] = None,
+        description: Optional[str] = None,
+    ) -> None: ...
+
+class BSplineSurface(Surface):
+    def __init__(
+        self,
+        positions: ArrayLike,
+        degrees: ArrayLike,
+        degree: Union[int, Tuple[int, int], None] = None,
+        knots_u: Optional[ArrayLike] = None,
+        knots_v: Optional[ArrayLike] = None,
+        membership: Membership = "neutrosophic",
+        *,
+        name: Optional[str] = None,
+        description: Optional[str] = None,
+    ) -> None: ...
+
+class NurbsSurface(Surface):
+    def __init__(
+        self,
+        positions: ArrayLike,
+        degrees: ArrayLike,
+        weights: ArrayLike,
+        degree: Union[int, Tuple[int, int], None] = None,
+        knots_u: Optional[ArrayLike] = None,
+        knots_v: Optional[ArrayLike] = None,
+        membership: Membership = "neutrosophic",
+        *,
+        name: Optional[str] = None,
+        description: Optional[str] = None,
+    ) -> None: ...
+
+Model = Union[Bezier, BSpline, Nurbs, BezierSurface, BSplineSurface, NurbsSurface]
 
 KnotOption = Union[str, ArrayLike]
 

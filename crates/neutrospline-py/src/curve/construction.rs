@@ -1,0 +1,247 @@
+//! The constructors of the curve kinds `Bezier`, `BSpline` and `Nurbs`.
+
+use neutrospline::{
+    AnyCurve, BSpline as BSplineCurve, Bezier as BezierCurve, ControlPoint, CurveError, CurveKind,
+    KnotVector, Nurbs as NurbsCurve,
+};
+use neutrospline_io::Shape;
+use pyo3::prelude::*;
+use pyo3::PyClassInitializer;
+
+use super::{into_py, BSpline, Bezier, Curve, Nurbs, State};
+use crate::errors::{invalid, invalid_at};
+use crate::model::{self, Meta, PointArrays};
+
+/// What the constructors read: the arrays, the kind's settings and the names.
+struct Construction<'a, 'py> {
+    positions: &'a Bound<'py, PyAny>,
+    degrees: &'a Bound<'py, PyAny>,
+    weights: Option<&'a Bound<'py, PyAny>>,
+    degree: Option<usize>,
+    knots: Option<&'a Bound<'py, PyAny>>,
+    membership: &'a str,
+    meta: Meta,
+}
+
+impl Construction<'_, '_> {
+    /// Builds the curve of `kind` and its model.
+    fn build(self, kind: CurveKind) -> PyResult<Curve> {
+        let membership = model::membership(self.membership)?;
+        let arrays =
+            PointArrays::read(self.positions, "positions", self.degrees, membership, false)?;
+        let weights = self
+            .weights
+            .map(|w| {
+                crate::arrays::float_array(w, "weights")?
+                    .values()
+                    .map(<[f64]>::to_vec)
+            })
+            .transpose()?;
+        let knots = self
+            .knots
+            .map(|k| {
+                crate::arrays::float_array(k, "knots")?
+                    .values()
+                    .map(<[f64]>::to_vec)
+            })
+            .transpose()?;
+        let settings = Settings {
+            kind,
+            weights,
+            degree: self.degree,
+            knots,
+        };
+        let shape: Shape = if arrays.dimension == 2 {
+            settings.curve(arrays.points::<2>())?.into()
+        } else {
+            settings.curve(arrays.points::<3>())?.into()
+        };
+        let model = model::model(shape, membership, self.meta)?;
+        Ok(Curve {
+            state: State::of_model(model).expect("a curve shape"),
+        })
+    }
+}
+
+/// The kind's settings of a constructor.
+struct Settings {
+    kind: CurveKind,
+    weights: Option<Vec<f64>>,
+    degree: Option<usize>,
+    knots: Option<Vec<f64>>,
+}
+
+impl Settings {
+    fn curve<const D: usize>(&self, points: Vec<ControlPoint<D>>) -> PyResult<AnyCurve<D>> {
+        let count = points.len();
+        let knots = || -> PyResult<KnotVector> {
+            let degree = self.degree.unwrap_or(3);
+            match &self.knots {
+                Some(knots) => KnotVector::new(knots.clone(), degree, count),
+                None => KnotVector::clamped_uniform(degree, count),
+            }
+            .map_err(|e| invalid_at("knots", e))
+        };
+        let curve: Result<AnyCurve<D>, CurveError> = match self.kind {
+            CurveKind::Bezier => BezierCurve::new(points).map(Into::into),
+            CurveKind::BSpline => BSplineCurve::new(points, knots()?).map(Into::into),
+            CurveKind::Nurbs => {
+                let weights = self.weights.clone().unwrap_or_default();
+                NurbsCurve::new(points, weights, knots()?).map(Into::into)
+            }
+        };
+        curve.map_err(invalid)
+    }
+}
+
+#[pymethods]
+impl Bezier {
+    /// A Bézier curve from `positions` (shape (n, 2) or (n, 3)) and `degrees` (shape (n, 3):
+    /// truth, indeterminacy, falsity; (n, 2) truth, falsity under the intuitionistic rule;
+    /// (n,) truth under the fuzzy rule).
+    #[new]
+    #[pyo3(signature = (positions, degrees, membership = "neutrosophic", *, name = None, description = None, point_names = None))]
+    fn new(
+        positions: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        membership: &str,
+        name: Option<String>,
+        description: Option<String>,
+        point_names: Option<Vec<Option<String>>>,
+    ) -> PyResult<PyClassInitializer<Self>> {
+        let curve = Construction {
+            positions,
+            degrees,
+            weights: None,
+            degree: None,
+            knots: None,
+            membership,
+            meta: Meta {
+                name,
+                description,
+                point_names,
+            },
+        }
+        .build(CurveKind::Bezier)?;
+        Ok(curve.initializer().add_subclass(Bezier))
+    }
+
+    /// A Bézier curve from the `bezier` package's node layout: `nodes` of shape
+    /// (dimension, n), one column per control point; `degrees` as for `Bezier(...)`.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> curve = ns.Bezier.from_nodes([[0.0, 0.5, 1.0], [0.0, 1.0, 0.0]], [[1, 0, 0]] * 3)
+    /// >>> curve(0.5)[:2].tolist()
+    /// [0.5, 0.5]
+    #[staticmethod]
+    #[pyo3(signature = (nodes, degrees, membership = "neutrosophic"))]
+    fn from_nodes(
+        py: Python<'_>,
+        nodes: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        membership: &str,
+    ) -> PyResult<Py<PyAny>> {
+        let nodes = crate::arrays::float_array(nodes, "nodes")?;
+        let (dimension, count) = match *nodes.shape() {
+            [d, n] => (d, n),
+            _ => {
+                return Err(invalid_at(
+                    "nodes",
+                    format!(
+                        "expected an array of shape (dimension, n) (one column per control \
+                         point), got shape {:?}",
+                        nodes.shape()
+                    ),
+                ))
+            }
+        };
+        // Row-major (dimension, n) values read column by column: the (n, dimension) rows.
+        let values = nodes.values()?;
+        let rows: Vec<f64> = (0..count)
+            .flat_map(|k| (0..dimension).map(move |c| values[c * count + k]))
+            .collect();
+        let positions = crate::arrays::new_array(py, rows, &[count, dimension])?;
+        let curve = Construction {
+            positions: positions.as_any(),
+            degrees,
+            weights: None,
+            degree: None,
+            knots: None,
+            membership,
+            meta: Meta::default(),
+        }
+        .build(CurveKind::Bezier)?;
+        into_py(py, curve.state)
+    }
+}
+
+#[pymethods]
+impl BSpline {
+    /// A B-spline curve of `degree` from `positions` and `degrees` (as for `Bezier`), on
+    /// `knots` (n + degree + 1 non-decreasing values) or clamped uniform knots on [0, 1].
+    #[new]
+    #[pyo3(signature = (positions, degrees, degree = 3, knots = None, membership = "neutrosophic", *, name = None, description = None, point_names = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        positions: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        degree: usize,
+        knots: Option<&Bound<'_, PyAny>>,
+        membership: &str,
+        name: Option<String>,
+        description: Option<String>,
+        point_names: Option<Vec<Option<String>>>,
+    ) -> PyResult<PyClassInitializer<Self>> {
+        let curve = Construction {
+            positions,
+            degrees,
+            weights: None,
+            degree: Some(degree),
+            knots,
+            membership,
+            meta: Meta {
+                name,
+                description,
+                point_names,
+            },
+        }
+        .build(CurveKind::BSpline)?;
+        Ok(curve.initializer().add_subclass(BSpline))
+    }
+}
+
+#[pymethods]
+impl Nurbs {
+    /// A NURBS curve of `degree` from `positions`, `degrees` (as for `Bezier`) and one
+    /// positive `weights` value per control point, on `knots` or clamped uniform knots.
+    #[new]
+    #[pyo3(signature = (positions, degrees, weights, degree = 3, knots = None, membership = "neutrosophic", *, name = None, description = None, point_names = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        positions: &Bound<'_, PyAny>,
+        degrees: &Bound<'_, PyAny>,
+        weights: &Bound<'_, PyAny>,
+        degree: usize,
+        knots: Option<&Bound<'_, PyAny>>,
+        membership: &str,
+        name: Option<String>,
+        description: Option<String>,
+        point_names: Option<Vec<Option<String>>>,
+    ) -> PyResult<PyClassInitializer<Self>> {
+        let curve = Construction {
+            positions,
+            degrees,
+            weights: Some(weights),
+            degree: Some(degree),
+            knots,
+            membership,
+            meta: Meta {
+                name,
+                description,
+                point_names,
+            },
+        }
+        .build(CurveKind::Nurbs)?;
+        Ok(curve.initializer().add_subclass(Nurbs))
+    }
+}

@@ -1,0 +1,164 @@
+//! The base class `Shape` of every curve and surface: the model (and, for a curve's
+//! derivative, its order) and every method that needs nothing else: the names, the membership
+//! rule, saving, the figures, equality and pickling. `Curve` and `Surface` extend it with their
+//! geometry; each shared method has this one body (the pattern of a base class holding the
+//! shared state and behaviour, see docs/architecture.md).
+
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use neutrospline_io::Model;
+use pyo3::exceptions::PyDeprecationWarning;
+use pyo3::prelude::*;
+
+use crate::errors::invalid;
+use crate::model::{self, FigureRequest};
+
+/// A neutrosophic curve or surface: the base class of `Curve` and `Surface`.
+///
+/// It holds the model; `name`, `description`, `membership`, `save`, `to_svg`, `save_figure`,
+/// the inline Jupyter figure, equality and pickling are defined here once for every kind.
+///
+/// >>> import neutrospline as ns
+/// >>> isinstance(ns.example1(), ns.Shape)
+/// True
+#[pyclass(name = "Shape", subclass, frozen, module = "neutrospline")]
+pub struct BaseShape {
+    /// The model of the curve or surface (of a derivative: the curve it is the derivative of).
+    model: Arc<Model>,
+    /// The derivative order: 0 for a model, k for a curve's k-th derivative.
+    order: usize,
+}
+
+impl BaseShape {
+    /// The base of `model`'s shape (`order` > 0: its `order`-th derivative).
+    pub fn new(model: Arc<Model>, order: usize) -> BaseShape {
+        BaseShape { model, order }
+    }
+
+    /// The model, for the methods that save or draw it: a derivative's values are rates of
+    /// change, not degrees, so a derivative has none.
+    pub fn model(&self) -> PyResult<&Model> {
+        match self.order {
+            0 => Ok(&self.model),
+            order => Err(invalid(format!(
+                "this is a derivative (order {order}): its values are rates of change, not \
+                 degrees in [0, 1], so it is not a model; apply this to the curve itself"
+            ))),
+        }
+    }
+}
+
+#[pymethods]
+impl BaseShape {
+    /// The membership rule: `"neutrosophic"`, `"intuitionistic"` or `"fuzzy"`.
+    #[getter]
+    fn membership(&self) -> &'static str {
+        self.model.membership().name()
+    }
+
+    /// The model's name, if any.
+    #[getter]
+    fn name(&self) -> Option<String> {
+        self.model.name().map(str::to_owned)
+    }
+
+    /// The model's description, if any.
+    #[getter]
+    fn description(&self) -> Option<String> {
+        self.model.description().map(str::to_owned)
+    }
+
+    /// Deprecated alias of `membership_degrees` (the control points' truth, indeterminacy,
+    /// falsity, not the polynomial `degree`): warns with a `DeprecationWarning` and returns
+    /// the same array. It will be removed in the next release.
+    #[getter]
+    fn degrees<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyAny>> {
+        let py = slf.py();
+        PyErr::warn(
+            py,
+            &py.get_type::<PyDeprecationWarning>(),
+            c"`degrees` is deprecated, use `membership_degrees` (the truth, indeterminacy and \
+              falsity of the control points; `degree` is the polynomial degree)",
+            1,
+        )?;
+        slf.getattr("membership_degrees")
+    }
+
+    /// Writes the model to `path`: TOML, JSON or CSV by the extension, replaced atomically;
+    /// `neutrospline.load(path)` gives back an equal curve or surface.
+    fn save(&self, path: PathBuf) -> PyResult<()> {
+        model::save(self.model()?, &path)
+    }
+
+    /// The SVG text of the figure `view` (`all`, `controls`, `truth`, `indeterminacy`,
+    /// `falsity`, `plane`, `score`), as `neutrospline plot` draws it.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> svg = ns.example1().to_svg("truth")
+    /// >>> svg.startswith("<?xml") and "curve: truth</title>" in svg
+    /// True
+    #[pyo3(signature = (view = "all".to_owned(), width = None, height = None, title = None, caption = None))]
+    fn to_svg(
+        &self,
+        py: Python<'_>,
+        view: String,
+        width: Option<u32>,
+        height: Option<u32>,
+        title: Option<String>,
+        caption: Option<String>,
+    ) -> PyResult<String> {
+        let request = FigureRequest {
+            view,
+            width,
+            height,
+            title,
+            caption,
+        };
+        model::svg(py, self.model()?, request)
+    }
+
+    /// Writes the figure `view` to `path` (`.svg` or `.png`), atomically.
+    #[pyo3(signature = (path, view = "all".to_owned(), width = None, height = None, title = None, caption = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn save_figure(
+        &self,
+        py: Python<'_>,
+        path: PathBuf,
+        view: String,
+        width: Option<u32>,
+        height: Option<u32>,
+        title: Option<String>,
+        caption: Option<String>,
+    ) -> PyResult<()> {
+        let request = FigureRequest {
+            view,
+            width,
+            height,
+            title,
+            caption,
+        };
+        model::save_figure(py, self.model()?, &path, request)
+    }
+
+    /// The `all` view, shown inline by Jupyter.
+    fn _repr_svg_(&self, py: Python<'_>) -> PyResult<String> {
+        model::svg(py, self.model()?, FigureRequest::all())
+    }
+
+    /// Equal models (and derivative orders); never equal to anything else.
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other.cast::<BaseShape>().is_ok_and(|other| {
+            let other = other.get();
+            self.model == other.model && self.order == other.order
+        })
+    }
+
+    /// Pickling: the model as exact JSON and the derivative order.
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (String, usize))> {
+        let restore = py
+            .import("neutrospline._neutrospline")?
+            .getattr("_restore")?;
+        Ok((restore, (model::to_state(&self.model), self.order)))
+    }
+}
