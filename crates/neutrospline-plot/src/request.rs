@@ -211,6 +211,19 @@ impl FigureRequest {
     /// The [`PlotOptions::validate`] errors: a size, a sample count, an alpha level or a
     /// camera angle out of range.
     pub fn plot_options(&self) -> Result<PlotOptions, PlotError> {
+        self.checked(false)
+    }
+
+    /// [`FigureRequest::plot_options`] for a figure of a surface: `samples`, when given, is
+    /// also held to [`PlotOptions::MAX_SURFACE_SAMPLES`] per direction.
+    ///
+    /// # Errors
+    /// As [`FigureRequest::plot_options`]; [`PlotError::InvalidSamples`] above that.
+    pub fn surface_plot_options(&self) -> Result<PlotOptions, PlotError> {
+        self.checked(true)
+    }
+
+    fn checked(&self, surface: bool) -> Result<PlotOptions, PlotError> {
         let mut options = PlotOptions::new()
             .with_size(self.width, self.height)
             .with_camera(self.azimuth, self.elevation)
@@ -225,6 +238,9 @@ impl FigureRequest {
             options = options.with_caption(caption.clone());
         }
         options.validate()?;
+        if surface && self.samples.is_some() {
+            options.validate_surface()?;
+        }
         Ok(options)
     }
 }

@@ -5,26 +5,20 @@
 //! (0, 1) is at most the number of sign changes of the coefficients, and has its parity),
 //! deflation of the roots at the ends, and a safeguarded root of a bracketed polynomial.
 
+use crate::bernstein::Packed;
+
 pub(crate) fn binomial(n: usize, k: usize) -> f64 {
     (0..k).fold(1.0, |acc, r| acc * (n - r) as f64 / (r + 1) as f64)
 }
 
-/// One level of de Casteljau at 1/2: the coefficients of the left and right halves.
+/// One level of de Casteljau at 1/2: the coefficients of the left and right halves
+/// ([`Packed::split`] on one channel).
 pub(crate) fn halves(c: &[f64], left: &mut Vec<f64>, right: &mut Vec<f64>) {
-    let n = c.len();
-    let mut work = c.to_vec();
+    let (l, r) = Packed::new(1, c.to_vec()).split(0.5);
     left.clear();
+    left.extend_from_slice(l.data());
     right.clear();
-    left.push(work[0]);
-    right.push(work[n - 1]);
-    for level in 1..n {
-        for i in 0..n - level {
-            work[i] = 0.5 * (work[i] + work[i + 1]);
-        }
-        left.push(work[0]);
-        right.push(work[n - level - 1]);
-    }
-    right.reverse();
+    right.extend_from_slice(r.data());
 }
 
 /// The value and derivative at `x` in [0, 1] of the Bernstein polynomial with coefficients `c`.

@@ -1,5 +1,6 @@
 //! Sub-pieces of the curves' Bézier pieces: boxes, halving, the tests that prune a pair.
 
+use crate::bernstein::Packed;
 use crate::nearest::Piece;
 
 /// A sub-piece: homogeneous control data, and its parameters on the curve.
@@ -86,41 +87,29 @@ impl Sub {
         a.1 + slack < b.0 || b.1 + slack < a.0
     }
 
-    /// The halves at the middle (de Casteljau on the homogeneous points).
+    /// The halves at the middle (de Casteljau on the homogeneous points `(w x, w y, w)`,
+    /// [`Packed::split`]).
     pub(super) fn halves(&self) -> (Sub, Sub) {
-        let n = self.points.len() - 1;
-        let mut work: Vec<([f64; 2], f64)> = self
+        let weight = |i: usize| self.weights.as_ref().map_or(1.0, |w| w[i]);
+        let rows = self
             .points
             .iter()
             .enumerate()
-            .map(|(i, p)| {
-                let w = self.weights.as_ref().map_or(1.0, |w| w[i]);
-                ([p[0] * w, p[1] * w], w)
+            .flat_map(|(i, p)| {
+                let w = weight(i);
+                [p[0] * w, p[1] * w, w]
             })
             .collect();
-        let mut left = vec![work[0]];
-        let mut right = vec![work[n]];
-        for level in 1..=n {
-            for i in 0..=n - level {
-                let (a, wa) = work[i];
-                let (b, wb) = work[i + 1];
-                work[i] = ([0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])], 0.5 * (wa + wb));
-            }
-            left.push(work[0]);
-            right.push(work[n - level]);
-        }
-        right.reverse();
+        let (left, right) = Packed::new(3, rows).split(0.5);
         let mid = 0.5 * (self.range[0] + self.range[1]);
-        let unpack = |rows: Vec<([f64; 2], f64)>| -> (Vec<[f64; 2]>, Option<Vec<f64>>) {
-            let points = rows.iter().map(|(p, w)| [p[0] / w, p[1] / w]).collect();
-            let weights = self
-                .weights
-                .as_ref()
-                .map(|_| rows.iter().map(|(_, w)| *w).collect());
+        let unpack = |half: &Packed| -> (Vec<[f64; 2]>, Option<Vec<f64>>) {
+            let rows = half.data().chunks_exact(3);
+            let points = rows.clone().map(|r| [r[0] / r[2], r[1] / r[2]]).collect();
+            let weights = self.weights.as_ref().map(|_| rows.map(|r| r[2]).collect());
             (points, weights)
         };
-        let (lp, lw) = unpack(left);
-        let (rp, rw) = unpack(right);
+        let (lp, lw) = unpack(&left);
+        let (rp, rw) = unpack(&right);
         (
             Sub::with(lp, lw, [self.range[0], mid], self.depth + 1, self.piece),
             Sub::with(rp, rw, [mid, self.range[1]], self.depth + 1, self.piece),
