@@ -281,3 +281,14 @@ fn read_weights(
 pub fn fit_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
     options::table::<FitRequest>(py)
 }
+
+/// The options of a figure (`to_svg`, `save_figure`), from the plot crate that defines them,
+/// as `fit_options()` lists the fit's.
+///
+/// >>> import neutrospline as ns
+/// >>> [o["default"] for o in ns.figure_options() if o["name"] == "width"]
+/// [1600]
+#[pyfunction]
+pub fn figure_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
+    options::table::<neutrospline_plot::FigureRequest>(py)
+}

@@ -7,7 +7,7 @@ use std::str::FromStr;
 
 use neutrospline::{ControlPoint, Degrees, Membership};
 use neutrospline_io::{write_atomically, Format, Model, ReadOptions, Shape};
-use neutrospline_plot::{render_png, render_svg, PlotModel, PlotOptions, View};
+use neutrospline_plot::{render_png, render_svg, FigureRequest, PlotModel, PlotOptions, View};
 use pyo3::exceptions::PyOSError;
 use pyo3::prelude::*;
 
@@ -223,63 +223,27 @@ pub fn save(model: &Model, path: &Path) -> PyResult<()> {
     neutrospline_io::save(model, path).map_err(write_error)
 }
 
-/// The options of a figure: size, title and caption (the model's description by default).
-fn plot_options(
-    model: &Model,
-    width: Option<u32>,
-    height: Option<u32>,
-    title: Option<String>,
-    caption: Option<String>,
-) -> PyResult<PlotOptions> {
-    let mut options = PlotOptions::new();
-    if let Some(width) = width {
-        options = options.with_width(width);
+/// The figure asked for by `request` (the plot crate's, as `neutrospline plot` reads it):
+/// the view (`all` unless given), the options, the model's description as the caption unless
+/// one is given.
+fn prepare(model: &Model, request: &FigureRequest) -> PyResult<(PlotModel, View, PlotOptions)> {
+    let options = if model.shape().is_surface() {
+        request.surface_plot_options()
+    } else {
+        request.plot_options()
     }
-    if let Some(height) = height {
-        options = options.with_height(height);
-    }
-    if let Some(title) = title {
-        options = options.with_title(title);
-    }
-    if let Some(caption) = caption.or_else(|| model.description().map(str::to_owned)) {
-        options = options.with_caption(caption);
-    }
-    options.validate().map_err(invalid)?;
-    Ok(options)
-}
-
-/// What a figure is asked for.
-pub struct FigureRequest {
-    pub view: String,
-    pub width: Option<u32>,
-    pub height: Option<u32>,
-    pub title: Option<String>,
-    pub caption: Option<String>,
-}
-
-impl FigureRequest {
-    /// The `all` view at the default size.
-    pub fn all() -> FigureRequest {
-        FigureRequest {
-            view: "all".into(),
-            width: None,
-            height: None,
-            title: None,
-            caption: None,
-        }
-    }
-
-    fn prepare(self, model: &Model) -> PyResult<(PlotModel, View, PlotOptions)> {
-        let view = View::from_str(&self.view).map_err(|e| invalid_at("view", e))?;
-        let options = plot_options(model, self.width, self.height, self.title, self.caption)?;
-        let figure = PlotModel::from_model(model).map_err(invalid)?;
-        Ok((figure, view, options))
-    }
+    .map_err(invalid)?;
+    let options = match (&request.caption, model.description()) {
+        (None, Some(description)) => options.with_caption(description),
+        _ => options,
+    };
+    let figure = PlotModel::from_model(model).map_err(invalid)?;
+    Ok((figure, request.view(false), options))
 }
 
 /// The SVG text of a figure of `model`.
-pub fn svg(py: Python<'_>, model: &Model, request: FigureRequest) -> PyResult<String> {
-    let (figure, view, options) = request.prepare(model)?;
+pub fn svg(py: Python<'_>, model: &Model, request: &FigureRequest) -> PyResult<String> {
+    let (figure, view, options) = prepare(model, request)?;
     py.detach(|| render_svg(&figure, view, &options))
         .map_err(invalid)
 }
@@ -289,7 +253,7 @@ pub fn save_figure(
     py: Python<'_>,
     model: &Model,
     path: &Path,
-    request: FigureRequest,
+    request: &FigureRequest,
 ) -> PyResult<()> {
     let extension = path
         .extension()
@@ -305,7 +269,7 @@ pub fn save_figure(
             ))
         }
     };
-    let (figure, view, options) = request.prepare(model)?;
+    let (figure, view, options) = prepare(model, request)?;
     let bytes = py
         .detach(|| {
             if png {

@@ -8,11 +8,14 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use neutrospline_io::Model;
+use neutrospline_plot::FigureRequest;
 use pyo3::exceptions::PyDeprecationWarning;
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 
 use crate::errors::invalid;
-use crate::model::{self, FigureRequest};
+use crate::model;
+use crate::options::set_from_kwargs;
 
 /// A neutrosophic curve or surface: the base class of `Curve` and `Surface`.
 ///
@@ -92,58 +95,41 @@ impl BaseShape {
     }
 
     /// The SVG text of the figure `view` (`all`, `controls`, `truth`, `indeterminacy`,
-    /// `falsity`, `plane`, `score`), as `neutrospline plot` draws it.
+    /// `falsity`, `plane`, `score`, `band`), as `neutrospline plot` draws it. The other figure
+    /// options are keyword arguments named as `neutrospline plot`'s flags, with its defaults
+    /// and messages (`figure_options()` lists them): `width`, `height`, `title`, `caption`,
+    /// `azimuth`, `elevation`, `samples`, `alpha`.
     ///
     /// >>> import neutrospline as ns
     /// >>> svg = ns.example1().to_svg("truth")
     /// >>> svg.startswith("<?xml") and "curve: truth</title>" in svg
     /// True
-    #[pyo3(signature = (view = "all".to_owned(), width = None, height = None, title = None, caption = None))]
+    #[pyo3(signature = (view = None, **options))]
     fn to_svg(
         &self,
         py: Python<'_>,
-        view: String,
-        width: Option<u32>,
-        height: Option<u32>,
-        title: Option<String>,
-        caption: Option<String>,
+        view: Option<&Bound<'_, PyAny>>,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<String> {
-        let request = FigureRequest {
-            view,
-            width,
-            height,
-            title,
-            caption,
-        };
-        model::svg(py, self.model()?, request)
+        model::svg(py, self.model()?, &figure_request(view, options)?)
     }
 
-    /// Writes the figure `view` to `path` (`.svg` or `.png`), atomically.
-    #[pyo3(signature = (path, view = "all".to_owned(), width = None, height = None, title = None, caption = None))]
-    #[allow(clippy::too_many_arguments)]
+    /// Writes the figure `view` to `path` (`.svg` or `.png`), atomically; the options as
+    /// `to_svg`'s.
+    #[pyo3(signature = (path, view = None, **options))]
     fn save_figure(
         &self,
         py: Python<'_>,
         path: PathBuf,
-        view: String,
-        width: Option<u32>,
-        height: Option<u32>,
-        title: Option<String>,
-        caption: Option<String>,
+        view: Option<&Bound<'_, PyAny>>,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<()> {
-        let request = FigureRequest {
-            view,
-            width,
-            height,
-            title,
-            caption,
-        };
-        model::save_figure(py, self.model()?, &path, request)
+        model::save_figure(py, self.model()?, &path, &figure_request(view, options)?)
     }
 
     /// The `all` view, shown inline by Jupyter.
     fn _repr_svg_(&self, py: Python<'_>) -> PyResult<String> {
-        model::svg(py, self.model()?, FigureRequest::all())
+        model::svg(py, self.model()?, &FigureRequest::default())
     }
 
     /// Equal models (and derivative orders); never equal to anything else.
@@ -161,4 +147,21 @@ impl BaseShape {
             .getattr("_restore")?;
         Ok((restore, (model::to_state(&self.model), self.order)))
     }
+}
+
+/// The figure's request from `to_svg`'s or `save_figure`'s arguments: `view` (positional or by
+/// name) and the plot crate's other figure options as keyword arguments (`color_by` for
+/// `color-by`), with its defaults and messages.
+fn figure_request(
+    view: Option<&Bound<'_, PyAny>>,
+    options: Option<&Bound<'_, PyDict>>,
+) -> PyResult<FigureRequest> {
+    let mut request = FigureRequest::default();
+    if let Some(view) = view.filter(|v| !v.is_none()) {
+        let kwargs = PyDict::new(view.py());
+        kwargs.set_item("view", view)?;
+        set_from_kwargs(&mut request, Some(&kwargs))?;
+    }
+    set_from_kwargs(&mut request, options)?;
+    Ok(request)
 }

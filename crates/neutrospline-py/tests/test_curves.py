@@ -399,8 +399,29 @@ def test_figures_are_the_command_lines(cli, root, tmp_path):
     png = tmp_path / "figure.png"
     curve.save_figure(png, view="controls", width=640, height=480)
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    with pytest.raises(ns.ModelError, match="^view: "):
+    with pytest.raises(ns.ModelError) as raised:
         curve.to_svg("sideways")
+    assert str(raised.value) == (
+        'view = "sideways": expected one of controls, truth, indeterminacy, falsity, all, plane, '
+        "score, data, band"
+    )
+    # The figure options are neutrospline plot's, with its messages (crates/neutrospline-plot).
+    assert curve.to_svg("truth", azimuth=-30, elevation=40) == curve.to_svg(view="truth", azimuth=-30.0, elevation=40.0)
+    assert curve.to_svg("truth", azimuth=-30) != curve.to_svg("truth")
+    for options, message in [
+        (dict(elevation=95), "camera elevation = 95 degrees is not supported (must be between -90 and 90)"),
+        (dict(alpha=[0, 1.5]), "alpha level 1.5 is outside [0, 1] (the band view draws alpha-cuts at levels in [0, 1])"),
+        (dict(width="800"), 'width = "800": expected a whole number'),
+        (
+            dict(colour="red"),
+            'unknown option "colour" (the options are view, width, height, title, caption, azimuth, '
+            "elevation, samples, alpha, color-by)",
+        ),
+    ]:
+        with pytest.raises(ns.ModelError) as raised:
+            curve.to_svg("truth", **options)
+        assert str(raised.value) == message, options
+    assert {o["name"] for o in ns.figure_options()} >= {"width", "azimuth", "color_by", "alpha"}
     with pytest.raises(ns.ModelError, match="unsupported figure extension"):
         curve.save_figure(tmp_path / "figure.gif")
     with pytest.raises(ns.ModelError, match="derivative"):

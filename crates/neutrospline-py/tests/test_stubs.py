@@ -53,15 +53,19 @@ def test_every_public_name_is_in_the_stub():
             assert name in functions, name
             stub, runtime = parameter_names(functions[name]), runtime_parameters(obj)
             if name == "fit":
-                # `fit` reads its options from `**options` (the names `fit_options()` lists);
-                # the stub spells each out as a typed keyword.
-                assert runtime[-1] == "options", runtime
-                named = runtime[:-1]
-                assert stub[: len(named)] == named, name
-                options = {o["name"] for o in neutrospline.fit_options()} - set(named)
-                assert set(stub[len(named):]) == options, name
+                assert_options_spelled_out(stub, runtime, neutrospline.fit_options(), name)
             else:
                 assert stub == runtime, name
+
+
+def assert_options_spelled_out(stub, runtime, options, name):
+    """A function that reads a job's options from `**options` (the names `fit_options()` or
+    `figure_options()` list): the stub spells each out as a typed keyword."""
+    assert runtime[-1] == "options", runtime
+    named = runtime[:-1]
+    assert stub[: len(named)] == named, name
+    names = {o["name"] for o in options} - set(named)
+    assert set(stub[len(named):]) == names, name
 
 
 def test_every_method_is_in_the_stub():
@@ -83,5 +87,10 @@ def test_every_method_is_in_the_stub():
                     continue
                 if runtime == ["args", "kwargs"]:
                     # A slot wrapper (__call__, __len__): CPython shows no parameter names.
+                    continue
+                if name in ("to_svg", "save_figure"):
+                    assert_options_spelled_out(
+                        parameter_names(stub[name]), runtime, neutrospline.figure_options(), f"{class_name}.{name}"
+                    )
                     continue
                 assert parameter_names(stub[name]) == runtime, f"{class_name}.{name}"

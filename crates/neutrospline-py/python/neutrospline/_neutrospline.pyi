@@ -54,20 +54,32 @@ class Shape:
     def save(self, path: PathLike) -> None: ...
     def to_svg(
         self,
-        view: ViewName = "all",
-        width: Optional[int] = None,
-        height: Optional[int] = None,
+        view: Optional[ViewName] = None,
+        *,
+        width: int = 1600,
+        height: int = 1200,
         title: Optional[str] = None,
         caption: Optional[str] = None,
+        azimuth: float = -55.0,
+        elevation: float = 25.0,
+        samples: Optional[int] = None,
+        alpha: Sequence[float] = (0.0, 0.5, 1.0),
+        color_by: Literal["truth", "indeterminacy", "falsity"] = "truth",
     ) -> str: ...
     def save_figure(
         self,
         path: PathLike,
-        view: ViewName = "all",
-        width: Optional[int] = None,
-        height: Optional[int] = None,
+        view: Optional[ViewName] = None,
+        *,
+        width: int = 1600,
+        height: int = 1200,
         title: Optional[str] = None,
         caption: Optional[str] = None,
+        azimuth: float = -55.0,
+        elevation: float = 25.0,
+        samples: Optional[int] = None,
+        alpha: Sequence[float] = (0.0, 0.5, 1.0),
+        color_by: Literal["truth", "indeterminacy", "falsity"] = "truth",
     ) -> None: ...
     def _repr_svg_(self) -> str: ...
     def __eq__(self, value: object, /) -> bool: ...
@@ -319,4 +331,5 @@ def fit(
     membership: Membership = "neutrosophic",
 ) -> Tuple[Union[Bezier, BSpline], dict[str, Any]]: ...
 def fit_options() -> list[dict[str, Any]]: ...
+def figure_options() -> list[dict[str, Any]]: ...
 def _restore(text: str, order: int) -> Model: ...

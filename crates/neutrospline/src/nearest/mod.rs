@@ -226,23 +226,63 @@ pub struct Projector<'a, C, const D: usize> {
     tie: f64,
 }
 
-/// A candidate: parameter and distance.
+/// A point of a search: its parameter (`t` on a curve, `[u, v]` on a surface) and its
+/// distance to the query.
 #[derive(Clone, Copy, Debug)]
-struct Candidate {
-    t: f64,
-    distance: f64,
+pub(super) struct Candidate<P> {
+    pub(super) at: P,
+    pub(super) distance: f64,
 }
 
-/// The candidates whose distance is within the tie tolerance of the best so far.
-struct Best {
-    tie: f64,
-    min: f64,
-    near: Vec<Candidate>,
+/// Parameters in the order that breaks ties: the smallest first (lexicographic for `[u, v]`).
+pub(super) trait Parameter: Copy {
+    fn order(&self, other: &Self) -> core::cmp::Ordering;
 }
 
-impl Best {
-    fn offer(&mut self, c: Candidate) {
-        if c.distance > self.min + self.tie {
+impl Parameter for f64 {
+    fn order(&self, other: &Self) -> core::cmp::Ordering {
+        self.total_cmp(other)
+    }
+}
+
+impl Parameter for [f64; 2] {
+    fn order(&self, other: &Self) -> core::cmp::Ordering {
+        self[0]
+            .total_cmp(&other[0])
+            .then(self[1].total_cmp(&other[1]))
+    }
+}
+
+/// The candidates whose distance is within the tie tolerance of the best so far, for curves
+/// and surfaces alike.
+pub(super) struct Best<P> {
+    pub(super) tie: f64,
+    /// The smallest exact distance among the candidates.
+    pub(super) min: f64,
+    /// An upper bound of the minimum from the coefficients (corners of surface pieces), for
+    /// pruning; infinite where none is known.
+    pub(super) bound: f64,
+    pub(super) near: Vec<Candidate<P>>,
+}
+
+impl<P: Parameter> Best<P> {
+    pub(super) fn new(tie: f64) -> Self {
+        Best {
+            tie,
+            min: f64::INFINITY,
+            bound: f64::INFINITY,
+            near: Vec::new(),
+        }
+    }
+
+    /// Distances above this cannot be the minimum, nor tie with it.
+    pub(super) fn limit(&self) -> f64 {
+        self.min.min(self.bound) + self.tie
+    }
+
+    /// Keeps `c` if it is within the tie tolerance of the best (NaN distances never are).
+    pub(super) fn offer(&mut self, c: Candidate<P>) {
+        if c.distance.is_nan() || c.distance > self.min + self.tie {
             return;
         }
         if c.distance < self.min {
@@ -253,9 +293,9 @@ impl Best {
         self.near.push(c);
     }
 
-    /// The smallest parameter among the near candidates.
-    fn choice(&self) -> Option<Candidate> {
-        self.near.iter().copied().min_by(|a, b| a.t.total_cmp(&b.t))
+    /// The candidate with the smallest parameter among the near ones.
+    pub(super) fn choice(&self) -> Option<Candidate<P>> {
+        self.near.iter().copied().min_by(|a, b| a.at.order(&b.at))
     }
 }
 
@@ -301,11 +341,7 @@ where
                 value: point[axis],
             });
         }
-        let mut best = Best {
-            tie: self.tie,
-            min: f64::INFINITY,
-            near: Vec::new(),
-        };
+        let mut best = Best::new(self.tie);
         // The ends of the pieces first: they give a good bound to prune with. Only those
         // within the tie tolerance of the nearest end can be candidates.
         let mut bounds = Vec::with_capacity(self.pieces.len());
@@ -324,13 +360,13 @@ where
         for (p, &(first, last)) in self.pieces.iter().zip(&ends) {
             if first <= nearest_end + best.tie {
                 best.offer(Candidate {
-                    t: p.piece.start,
+                    at: p.piece.start,
                     distance: first,
                 });
             }
             if last <= nearest_end + best.tie {
                 best.offer(Candidate {
-                    t: p.piece.end_parameter(),
+                    at: p.piece.end_parameter(),
                     distance: last,
                 });
             }
@@ -350,7 +386,7 @@ where
             search_piece(&self.pieces[k], &point, &mut best)?;
         }
         let chosen = best.choice().ok_or(NearestError::Overflow)?;
-        let t = chosen.t.clamp(self.domain.start, self.domain.end);
+        let t = chosen.at.clamp(self.domain.start, self.domain.end);
         let found = self.curve.evaluate(t)?;
         let distance = distance(&found.position, &point);
         if !distance.is_finite() {
@@ -393,14 +429,10 @@ where
 /// (for the overlap check of intersections); infinite when it overflows.
 pub(crate) fn distance_to_piece<const D: usize>(piece: Piece<D>, point: &[f64; D]) -> f64 {
     let n = piece.points.len() - 1;
-    let mut best = Best {
-        tie: 0.0,
-        min: f64::INFINITY,
-        near: Vec::new(),
-    };
+    let mut best = Best::new(0.0);
     for (t, q) in [(piece.start, piece.points[0]), (piece.end, piece.points[n])] {
         best.offer(Candidate {
-            t,
+            at: t,
             distance: distance(&q, point),
         });
     }
@@ -535,7 +567,7 @@ type Interval = (Vec<f64>, Vec<f64>, f64, f64, usize);
 fn search_piece<const D: usize>(
     p: &Prepared<D>,
     point: &[f64; D],
-    best: &mut Best,
+    best: &mut Best<f64>,
 ) -> Result<(), NearestError> {
     let piece = &p.piece;
     let n = piece.points.len() - 1;
@@ -556,7 +588,7 @@ fn search_piece<const D: usize>(
     if largest == 0.0 {
         // Every control point is the query point.
         best.offer(Candidate {
-            t: piece.start,
+            at: piece.start,
             distance: 0.0,
         });
         return Ok(());
@@ -658,7 +690,7 @@ fn offer_flat<const D: usize>(
     point: &[f64; D],
     lo: f64,
     hi: f64,
-    best: &mut Best,
+    best: &mut Best<f64>,
 ) {
     offer_at(piece, point, lo, best);
     offer_at(piece, point, hi, best);
@@ -689,7 +721,7 @@ fn offer_flat<const D: usize>(
 }
 
 /// Offers the point of `piece` at local parameter `x` in [0, 1].
-fn offer_at<const D: usize>(piece: &Piece<D>, point: &[f64; D], x: f64, best: &mut Best) {
+fn offer_at<const D: usize>(piece: &Piece<D>, point: &[f64; D], x: f64, best: &mut Best<f64>) {
     let position = piece_point(piece, x);
     let t = if x <= 0.0 {
         piece.start
@@ -699,7 +731,7 @@ fn offer_at<const D: usize>(piece: &Piece<D>, point: &[f64; D], x: f64, best: &m
         piece.start + (piece.end - piece.start) * x
     };
     best.offer(Candidate {
-        t,
+        at: t,
         distance: distance(&position, point),
     });
 }

@@ -1,7 +1,7 @@
 //! The nearest point of a surface: branch and bound on the Bernstein coefficients of the
 //! squared distance of its Bézier patches, then a projected Newton iteration.
 
-use super::{box_distance, distance, NearestError, TIE_TOLERANCE};
+use super::{box_distance, distance, Best, Candidate, NearestError, TIE_TOLERANCE};
 use crate::bernstein_scalar::{binomial, halves};
 use crate::curve::ControlPolygon;
 use crate::point::CurvePoint;
@@ -107,50 +107,6 @@ pub struct SurfaceProjector<'a> {
 
 /// Subdivisions of a patch per side before Newton's method takes over (1/64 of the patch).
 const SURFACE_DEPTH: usize = 12;
-
-/// A candidate on a surface: parameters and distance.
-#[derive(Clone, Copy, Debug)]
-struct SurfaceCandidate {
-    uv: [f64; 2],
-    distance: f64,
-}
-
-struct SurfaceBest {
-    tie: f64,
-    /// The smallest exact distance among the candidates.
-    min: f64,
-    /// An upper bound of the minimum from the coefficients (corners of pieces), for pruning.
-    bound: f64,
-    near: Vec<SurfaceCandidate>,
-}
-
-impl SurfaceBest {
-    /// Distances above this cannot be the minimum, nor tie with it.
-    fn limit(&self) -> f64 {
-        self.min.min(self.bound) + self.tie
-    }
-
-    fn offer(&mut self, c: SurfaceCandidate) {
-        // NaN distances are never offered.
-        if c.distance.is_nan() || c.distance > self.min + self.tie {
-            return;
-        }
-        if c.distance < self.min {
-            self.min = c.distance;
-            let limit = self.min + self.tie;
-            self.near.retain(|o| o.distance <= limit);
-        }
-        self.near.push(c);
-    }
-
-    fn choice(&self) -> Option<SurfaceCandidate> {
-        self.near.iter().copied().min_by(|a, b| {
-            a.uv[0]
-                .total_cmp(&b.uv[0])
-                .then(a.uv[1].total_cmp(&b.uv[1]))
-        })
-    }
-}
 
 impl Surface {
     /// The nearest point of the surface to `point` (see [`SurfaceProjector`]).
@@ -331,12 +287,7 @@ impl<'a> SurfaceProjector<'a> {
                 value: point[axis],
             });
         }
-        let mut best = SurfaceBest {
-            tie: self.tie,
-            min: f64::INFINITY,
-            bound: f64::INFINITY,
-            near: Vec::new(),
-        };
+        let mut best = Best::new(self.tie);
         let mut bounds = Vec::with_capacity(self.patches.len());
         for patch in &self.patches {
             let (p, q) = (patch.p, patch.q);
@@ -349,7 +300,10 @@ impl<'a> SurfaceProjector<'a> {
                     if a == 0 { patch.u[0] } else { patch.far(0) },
                     if b == 0 { patch.v[0] } else { patch.far(1) },
                 ];
-                best.offer(SurfaceCandidate { uv, distance: d });
+                best.offer(Candidate {
+                    at: uv,
+                    distance: d,
+                });
             }
             bounds.push(box_distance(&patch.low, &patch.high, &point));
         }
@@ -373,8 +327,8 @@ impl<'a> SurfaceProjector<'a> {
         let chosen = best.choice().ok_or(NearestError::Overflow)?;
         let [du, dv] = self.surface.domain();
         let uv = [
-            chosen.uv[0].clamp(du.start, du.end),
-            chosen.uv[1].clamp(dv.start, dv.end),
+            chosen.at[0].clamp(du.start, du.end),
+            chosen.at[1].clamp(dv.start, dv.end),
         ];
         let found = self.surface.evaluate(uv[0], uv[1])?;
         let distance = distance(&found.position, &point);
@@ -394,7 +348,7 @@ impl<'a> SurfaceProjector<'a> {
         &self,
         patch: &Patch,
         point: &[f64; 3],
-        best: &mut SurfaceBest,
+        best: &mut Best<[f64; 2]>,
         starts: &mut Vec<Start>,
     ) -> Result<(), NearestError> {
         let (p, q) = (patch.p, patch.q);
@@ -416,8 +370,8 @@ impl<'a> SurfaceProjector<'a> {
             return Err(NearestError::Overflow);
         }
         if largest == 0.0 {
-            best.offer(SurfaceCandidate {
-                uv: [patch.u[0], patch.v[0]],
+            best.offer(Candidate {
+                at: [patch.u[0], patch.v[0]],
                 distance: 0.0,
             });
             return Ok(());
@@ -488,8 +442,8 @@ impl<'a> SurfaceProjector<'a> {
                 // Every point of the piece ties with the best: its first corner is offered.
                 let uv = [global(su[0], patch.u), global(sv[0], patch.v)];
                 let s = self.surface.evaluate(uv[0], uv[1])?;
-                best.offer(SurfaceCandidate {
-                    uv,
+                best.offer(Candidate {
+                    at: uv,
                     distance: distance(&s.position, point),
                 });
                 continue;
@@ -529,7 +483,7 @@ impl<'a> SurfaceProjector<'a> {
         start: [f64; 2],
         point: &[f64; 3],
         patch: [[f64; 2]; 2],
-    ) -> Option<SurfaceCandidate> {
+    ) -> Option<Candidate<[f64; 2]>> {
         // Inside the start's patch, where the surface is smooth: across a knot of full
         // multiplicity minus one (a crease) the gradient jumps, and a minimum on the crease is
         // the minimum on the patch's edge, of one patch or the other.
@@ -617,8 +571,8 @@ impl<'a> SurfaceProjector<'a> {
                 break;
             }
         }
-        Some(SurfaceCandidate {
-            uv: x,
+        Some(Candidate {
+            at: x,
             distance: fx,
         })
     }
