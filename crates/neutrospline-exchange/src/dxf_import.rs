@@ -22,7 +22,7 @@ use neutrospline::{
 };
 
 use crate::dxf_xdata::{self, ModelInfo, XTag};
-use crate::read::read_whole;
+use neutrospline_io::read_whole;
 use neutrospline_io::{InputError, Kind, Limits, Model, ReadError};
 
 /// One group: its code, its value and the line of its code (1-based).

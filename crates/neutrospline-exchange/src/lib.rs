@@ -34,7 +34,6 @@
 mod dxf_import;
 mod dxf_xdata;
 mod export;
-mod read;
 mod svg_import;
 
 pub use dxf_import::{load_dxf, parse_dxf};

@@ -31,7 +31,7 @@ use neutrospline::{
     AnyCurve, BSpline, Bezier, ControlPoint, ControlPolygon, Degrees, Elevate, KnotVector, Nurbs,
 };
 
-use crate::read::read_whole;
+use neutrospline_io::read_whole;
 use neutrospline_io::{InputError, Limits, Model, ReadError};
 
 /// An affine map of the plane, SVG's `matrix(a b c d e f)`: (x, y) -> (a x + c y + e,

@@ -124,12 +124,12 @@ pub(crate) fn too_many_points(limit: u64) -> String {
     )
 }
 
-/// The message for a TOML or JSON file over the size limit.
+/// The message for a file read whole (TOML, JSON, DXF, SVG) over the size limit.
 pub(crate) fn too_large(limit: u64) -> String {
     format!(
-        "the file is larger than {limit} bytes, the limit for a TOML or JSON file (raise it \
-         with --max-file-size or NEUTROSPLINE_MAX_FILE_SIZE; CSV files are streamed and have no \
-         size limit)"
+        "the file is larger than {limit} bytes, the limit for a file read whole (TOML, JSON, \
+         DXF, SVG; raise it with --max-file-size or NEUTROSPLINE_MAX_FILE_SIZE; CSV files are \
+         streamed and have no size limit)"
     )
 }
 

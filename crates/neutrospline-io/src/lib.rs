@@ -75,7 +75,7 @@ pub use model::{KnotSource, Model, ModelError};
 pub use number::{format_number, push_number};
 pub use options::ReadOptions;
 pub use points::{load_points, read_points, PointTable};
-pub use read::{load, parse, read_csv};
+pub use read::{load, parse, read_csv, read_whole};
 pub use settings::{Kind, KnotRule, KnotSpec};
 pub use shape::Shape;
 pub use write::{save, to_csv_string, to_json_string, to_string, to_toml_string};

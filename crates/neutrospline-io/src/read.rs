@@ -68,34 +68,41 @@ pub fn load(path: impl AsRef<Path>, options: &ReadOptions) -> Result<Model, Read
     let path = path.as_ref();
     let format = Format::from_path(path)?;
     options.check(format)?;
-    let shown = path.display().to_string();
+    if format == Format::Csv {
+        let (file, shown) = open_file(path)?;
+        return read_csv(&shown, BufReader::new(file), options);
+    }
+    let (shown, bytes) = read_whole(path, options.limits.max_file_size)?;
+    parse(&shown, format, &bytes, options)
+}
+
+/// Reads the file at `path` whole, at most `limit` bytes: refused before reading when its size
+/// is larger, and while reading when it grows (a FIFO, a file being written; one byte more
+/// than the limit is read at most). Returns the path as messages show it and the bytes; the
+/// one way the model reader and the drawing importers read a file whole.
+///
+/// # Errors
+/// [`ReadError::Io`], [`ReadError::IsDirectory`], and a located [`ReadError::Input`] naming
+/// the limit for a file larger than `limit`.
+pub fn read_whole(path: &Path, limit: u64) -> Result<(String, Vec<u8>), ReadError> {
+    let (file, shown) = open_file(path)?;
     let cannot = |error: std::io::Error| ReadError::Io {
         path: shown.clone(),
         error,
     };
-    let file = std::fs::File::open(path).map_err(cannot)?;
-    let meta = file.metadata().map_err(cannot)?;
-    if meta.is_dir() {
-        return Err(ReadError::IsDirectory { path: shown });
-    }
-    if format == Format::Csv {
-        return read_csv(&shown, BufReader::new(file), options);
-    }
-    let limit = options.limits.max_file_size;
     let too_large = || InputError::new(&shown, None, None, too_large(limit)).into();
-    if meta.len() > limit {
+    let size = file.metadata().map_err(cannot)?.len();
+    if size > limit {
         return Err(too_large());
     }
-    // The size may grow while reading (a FIFO, a file being written): read one byte more than
-    // the limit at most.
-    let mut bytes = Vec::with_capacity(usize::try_from(meta.len()).unwrap_or(0));
+    let mut bytes = Vec::with_capacity(usize::try_from(size).unwrap_or(0));
     file.take(limit.saturating_add(1))
         .read_to_end(&mut bytes)
         .map_err(cannot)?;
     if bytes.len() as u64 > limit {
         return Err(too_large());
     }
-    parse(&shown, format, &bytes, options)
+    Ok((shown, bytes))
 }
 
 /// Opens `path` for reading, refusing a directory: the file and the path as messages show it.
