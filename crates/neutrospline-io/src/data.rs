@@ -30,7 +30,7 @@
 use std::io::BufRead;
 use std::path::Path;
 
-use neutrospline::fit::{fit_rows, DynFit, FitData, FitError, FitOptions};
+use neutrospline::fit::{fit_rows, DynFit, FitError, FitOptions};
 use neutrospline::{DegreeError, Degrees, Membership};
 
 use crate::csv::Records;
@@ -124,29 +124,6 @@ impl DataTable {
     /// When `index` is not a point of the table.
     pub fn line(&self, index: usize) -> usize {
         self.lines[index]
-    }
-
-    /// The core's fitting data of dimension `D` (the positions' first `D` coordinates, the
-    /// degrees, and the parameters and weights when the file has them).
-    ///
-    /// # Errors
-    /// The core's checks ([`FitData::new`], [`FitData::with_parameters`],
-    /// [`FitData::with_weights`]): a dimension other than 2 or 3, parameters that decrease.
-    /// [`DataTable::locate`] turns them into located errors.
-    pub fn fit_data<const D: usize>(&self) -> Result<FitData<D>, FitError> {
-        let positions = self
-            .positions
-            .iter()
-            .map(|p| core::array::from_fn(|a| p[a]))
-            .collect();
-        let mut data = FitData::new(positions, self.degrees.clone())?;
-        if let Some(parameters) = &self.parameters {
-            data = data.with_parameters(parameters.clone())?;
-        }
-        if let Some(weights) = &self.weights {
-            data = data.with_weights(weights.clone())?;
-        }
-        Ok(data)
     }
 
     /// Fits a curve of the table's dimension to its points, with its parameters and weights:
@@ -431,8 +408,6 @@ mod tests {
         assert_eq!(table.weights(), Some(&[0.5, 2.0][..]));
         assert_eq!(table.names(), &[Some("A".to_owned()), None]);
         assert_eq!((table.line(0), table.line(1)), (4, 6));
-        let data = table.fit_data::<3>().unwrap();
-        assert_eq!(data.len(), 2);
     }
 
     #[test]
@@ -478,9 +453,9 @@ mod tests {
             Membership::Neutrosophic,
         )
         .unwrap();
-        let error = table.fit_data::<2>().unwrap_err();
+        let error = table.fit(&FitOptions::default()).unwrap_err();
         assert_eq!(
-            table.locate(&error).to_string(),
+            error.to_string(),
             "d.csv:5: column `parameter`: parameter = 0.25 is less than the previous point's \
              0.5 (parameters must be non-decreasing, in the order of the rows)"
         );
