@@ -17,3 +17,4 @@ mod plot;
 mod query;
 mod readers;
 mod studio;
+mod util;
