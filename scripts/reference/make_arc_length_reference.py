@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Independent reference values for crates/neutrospline/tests/geometry.rs.
+"""Independent reference values for crates/neutrospline/tests/integration/geometry.rs.
 
 How to run (from the workspace root, /work/main; needs mpmath):
 

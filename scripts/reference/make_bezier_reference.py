@@ -58,7 +58,7 @@ OUT_DIR = os.path.join(ROOT, "crates", "neutrospline", "tests", "data")
 
 DEGREE_NAMES = ("truth", "indeterminacy", "falsity")
 
-# Tolerances used by crates/neutrospline/tests/reference.rs (kept in sync by hand).
+# Tolerances used by crates/neutrospline/tests/integration/reference.rs (kept in sync by hand).
 REL_TOL = 1e-12  # values: relative to the largest |control coordinate|; degrees: absolute
 REL_TOL_2000 = 1e-11
 

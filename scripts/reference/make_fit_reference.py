@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Independent reference values for the fitting tests (crates/neutrospline/tests/fit_reference.rs).
+"""Independent reference values for the fitting tests (crates/neutrospline/tests/integration/fit_reference.rs).
 
 Each case is a data set (points with truth, indeterminacy, falsity) and the options of a fit.
 This script computes, independently of the Rust code:

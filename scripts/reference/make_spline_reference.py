@@ -38,7 +38,7 @@ Every degree channel (truth, indeterminacy, falsity) is blended exactly like a c
 (docs/model.md section 4 and 6).  Doubles are written with Python's repr (round-trip); mpmath results
 are rounded to the nearest double through an exact Fraction.
 
-Tolerances used by crates/neutrospline/tests/spline_reference.rs (documented in README.md):
+Tolerances used by crates/neutrospline/tests/integration/spline_reference.rs (documented in README.md):
   positions 1e-12 * M (M = largest |control coordinate|), degrees 1e-12 absolute,
   derivatives 1e-12 * p * 2 * M / h * (w_max / w_min) with h the smallest positive
   u_{i+p+1} - u_{i+1} (M = 1 for degrees).  The script asserts its own float64

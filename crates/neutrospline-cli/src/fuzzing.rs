@@ -1,5 +1,5 @@
 //! The bodies of the fuzz targets, shared by `fuzz/` (cargo-fuzz, nightly) and the corpus replay
-//! test `tests/fuzz_corpus.rs` (stable, run by CI).
+//! test `tests/integration/fuzz_corpus.rs` (stable, run by CI).
 //!
 //! Each function takes arbitrary bytes and panics only when a property is broken:
 //! - [`csv_model`], [`toml_model`], [`json_model`]: parsing never panics; an error names the

@@ -76,7 +76,7 @@ fn curve(c: &CurveJson) -> AnyCurve<2> {
 #[test]
 fn intersections_match_the_reference() {
     let data: Data =
-        serde_json::from_str(include_str!("data/intersections.json")).expect("reference parses");
+        serde_json::from_str(include_str!("../data/intersections.json")).expect("reference parses");
     let mut total = 0;
     for case in &data.cases {
         let (a, b) = (curve(&case.a), curve(&case.b));
@@ -120,7 +120,7 @@ fn segment(p: [f64; 2], q: [f64; 2]) -> Bezier<2> {
 fn intersections_closed_forms_and_ends() {
     // The cubic loop [(0,0), (4,2), (-1,2), (3,0)] crosses itself at s = (3 - sqrt 3) / 6,
     // t = 1 - s (by its symmetry about x = 1.5).
-    let data: Data = serde_json::from_str(include_str!("data/intersections.json")).unwrap();
+    let data: Data = serde_json::from_str(include_str!("../data/intersections.json")).unwrap();
     let looped = curve(&data.cases.iter().find(|c| c.same).unwrap().a);
     let found = self_intersections(&looped).unwrap();
     let s = (3.0 - 3f64.sqrt()) / 6.0;
@@ -239,7 +239,7 @@ proptest! {
 
 #[test]
 fn intersections_on_the_seam_of_closed_curves_are_reported_once() {
-    let data: Data = serde_json::from_str(include_str!("data/intersections.json")).unwrap();
+    let data: Data = serde_json::from_str(include_str!("../data/intersections.json")).unwrap();
     let tangent = data
         .cases
         .iter()

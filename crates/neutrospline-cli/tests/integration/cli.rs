@@ -2,15 +2,10 @@
 //! directory, exact messages on stderr, exit codes 0 / 1 / 2, and no panic for any input.
 
 use std::io::{Read, Write};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Stdio};
 
-const BIN: &str = env!("CARGO_BIN_EXE_neutrospline");
-
-/// The repository's `examples/` directory.
-fn examples_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
+use crate::util::{examples_dir, BIN};
 
 struct Output {
     code: i32,

@@ -4,18 +4,9 @@
 
 use std::io::{BufRead, BufReader, Read, Write};
 use std::net::TcpStream;
-use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_neutrospline"))
-}
-
-fn repo_file(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../examples")
-        .join(name)
-}
+use crate::util::{example, BIN};
 
 /// A running `studio --no-open`, killed when dropped.
 struct Running {
@@ -31,7 +22,7 @@ impl Drop for Running {
 }
 
 fn studio(args: &[&str]) -> Running {
-    let mut child = bin()
+    let mut child = Command::new(BIN)
         .arg("studio")
         .arg("--no-open")
         .args(args)
@@ -70,7 +61,7 @@ fn post(port: u16, path: &str, body: &str) -> (u16, Vec<u8>) {
 fn studio_exports_the_bytes_plot_writes() {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("bspline.toml");
-    std::fs::copy(repo_file("bspline.toml"), &file).unwrap();
+    std::fs::copy(example("bspline.toml"), &file).unwrap();
     let running = studio(&[file.to_str().unwrap()]);
     // The model as the page holds it: the JSON the studio sends at start.
     let mut s = TcpStream::connect(("127.0.0.1", running.port)).unwrap();
@@ -90,7 +81,7 @@ fn studio_exports_the_bytes_plot_writes() {
         let (status, bytes) = post(running.port, "/api/export", &body.to_string());
         assert_eq!(status, 200, "{}", String::from_utf8_lossy(&bytes));
         let reference = dir.path().join(format!("plot-{view}.{ext}"));
-        let out = bin()
+        let out = Command::new(BIN)
             .args(["plot", file.to_str().unwrap(), "--view", view, "-o"])
             .arg(&reference)
             .output()
@@ -117,7 +108,10 @@ fn studio_exports_the_bytes_plot_writes() {
 
 #[test]
 fn studio_refuses_bad_arguments() {
-    let out = bin().args(["studio", "--no-open", "-"]).output().unwrap();
+    let out = Command::new(BIN)
+        .args(["studio", "--no-open", "-"])
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
         String::from_utf8_lossy(&out.stderr),
@@ -130,7 +124,7 @@ fn studio_refuses_bad_arguments() {
         "x,y,truth,indeterminacy,falsity\n1,2,1.2,0,0\n1,3,0,0,0\n",
     )
     .unwrap();
-    let out = bin()
+    let out = Command::new(BIN)
         .args(["studio", "--no-open"])
         .arg(&bad)
         .output()

@@ -7,7 +7,7 @@ use std::path::Path;
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
-const BIN: &str = env!("CARGO_BIN_EXE_neutrospline");
+use crate::util::BIN;
 
 const OLD: &[u8] = b"the old output\n";
 

@@ -3,14 +3,7 @@
 //! `examples/nurbs-circle.toml`, the quarter cylinder of `examples/nurbs-surface.json`), JSON
 //! output, the atomic `-o`, and located errors with their exit codes.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-
-const BIN: &str = env!("CARGO_BIN_EXE_neutrospline");
-
-fn examples_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
+use crate::util::{examples_dir, ok, run};
 
 /// A temporary directory with the given files and copies of the examples used here.
 fn dir_with(files: &[(&str, &str)]) -> tempfile::TempDir {
@@ -27,29 +20,6 @@ fn dir_with(files: &[(&str, &str)]) -> tempfile::TempDir {
         std::fs::write(dir.path().join(name), text).expect("file written");
     }
     dir
-}
-
-/// Runs the binary in `dir`: (exit code, stdout, stderr).
-fn run(dir: &Path, args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(BIN)
-        .args(args)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .output()
-        .expect("binary runs");
-    let stderr = String::from_utf8(out.stderr).unwrap();
-    assert!(!stderr.contains("panicked"), "panic for {args:?}: {stderr}");
-    (
-        out.status.code().expect("exit code"),
-        String::from_utf8(out.stdout).unwrap(),
-        stderr,
-    )
-}
-
-fn ok(dir: &Path, args: &[&str]) -> String {
-    let (code, stdout, stderr) = run(dir, args);
-    assert_eq!((code, stderr.as_str()), (0, ""), "{args:?}");
-    stdout
 }
 
 fn rows(table: &str) -> Vec<Vec<f64>> {

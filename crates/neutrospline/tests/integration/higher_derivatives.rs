@@ -69,7 +69,7 @@ fn numbers(texts: &[String]) -> Vec<f64> {
 }
 
 fn data() -> Data {
-    let text = include_str!("data/higher_derivatives.json");
+    let text = include_str!("../data/higher_derivatives.json");
     serde_json::from_str(text).expect("reference data parses")
 }
 

@@ -2,14 +2,10 @@
 //! headers, values against the closed form), `check`'s spread ranges, and the messages for
 //! bad spreads and bad alphas.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
-const BIN: &str = env!("CARGO_BIN_EXE_neutrospline");
-
-fn examples_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
+use crate::util::{examples_dir, BIN};
 
 /// Runs the binary in `dir`: exit code, stdout, stderr.
 fn run(dir: &Path, args: &[&str]) -> (i32, String, String) {

@@ -2,10 +2,7 @@
 //! `spline_common` with weights over several orders of magnitude; high degrees; the exact
 //! circle; weight errors.
 
-#[macro_use]
-mod spline_common;
-
-use spline_common::*;
+use crate::spline_common::*;
 
 curve_properties!(
     nurbs_2d,

@@ -3,18 +3,12 @@
 //! are chosen with --index or written with --all, and every refusal has its exact message, its
 //! exit status and writes no file.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
 use neutrospline_io::{load, to_toml_string, ReadOptions};
 
-const BIN: &str = env!("CARGO_BIN_EXE_neutrospline");
-
-fn example(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../examples")
-        .join(name)
-}
+use crate::util::{example, BIN};
 
 /// Runs the binary in `dir`: exit status, standard output, standard error.
 fn run_in(dir: &Path, args: &[&str]) -> (i32, String, String) {

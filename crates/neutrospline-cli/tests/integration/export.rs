@@ -2,19 +2,13 @@
 //! byte, small exports are checked line by line, and every refusal has its exact message, its
 //! exit status and leaves no output file.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Stdio};
 
 use neutrospline_exchange::{ColorBy, ExportFormat, ExportOptions};
 use neutrospline_io::{load, ReadOptions};
 
-const BIN: &str = env!("CARGO_BIN_EXE_neutrospline");
-
-fn example(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../examples")
-        .join(name)
-}
+use crate::util::{example, BIN};
 
 struct Output {
     code: i32,

@@ -2,10 +2,7 @@
 //! `spline_common` over knot vectors that are clamped or unclamped, with repeated interior
 //! knots up to multiplicity `p` and sometimes `p + 1`; high degrees; knot errors.
 
-#[macro_use]
-mod spline_common;
-
-use spline_common::*;
+use crate::spline_common::*;
 
 curve_properties!(
     bspline_2d,

@@ -2,10 +2,7 @@
 //! local control range, corners, curves of curves, iso-parameter curves, partial derivatives,
 //! kinds that agree; surface errors.
 
-#[macro_use]
-mod spline_common;
-
-use spline_common::*;
+use crate::spline_common::*;
 
 // ------------------------------------------------------------------------ surfaces
 

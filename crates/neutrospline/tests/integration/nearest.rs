@@ -109,7 +109,7 @@ fn check_case<const D: usize>(case: &Case) -> usize {
 #[test]
 fn nearest_matches_the_sampled_and_refined_reference() {
     let data: Data =
-        serde_json::from_str(include_str!("data/nearest.json")).expect("reference parses");
+        serde_json::from_str(include_str!("../data/nearest.json")).expect("reference parses");
     let mut unique = 0;
     let mut queries = 0;
     for case in &data.cases {
@@ -127,7 +127,7 @@ fn nearest_matches_the_sampled_and_refined_reference() {
 }
 
 fn unit_circle() -> AnyCurve<2> {
-    let data: Data = serde_json::from_str(include_str!("data/nearest.json")).unwrap();
+    let data: Data = serde_json::from_str(include_str!("../data/nearest.json")).unwrap();
     let case = data
         .cases
         .iter()
@@ -292,8 +292,8 @@ fn surface(case: &SurfaceCase) -> Surface {
 
 #[test]
 fn surface_nearest_matches_the_sampled_and_refined_reference() {
-    let data: SurfaceData =
-        serde_json::from_str(include_str!("data/surface_nearest.json")).expect("reference parses");
+    let data: SurfaceData = serde_json::from_str(include_str!("../data/surface_nearest.json"))
+        .expect("reference parses");
     let (mut queries, mut unique) = (0, 0);
     for case in &data.cases {
         let s = surface(case);
@@ -339,7 +339,7 @@ fn surface_nearest_matches_the_sampled_and_refined_reference() {
 #[test]
 fn surface_nearest_on_the_quarter_cylinder_closed_forms() {
     let data: SurfaceData =
-        serde_json::from_str(include_str!("data/surface_nearest.json")).unwrap();
+        serde_json::from_str(include_str!("../data/surface_nearest.json")).unwrap();
     let case = data
         .cases
         .iter()

@@ -6,7 +6,7 @@ use std::fs;
 use std::path::Path;
 use std::process::Command;
 
-const BIN: &str = env!("CARGO_BIN_EXE_neutrospline");
+use crate::util::BIN;
 
 /// Exit code, standard output and standard error of the binary run in `dir`.
 fn run(dir: &Path, args: &[&str]) -> (i32, String, String) {

@@ -3,17 +3,10 @@
 //! circle), curves meeting at their ends, self-intersections when B is A, overlaps refused
 //! with their parameters, and the errors for other shapes.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-
-const BIN: &str = env!("CARGO_BIN_EXE_neutrospline");
+use crate::util::{examples_dir, ok, run};
 
 const HEADER: &str =
     "index,t_a,t_b,x,y,truth_a,indeterminacy_a,falsity_a,truth_b,indeterminacy_b,falsity_b,contact";
-
-fn examples_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
 
 fn dir_with(files: &[(&str, &str)]) -> tempfile::TempDir {
     let dir = tempfile::tempdir().expect("temp dir");
@@ -24,28 +17,6 @@ fn dir_with(files: &[(&str, &str)]) -> tempfile::TempDir {
         std::fs::write(dir.path().join(name), text).expect("file written");
     }
     dir
-}
-
-fn run(dir: &Path, args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(BIN)
-        .args(args)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .output()
-        .expect("binary runs");
-    let stderr = String::from_utf8(out.stderr).unwrap();
-    assert!(!stderr.contains("panicked"), "panic for {args:?}: {stderr}");
-    (
-        out.status.code().expect("exit code"),
-        String::from_utf8(out.stdout).unwrap(),
-        stderr,
-    )
-}
-
-fn ok(dir: &Path, args: &[&str]) -> String {
-    let (code, stdout, stderr) = run(dir, args);
-    assert_eq!((code, stderr.as_str()), (0, ""), "{args:?}");
-    stdout
 }
 
 /// The numeric columns of each row (all but the last, `contact`).

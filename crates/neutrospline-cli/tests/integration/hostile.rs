@@ -7,7 +7,7 @@
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
-const BIN: &str = env!("CARGO_BIN_EXE_neutrospline");
+use crate::util::BIN;
 
 /// The old contents of the output file that no failed run may touch.
 const OLD: &[u8] = b"old output \xe2\x9c\x93\n";

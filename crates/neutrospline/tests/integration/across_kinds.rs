@@ -3,11 +3,8 @@
 //! B-spline, the paper's degree curves project onto the crisp curve, knot vectors from
 //! control polygons; the strategies generate valid data of every kind.
 
-#[macro_use]
-mod spline_common;
-
+use crate::spline_common::*;
 use neutrospline::ControlPolygon;
-use spline_common::*;
 
 // ------------------------------------------------------------------------ across kinds
 

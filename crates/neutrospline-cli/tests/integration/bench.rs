@@ -2,7 +2,7 @@
 
 use std::process::Command;
 
-const BIN: &str = env!("CARGO_BIN_EXE_neutrospline");
+use crate::util::BIN;
 
 #[test]
 fn bench_json_small() {

@@ -4,14 +4,9 @@
 //! sympy reference of `scripts/reference/make_higher_derivative_reference.py`, the first
 //! derivative unchanged, and the usage errors.
 
-use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
-const BIN: &str = env!("CARGO_BIN_EXE_neutrospline");
-
-fn examples_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
+use crate::util::{examples_dir, BIN};
 
 /// Runs the binary in `examples/`; returns (exit code, stdout, stderr).
 fn run(args: &[&str]) -> (i32, String, String) {

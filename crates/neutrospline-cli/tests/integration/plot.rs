@@ -1,21 +1,15 @@
 //! End-to-end tests of `neutrospline plot` and `neutrospline example --out`.
 
 use std::fs;
-use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_neutrospline"))
-}
-
-fn repo_file(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../examples")
-        .join(name)
-}
+use crate::util::{example, BIN};
 
 fn run(args: &[&str]) -> Output {
-    let out = bin().args(args).output().expect("run neutrospline");
+    let out = Command::new(BIN)
+        .args(args)
+        .output()
+        .expect("run neutrospline");
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(!stderr.contains("panicked"), "panic: {stderr}");
     out
@@ -68,7 +62,7 @@ fn example_out_writes_ten_figures_and_the_table() {
     let table = fs::read_to_string(out_dir.join("example1.csv")).unwrap();
     let eval = run(&[
         "eval",
-        repo_file("example1.csv").to_str().unwrap(),
+        example("example1.csv").to_str().unwrap(),
         "--at",
         "0,0.1,0.2,0.3,0.4,0.5,0.6,0.7,0.8,0.9,1",
     ]);
@@ -98,7 +92,7 @@ fn plot_every_view_of_every_example_kind() {
             let out_path = dir.path().join(format!("{file}-{view}.svg"));
             let out = run(&[
                 "plot",
-                repo_file(file).to_str().unwrap(),
+                example(file).to_str().unwrap(),
                 "-o",
                 out_path.to_str().unwrap(),
                 "--view",
@@ -129,7 +123,7 @@ fn plot_png_options_and_determinism() {
     for path in [&a, &b] {
         let out = run(&[
             "plot",
-            repo_file("bspline.toml").to_str().unwrap(),
+            example("bspline.toml").to_str().unwrap(),
             "-o",
             path.to_str().unwrap(),
             "--view",
@@ -158,7 +152,7 @@ fn plot_png_options_and_determinism() {
     let svg = dir.path().join("t.svg");
     run(&[
         "plot",
-        repo_file("bspline.toml").to_str().unwrap(),
+        example("bspline.toml").to_str().unwrap(),
         "-o",
         svg.to_str().unwrap(),
         "--title",
@@ -172,7 +166,7 @@ fn plot_usage_errors_exit_2_and_keep_old_output() {
     let dir = tempfile::tempdir().unwrap();
     let target = dir.path().join("keep.svg");
     fs::write(&target, "old figure").unwrap();
-    let file = repo_file("example1.csv");
+    let file = example("example1.csv");
     let out = run(&[
         "plot",
         file.to_str().unwrap(),

@@ -1,0 +1,20 @@
+//! The end-to-end tests of the `neutrospline` binary, one test binary: one module per command
+//! or topic (each runs `CARGO_BIN_EXE_neutrospline`).
+
+mod bench;
+mod cli;
+mod derivatives;
+mod export;
+mod faults;
+mod fit;
+mod fuzz_corpus;
+mod fuzzy;
+mod hostile;
+mod import;
+mod intersect;
+mod kinds;
+mod plot;
+mod query;
+mod readers;
+mod studio;
+mod util;

@@ -1,0 +1,9 @@
+//! The integration tests of neutrospline-plot, one binary: one module per topic.
+
+mod band;
+mod browser;
+mod data;
+mod display_list;
+mod score;
+mod surfaces;
+mod views;

@@ -1,0 +1,24 @@
+//! The integration tests of the core, one binary: one module per topic (properties against
+//! brute force, references from `tests/data`), the shared spline checks in `spline_common`.
+//! Proptest keeps the failures of `tests/integration/X.rs` in `tests/proptest-regressions/X.txt`
+//! (`FileFailurePersistence::SourceParallel`, the default: the sibling of the directory holding
+//! `main.rs`).
+
+#[macro_use]
+mod spline_common;
+mod across_kinds;
+mod batch_properties;
+mod bspline_properties;
+mod curve_batch_properties;
+mod fit_properties;
+mod fit_reference;
+mod fuzzy_properties;
+mod geometry;
+mod higher_derivatives;
+mod intersect;
+mod nearest;
+mod nurbs_properties;
+mod properties;
+mod reference;
+mod spline_reference;
+mod surface_properties;
