@@ -276,9 +276,9 @@ fn limit_file_size_for_toml_and_json() {
             (
                 Some(1),
                 format!(
-                    "error: {name}: the file is larger than 100 bytes, the limit for a TOML or \
-                     JSON file (raise it with --max-file-size or NEUTROSPLINE_MAX_FILE_SIZE; CSV \
-                     files are streamed and have no size limit)\n"
+                    "error: {name}: the file is larger than 100 bytes, the limit for a file read \
+                     whole (TOML, JSON, DXF, SVG; raise it with --max-file-size or \
+                     NEUTROSPLINE_MAX_FILE_SIZE; CSV files are streamed and have no size limit)\n"
                 )
                 .as_str()
             )

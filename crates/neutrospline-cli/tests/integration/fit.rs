@@ -452,7 +452,7 @@ fn wrong_types_and_unknown_options_are_refused() {
         ),
         (
             json!({ "kind": ["bspline"] }),
-            "invalid type: sequence, expected a boolean, a number or a string".to_owned(),
+            "kind = [\"bspline\"]: expected one of bspline, bezier".to_owned(),
         ),
     ] {
         assert_eq!(

@@ -251,8 +251,8 @@ fn plot_band_view() {
     assert_eq!(
         err.lines().next(),
         Some(
-            "error: invalid value '0,2' for '--alpha <A1,A2,...>': `2` is not a number in [0, 1] \
-             (alpha levels of the band view, such as 0,0.5,1)"
+            "error: alpha level 2 is outside [0, 1] (the band view draws alpha-cuts at levels in \
+             [0, 1])"
         )
     );
     let (code, _, err) = run(

@@ -898,7 +898,8 @@ fn hostile_usage_errors_exit_2() {
         (&["check", "m.txt"][..], "unsupported file extension"),
         (
             &["plot", "m.csv", "--view", "sideways", "-o", "p.svg"][..],
-            "invalid value 'sideways' for '--view <VIEW>'",
+            "view = sideways: expected one of controls, truth, indeterminacy, falsity, all, plane, \
+             score, data, band",
         ),
         (
             &["eval", "m.csv", "--max-control-points", "0"][..],

@@ -245,7 +245,8 @@ fn import_refusals_have_exact_messages_and_write_nothing() {
         (
             1,
             "error: big.svg: the file is larger than 20 bytes, the limit for a file read whole \
-             (raise it with --max-file-size or NEUTROSPLINE_MAX_FILE_SIZE)\n"
+             (TOML, JSON, DXF, SVG; raise it with --max-file-size or NEUTROSPLINE_MAX_FILE_SIZE; \
+             CSV files are streamed and have no size limit)\n"
         )
     );
     let (code, _, stderr) = run_in(dir.path(), &["import", "none.dxf", "-o", "m.toml"]);

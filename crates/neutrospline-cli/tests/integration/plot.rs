@@ -176,9 +176,11 @@ fn plot_usage_errors_exit_2_and_keep_old_output() {
         "side",
     ]);
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains(
-        "unknown view \"side\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, data, band)"
-    ));
+    assert_eq!(
+        String::from_utf8_lossy(&out.stderr),
+        "error: view = side: expected one of controls, truth, indeterminacy, falsity, all, plane, \
+         score, data, band\n"
+    );
     let pdf = dir.path().join("fig.pdf");
     let out = run(&["plot", file.to_str().unwrap(), "-o", pdf.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(2));

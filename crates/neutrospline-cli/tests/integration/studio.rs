@@ -77,7 +77,7 @@ fn studio_exports_the_bytes_plot_writes() {
         serde_json::from_str(answer.split("\r\n\r\n").nth(1).unwrap()).unwrap();
     let model = state["model"].to_string();
     for (view, ext) in [("plane", "svg"), ("truth", "svg"), ("controls", "png")] {
-        let body = serde_json::json!({ "model": model, "view": view, "format": ext });
+        let body = serde_json::json!({ "model": model, "format": ext, "figure": { "view": view } });
         let (status, bytes) = post(running.port, "/api/export", &body.to_string());
         assert_eq!(status, 200, "{}", String::from_utf8_lossy(&bytes));
         let reference = dir.path().join(format!("plot-{view}.{ext}"));
