@@ -11,7 +11,7 @@ use neutrospline_io::{Model, Shape};
 use numpy::ndarray::{ArrayView, IxDyn};
 use numpy::PyArrayMethods;
 use pyo3::prelude::*;
-use pyo3::types::PyTuple;
+use pyo3::types::{PyDict, PyTuple};
 use pyo3::PyClassInitializer;
 
 use crate::arrays::{float_array, readonly_array};
@@ -414,77 +414,35 @@ impl NurbsSurface {
 impl Surface {
     /// Alias of `BezierSurface(...)`, kept for existing code: the same arguments and result.
     #[staticmethod]
-    #[pyo3(signature = (positions, degrees, membership = "neutrosophic", *, name = None, description = None))]
-    fn bezier(
-        py: Python<'_>,
-        positions: &Bound<'_, PyAny>,
-        degrees: &Bound<'_, PyAny>,
-        membership: &str,
-        name: Option<String>,
-        description: Option<String>,
-    ) -> PyResult<Py<PyAny>> {
-        into_py(
-            py,
-            new_bezier(positions, degrees, membership, name, description)?,
-        )
+    #[pyo3(signature = (*args, **kwargs))]
+    fn bezier<'py>(
+        py: Python<'py>,
+        args: &Bound<'py, PyTuple>,
+        kwargs: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        py.get_type::<BezierSurface>().call(args, kwargs)
     }
 
     /// Alias of `BSplineSurface(...)`, kept for existing code: the same arguments and result.
     #[staticmethod]
-    #[pyo3(signature = (positions, degrees, degree = None, knots_u = None, knots_v = None, membership = "neutrosophic", *, name = None, description = None))]
-    #[allow(clippy::too_many_arguments)]
-    fn bspline(
-        py: Python<'_>,
-        positions: &Bound<'_, PyAny>,
-        degrees: &Bound<'_, PyAny>,
-        degree: Option<&Bound<'_, PyAny>>,
-        knots_u: Option<&Bound<'_, PyAny>>,
-        knots_v: Option<&Bound<'_, PyAny>>,
-        membership: &str,
-        name: Option<String>,
-        description: Option<String>,
-    ) -> PyResult<Py<PyAny>> {
-        let surface = new_bspline(
-            positions,
-            degrees,
-            degree,
-            knots_u,
-            knots_v,
-            membership,
-            name,
-            description,
-        )?;
-        into_py(py, surface)
+    #[pyo3(signature = (*args, **kwargs))]
+    fn bspline<'py>(
+        py: Python<'py>,
+        args: &Bound<'py, PyTuple>,
+        kwargs: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        py.get_type::<BSplineSurface>().call(args, kwargs)
     }
 
     /// Alias of `NurbsSurface(...)`, kept for existing code: the same arguments and result.
     #[staticmethod]
-    #[pyo3(signature = (positions, degrees, weights, degree = None, knots_u = None, knots_v = None, membership = "neutrosophic", *, name = None, description = None))]
-    #[allow(clippy::too_many_arguments)]
-    fn nurbs(
-        py: Python<'_>,
-        positions: &Bound<'_, PyAny>,
-        degrees: &Bound<'_, PyAny>,
-        weights: &Bound<'_, PyAny>,
-        degree: Option<&Bound<'_, PyAny>>,
-        knots_u: Option<&Bound<'_, PyAny>>,
-        knots_v: Option<&Bound<'_, PyAny>>,
-        membership: &str,
-        name: Option<String>,
-        description: Option<String>,
-    ) -> PyResult<Py<PyAny>> {
-        let surface = new_nurbs(
-            positions,
-            degrees,
-            weights,
-            degree,
-            knots_u,
-            knots_v,
-            membership,
-            name,
-            description,
-        )?;
-        into_py(py, surface)
+    #[pyo3(signature = (*args, **kwargs))]
+    fn nurbs<'py>(
+        py: Python<'py>,
+        args: &Bound<'py, PyTuple>,
+        kwargs: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        py.get_type::<NurbsSurface>().call(args, kwargs)
     }
 
     /// Evaluates at `(u, v)` (numbers, or arrays of one shape S, of any layout and real dtype

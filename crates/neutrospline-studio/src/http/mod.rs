@@ -63,10 +63,12 @@ const MAX_HEAD: usize = 64 * 1024;
 /// and how much of it at most (1 MiB), so that the client reads the refusal.
 pub(crate) const LINGER: Duration = Duration::from_secs(2);
 
-/// The limits and deadlines of a [`Server`] (the module documentation says how they apply).
+/// The limits and deadlines of a [`Server`](crate::Server) (the module documentation of the
+/// server says how they apply: one deadline per phase of a request, eviction of the
+/// longest-waiting connection at the limit).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ServerConfig {
-    /// The largest request body, in bytes (default [`MAX_BODY`]).
+    /// The largest request body, in bytes (default 16 MiB).
     pub max_body: usize,
     /// Connections open at once (default 64); at the limit the longest-waiting one is closed.
     pub max_connections: usize,
