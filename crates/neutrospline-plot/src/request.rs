@@ -53,17 +53,20 @@ pub struct FigureRequest {
 }
 
 impl Default for FigureRequest {
+    /// [`PlotOptions::default`]'s values, no view, title, caption or samples of its own, data
+    /// coloured by truth.
     fn default() -> Self {
+        let plot = PlotOptions::default();
         FigureRequest {
             view: None,
-            width: PlotOptions::DEFAULT_WIDTH,
-            height: PlotOptions::DEFAULT_HEIGHT,
+            width: plot.width(),
+            height: plot.height(),
             title: None,
             caption: None,
-            azimuth: PlotOptions::DEFAULT_AZIMUTH,
-            elevation: PlotOptions::DEFAULT_ELEVATION,
+            azimuth: plot.azimuth(),
+            elevation: plot.elevation(),
             samples: None,
-            alpha: PlotOptions::DEFAULT_ALPHAS.to_vec(),
+            alpha: plot.alphas(),
             color_by: DegreeKind::Truth,
         }
     }

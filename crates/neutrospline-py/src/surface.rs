@@ -259,74 +259,6 @@ fn names(name: Option<String>, description: Option<String>) -> Meta {
     }
 }
 
-/// A Bézier surface (the body of `BezierSurface(...)` and `Surface.bezier`).
-fn new_bezier(
-    positions: &Bound<'_, PyAny>,
-    degrees: &Bound<'_, PyAny>,
-    membership: &str,
-    name: Option<String>,
-    description: Option<String>,
-) -> PyResult<Surface> {
-    let settings = Settings {
-        kind: SurfaceKind::Bezier,
-        weights: None,
-        degree: (0, 0),
-        knots: (None, None),
-    };
-    build(
-        positions,
-        degrees,
-        membership,
-        settings,
-        names(name, description),
-    )
-}
-
-/// A B-spline surface (the body of `BSplineSurface(...)` and `Surface.bspline`).
-#[allow(clippy::too_many_arguments)]
-fn new_bspline(
-    positions: &Bound<'_, PyAny>,
-    degrees: &Bound<'_, PyAny>,
-    degree: Option<&Bound<'_, PyAny>>,
-    knots_u: Option<&Bound<'_, PyAny>>,
-    knots_v: Option<&Bound<'_, PyAny>>,
-    membership: &str,
-    name: Option<String>,
-    description: Option<String>,
-) -> PyResult<Surface> {
-    let settings = spline_settings(SurfaceKind::BSpline, None, degree, knots_u, knots_v)?;
-    build(
-        positions,
-        degrees,
-        membership,
-        settings,
-        names(name, description),
-    )
-}
-
-/// A NURBS surface (the body of `NurbsSurface(...)` and `Surface.nurbs`).
-#[allow(clippy::too_many_arguments)]
-fn new_nurbs(
-    positions: &Bound<'_, PyAny>,
-    degrees: &Bound<'_, PyAny>,
-    weights: &Bound<'_, PyAny>,
-    degree: Option<&Bound<'_, PyAny>>,
-    knots_u: Option<&Bound<'_, PyAny>>,
-    knots_v: Option<&Bound<'_, PyAny>>,
-    membership: &str,
-    name: Option<String>,
-    description: Option<String>,
-) -> PyResult<Surface> {
-    let settings = spline_settings(SurfaceKind::Nurbs, Some(weights), degree, knots_u, knots_v)?;
-    build(
-        positions,
-        degrees,
-        membership,
-        settings,
-        names(name, description),
-    )
-}
-
 #[pymethods]
 impl BezierSurface {
     /// A Bézier surface from `positions` of shape (rows, cols, 3) and `degrees` of shape
@@ -341,7 +273,14 @@ impl BezierSurface {
         name: Option<String>,
         description: Option<String>,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let surface = new_bezier(positions, degrees, membership, name, description)?;
+        let settings = Settings {
+            kind: SurfaceKind::Bezier,
+            weights: None,
+            degree: (0, 0),
+            knots: (None, None),
+        };
+        let meta = names(name, description);
+        let surface = build(positions, degrees, membership, settings, meta)?;
         Ok(surface.initializer().add_subclass(BezierSurface))
     }
 }
@@ -364,16 +303,9 @@ impl BSplineSurface {
         name: Option<String>,
         description: Option<String>,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let surface = new_bspline(
-            positions,
-            degrees,
-            degree,
-            knots_u,
-            knots_v,
-            membership,
-            name,
-            description,
-        )?;
+        let settings = spline_settings(SurfaceKind::BSpline, None, degree, knots_u, knots_v)?;
+        let meta = names(name, description);
+        let surface = build(positions, degrees, membership, settings, meta)?;
         Ok(surface.initializer().add_subclass(BSplineSurface))
     }
 }
@@ -395,17 +327,10 @@ impl NurbsSurface {
         name: Option<String>,
         description: Option<String>,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let surface = new_nurbs(
-            positions,
-            degrees,
-            weights,
-            degree,
-            knots_u,
-            knots_v,
-            membership,
-            name,
-            description,
-        )?;
+        let weights = Some(weights);
+        let settings = spline_settings(SurfaceKind::Nurbs, weights, degree, knots_u, knots_v)?;
+        let meta = names(name, description);
+        let surface = build(positions, degrees, membership, settings, meta)?;
         Ok(surface.initializer().add_subclass(NurbsSurface))
     }
 }

@@ -294,9 +294,15 @@ fn figure_options(model: &Model, request: &FigureRequest) -> Result<PlotOptions,
 }
 
 fn membership(body: &Value, default: Membership) -> Result<Membership, Response> {
-    match body["membership"].as_str() {
-        None => Ok(default),
-        Some(m) => Membership::from_str(m).map_err(|e| Response::error(400, &e.to_string())),
+    match body.get("membership") {
+        None | Some(Value::Null) => Ok(default),
+        Some(Value::String(m)) => {
+            Membership::from_str(m).map_err(|e| Response::error(400, &e.to_string()))
+        }
+        Some(other) => Err(Response::error(
+            400,
+            &format!("membership = {other}: expected one of neutrosophic, intuitionistic, fuzzy"),
+        )),
     }
 }
 

@@ -414,6 +414,21 @@ fn figure_options_are_refused_with_the_librarys_messages() {
     }
 }
 
+/// A membership rule that is not a string is refused, not read as the default.
+#[test]
+fn a_membership_of_another_type_is_refused() {
+    let port = example_server();
+    let body = json!({ "name": "d.csv", "text": "x,y,T\n0,0,1\n", "membership": 3 });
+    let (status, answer, _) = post(port, "/api/data", &body);
+    assert_eq!(
+        (status, answer["error"]["message"].as_str().unwrap_or("")),
+        (
+            400,
+            "membership = 3: expected one of neutrosophic, intuitionistic, fuzzy"
+        )
+    );
+}
+
 fn listing(dir: &Path) -> Vec<String> {
     let mut names: Vec<String> = std::fs::read_dir(dir)
         .unwrap()
