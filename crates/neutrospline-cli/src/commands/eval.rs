@@ -6,7 +6,8 @@ use std::path::PathBuf;
 use std::ops::Range;
 
 use neutrospline::{
-    alpha_cut, centroid_curve, uniform_parameter, AnyCurve, Evaluate, EvaluateSurface, Spread,
+    alpha_cut, centroid_curve, map_dimension, on_dimension, uniform_parameter, AnyCurve,
+    Dimensional, Evaluate, EvaluateSurface, Spread,
 };
 
 use crate::commands::options::ModelArgs;
@@ -224,10 +225,7 @@ impl<const D: usize> FuzzyColumns<D> {
 }
 
 /// The fuzzy columns of a planar or spatial curve.
-enum Fuzzy {
-    Planar(FuzzyColumns<2>),
-    Spatial(FuzzyColumns<3>),
-}
+struct Fuzzy(Dimensional<FuzzyColumns<2>, FuzzyColumns<3>>);
 
 impl Fuzzy {
     fn new(
@@ -239,34 +237,24 @@ impl Fuzzy {
         let spreads: Vec<Spread<3>> = model
             .spreads()
             .map_or_else(|| vec![Spread::ZERO; count], <[_]>::to_vec);
-        let resized = |s: &Spread<3>| s.resize::<2>();
-        Ok(match model.shape() {
-            Shape::Planar(c) => Fuzzy::Planar(FuzzyColumns::new(
-                c,
-                &spreads.iter().map(resized).collect::<Vec<_>>(),
-                alpha,
-                centroid,
-            )?),
-            Shape::Spatial(c) => Fuzzy::Spatial(FuzzyColumns::new(c, &spreads, alpha, centroid)?),
-            Shape::Surface(_) => anyhow::bail!("internal error: fuzzy columns of a surface"),
-        })
+        let Shape::Curve(curve) = model.shape() else {
+            anyhow::bail!("internal error: fuzzy columns of a surface")
+        };
+        Ok(Fuzzy(map_dimension!(curve, c => {
+            let spreads: Vec<_> = spreads.iter().map(Spread::resize).collect();
+            FuzzyColumns::new(c, &spreads, alpha, centroid)?
+        })))
     }
 
     fn names(&self) -> Vec<String> {
-        match self {
-            Fuzzy::Planar(f) => f.names(),
-            Fuzzy::Spatial(f) => f.names(),
-        }
+        on_dimension!(&self.0, f => f.names())
     }
 
     fn push(&self, param: Param, row: &mut Vec<Option<f64>>) -> anyhow::Result<()> {
         let Param::T(t) = param else {
             anyhow::bail!("a curve takes one parameter t")
         };
-        match self {
-            Fuzzy::Planar(f) => f.push(t, row),
-            Fuzzy::Spatial(f) => f.push(t, row),
-        }
+        on_dimension!(&self.0, f => f.push(t, row))
     }
 }
 

@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use neutrospline::{intersections, self_intersections, AnyCurve, Intersection};
+use neutrospline::{DynCurve, Intersection};
 
 use crate::commands::options::ModelArgs;
 use crate::input;
@@ -62,9 +62,9 @@ const COLUMNS: [&str; 12] = [
 ];
 
 /// The plane curve of `file`, or an error naming what it holds.
-fn plane_curve(file: &str, model: &ModelArgs) -> anyhow::Result<AnyCurve<2>> {
+fn plane_curve(file: &str, model: &ModelArgs) -> anyhow::Result<DynCurve> {
     match input::read_model(file, model)?.into_shape() {
-        Shape::Planar(curve) => Ok(curve),
+        Shape::Curve(curve) if curve.dimension() == 2 => Ok(curve),
         shape => {
             let what = if shape.is_surface() {
                 format!("a {}", shape.kind())
@@ -86,12 +86,7 @@ fn plane_curve(file: &str, model: &ModelArgs) -> anyhow::Result<AnyCurve<2>> {
 pub fn run(args: &IntersectArgs) -> anyhow::Result<()> {
     let a = plane_curve(&args.a, &args.model)?;
     let b = plane_curve(&args.b, &args.model)?;
-    let found = if a == b {
-        self_intersections(&a)
-    } else {
-        intersections(&a, &b)
-    }
-    .map_err(|e| {
+    let found = a.intersections(&b).map_err(|e| {
         anyhow::Error::msg(format!(
             "{} and {}: {e}",
             input::label(&args.a),
