@@ -10,9 +10,8 @@
 use std::sync::Arc;
 
 use neutrospline::{
-    map_dimension, on_dimension, AnyCurve, BatchOptions, BatchParams, Bounded, BoundingBox,
-    ControlPolygon, CurveBatch, CurveDerivative, CurveKind, Dimensional, DynCurve, Elevate,
-    Evaluate, Split,
+    map_dimension, on_dimension, AnyCurve, BatchOptions, BatchParams, Bounded, ControlPolygon,
+    CurveBatch, CurveDerivative, CurveKind, Dimensional, DynCurve, Elevate, Evaluate, Split,
 };
 use neutrospline_io::Model;
 use pyo3::prelude::*;
@@ -165,22 +164,6 @@ pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
         Some(state) => into_py(py, state),
         None => Err(invalid("a surface is not a curve")),
     }
-}
-
-/// The bounding box as rows `min`, `max` of the columns `x, y[, z], truth, indeterminacy,
-/// falsity`.
-fn box_rows<const D: usize>(b: &BoundingBox<D>) -> Vec<f64> {
-    let intervals: Vec<_> = b
-        .position
-        .iter()
-        .copied()
-        .chain([b.truth, b.indeterminacy, b.falsity])
-        .collect();
-    intervals
-        .iter()
-        .map(|i| i.min)
-        .chain(intervals.iter().map(|i| i.max))
-        .collect()
 }
 
 impl Curve {
@@ -376,7 +359,7 @@ impl Curve {
         let (_, curve) = self.model()?;
         let (rows, columns) = on_dimension!(curve, c => {
             let b = c.curve.bounding_box();
-            (box_rows(&b), b.position.len() + 3)
+            (b.min_max_rows().concat(), b.position.len() + 3)
         });
         readonly_array(py, rows, &[2, columns])
     }
@@ -526,11 +509,14 @@ impl Curve {
             }
         }
         let a = planar(self, "self")?;
-        let b = match other {
-            Some(other) => planar(other.get(), "other")?,
-            None => a,
-        };
-        let found = py.detach(|| a.intersections(b)).map_err(invalid)?;
+        let found = match other {
+            Some(other) => {
+                let b = planar(other.get(), "other")?;
+                py.detach(|| a.intersections(b))
+            }
+            None => py.detach(|| a.self_intersections()),
+        }
+        .map_err(invalid)?;
         let mut rows = Vec::with_capacity(found.len() * 10);
         for hit in &found {
             rows.extend_from_slice(&[hit.parameter_a, hit.parameter_b]);

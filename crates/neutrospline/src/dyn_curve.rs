@@ -373,30 +373,32 @@ impl DynCurve {
         on_dimension!(self, c => c.curvature(t))
     }
 
-    /// The points where this plane curve meets the plane curve `other`, or where it crosses
-    /// itself when `other` is the same curve ([`intersections`], [`self_intersections`];
-    /// docs/model.md, section 11).
+    /// The points where this plane curve meets the plane curve `other` ([`intersections`];
+    /// docs/model.md, section 11). A curve overlaps itself everywhere: its crossings with
+    /// itself are [`DynCurve::self_intersections`].
     ///
     /// # Errors
     /// [`IntersectError::NotPlanar`] for a 3-D curve; as [`intersections`] (overlapping
     /// curves, an overflow).
     pub fn intersections(&self, other: &DynCurve) -> Result<Vec<Intersection>, IntersectError> {
-        fn plane<'a>(
-            curve: &'a DynCurve,
-            which: &'static str,
-        ) -> Result<&'a AnyCurve<2>, IntersectError> {
-            curve.planar().ok_or(IntersectError::NotPlanar {
-                which,
-                dimension: curve.dimension(),
-            })
-        }
-        let (a, b) = (plane(self, "first")?, plane(other, "second")?);
-        if a == b {
-            self_intersections(a)
-        } else {
-            intersections(a, b)
-        }
+        intersections(plane(self, "first")?, plane(other, "second")?)
     }
+
+    /// The points where this plane curve crosses or touches itself ([`self_intersections`]).
+    ///
+    /// # Errors
+    /// [`IntersectError::NotPlanar`] for a 3-D curve; as [`self_intersections`].
+    pub fn self_intersections(&self) -> Result<Vec<Intersection>, IntersectError> {
+        self_intersections(plane(self, "first")?)
+    }
+}
+
+/// The plane curve inside `curve`, or [`IntersectError::NotPlanar`] naming it as `which`.
+fn plane<'a>(curve: &'a DynCurve, which: &'static str) -> Result<&'a AnyCurve<2>, IntersectError> {
+    curve.planar().ok_or(IntersectError::NotPlanar {
+        which,
+        dimension: curve.dimension(),
+    })
 }
 
 impl DynDerivative {
@@ -488,6 +490,11 @@ mod tests {
         // C'(0) = 2 w (P1 - P0) / 1 = (0, sqrt 2).
         let speed = curve.nth_derivative(1).evaluate_row(0.0).unwrap();
         assert!(speed[0].abs() < 1e-15 && (speed[1] - 2.0 * w).abs() < 1e-15);
-        assert_eq!(curve.intersections(&curve).unwrap(), []);
+        assert_eq!(curve.self_intersections().unwrap(), []);
+        // A curve meets itself everywhere.
+        assert!(matches!(
+            curve.intersections(&curve),
+            Err(IntersectError::Overlap { .. })
+        ));
     }
 }

@@ -1,8 +1,6 @@
 //! `neutrospline eval FILE`: a table of the curve or surface (and its derivatives) at chosen
 //! parameters, written row by row as it is computed.
 
-use std::path::PathBuf;
-
 use std::ops::Range;
 
 use neutrospline::{
@@ -10,9 +8,9 @@ use neutrospline::{
     Dimensional, Evaluate, EvaluateSurface, Spread,
 };
 
-use crate::commands::options::ModelArgs;
+use crate::commands::options::{ModelArgs, TableArgs};
 use crate::input::{self, UsageError};
-use crate::output::{self, TableFormat};
+
 use crate::progress::Progress;
 use crate::shape::{Extras, Param, Shape, Table};
 
@@ -117,15 +115,9 @@ pub struct EvalArgs {
     #[arg(long)]
     pub centroid: bool,
 
-    /// Output format: csv (a header row, then one row per parameter) or json (an array of
-    /// objects keyed by column name)
-    #[arg(long, value_enum, value_name = "FORMAT", default_value_t = TableFormat::Csv)]
-    pub format: TableFormat,
-
-    /// Write to OUT instead of standard output (replaced atomically: on error the old file is
-    /// left untouched)
-    #[arg(short = 'o', long = "output", value_name = "OUT")]
-    pub output: Option<PathBuf>,
+    /// Where the table goes.
+    #[command(flatten)]
+    pub table: TableArgs,
 
     /// Shape settings for CSV files.
     #[command(flatten)]
@@ -418,7 +410,7 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         ))
         .into());
     }
-    let mut progress = Progress::new(count, args.output.is_none());
+    let mut progress = Progress::new(count, args.table.output.is_none());
     let rows = parameters(args, &shape).map(|param| {
         progress.tick();
         let cannot =
@@ -440,9 +432,7 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         }
         Ok(row)
     });
-    output::emit(args.output.as_deref(), |w| {
-        output::write_table(w, args.format, &columns, rows)
-    })
+    args.table.write(&columns, rows)
 }
 
 #[cfg(test)]

@@ -6,9 +6,9 @@ use std::path::PathBuf;
 use neutrospline::{Degrees, NearestError, RowLengthError};
 use neutrospline_io::PointTable;
 
-use crate::commands::options::ModelArgs;
+use crate::commands::options::{ModelArgs, TableArgs};
 use crate::input;
-use crate::output::{self, TableFormat};
+
 use crate::shape::Shape;
 
 /// Arguments of `query`.
@@ -32,15 +32,9 @@ pub struct QueryArgs {
     #[arg(value_name = "POINTS.csv")]
     pub points: PathBuf,
 
-    /// Output format: csv (a header row, then one row per query point) or json (an array of
-    /// objects keyed by column name)
-    #[arg(long, value_enum, value_name = "FORMAT", default_value_t = TableFormat::Csv)]
-    pub format: TableFormat,
-
-    /// Write to OUT instead of standard output (replaced atomically: on error the old file is
-    /// left untouched)
-    #[arg(short = 'o', long = "output", value_name = "OUT")]
-    pub output: Option<PathBuf>,
+    /// Where the table goes.
+    #[command(flatten)]
+    pub table: TableArgs,
 
     /// Shape settings for CSV files.
     #[command(flatten)]
@@ -167,9 +161,7 @@ fn write(
             return Err(e);
         }
     }
-    output::emit(args.output.as_deref(), |w| {
-        output::write_table(w, args.format, columns, rows)
-    })
+    args.table.write(columns, rows)
 }
 
 fn push_point(row: &mut Vec<f64>, position: &[f64], degrees: &Degrees) {
