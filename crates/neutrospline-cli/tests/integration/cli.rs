@@ -5,58 +5,7 @@ use std::io::{Read, Write};
 use std::path::Path;
 use std::process::{Command, Stdio};
 
-use crate::util::{examples_dir, BIN};
-
-struct Output {
-    code: i32,
-    stdout: String,
-    stderr: String,
-}
-
-/// Runs the binary in `dir` with `args` and optional standard input.
-fn run_in(dir: &Path, args: &[&str], stdin: Option<&[u8]>) -> Output {
-    let mut child = Command::new(BIN)
-        .args(args)
-        .current_dir(dir)
-        .stdin(if stdin.is_some() {
-            Stdio::piped()
-        } else {
-            Stdio::null()
-        })
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("binary runs");
-    if let Some(bytes) = stdin {
-        child
-            .stdin
-            .take()
-            .expect("stdin piped")
-            .write_all(bytes)
-            .expect("stdin written");
-    }
-    let out = child.wait_with_output().expect("binary finishes");
-    let result = Output {
-        code: out.status.code().expect("exit code (no signal)"),
-        stdout: String::from_utf8(out.stdout).expect("stdout is UTF-8"),
-        stderr: String::from_utf8(out.stderr).expect("stderr is UTF-8"),
-    };
-    assert!(
-        !result.stderr.contains("panicked") && !result.stderr.contains("RUST_BACKTRACE"),
-        "panic for {args:?}:\n{}",
-        result.stderr
-    );
-    result
-}
-
-/// A temporary directory holding the given files.
-fn dir_with(files: &[(&str, &[u8])]) -> tempfile::TempDir {
-    let dir = tempfile::tempdir().expect("temp dir");
-    for (name, bytes) in files {
-        std::fs::write(dir.path().join(name), bytes).expect("file written");
-    }
-    dir
-}
+use crate::util::{dir_with, examples_dir, run_in, BIN};
 
 /// Runs `args` in a directory holding one file and expects exit 1 with exactly `message`.
 fn assert_invalid(name: &str, contents: &[u8], args: &[&str], message: &str) {

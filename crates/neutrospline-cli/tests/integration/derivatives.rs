@@ -6,29 +6,16 @@
 
 use std::process::{Command, Stdio};
 
-use crate::util::{examples_dir, BIN};
+use crate::util::examples_dir;
 
-/// Runs the binary in `examples/`; returns (exit code, stdout, stderr).
+/// Runs the binary in the examples directory.
 fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(BIN)
-        .args(args)
-        .current_dir(examples_dir())
-        .stdin(Stdio::null())
-        .output()
-        .expect("binary runs");
-    let stderr = String::from_utf8(out.stderr).unwrap();
-    assert!(!stderr.contains("panicked"), "panic for {args:?}: {stderr}");
-    (
-        out.status.code().expect("exit code"),
-        String::from_utf8(out.stdout).unwrap(),
-        stderr,
-    )
+    crate::util::run(&examples_dir(), args)
 }
 
+/// Runs the binary in the examples directory and expects exit 0 with nothing on stderr.
 fn ok(args: &[&str]) -> String {
-    let (code, stdout, stderr) = run(args);
-    assert_eq!((code, stderr.as_str()), (0, ""), "{args:?}");
-    stdout
+    crate::util::ok(&examples_dir(), args)
 }
 
 /// The value of `column` in data row `row` of a CSV table.

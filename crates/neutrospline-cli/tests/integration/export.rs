@@ -8,37 +8,12 @@ use std::process::{Command, Stdio};
 use neutrospline_exchange::{ColorBy, ExportFormat, ExportOptions};
 use neutrospline_io::{load, ReadOptions};
 
-use crate::util::{example, BIN};
+use crate::util::{example, Output, BIN};
 
-struct Output {
-    code: i32,
-    stdout: String,
-    stderr: String,
-}
-
-/// Runs the binary in `dir`, with `stdin` as standard input if given.
+/// Runs the binary in `dir`, with the file `stdin` as standard input if given.
 fn run_in(dir: &Path, args: &[&str], stdin: Option<&Path>) -> Output {
-    let input = match stdin {
-        Some(path) => Stdio::from(std::fs::File::open(path).expect("stdin file")),
-        None => Stdio::null(),
-    };
-    let out = Command::new(BIN)
-        .args(args)
-        .current_dir(dir)
-        .stdin(input)
-        .output()
-        .expect("binary runs");
-    let result = Output {
-        code: out.status.code().expect("exit code (no signal)"),
-        stdout: String::from_utf8(out.stdout).expect("stdout is UTF-8"),
-        stderr: String::from_utf8(out.stderr).expect("stderr is UTF-8"),
-    };
-    assert!(
-        !result.stderr.contains("panicked"),
-        "panic for {args:?}:\n{}",
-        result.stderr
-    );
-    result
+    let input = stdin.map(|path| std::fs::read(path).expect("stdin file"));
+    crate::util::run_in(dir, args, input.as_deref())
 }
 
 /// Exports `model` with `args` in a fresh directory and expects `code` and exactly `message`

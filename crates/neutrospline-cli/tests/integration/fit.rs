@@ -6,23 +6,7 @@ use std::fs;
 use std::path::Path;
 use std::process::Command;
 
-use crate::util::BIN;
-
-/// Exit code, standard output and standard error of the binary run in `dir`.
-fn run(dir: &Path, args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(BIN)
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("binary runs");
-    let stderr = String::from_utf8(out.stderr).expect("UTF-8");
-    assert!(!stderr.contains("panicked"), "panic for {args:?}: {stderr}");
-    (
-        out.status.code().expect("exit code"),
-        String::from_utf8(out.stdout).expect("UTF-8"),
-        stderr,
-    )
-}
+use crate::util::{run, BIN};
 
 fn survey() -> std::path::PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/data/survey.csv")

@@ -5,28 +5,11 @@
 use std::path::Path;
 use std::process::Command;
 
-use crate::util::{examples_dir, BIN};
+use crate::util::{examples_dir, run, BIN};
 
-/// Runs the binary in `dir`: exit code, stdout, stderr.
-fn run(dir: &Path, args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(BIN)
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("binary runs");
-    let stderr = String::from_utf8(out.stderr).unwrap();
-    assert!(!stderr.contains("panicked"), "{stderr}");
-    (
-        out.status.code().unwrap(),
-        String::from_utf8(out.stdout).unwrap(),
-        stderr,
-    )
-}
-
+/// A temporary directory holding the file `name`.
 fn dir_with(name: &str, text: &str) -> tempfile::TempDir {
-    let dir = tempfile::tempdir().unwrap();
-    std::fs::write(dir.path().join(name), text).unwrap();
-    dir
+    crate::util::dir_with(&[(name, text)])
 }
 
 /// A straight line from (0, 0) to (3, 0) as a cubic Bézier curve, y spreads 0, 1, 2, 3 to the

@@ -8,26 +8,7 @@ use std::process::Command;
 
 use neutrospline_io::{load, to_toml_string, ReadOptions};
 
-use crate::util::{example, BIN};
-
-/// Runs the binary in `dir`: exit status, standard output, standard error.
-fn run_in(dir: &Path, args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(BIN)
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("binary runs");
-    let stderr = String::from_utf8(out.stderr).unwrap();
-    assert!(
-        !stderr.contains("panicked"),
-        "panic for {args:?}:\n{stderr}"
-    );
-    (
-        out.status.code().expect("exit code"),
-        String::from_utf8(out.stdout).unwrap(),
-        stderr,
-    )
-}
+use crate::util::{example, run as run_in, BIN};
 
 /// The names of the files in `dir`, sorted.
 fn files(dir: &Path) -> Vec<String> {

@@ -3,21 +3,10 @@
 //! circle), curves meeting at their ends, self-intersections when B is A, overlaps refused
 //! with their parameters, and the errors for other shapes.
 
-use crate::util::{examples_dir, ok, run};
+use crate::util::{dir_with, examples_dir, ok, run};
 
 const HEADER: &str =
     "index,t_a,t_b,x,y,truth_a,indeterminacy_a,falsity_a,truth_b,indeterminacy_b,falsity_b,contact";
-
-fn dir_with(files: &[(&str, &str)]) -> tempfile::TempDir {
-    let dir = tempfile::tempdir().expect("temp dir");
-    for name in ["nurbs-circle.toml", "helix3d.toml", "surface.toml"] {
-        std::fs::copy(examples_dir().join(name), dir.path().join(name)).expect("copied");
-    }
-    for (name, text) in files {
-        std::fs::write(dir.path().join(name), text).expect("file written");
-    }
-    dir
-}
 
 /// The numeric columns of each row (all but the last, `contact`).
 fn rows(table: &str) -> Vec<Vec<f64>> {

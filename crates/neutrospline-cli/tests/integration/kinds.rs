@@ -6,47 +6,11 @@ use std::io::Read;
 use std::path::Path;
 use std::process::{Command, Stdio};
 
-use crate::util::{examples_dir, BIN};
+use crate::util::{dir_with, examples_dir, ok, Output, BIN};
 
-struct Output {
-    code: i32,
-    stdout: String,
-    stderr: String,
-}
-
+/// Runs the binary in `dir` with no standard input.
 fn run_in(dir: &Path, args: &[&str]) -> Output {
-    let out = Command::new(BIN)
-        .args(args)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .output()
-        .expect("binary runs");
-    let result = Output {
-        code: out.status.code().expect("exit code (no signal)"),
-        stdout: String::from_utf8(out.stdout).expect("stdout is UTF-8"),
-        stderr: String::from_utf8(out.stderr).expect("stderr is UTF-8"),
-    };
-    assert!(
-        !result.stderr.contains("panicked") && !result.stderr.contains("RUST_BACKTRACE"),
-        "panic for {args:?}:\n{}",
-        result.stderr
-    );
-    result
-}
-
-fn ok(dir: &Path, args: &[&str]) -> String {
-    let out = run_in(dir, args);
-    assert_eq!(out.code, 0, "{args:?}: {}", out.stderr);
-    assert!(out.stderr.is_empty(), "{args:?}: {}", out.stderr);
-    out.stdout
-}
-
-fn dir_with(files: &[(&str, &str)]) -> tempfile::TempDir {
-    let dir = tempfile::tempdir().expect("temp dir");
-    for (name, text) in files {
-        std::fs::write(dir.path().join(name), text).expect("file written");
-    }
-    dir
+    crate::util::run_in(dir, args, None)
 }
 
 /// Runs `args` in a directory holding one file; expects `code`, exactly `message` (one line)

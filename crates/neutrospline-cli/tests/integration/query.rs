@@ -3,24 +3,7 @@
 //! `examples/nurbs-circle.toml`, the quarter cylinder of `examples/nurbs-surface.json`), JSON
 //! output, the atomic `-o`, and located errors with their exit codes.
 
-use crate::util::{examples_dir, ok, run};
-
-/// A temporary directory with the given files and copies of the examples used here.
-fn dir_with(files: &[(&str, &str)]) -> tempfile::TempDir {
-    let dir = tempfile::tempdir().expect("temp dir");
-    for name in [
-        "example1.toml",
-        "nurbs-circle.toml",
-        "helix3d.toml",
-        "nurbs-surface.json",
-    ] {
-        std::fs::copy(examples_dir().join(name), dir.path().join(name)).expect("copied");
-    }
-    for (name, text) in files {
-        std::fs::write(dir.path().join(name), text).expect("file written");
-    }
-    dir
-}
+use crate::util::{dir_with, examples_dir, ok, run};
 
 fn rows(table: &str) -> Vec<Vec<f64>> {
     table

@@ -1,6 +1,7 @@
 //! Helpers shared by the modules: the binary under test, the repository's examples, and
 //! running the binary in a directory.
 
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
@@ -17,22 +18,57 @@ pub fn example(name: &str) -> PathBuf {
     examples_dir().join(name)
 }
 
-/// Runs the binary in `dir` with no standard input: (exit code, stdout, stderr); fails on a
-/// panic message.
-pub fn run(dir: &Path, args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(BIN)
+/// What a run of the binary gave.
+pub struct Output {
+    /// The exit code (a run ended by a signal fails the test).
+    pub code: i32,
+    /// Standard output.
+    pub stdout: String,
+    /// Standard error.
+    pub stderr: String,
+}
+
+/// Runs the binary in `dir` with `args` and, if given, `stdin` as standard input (else none);
+/// fails on a panic or a backtrace on standard error.
+pub fn run_in(dir: &Path, args: &[&str], stdin: Option<&[u8]>) -> Output {
+    let mut child = Command::new(BIN)
         .args(args)
         .current_dir(dir)
-        .stdin(Stdio::null())
-        .output()
+        .stdin(if stdin.is_some() {
+            Stdio::piped()
+        } else {
+            Stdio::null()
+        })
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
         .expect("binary runs");
-    let stderr = String::from_utf8(out.stderr).unwrap();
-    assert!(!stderr.contains("panicked"), "panic for {args:?}: {stderr}");
-    (
-        out.status.code().expect("exit code"),
-        String::from_utf8(out.stdout).unwrap(),
-        stderr,
-    )
+    if let Some(bytes) = stdin {
+        child
+            .stdin
+            .take()
+            .expect("stdin piped")
+            .write_all(bytes)
+            .expect("stdin written");
+    }
+    let out = child.wait_with_output().expect("binary finishes");
+    let result = Output {
+        code: out.status.code().expect("exit code (no signal)"),
+        stdout: String::from_utf8(out.stdout).expect("stdout is UTF-8"),
+        stderr: String::from_utf8(out.stderr).expect("stderr is UTF-8"),
+    };
+    assert!(
+        !result.stderr.contains("panicked") && !result.stderr.contains("RUST_BACKTRACE"),
+        "panic for {args:?}:\n{}",
+        result.stderr
+    );
+    result
+}
+
+/// Runs the binary in `dir` with no standard input: (exit code, stdout, stderr).
+pub fn run(dir: &Path, args: &[&str]) -> (i32, String, String) {
+    let out = run_in(dir, args, None);
+    (out.code, out.stdout, out.stderr)
 }
 
 /// Runs the binary in `dir` and expects exit 0 with nothing on stderr; returns stdout.
@@ -40,4 +76,13 @@ pub fn ok(dir: &Path, args: &[&str]) -> String {
     let (code, stdout, stderr) = run(dir, args);
     assert_eq!((code, stderr.as_str()), (0, ""), "{args:?}");
     stdout
+}
+
+/// A temporary directory holding the given files (name, contents).
+pub fn dir_with<C: AsRef<[u8]>>(files: &[(&str, C)]) -> tempfile::TempDir {
+    let dir = tempfile::tempdir().expect("temp dir");
+    for (name, contents) in files {
+        std::fs::write(dir.path().join(name), contents).expect("file written");
+    }
+    dir
 }
