@@ -16,17 +16,16 @@
 
 mod input;
 mod records;
+mod table;
 
 pub(crate) use records::Records;
-
-use neutrospline::{DegreeError, Degrees};
+pub(crate) use table::{read_degrees, require_degrees, Columns, Table};
 
 use std::io::BufRead;
 
-use crate::format::too_many_points;
 use crate::parsed::{
-    check_spread_value, duplicate_rule, missing_degree, parse_number, spread_from_values,
-    spread_hint, spread_keys_problem, Field, Origin, Parsed, PointRecord, SpreadKey,
+    check_spread_value, duplicate_rule, spread_from_values, spread_hint, spread_keys_problem,
+    Field, Origin, Parsed, PointRecord, SpreadKey,
 };
 use crate::settings::{Key, Kind, KnotSpec, KnotsSetting, Setting, Structure};
 use crate::{InputError, ReadOptions};
@@ -47,150 +46,88 @@ pub(crate) fn parse_reader(
 ) -> Result<Parsed, InputError> {
     let kind = options.kind.unwrap_or(Kind::DEFAULT);
     let membership = options.membership.unwrap_or_default();
-    let max_points = options.limits.max_control_points;
-    let error = |line: Option<usize>, field: Option<String>, message: String| InputError {
-        file: file.to_owned(),
-        line,
-        field,
-        message,
+    let columns = Columns {
+        example: "`x,y,truth,indeterminacy,falsity`",
+        column: &column,
+        repeat_rule: duplicate_rule(),
+        rows: "control points",
     };
-    let mut records = Records::new(reader);
-    // The next record as text and cells, with its line.
-    let mut next = || records.next_cells(file);
-
-    let Some((header_line, header)) = next()? else {
-        return Err(error(
-            None,
-            None,
-            "empty file (expected a header row such as `x,y,truth,indeterminacy,falsity`)"
-                .to_owned(),
-        ));
-    };
-    let header_line = Some(header_line);
-    let columns = read_header(&header).map_err(|m| error(header_line, None, m))?;
-    let has = |f: Field| columns.contains(&Column::Field(f));
+    let mut table =
+        Table::open(file, reader, &columns)?.with_max_rows(options.limits.max_control_points);
+    let has = |f: Field| table.has(Column::Field(f));
     for f in [Field::X, Field::Y] {
-        if !has(f) {
-            return Err(error(
-                header_line,
-                None,
-                format!("missing column `{}` (every file needs x and y)", f.name()),
-            ));
-        }
+        table.require(Column::Field(f), f.name(), "every file needs x and y")?;
     }
-    if !has(Field::Truth) {
-        return Err(error(
-            header_line,
-            None,
-            "missing column `truth` (every membership rule requires it)".to_owned(),
-        ));
-    }
-    if let Some(DegreeError::Missing { kind, membership }) =
-        missing_degree(membership, has(Field::Indeterminacy), has(Field::Falsity))
-    {
-        return Err(error(
-            header_line,
-            None,
-            format!("missing column `{kind}` ({membership} rule requires it)"),
-        ));
-    }
+    table.require(
+        Column::Field(Field::Truth),
+        Field::Truth.name(),
+        "every membership rule requires it",
+    )?;
+    require_degrees(&table, membership, Column::Field)?;
     if kind.is_surface() && !has(Field::Z) {
-        return Err(error(
-            header_line,
-            None,
+        return Err(table.header_error(
             "missing column `z` (surfaces are 3-D: every control point needs x, y and z)"
                 .to_owned(),
         ));
     }
     if kind.is_rational() && !has(Field::Weight) {
-        return Err(error(
-            header_line,
-            None,
-            format!(
-                "missing column `weight` (kind `{kind}` needs a positive weight for every control point)"
-            ),
-        ));
+        return Err(table.header_error(format!(
+            "missing column `weight` (kind `{kind}` needs a positive weight for every control point)"
+        )));
     }
     if !kind.is_rational() && has(Field::Weight) {
-        return Err(error(
-            header_line,
-            None,
-            format!(
-                "column `weight` does not apply to kind `{kind}` (weights only apply to NURBS: \
-                 --kind nurbs or --kind nurbs-surface)"
-            ),
-        ));
+        return Err(table.header_error(format!(
+            "column `weight` does not apply to kind `{kind}` (weights only apply to NURBS: \
+             --kind nurbs or --kind nurbs-surface)"
+        )));
     }
     let dimension = if has(Field::Z) { 3 } else { 2 };
     let mut spread_columns: [Option<&str>; 9] = [None; 9];
-    for (column, heading) in columns.iter().zip(header.iter()) {
+    for (column, heading) in table.columns().iter().zip(table.headings().iter()) {
         if let Column::Spread(key) = column {
             spread_columns[key.index()] = Some(heading);
         }
     }
     if let Some(problem) = spread_keys_problem(&spread_columns, dimension, kind.is_surface()) {
-        return Err(error(header_line, None, format!("column {problem}")));
+        return Err(table.header_error(format!("column {problem}")));
     }
 
     let mut points = Vec::new();
-    while let Some((line, record)) = next()? {
-        let line = Some(line);
-        if points.len() as u64 >= max_points {
-            return Err(error(line, None, too_many_points(max_points)));
-        }
-        if record.len() != columns.len() {
-            return Err(error(
-                line,
-                None,
-                format!(
-                    "the row has {} cells but the header has {} (every row needs one cell per column)",
-                    record.len(),
-                    columns.len()
-                ),
-            ));
-        }
+    while let Some(row) = table.next_row()? {
         let mut values = [None::<f64>; 8];
         let mut spreads = [None::<f64>; 9];
         let mut name = None;
-        for ((&column, cell), heading) in columns.iter().zip(record.iter()).zip(header.iter()) {
-            let field = match column {
+        for cell in row.cells() {
+            let field = match cell.column {
                 Column::Field(field) => field,
                 Column::Spread(key) => {
-                    let value = parse_number(cell)
-                        .and_then(check_spread_value)
-                        .map_err(|m| error(line, Some(format!("column `{heading}`")), m))?;
+                    let value = row.number(&cell).and_then(|value| {
+                        check_spread_value(value).map_err(|m| row.cell_error(&cell, m))
+                    })?;
                     spreads[key.index()] = Some(value);
                     continue;
                 }
             };
             if field == Field::Name {
-                name = (!cell.is_empty()).then(|| cell.to_owned());
+                name = (!cell.text.is_empty()).then(|| cell.text.to_owned());
                 continue;
             }
-            let value = match (field, cell.parse::<f64>()) {
+            let value = match (field, cell.text.parse::<f64>()) {
                 // Any number, NaN and infinities included: the core's NURBS weight rule judges it.
                 (Field::Weight, Ok(w)) => w,
-                _ => parse_number(cell)
-                    .map_err(|m| error(line, Some(format!("column `{heading}`")), m))?,
+                _ => row.number(&cell)?,
             };
             values[field.index()] = Some(value);
         }
         let get = |f: Field| values[f.index()];
-        let degrees = Degrees::with_membership(
-            membership,
-            get(Field::Truth).unwrap_or_default(),
-            get(Field::Indeterminacy),
-            get(Field::Falsity),
-        )
-        .map_err(|e| error(line, None, e.to_string()))?;
-        let position = [Field::X, Field::Y, Field::Z][..dimension]
-            .iter()
-            .map(|&f| get(f).unwrap_or_default())
-            .collect();
+        let line = Some(row.line());
         points.push(PointRecord {
             name,
-            position,
-            degrees,
+            position: [Field::X, Field::Y, Field::Z][..dimension]
+                .iter()
+                .map(|&f| get(f).unwrap_or_default())
+                .collect(),
+            degrees: read_degrees(&row, membership, &values)?,
             weight: get(Field::Weight),
             origin: Origin { line, field: None },
             weight_origin: Origin {
@@ -199,13 +136,6 @@ pub(crate) fn parse_reader(
             },
             spread: spread_from_values(&spreads),
         });
-    }
-    if points.is_empty() {
-        return Err(error(
-            None,
-            None,
-            "no control points (the header row is not followed by any data row)".to_owned(),
-        ));
     }
     Ok(Parsed {
         file: file.to_owned(),
@@ -274,32 +204,18 @@ enum Column {
     Spread(SpreadKey),
 }
 
-/// The column of each header cell; the message explains an unknown or repeated column.
-fn read_header(header: &::csv::StringRecord) -> Result<Vec<Column>, String> {
-    let mut columns: Vec<Column> = Vec::with_capacity(header.len());
-    for (i, heading) in header.iter().enumerate() {
-        let field = Field::from_name(heading, true)
-            .map(Column::Field)
-            .or_else(|| SpreadKey::from_name(heading, true).map(Column::Spread))
-            .ok_or_else(|| {
-                format!(
-                    "unknown column `{heading}` (known columns: {}){}",
-                    Field::known_list(),
-                    spread_hint(heading)
-                )
-            })?;
-        if let Some(j) = columns.iter().position(|&f| f == field) {
-            return Err(format!(
-                "column {} `{heading}` repeats column {} `{}` ({})",
-                i + 1,
-                j + 1,
-                header.get(j).unwrap_or_default(),
-                duplicate_rule()
-            ));
-        }
-        columns.push(field);
-    }
-    Ok(columns)
+/// The column a header cell names; the message explains an unknown heading.
+fn column(heading: &str) -> Result<Column, String> {
+    Field::from_name(heading, true)
+        .map(Column::Field)
+        .or_else(|| SpreadKey::from_name(heading, true).map(Column::Spread))
+        .ok_or_else(|| {
+            format!(
+                "unknown column `{heading}` (known columns: {}){}",
+                Field::known_list(),
+                spread_hint(heading)
+            )
+        })
 }
 
 #[cfg(test)]

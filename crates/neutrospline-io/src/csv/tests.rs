@@ -208,3 +208,32 @@ fn csv_parse_quoted_name_and_empty_name() {
     assert_eq!(m.points[0].name.as_deref(), Some("a, b"));
     assert_eq!(m.points[1].name, None);
 }
+
+/// The row after the limit is refused at its line, whatever it holds (here one cell too few),
+/// and nothing after it is read; a table of exactly the limit reads.
+#[test]
+fn csv_parse_refuses_the_row_past_the_limit() {
+    let limited = ReadOptions {
+        limits: crate::Limits {
+            max_control_points: 2,
+            ..crate::Limits::default()
+        },
+        ..rule(Membership::Neutrosophic)
+    };
+    let two = "x,y,T,I,F\n0,0,1,0,0\n# c\n1,1,1,0,0\n";
+    assert_eq!(
+        parse("t.csv", two.as_bytes(), &limited)
+            .unwrap()
+            .points
+            .len(),
+        2
+    );
+    let three = format!("{two}2,2,1,0\nnot, read\n");
+    assert_eq!(
+        parse("t.csv", three.as_bytes(), &limited)
+            .unwrap_err()
+            .to_string(),
+        "t.csv:5: more than 2 control points (the limit; raise it with --max-control-points or \
+         NEUTROSPLINE_MAX_CONTROL_POINTS)"
+    );
+}
