@@ -222,7 +222,7 @@ fn weight_message(value: f64) -> String {
 /// # Errors
 /// The file cannot be read, or is invalid: see [`read_data`].
 pub fn load_data(path: impl AsRef<Path>, membership: Membership) -> Result<DataTable, ReadError> {
-    let (file, shown) = open_file(path.as_ref())?;
+    let (file, shown) = open_file(path.as_ref(), "a .csv file of data points")?;
     read_data(&shown, std::io::BufReader::new(file), membership)
 }
 

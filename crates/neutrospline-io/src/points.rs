@@ -106,7 +106,7 @@ impl PointTable {
 /// # Errors
 /// The file cannot be read, or is invalid: see [`read_points`].
 pub fn load_points(path: impl AsRef<Path>) -> Result<PointTable, ReadError> {
-    let (file, shown) = open_file(path.as_ref())?;
+    let (file, shown) = open_file(path.as_ref(), "a .csv file of query points")?;
     read_points(&shown, std::io::BufReader::new(file))
 }
 

@@ -221,7 +221,7 @@ pub fn load_svg(
     defaults: Degrees,
     limits: &Limits,
 ) -> Result<Vec<Model>, ReadError> {
-    let (shown, bytes) = read_whole(path.as_ref(), limits.max_file_size)?;
+    let (shown, bytes) = read_whole(path.as_ref(), limits.max_file_size, "a .svg file")?;
     parse_svg(&shown, &bytes, defaults, limits)
 }
 
