@@ -271,7 +271,7 @@ pub fn evaluate(data: &[u8]) {
                         assert!(finite_rates(&d), "t = {t}: {d:?}");
                     }
                 }
-                check_shape(&Shape::Planar(curve));
+                check_shape(&Shape::from(curve));
             }
         }
         _ => {
@@ -337,8 +337,7 @@ fn within(value: f64, lo: f64, hi: f64, tolerance: f64) -> bool {
 /// When a property is broken (that is the point).
 pub fn check_shape(shape: &Shape) {
     match shape {
-        Shape::Planar(c) => check_curve(c),
-        Shape::Spatial(c) => check_curve(c),
+        Shape::Curve(c) => neutrospline::on_dimension!(c, c => check_curve(c)),
         Shape::Surface(s) => check_surface(s),
     }
     let extras = Extras {

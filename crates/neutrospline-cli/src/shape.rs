@@ -8,8 +8,8 @@ use std::ops::Range;
 use std::cell::Cell;
 
 use neutrospline::{
-    AnyCurve, CurveDerivative, CurveGeometry, Derivative, DerivativeValue, EvalError, Evaluate,
-    EvaluateSurface, GeometryError, KnotVector, Surface, DEFAULT_ACCURACY,
+    DerivativeValue, DynCurve, DynDerivative, EvalError, EvaluateSurface, GeometryError,
+    KnotVector, Surface, DEFAULT_ACCURACY,
 };
 pub use neutrospline_io::Shape;
 
@@ -142,7 +142,7 @@ impl Table for Shape {
             (Shape::Surface(_), Param::T(_)) => Err(format!(
                 "`{text}` is not a pair U:V (a surface is evaluated at --at U:V,U:V,...)"
             )),
-            (Shape::Planar(_) | Shape::Spatial(_), Param::Uv(..)) => Err(format!(
+            (Shape::Curve(_), Param::Uv(..)) => Err(format!(
                 "`{text}` is a pair U:V but the file holds a curve (give --at T1,T2,...)"
             )),
             (Shape::Surface(s), Param::Uv(u, v)) => {
@@ -214,8 +214,7 @@ impl Table for Shape {
 
     fn sampler(&self, extras: Extras) -> Sampler<'_> {
         match self {
-            Shape::Planar(c) => Sampler::Planar(CurveSampler::new(c, extras)),
-            Shape::Spatial(c) => Sampler::Spatial(CurveSampler::new(c, extras)),
+            Shape::Curve(c) => Sampler::Curve(CurveSampler::new(c, extras)),
             Shape::Surface(s) => Sampler::Surface(s, extras),
         }
     }
@@ -231,10 +230,8 @@ fn partial_names(order: usize) -> Vec<String> {
 
 /// Evaluates a shape (and its derivatives) row by row.
 pub enum Sampler<'a> {
-    /// For a planar curve.
-    Planar(CurveSampler<'a, 2>),
-    /// For a spatial curve.
-    Spatial(CurveSampler<'a, 3>),
+    /// For a curve.
+    Curve(CurveSampler<'a>),
     /// For a surface.
     Surface(&'a Surface, Extras),
 }
@@ -249,8 +246,7 @@ impl Sampler<'_> {
     /// rules those out beforehand).
     pub fn row(&self, param: Param) -> anyhow::Result<Row> {
         Ok(match (self, param) {
-            (Sampler::Planar(s), Param::T(t)) => s.row(t)?,
-            (Sampler::Spatial(s), Param::T(t)) => s.row(t)?,
+            (Sampler::Curve(s), Param::T(t)) => s.row(t)?,
             (Sampler::Surface(s, extras), Param::Uv(u, v)) => surface_row(s, *extras, u, v)?,
             (Sampler::Surface(..), Param::T(_)) => {
                 anyhow::bail!("a surface needs a parameter pair (u, v)")
@@ -261,10 +257,10 @@ impl Sampler<'_> {
 }
 
 /// A curve with its derivatives computed once.
-pub struct CurveSampler<'a, const D: usize> {
-    curve: &'a AnyCurve<D>,
+pub struct CurveSampler<'a> {
+    curve: &'a DynCurve,
     /// The derivatives of orders 1, 2, ... asked for.
-    derivatives: Vec<CurveDerivative<D>>,
+    derivatives: Vec<DynDerivative>,
     scores: bool,
     /// The accuracy of the arc length, when the geometry columns are asked for.
     geometry: Option<f64>,
@@ -273,12 +269,12 @@ pub struct CurveSampler<'a, const D: usize> {
     last_length: Cell<Option<(f64, f64)>>,
 }
 
-impl<'a, const D: usize> CurveSampler<'a, D> {
-    fn new(curve: &'a AnyCurve<D>, extras: Extras) -> Self {
+impl<'a> CurveSampler<'a> {
+    fn new(curve: &'a DynCurve, extras: Extras) -> Self {
         CurveSampler {
             curve,
             derivatives: (1..=extras.derivative)
-                .scan(None, |previous: &mut Option<CurveDerivative<D>>, _| {
+                .scan(None, |previous: &mut Option<DynDerivative>, _| {
                     let next = match previous {
                         Some(d) => d.derivative(),
                         None => curve.derivative(),
@@ -307,19 +303,14 @@ impl<'a, const D: usize> CurveSampler<'a, D> {
     }
 
     fn row(&self, t: f64) -> anyhow::Result<Row> {
-        let p = self.curve.evaluate(t).map_err(explain("position"))?;
-        let mut row = Vec::with_capacity(1 + 2 * (D + 3));
-        row.push(t);
-        row.extend(p.position);
-        row.extend(p.degrees.to_array());
+        let p = self.curve.evaluate_point(t).map_err(explain("position"))?;
+        let mut row = vec![t];
+        row.extend(p.row());
         if self.scores {
             row.extend(scores(&p.degrees));
         }
         for derivative in &self.derivatives {
-            push_rates(
-                &mut row,
-                &derivative.evaluate(t).map_err(explain("derivative"))?,
-            );
+            row.extend(derivative.evaluate_row(t).map_err(explain("derivative"))?);
         }
         let mut row: Row = row.into_iter().map(Some).collect();
         if let Some(accuracy) = self.geometry {
@@ -396,7 +387,7 @@ mod tests {
             .map(|i| ControlPoint::new([f64::from(i), 0.0], d))
             .collect();
         let knots = KnotVector::new((0..8).map(f64::from).collect(), 2, 5).unwrap();
-        Shape::Planar(AnyCurve::BSpline(
+        Shape::from(neutrospline::AnyCurve::BSpline(
             neutrospline::BSpline::new(points, knots).unwrap(),
         ))
     }

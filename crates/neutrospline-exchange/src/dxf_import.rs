@@ -553,7 +553,7 @@ mod tests {
 
     use super::*;
     use crate::{export, ExportFormat, ExportOptions};
-    use neutrospline_io::{load, ReadOptions, Shape};
+    use neutrospline_io::{load, ReadOptions};
 
     fn example(name: &str) -> Model {
         let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -638,7 +638,7 @@ mod tests {
             (model.name(), model.membership()),
             (None, Membership::Neutrosophic)
         );
-        let Shape::Planar(curve) = model.shape() else {
+        let Some(neutrospline::DynCurve::Planar(curve)) = model.shape().curve() else {
             panic!("a plane curve")
         };
         // (P0 + 2 P1 + P2) / 4 at t = 0.5, with the default degrees everywhere.

@@ -63,9 +63,9 @@ impl Parsed {
             Structure::Curve { degree, knots } => {
                 let (degree, knots) = (degree.as_ref(), knots.as_ref());
                 if self.dimension == 3 {
-                    self.curve::<3>(degree, knots).map(Shape::Spatial)
+                    self.curve::<3>(degree, knots).map(Shape::from)
                 } else {
-                    self.curve::<2>(degree, knots).map(Shape::Planar)
+                    self.curve::<2>(degree, knots).map(Shape::from)
                 }
             }
             Structure::Surface {

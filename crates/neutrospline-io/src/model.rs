@@ -188,8 +188,9 @@ impl Model {
             })?;
             let bad = match &self.shape {
                 Shape::Surface(_) => !spread.is_zero(),
-                Shape::Planar(_) => spread.left[2] != 0.0 || spread.right[2] != 0.0,
-                Shape::Spatial(_) => false,
+                Shape::Curve(c) => {
+                    c.dimension() == 2 && (spread.left[2] != 0.0 || spread.right[2] != 0.0)
+                }
             };
             if bad {
                 return Err(ModelError::Spread(format!(
@@ -321,7 +322,7 @@ impl Model {
         };
         let explicit = |k: &neutrospline::KnotVector| Some(KnotSpec::Explicit(k.knots().to_vec()));
         match &self.shape {
-            Shape::Planar(_) | Shape::Spatial(_) => {
+            Shape::Curve(_) => {
                 if let Some(knots) = self.shape.curve_knots() {
                     options.degree = self.shape.curve_degree();
                     options.knots = explicit(knots);

@@ -3,8 +3,7 @@
 use core::ops::Range;
 
 use neutrospline::{
-    AnyCurve, Bounded, ControlPoint, ControlPolygon, DynCurve, Evaluate, Interval, KnotVector,
-    Surface,
+    on_dimension, AnyCurve, ControlPoint, ControlPolygon, DynCurve, Interval, KnotVector, Surface,
 };
 
 use crate::Kind;
@@ -12,32 +11,27 @@ use crate::Kind;
 /// A curve or surface of any kind, as a model file holds it.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Shape {
-    /// A curve in the plane (x, y).
-    Planar(AnyCurve<2>),
-    /// A curve in space (x, y, z).
-    Spatial(AnyCurve<3>),
+    /// A curve in the plane or in space.
+    Curve(DynCurve),
     /// A tensor-product surface in space.
     Surface(Surface),
 }
 
 impl From<AnyCurve<2>> for Shape {
     fn from(curve: AnyCurve<2>) -> Shape {
-        Shape::Planar(curve)
+        Shape::Curve(curve.into())
     }
 }
 
 impl From<AnyCurve<3>> for Shape {
     fn from(curve: AnyCurve<3>) -> Shape {
-        Shape::Spatial(curve)
+        Shape::Curve(curve.into())
     }
 }
 
 impl From<DynCurve> for Shape {
     fn from(curve: DynCurve) -> Shape {
-        match curve {
-            DynCurve::Planar(c) => Shape::Planar(c),
-            DynCurve::Spatial(c) => Shape::Spatial(c),
-        }
+        Shape::Curve(curve)
     }
 }
 
@@ -73,8 +67,7 @@ impl Shape {
     /// The kind, as named in files.
     pub fn kind(&self) -> Kind {
         match self {
-            Shape::Planar(c) => Kind::Curve(c.kind()),
-            Shape::Spatial(c) => Kind::Curve(c.kind()),
+            Shape::Curve(c) => Kind::Curve(c.kind()),
             Shape::Surface(s) => Kind::Surface(s.kind()),
         }
     }
@@ -82,8 +75,8 @@ impl Shape {
     /// 2 or 3.
     pub fn dimension(&self) -> usize {
         match self {
-            Shape::Planar(_) => 2,
-            Shape::Spatial(_) | Shape::Surface(_) => 3,
+            Shape::Curve(c) => c.dimension(),
+            Shape::Surface(_) => 3,
         }
     }
 
@@ -92,47 +85,41 @@ impl Shape {
         matches!(self, Shape::Surface(_))
     }
 
+    /// The curve, if this is one.
+    pub fn curve(&self) -> Option<&DynCurve> {
+        match self {
+            Shape::Curve(c) => Some(c),
+            Shape::Surface(_) => None,
+        }
+    }
+
     /// Number of control points (never 0; surfaces rows x cols).
     pub fn control_count(&self) -> usize {
         match self {
-            Shape::Planar(c) => c.len(),
-            Shape::Spatial(c) => c.len(),
+            Shape::Curve(c) => c.len(),
             Shape::Surface(s) => s.rows() * s.cols(),
         }
     }
 
     /// The polynomial degree of a curve.
     pub fn curve_degree(&self) -> Option<usize> {
-        match self {
-            Shape::Planar(c) => Some(c.degree()),
-            Shape::Spatial(c) => Some(c.degree()),
-            Shape::Surface(_) => None,
-        }
+        self.curve().map(DynCurve::degree)
     }
 
     /// The knot vector of a B-spline or NURBS curve.
     pub fn curve_knots(&self) -> Option<&KnotVector> {
-        match self {
-            Shape::Planar(c) => c.knots(),
-            Shape::Spatial(c) => c.knots(),
-            Shape::Surface(_) => None,
-        }
+        self.curve().and_then(DynCurve::knots)
     }
 
     /// The domain of a curve.
     pub fn curve_domain(&self) -> Option<Range<f64>> {
-        match self {
-            Shape::Planar(c) => Some(c.domain()),
-            Shape::Spatial(c) => Some(c.domain()),
-            Shape::Surface(_) => None,
-        }
+        self.curve().map(DynCurve::domain)
     }
 
     /// The weights of a NURBS curve or surface (surfaces row by row).
     pub fn weights(&self) -> Option<&[f64]> {
         match self {
-            Shape::Planar(c) => c.weights(),
-            Shape::Spatial(c) => c.weights(),
+            Shape::Curve(c) => c.weights(),
             Shape::Surface(s) => s.weights(),
         }
     }
@@ -140,14 +127,7 @@ impl Shape {
     /// Range (min, max) of truth, indeterminacy and falsity over the control points.
     pub fn degree_ranges(&self) -> [Interval; 3] {
         match self {
-            Shape::Planar(c) => {
-                let b = c.control_bounding_box();
-                [b.truth, b.indeterminacy, b.falsity]
-            }
-            Shape::Spatial(c) => {
-                let b = c.control_bounding_box();
-                [b.truth, b.indeterminacy, b.falsity]
-            }
+            Shape::Curve(c) => c.degree_ranges(),
             Shape::Surface(s) => {
                 let b = s.control_bounding_box();
                 [b.truth, b.indeterminacy, b.falsity]
@@ -158,8 +138,7 @@ impl Shape {
     /// The degrees of every control point, in order (surfaces row by row).
     pub fn control_degrees(&self) -> Vec<neutrospline::Degrees> {
         match self {
-            Shape::Planar(c) => c.control_points().iter().map(|p| p.degrees).collect(),
-            Shape::Spatial(c) => c.control_points().iter().map(|p| p.degrees).collect(),
+            Shape::Curve(c) => c.control_degrees(),
             Shape::Surface(s) => s.control_points().iter().map(|p| p.degrees).collect(),
         }
     }
@@ -167,8 +146,7 @@ impl Shape {
     /// Every control point with its weight, for the writers.
     pub(crate) fn point_data(&self) -> Vec<PointData> {
         match self {
-            Shape::Planar(c) => point_data(c.control_points(), c.weights()),
-            Shape::Spatial(c) => point_data(c.control_points(), c.weights()),
+            Shape::Curve(c) => on_dimension!(c, c => point_data(c.control_points(), c.weights())),
             Shape::Surface(s) => point_data(s.control_points(), s.weights()),
         }
     }

@@ -386,10 +386,7 @@ impl PlotModel {
     /// # Errors
     /// As [`PlotModel::from_any`].
     pub fn from_dyn(curve: &DynCurve) -> Result<PlotModel, PlotError> {
-        match curve {
-            DynCurve::Planar(c) => PlotModel::from_any(c),
-            DynCurve::Spatial(c) => PlotModel::from_any(c),
-        }
+        neutrospline::on_dimension!(curve, c => PlotModel::from_any(c))
     }
 
     /// A model from curve points computed elsewhere (drawn as given, in order) and control
@@ -489,13 +486,11 @@ impl PlotModel {
         let zero = vec![Spread::ZERO; model.shape().control_count()];
         let spreads = model.spreads().unwrap_or(&zero);
         let figure = match model.shape() {
-            Shape::Planar(c) => PlotModel::from_any(c)?.with_band(FuzzyCurve {
-                curve: c.clone(),
-                spreads: spreads.iter().map(Spread::resize::<2>).collect(),
-            }),
-            Shape::Spatial(c) => PlotModel::from_any(c)?.with_band(FuzzyCurve {
-                curve: c.clone(),
-                spreads: spreads.to_vec(),
+            Shape::Curve(c) => neutrospline::on_dimension!(c, c => {
+                PlotModel::from_any(c)?.with_band(FuzzyCurve {
+                    curve: c.clone(),
+                    spreads: spreads.iter().map(Spread::resize).collect(),
+                })
             }),
             Shape::Surface(s) => PlotModel::from_surface(s)?,
         };

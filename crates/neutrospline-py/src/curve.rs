@@ -10,10 +10,10 @@
 use std::sync::Arc;
 
 use neutrospline::{
-    AnyCurve, BatchOptions, BatchParams, Bounded, BoundingBox, ControlPolygon, CurveBatch,
-    CurveDerivative, CurveGeometry, CurveKind, Derivative, Elevate, Evaluate, NearestPoint, Split,
+    map_dimension, on_dimension, AnyCurve, BatchOptions, BatchParams, Bounded, ControlPolygon,
+    CurveBatch, CurveDerivative, CurveKind, Dimensional, DynCurve, Elevate, Evaluate, Split,
 };
-use neutrospline_io::{Model, Shape};
+use neutrospline_io::Model;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 use pyo3::PyClassInitializer;
@@ -22,23 +22,6 @@ use crate::arrays::{readonly_array, vector, Output, Params};
 use crate::errors::{invalid, invalid_at};
 use crate::model;
 use crate::shape::BaseShape;
-
-/// A curve of either dimension.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Planarity<C2, C3> {
-    Planar(C2),
-    Spatial(C3),
-}
-
-/// Applies `$body` to the curve of either dimension bound as `$c`.
-macro_rules! on_dim {
-    ($value:expr, $c:ident => $body:expr) => {
-        match $value {
-            Planarity::Planar($c) => $body,
-            Planarity::Spatial($c) => $body,
-        }
-    };
-}
 
 mod construction;
 mod derived;
@@ -65,25 +48,21 @@ pub enum State {
     /// A curve of a model: control points with degrees, saved and drawn as a model.
     Model {
         model: Arc<Model>,
-        curve: Planarity<Prepared<2>, Prepared<3>>,
+        curve: Dimensional<Prepared<2>, Prepared<3>>,
     },
     /// The derivative of order `order` of the curve of `base`: evaluable and differentiable;
     /// its values are rates of change, not degrees.
     Derivative {
         base: Arc<Model>,
         order: usize,
-        derivative: Planarity<CurveDerivative<2>, CurveDerivative<3>>,
+        derivative: Dimensional<CurveDerivative<2>, CurveDerivative<3>>,
     },
 }
 
 impl State {
     /// The state of a curve model (`None` for a surface).
     pub fn of_model(model: Model) -> Option<State> {
-        let curve = match model.shape() {
-            Shape::Planar(c) => Planarity::Planar(Prepared::new(c.clone())),
-            Shape::Spatial(c) => Planarity::Spatial(Prepared::new(c.clone())),
-            Shape::Surface(_) => return None,
-        };
+        let curve = map_dimension!(model.shape().curve()?, c => Prepared::new(c.clone()));
         Some(State::Model {
             model: Arc::new(model),
             curve,
@@ -92,18 +71,7 @@ impl State {
 
     /// The derivative of order `order` (>= 1) of the curve of `base`.
     fn derivative_of(base: Arc<Model>, order: usize) -> Option<State> {
-        fn nth<const D: usize>(curve: &AnyCurve<D>, order: usize) -> CurveDerivative<D> {
-            let mut derivative = curve.derivative();
-            for _ in 1..order {
-                derivative = derivative.derivative();
-            }
-            derivative
-        }
-        let derivative = match base.shape() {
-            Shape::Planar(c) => Planarity::Planar(nth(c, order)),
-            Shape::Spatial(c) => Planarity::Spatial(nth(c, order)),
-            Shape::Surface(_) => return None,
-        };
+        let derivative = base.shape().curve()?.nth_derivative(order);
         Some(State::Derivative {
             base,
             order,
@@ -119,11 +87,10 @@ impl State {
     }
 
     fn kind(&self) -> CurveKind {
-        match self.base().shape() {
-            Shape::Planar(c) => c.kind(),
-            Shape::Spatial(c) => c.kind(),
-            Shape::Surface(_) => CurveKind::Bezier,
-        }
+        self.base()
+            .shape()
+            .curve()
+            .map_or(CurveKind::Bezier, DynCurve::kind)
     }
 
     fn dimension(&self) -> usize {
@@ -199,22 +166,6 @@ pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
     }
 }
 
-/// The bounding box as rows `min`, `max` of the columns `x, y[, z], truth, indeterminacy,
-/// falsity`.
-fn box_rows<const D: usize>(b: &BoundingBox<D>) -> Vec<f64> {
-    let intervals: Vec<_> = b
-        .position
-        .iter()
-        .copied()
-        .chain([b.truth, b.indeterminacy, b.falsity])
-        .collect();
-    intervals
-        .iter()
-        .map(|i| i.min)
-        .chain(intervals.iter().map(|i| i.max))
-        .collect()
-}
-
 impl Curve {
     /// The class chain of this curve: the base `Shape` (the model and the derivative order)
     /// and the curve.
@@ -223,8 +174,17 @@ impl Curve {
         PyClassInitializer::from(base).add_subclass(self)
     }
 
+    /// The model's curve; an error for a derivative (see `Curve::model`).
+    fn curve(&self) -> PyResult<&DynCurve> {
+        let (model, _) = self.model()?;
+        model
+            .shape()
+            .curve()
+            .ok_or_else(|| invalid("a surface is not a curve"))
+    }
+
     /// The model and its curve; an error for a derivative (see `BaseShape::model`).
-    fn model(&self) -> PyResult<(&Model, &Planarity<Prepared<2>, Prepared<3>>)> {
+    fn model(&self) -> PyResult<(&Model, &Dimensional<Prepared<2>, Prepared<3>>)> {
         match &self.state {
             State::Model { model, curve } => Ok((&**model, curve)),
             State::Derivative { order, .. } => Err(invalid(format!(
@@ -295,7 +255,7 @@ impl Curve {
             (&self.state, writer.columns()?, count > 0)
         {
             let options = BatchOptions::default();
-            let result = on_dim!(curve, c => py.detach(|| {
+            let result = on_dimension!(curve, c => py.detach(|| {
                 c.batch.evaluate(BatchParams::Uniform(count), columns, &options)
             }));
             drop(writer);
@@ -339,7 +299,7 @@ impl Curve {
     /// (True, True)
     fn split<'py>(&self, py: Python<'py>, t: f64) -> PyResult<Bound<'py, PyTuple>> {
         let (_, curve) = self.model()?;
-        let pieces = on_dim!(curve, c => self.derive(py, &c.curve, |c| {
+        let pieces = on_dimension!(curve, c => self.derive(py, &c.curve, |c| {
             let (left, right) = c.split(t).map_err(|e| invalid_at("t", e))?;
             Ok(vec![left, right])
         }))?;
@@ -354,7 +314,7 @@ impl Curve {
     #[pyo3(signature = (times = 1))]
     fn elevate(&self, py: Python<'_>, times: usize) -> PyResult<Py<PyAny>> {
         let (_, curve) = self.model()?;
-        let mut curves = on_dim!(curve, c => self.derive(py, &c.curve, |c| {
+        let mut curves = on_dimension!(curve, c => self.derive(py, &c.curve, |c| {
             let mut elevated = c.clone();
             for _ in 0..times {
                 elevated = elevated.elevate();
@@ -374,7 +334,7 @@ impl Curve {
     #[pyo3(signature = (u, times = 1))]
     fn insert_knot(&self, py: Python<'_>, u: f64, times: usize) -> PyResult<Py<PyAny>> {
         let (_, curve) = self.model()?;
-        let mut curves = on_dim!(curve, c => self.derive(py, &c.curve, |c| {
+        let mut curves = on_dimension!(curve, c => self.derive(py, &c.curve, |c| {
             let mut spline = c.clone();
             for _ in 0..times {
                 spline = match spline {
@@ -397,9 +357,9 @@ impl Curve {
     /// [1.0, 9.0]
     fn bounding_box<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let (_, curve) = self.model()?;
-        let (rows, columns) = on_dim!(curve, c => {
+        let (rows, columns) = on_dimension!(curve, c => {
             let b = c.curve.bounding_box();
-            (box_rows(&b), b.position.len() + 3)
+            (b.min_max_rows().concat(), b.position.len() + 3)
         });
         readonly_array(py, rows, &[2, columns])
     }
@@ -412,16 +372,14 @@ impl Curve {
     /// 8.78673070784
     #[pyo3(signature = (accuracy = neutrospline::DEFAULT_ACCURACY))]
     fn length(&self, accuracy: f64) -> PyResult<f64> {
-        let (_, curve) = self.model()?;
         let domain = self.domain_range();
-        on_dim!(curve, c => c.curve.arc_length(domain, accuracy)).map_err(invalid)
+        self.curve()?.arc_length(domain, accuracy).map_err(invalid)
     }
 
     /// The arc length from `t0` to `t1`, to the relative `accuracy`.
     #[pyo3(signature = (t0, t1, accuracy = neutrospline::DEFAULT_ACCURACY))]
     fn arc_length(&self, t0: f64, t1: f64, accuracy: f64) -> PyResult<f64> {
-        let (_, curve) = self.model()?;
-        on_dim!(curve, c => c.curve.arc_length(t0..t1, accuracy)).map_err(invalid)
+        self.curve()?.arc_length(t0..t1, accuracy).map_err(invalid)
     }
 
     /// The curvature at `t` (a float or a 1-D array): `|C' x C''| / |C'|^3` in the plane
@@ -433,12 +391,12 @@ impl Curve {
     /// >>> round(float(circle.curvature(0.3)), 12)
     /// 1.0
     fn curvature(&self, py: Python<'_>, t: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-        let (_, curve) = self.model()?;
+        let curve = self.curve()?;
         let params = Params::read(t, "t")?;
         let ts = params.values()?;
         let mut values = Vec::with_capacity(ts.len());
         for (k, &t) in ts.iter().enumerate() {
-            let value = match on_dim!(curve, c => c.curve.curvature(t)) {
+            let value = match curve.curvature(t) {
                 Ok(kappa) => kappa,
                 Err(neutrospline::GeometryError::Stationary { .. }) => f64::NAN,
                 Err(e) => return Err(invalid_at(format!("t[{k}]"), e)),
@@ -466,7 +424,7 @@ impl Curve {
         py: Python<'py>,
         points: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyTuple>> {
-        let (_, curve) = self.model()?;
+        let curve = self.curve()?;
         let dimension = self.state.dimension();
         let array = crate::arrays::float_array(points, "points")?;
         let single = array.ndim() == 1;
@@ -481,28 +439,18 @@ impl Curve {
             ));
         }
         let flat = array.values()?;
-        let (t, distance, rows) = on_dim!(curve, c => {
-            let queries: Vec<_> = flat
-                .chunks_exact(dimension)
-                .map(|p| {
-                    let mut q = [0.0; 3];
-                    q[..p.len()].copy_from_slice(p);
-                    core::array::from_fn(|i| q[i])
-                })
-                .collect();
-            let found = py.detach(|| NearestPoint::projector(&c.curve).nearest_many(&queries));
-            let mut t = Vec::with_capacity(found.len());
-            let mut distance = Vec::with_capacity(found.len());
-            let mut rows = Vec::with_capacity(found.len() * (dimension + 3));
-            for (k, result) in found.into_iter().enumerate() {
-                let n = result.map_err(|e| invalid_at(format!("points[{k}]"), e))?;
-                t.push(n.parameter);
-                distance.push(n.distance);
-                rows.extend_from_slice(&n.point.position);
-                rows.extend_from_slice(&n.point.degrees.to_array());
-            }
-            (t, distance, rows)
-        });
+        let found = py
+            .detach(|| curve.nearest_rows(flat))
+            .map_err(|e| invalid_at("points", e))?;
+        let mut t = Vec::with_capacity(found.len());
+        let mut distance = Vec::with_capacity(found.len());
+        let mut rows = Vec::with_capacity(found.len() * (dimension + 3));
+        for (k, result) in found.into_iter().enumerate() {
+            let n = result.map_err(|e| invalid_at(format!("points[{k}]"), e))?;
+            t.push(n.parameter);
+            distance.push(n.distance);
+            rows.extend(n.point.row());
+        }
         if single {
             let row = vector(py, rows).into_any();
             return PyTuple::new(
@@ -550,22 +498,23 @@ impl Curve {
         other: Option<&Bound<'py, Curve>>,
         contacts: bool,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let planar = |curve: &Curve, what: &str| -> PyResult<AnyCurve<2>> {
-            match curve.model()? {
-                (_, Planarity::Planar(c)) => Ok(c.curve.clone()),
-                (_, Planarity::Spatial(_)) => Err(invalid_at(
+        fn planar<'a>(curve: &'a Curve, what: &str) -> PyResult<&'a DynCurve> {
+            let found = curve.curve()?;
+            match found.planar() {
+                Some(_) => Ok(found),
+                None => Err(invalid_at(
                     what,
                     "intersections are of plane curves (this one is 3-D)",
                 )),
             }
-        };
+        }
         let a = planar(self, "self")?;
         let found = match other {
             Some(other) => {
                 let b = planar(other.get(), "other")?;
-                py.detach(|| neutrospline::intersections(&a, &b))
+                py.detach(|| a.intersections(b))
             }
-            None => py.detach(|| neutrospline::self_intersections(&a)),
+            None => py.detach(|| a.self_intersections()),
         }
         .map_err(invalid)?;
         let mut rows = Vec::with_capacity(found.len() * 10);
@@ -600,8 +549,8 @@ impl Curve {
     #[getter]
     fn degree(&self) -> usize {
         match &self.state {
-            State::Model { curve, .. } => on_dim!(curve, c => c.curve.degree()),
-            State::Derivative { derivative, .. } => on_dim!(derivative, d => d.degree()),
+            State::Model { curve, .. } => on_dimension!(curve, c => c.curve.degree()),
+            State::Derivative { derivative, .. } => on_dimension!(derivative, d => d.degree()),
         }
     }
 
@@ -622,7 +571,7 @@ impl Curve {
     fn point_names(&self) -> PyResult<Vec<Option<String>>> {
         let (model, curve) = self.model()?;
         let names = model.point_names();
-        let count = on_dim!(curve, c => c.curve.len());
+        let count = on_dimension!(curve, c => c.curve.len());
         Ok(if names.is_empty() {
             vec![None; count]
         } else {
@@ -656,7 +605,7 @@ impl Curve {
     fn weights<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
         let weights = match &self.state {
             State::Model { curve, .. } => {
-                on_dim!(curve, c => c.curve.weights().map(<[f64]>::to_vec))
+                on_dimension!(curve, c => c.curve.weights().map(<[f64]>::to_vec))
             }
             State::Derivative { .. } => None,
         };
@@ -673,10 +622,10 @@ impl Curve {
     fn knots<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
         let knots = match &self.state {
             State::Model { curve, .. } => {
-                on_dim!(curve, c => c.curve.knots().map(|k| k.knots().to_vec()))
+                on_dimension!(curve, c => c.curve.knots().map(|k| k.knots().to_vec()))
             }
             State::Derivative { derivative, .. } => {
-                on_dim!(derivative, d => d.knots().map(|k| k.knots().to_vec()))
+                on_dimension!(derivative, d => d.knots().map(|k| k.knots().to_vec()))
             }
         };
         knots
@@ -699,11 +648,7 @@ impl Curve {
         let count = model.shape().control_count();
         let mut text = format!(
             "{class}(control_points={count}, degree={}, dimension={}, membership='{}'",
-            match model.shape() {
-                Shape::Planar(c) => c.degree(),
-                Shape::Spatial(c) => c.degree(),
-                Shape::Surface(_) => 0,
-            },
+            model.shape().curve_degree().unwrap_or(0),
             self.state.dimension(),
             model.membership().name()
         );
@@ -723,14 +668,14 @@ impl Curve {
     /// values), with their count and dimension.
     fn control_rows(&self) -> PyResult<(Vec<f64>, Vec<f64>, usize, usize)> {
         match &self.state {
-            State::Model { curve, .. } => Ok(on_dim!(curve, c => {
+            State::Model { curve, .. } => Ok(on_dimension!(curve, c => {
                 let points = c.curve.control_points();
                 let (p, d) = model::point_rows(&points);
                 (p, d, points.len(), c.curve.start().map_or(0, |s| s.position.len()))
             })),
             State::Derivative {
                 derivative, order, ..
-            } => on_dim!(derivative, d => {
+            } => on_dimension!(derivative, d => {
                 let values = d.control_values().ok_or_else(|| {
                     invalid(format!(
                         "the derivative (order {order}) of a NURBS curve is rational: it has no \

@@ -11,7 +11,7 @@ use neutrospline_io::{Model, Shape};
 use numpy::ndarray::{ArrayView, IxDyn};
 use numpy::PyArrayMethods;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyTuple};
+use pyo3::types::PyTuple;
 use pyo3::PyClassInitializer;
 
 use crate::arrays::{float_array, readonly_array};
@@ -337,39 +337,6 @@ impl NurbsSurface {
 
 #[pymethods]
 impl Surface {
-    /// Alias of `BezierSurface(...)`, kept for existing code: the same arguments and result.
-    #[staticmethod]
-    #[pyo3(signature = (*args, **kwargs))]
-    fn bezier<'py>(
-        py: Python<'py>,
-        args: &Bound<'py, PyTuple>,
-        kwargs: Option<&Bound<'py, PyDict>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        py.get_type::<BezierSurface>().call(args, kwargs)
-    }
-
-    /// Alias of `BSplineSurface(...)`, kept for existing code: the same arguments and result.
-    #[staticmethod]
-    #[pyo3(signature = (*args, **kwargs))]
-    fn bspline<'py>(
-        py: Python<'py>,
-        args: &Bound<'py, PyTuple>,
-        kwargs: Option<&Bound<'py, PyDict>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        py.get_type::<BSplineSurface>().call(args, kwargs)
-    }
-
-    /// Alias of `NurbsSurface(...)`, kept for existing code: the same arguments and result.
-    #[staticmethod]
-    #[pyo3(signature = (*args, **kwargs))]
-    fn nurbs<'py>(
-        py: Python<'py>,
-        args: &Bound<'py, PyTuple>,
-        kwargs: Option<&Bound<'py, PyDict>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        py.get_type::<NurbsSurface>().call(args, kwargs)
-    }
-
     /// Evaluates at `(u, v)` (numbers, or arrays of one shape S, of any layout and real dtype
     /// as for `Curve.evaluate`): an array of shape S + (6,), columns x, y, z, truth,
     /// indeterminacy, falsity; written into `out` (an aligned, writeable, native float64 array
@@ -569,18 +536,7 @@ impl Surface {
     /// A box holding the surface: the control grid's (the surface lies in its convex hull),
     /// shape (2, 6), rows minimum and maximum of x, y, z, truth, indeterminacy, falsity.
     fn bounding_box<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let b = self.surface.control_bounding_box();
-        let intervals: Vec<_> = b
-            .position
-            .iter()
-            .copied()
-            .chain([b.truth, b.indeterminacy, b.falsity])
-            .collect();
-        let rows = intervals
-            .iter()
-            .map(|i| i.min)
-            .chain(intervals.iter().map(|i| i.max))
-            .collect();
+        let rows = self.surface.control_bounding_box().min_max_rows().concat();
         readonly_array(py, rows, &[2, 6])
     }
 

@@ -29,7 +29,7 @@ use std::time::Instant;
 
 use neutrospline::fit::FitRequest;
 use neutrospline::{
-    uniform_parameter, AnyCurve, ControlPolygon, DegreeKind, Evaluate, EvaluateSurface, Membership,
+    uniform_parameter, AnyCurve, ControlPolygon, DegreeKind, DynCurve, EvaluateSurface, Membership,
 };
 use neutrospline_io::{format_number, DataTable, Format, Model, ReadError, ReadOptions, Shape};
 use neutrospline_plot::{
@@ -418,13 +418,13 @@ fn render(body: &Value) -> Result<Response, Response> {
             Ok((json, drawing)) => {
                 if view == View::Plane {
                     plane_handles = match model.shape() {
-                        Shape::Planar(c) => {
+                        Shape::Curve(DynCurve::Planar(c)) => {
                             let points: Vec<[f64; 2]> =
                                 c.control_points().iter().map(|p| p.position).collect();
                             let h = handles(&drawing, &points);
                             json!({ "pixels": h.pixels, "frame": h.frame, "drag": h.drag })
                         }
-                        Shape::Spatial(c) => {
+                        Shape::Curve(DynCurve::Spatial(c)) => {
                             let points: Vec<[f64; 3]> =
                                 c.control_points().iter().map(|p| p.position).collect();
                             let h = space_handles(&drawing, &points);
@@ -606,8 +606,8 @@ fn table(shape: &Shape, at: &str) -> Result<(Vec<String>, Vec<Vec<String>>), Str
                 rows.push(row);
             }
         }
-        Shape::Planar(_) | Shape::Spatial(_) => {
-            let domain = shape.curve_domain().unwrap_or(0.0..1.0);
+        Shape::Curve(curve) => {
+            let domain = curve.domain();
             let params: Vec<f64> = if items.is_empty() {
                 (0..11)
                     .map(|k| uniform_parameter(k, 11, domain.clone()))
@@ -616,20 +616,9 @@ fn table(shape: &Shape, at: &str) -> Result<(Vec<String>, Vec<Vec<String>>), Str
                 items.iter().map(|i| number(i)).collect::<Result<_, _>>()?
             };
             for t in params {
-                let (position, degrees) = match shape {
-                    Shape::Planar(c) => {
-                        let p = c.evaluate(t).map_err(|e| e.to_string())?;
-                        (p.position.to_vec(), p.degrees)
-                    }
-                    Shape::Spatial(c) => {
-                        let p = c.evaluate(t).map_err(|e| e.to_string())?;
-                        (p.position.to_vec(), p.degrees)
-                    }
-                    Shape::Surface(_) => unreachable!("surfaces are handled above"),
-                };
                 let mut row = vec![cell(t)];
-                row.extend(position.iter().map(|&x| cell(x)));
-                row.extend(degrees.to_array().iter().map(|&x| cell(x)));
+                let values = curve.evaluate_row(t).map_err(|e| e.to_string())?;
+                row.extend(values.iter().map(|&x| cell(x)));
                 rows.push(row);
             }
         }

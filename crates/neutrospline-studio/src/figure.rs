@@ -183,7 +183,7 @@ mod tests {
     fn space_handles_move_points_under_the_pointer() {
         let file = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/helix3d.toml");
         let model = neutrospline_io::load(file, &neutrospline_io::ReadOptions::default()).unwrap();
-        let neutrospline_io::Shape::Spatial(curve) = model.shape() else {
+        let Some(neutrospline::DynCurve::Spatial(curve)) = model.shape().curve() else {
             panic!("a space curve")
         };
         let points: Vec<[f64; 3]> = curve.control_points().iter().map(|p| p.position).collect();

@@ -9,7 +9,7 @@ use std::path::Path;
 use std::time::{Duration, Instant};
 
 use neutrospline::{ControlPolygon, Evaluate};
-use neutrospline_io::{Format, Model, ReadOptions, Shape};
+use neutrospline_io::{Format, Model, ReadOptions};
 use neutrospline_plot::{render_png, render_svg, PlotModel, PlotOptions, View};
 use neutrospline_studio::{Server, ServerConfig, Studio};
 use serde_json::{json, Value};
@@ -139,7 +139,7 @@ fn render_draws_what_the_plot_crate_draws() {
     assert_eq!(status, 200, "{answer}");
     // Drawn here without the studio's code: the names and the caption of the file.
     let model = example1();
-    let Shape::Planar(curve) = model.shape() else {
+    let Some(neutrospline::DynCurve::Planar(curve)) = model.shape().curve() else {
         panic!("a plane curve")
     };
     let plot = PlotModel::from_any(curve)

@@ -132,7 +132,7 @@ pub use degrees::{
     DegreeError, DegreeKind, Degrees, Membership, ParseNameError, HESITATION_TOLERANCE,
 };
 pub use derivative::CurveDerivative;
-pub use dyn_curve::DynCurve;
+pub use dyn_curve::{Dimensional, DynCurve, DynDerivative, DynPoint, NearestRow, RowLengthError};
 pub use example::{example1, EXAMPLE1_NAMES, EXAMPLE1_TABLE};
 pub use fuzzy::{alpha_cut, centroid_curve, FuzzyError, Side, Spread};
 pub use geometry::{

@@ -160,6 +160,28 @@ pub struct BoundingBox<const D: usize> {
 }
 
 impl<const D: usize> BoundingBox<D> {
+    /// The box as two rows, the minima then the maxima of `x, y[, z], truth, indeterminacy,
+    /// falsity`.
+    ///
+    /// ```
+    /// use neutrospline::Bounded;
+    /// let [min, max] = neutrospline::example1().control_bounding_box().min_max_rows();
+    /// assert_eq!(min, [1.0, 2.0, 0.2, 0.1, 0.1]);
+    /// assert_eq!(max, [9.0, 6.0, 0.8, 0.6, 0.4]);
+    /// ```
+    pub fn min_max_rows(&self) -> [Vec<f64>; 2] {
+        let intervals: Vec<Interval> = self
+            .position
+            .iter()
+            .copied()
+            .chain([self.truth, self.indeterminacy, self.falsity])
+            .collect();
+        [
+            intervals.iter().map(|i| i.min).collect(),
+            intervals.iter().map(|i| i.max).collect(),
+        ]
+    }
+
     /// The range of the given degree.
     pub const fn degree(&self, kind: DegreeKind) -> Interval {
         match kind {

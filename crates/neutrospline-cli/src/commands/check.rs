@@ -1,7 +1,7 @@
 //! `neutrospline check FILE`: validate a file and summarise the curve or surface (for curves
 //! with the length and the arc-length averages of the degrees).
 
-use neutrospline::{AnyCurve, CurveGeometry, EvaluateSurface, GeometryError, KnotVector};
+use neutrospline::{DynCurve, EvaluateSurface, GeometryError, KnotVector};
 use neutrospline_io::{KnotRule, KnotSource};
 
 use crate::commands::options::ModelArgs;
@@ -78,8 +78,7 @@ const MEASURED_DEGREE: usize = 30;
 /// The lines `length: L`, then `average truth: ...` and the others; for a curve of length
 /// zero, or one whose length cannot be measured (its speed overflows a 64-bit float), one
 /// line that says so instead of the averages (the file is still valid).
-fn geometry_lines<const D: usize>(curve: &AnyCurve<D>) -> Vec<String> {
-    use neutrospline::ControlPolygon;
+fn geometry_lines(curve: &DynCurve) -> Vec<String> {
     if curve.len() > MEASURED_CONTROL_POINTS || curve.degree() > MEASURED_DEGREE {
         return vec![format!(
             "length: not measured (check measures curves of at most {MEASURED_CONTROL_POINTS} \
@@ -122,8 +121,7 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
     let spreads = model.spreads().map(<[_]>::to_vec);
     let shape = model.into_shape();
     let geometry = match &shape {
-        Shape::Planar(c) => geometry_lines(c),
-        Shape::Spatial(c) => geometry_lines(c),
+        Shape::Curve(c) => geometry_lines(c),
         Shape::Surface(_) => Vec::new(),
     };
     output::emit(None, |w| {

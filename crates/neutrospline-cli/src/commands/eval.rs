@@ -1,17 +1,16 @@
 //! `neutrospline eval FILE`: a table of the curve or surface (and its derivatives) at chosen
 //! parameters, written row by row as it is computed.
 
-use std::path::PathBuf;
-
 use std::ops::Range;
 
 use neutrospline::{
-    alpha_cut, centroid_curve, uniform_parameter, AnyCurve, Evaluate, EvaluateSurface, Spread,
+    alpha_cut, centroid_curve, map_dimension, on_dimension, uniform_parameter, AnyCurve,
+    Dimensional, Evaluate, EvaluateSurface, Spread,
 };
 
-use crate::commands::options::ModelArgs;
+use crate::commands::options::{ModelArgs, TableArgs};
 use crate::input::{self, UsageError};
-use crate::output::{self, TableFormat};
+
 use crate::progress::Progress;
 use crate::shape::{Extras, Param, Shape, Table};
 
@@ -116,15 +115,9 @@ pub struct EvalArgs {
     #[arg(long)]
     pub centroid: bool,
 
-    /// Output format: csv (a header row, then one row per parameter) or json (an array of
-    /// objects keyed by column name)
-    #[arg(long, value_enum, value_name = "FORMAT", default_value_t = TableFormat::Csv)]
-    pub format: TableFormat,
-
-    /// Write to OUT instead of standard output (replaced atomically: on error the old file is
-    /// left untouched)
-    #[arg(short = 'o', long = "output", value_name = "OUT")]
-    pub output: Option<PathBuf>,
+    /// Where the table goes.
+    #[command(flatten)]
+    pub table: TableArgs,
 
     /// Shape settings for CSV files.
     #[command(flatten)]
@@ -224,10 +217,7 @@ impl<const D: usize> FuzzyColumns<D> {
 }
 
 /// The fuzzy columns of a planar or spatial curve.
-enum Fuzzy {
-    Planar(FuzzyColumns<2>),
-    Spatial(FuzzyColumns<3>),
-}
+struct Fuzzy(Dimensional<FuzzyColumns<2>, FuzzyColumns<3>>);
 
 impl Fuzzy {
     fn new(
@@ -239,34 +229,24 @@ impl Fuzzy {
         let spreads: Vec<Spread<3>> = model
             .spreads()
             .map_or_else(|| vec![Spread::ZERO; count], <[_]>::to_vec);
-        let resized = |s: &Spread<3>| s.resize::<2>();
-        Ok(match model.shape() {
-            Shape::Planar(c) => Fuzzy::Planar(FuzzyColumns::new(
-                c,
-                &spreads.iter().map(resized).collect::<Vec<_>>(),
-                alpha,
-                centroid,
-            )?),
-            Shape::Spatial(c) => Fuzzy::Spatial(FuzzyColumns::new(c, &spreads, alpha, centroid)?),
-            Shape::Surface(_) => anyhow::bail!("internal error: fuzzy columns of a surface"),
-        })
+        let Shape::Curve(curve) = model.shape() else {
+            anyhow::bail!("internal error: fuzzy columns of a surface")
+        };
+        Ok(Fuzzy(map_dimension!(curve, c => {
+            let spreads: Vec<_> = spreads.iter().map(Spread::resize).collect();
+            FuzzyColumns::new(c, &spreads, alpha, centroid)?
+        })))
     }
 
     fn names(&self) -> Vec<String> {
-        match self {
-            Fuzzy::Planar(f) => f.names(),
-            Fuzzy::Spatial(f) => f.names(),
-        }
+        on_dimension!(&self.0, f => f.names())
     }
 
     fn push(&self, param: Param, row: &mut Vec<Option<f64>>) -> anyhow::Result<()> {
         let Param::T(t) = param else {
             anyhow::bail!("a curve takes one parameter t")
         };
-        match self {
-            Fuzzy::Planar(f) => f.push(t, row),
-            Fuzzy::Spatial(f) => f.push(t, row),
-        }
+        on_dimension!(&self.0, f => f.push(t, row))
     }
 }
 
@@ -430,7 +410,7 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         ))
         .into());
     }
-    let mut progress = Progress::new(count, args.output.is_none());
+    let mut progress = Progress::new(count, args.table.output.is_none());
     let rows = parameters(args, &shape).map(|param| {
         progress.tick();
         let cannot =
@@ -452,9 +432,7 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         }
         Ok(row)
     });
-    output::emit(args.output.as_deref(), |w| {
-        output::write_table(w, args.format, &columns, rows)
-    })
+    args.table.write(&columns, rows)
 }
 
 #[cfg(test)]

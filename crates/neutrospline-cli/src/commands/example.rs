@@ -137,7 +137,7 @@ fn write_outputs(dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
         }
     }
     // The curve table at t = k/10 in full precision, in `eval`'s CSV format.
-    let shape = Shape::Planar(AnyCurve::Bezier(curve));
+    let shape = Shape::from(AnyCurve::Bezier(curve));
     let extras = Extras::default();
     let columns = shape.columns(extras);
     let sampler = shape.sampler(extras);

@@ -5,9 +5,10 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use neutrospline::fit::{channel_names, DynFit, FitReport, FitRequest};
+use neutrospline::options::{OptionSet, OptionValue};
 use neutrospline::{DegreeKind, Membership};
 use neutrospline_io::{DataTable, Format, Model};
-use neutrospline_plot::{DataOverlay, PlotModel, PlotOptions, View};
+use neutrospline_plot::{DataOverlay, FigureRequest, PlotModel, PlotOptions, View};
 
 use crate::commands::plot::{write_figure, FigureFormat};
 use crate::input::{UsageError, STDIN_NAME};
@@ -23,25 +24,14 @@ pub enum ReportFormat {
     Json,
 }
 
-/// `--color-by` values.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum ColorByArg {
-    /// Colour data points by truth.
-    Truth,
-    /// By indeterminacy.
-    Indeterminacy,
-    /// By falsity.
-    Falsity,
-}
-
-impl From<ColorByArg> for DegreeKind {
-    fn from(c: ColorByArg) -> DegreeKind {
-        match c {
-            ColorByArg::Truth => DegreeKind::Truth,
-            ColorByArg::Indeterminacy => DegreeKind::Indeterminacy,
-            ColorByArg::Falsity => DegreeKind::Falsity,
-        }
-    }
+/// Reads `--color-by` as the figure option `color-by` ([`FigureRequest`]): the same values
+/// and message as `plot --color-by`.
+fn parse_color_by(text: &str) -> Result<DegreeKind, String> {
+    let mut figure = FigureRequest::default();
+    figure
+        .set("color-by", OptionValue::Word(text.to_owned()))
+        .map_err(|e| e.to_string())?;
+    Ok(figure.color_by)
 }
 
 /// Arguments of `fit`.
@@ -81,9 +71,10 @@ pub struct FitArgs {
     #[arg(long, value_name = "FIG")]
     pub plot: Option<PathBuf>,
 
-    /// The degree that colours the data points in --plot
-    #[arg(long, value_enum, value_name = "DEGREE", default_value = "truth")]
-    pub color_by: ColorByArg,
+    /// The degree that colours the data points in --plot: truth, indeterminacy or falsity
+    /// (the figure option color-by)
+    #[arg(long, value_name = "DEGREE", default_value = "truth", value_parser = parse_color_by)]
+    pub color_by: DegreeKind,
 
     /// The model's name
     #[arg(long, value_name = "TEXT")]
@@ -137,7 +128,7 @@ pub fn run(args: &FitArgs) -> anyhow::Result<()> {
     }
     let text = neutrospline_io::to_string(&model, model_format)?;
     if let (Some(path), Some(format)) = (&args.plot, figure_format) {
-        let plot = data_plot(&fitted, &table, args.color_by.into())?;
+        let plot = data_plot(&fitted, &table, args.color_by)?;
         let options = PlotOptions::new().with_caption(format!("Data: {}", table.file()));
         write_figure(&plot, View::Data, &options, path, format)?;
     }

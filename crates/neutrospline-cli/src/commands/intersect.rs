@@ -1,13 +1,11 @@
 //! `neutrospline intersect A B`: every point where two plane curves meet (or where one curve
 //! crosses itself, when B is A), ordered by the parameter on A.
 
-use std::path::PathBuf;
+use neutrospline::{DynCurve, Intersection};
 
-use neutrospline::{intersections, self_intersections, AnyCurve, Intersection};
-
-use crate::commands::options::ModelArgs;
+use crate::commands::options::{ModelArgs, TableArgs};
 use crate::input;
-use crate::output::{self, Cell, TableFormat};
+use crate::output::Cell;
 use crate::shape::Shape;
 
 /// Arguments of `intersect`.
@@ -30,15 +28,9 @@ pub struct IntersectArgs {
     #[arg(value_name = "B")]
     pub b: String,
 
-    /// Output format: csv (a header row, then one row per intersection) or json (an array of
-    /// objects keyed by column name)
-    #[arg(long, value_enum, value_name = "FORMAT", default_value_t = TableFormat::Csv)]
-    pub format: TableFormat,
-
-    /// Write to OUT instead of standard output (replaced atomically: on error the old file is
-    /// left untouched)
-    #[arg(short = 'o', long = "output", value_name = "OUT")]
-    pub output: Option<PathBuf>,
+    /// Where the table goes.
+    #[command(flatten)]
+    pub table: TableArgs,
 
     /// Shape settings for CSV files (both files).
     #[command(flatten)]
@@ -62,9 +54,9 @@ const COLUMNS: [&str; 12] = [
 ];
 
 /// The plane curve of `file`, or an error naming what it holds.
-fn plane_curve(file: &str, model: &ModelArgs) -> anyhow::Result<AnyCurve<2>> {
+fn plane_curve(file: &str, model: &ModelArgs) -> anyhow::Result<DynCurve> {
     match input::read_model(file, model)?.into_shape() {
-        Shape::Planar(curve) => Ok(curve),
+        Shape::Curve(curve) if curve.dimension() == 2 => Ok(curve),
         shape => {
             let what = if shape.is_surface() {
                 format!("a {}", shape.kind())
@@ -87,9 +79,9 @@ pub fn run(args: &IntersectArgs) -> anyhow::Result<()> {
     let a = plane_curve(&args.a, &args.model)?;
     let b = plane_curve(&args.b, &args.model)?;
     let found = if a == b {
-        self_intersections(&a)
+        a.self_intersections()
     } else {
-        intersections(&a, &b)
+        a.intersections(&b)
     }
     .map_err(|e| {
         anyhow::Error::msg(format!(
@@ -100,9 +92,7 @@ pub fn run(args: &IntersectArgs) -> anyhow::Result<()> {
     })?;
     let columns: Vec<String> = COLUMNS.map(str::to_owned).to_vec();
     let rows = found.iter().enumerate().map(|(index, i)| Ok(row(index, i)));
-    output::emit(args.output.as_deref(), |w| {
-        output::write_table(w, args.format, &columns, rows)
-    })
+    args.table.write(&columns, rows)
 }
 
 fn row(index: usize, i: &Intersection) -> Vec<Cell> {

@@ -3,8 +3,41 @@
 
 use neutrospline::{CurveKind, SurfaceKind};
 
+use std::path::PathBuf;
+
 use crate::commands::MembershipArg;
+use crate::output::{self, TableCell, TableFormat};
 use neutrospline_io::{Kind, KnotSpec, ReadOptions};
+
+/// Where and how a command that makes a table (`eval`, `query`, `intersect`) writes it.
+#[derive(Debug, Clone, clap::Args)]
+pub struct TableArgs {
+    /// Output format: csv (a header row, then one row per line of the table) or json (an
+    /// array of objects keyed by column name)
+    #[arg(long, value_enum, value_name = "FORMAT", default_value_t = TableFormat::Csv)]
+    pub format: TableFormat,
+
+    /// Write to OUT instead of standard output (replaced atomically: on error the old file is
+    /// left untouched)
+    #[arg(short = 'o', long = "output", value_name = "OUT")]
+    pub output: Option<PathBuf>,
+}
+
+impl TableArgs {
+    /// Writes the table ([`output::write_table`]) to OUT, atomically, or to standard output.
+    ///
+    /// # Errors
+    /// The first error of `rows`, or a write error.
+    pub fn write<C: TableCell>(
+        &self,
+        columns: &[String],
+        rows: impl IntoIterator<Item = anyhow::Result<Vec<C>>>,
+    ) -> anyhow::Result<()> {
+        output::emit(self.output.as_deref(), |w| {
+            output::write_table(w, self.format, columns, rows)
+        })
+    }
+}
 
 /// The `--kind` values, mirroring [`Kind`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]

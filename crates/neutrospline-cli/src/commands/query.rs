@@ -3,12 +3,12 @@
 
 use std::path::PathBuf;
 
-use neutrospline::{AnyCurve, CurvePoint, Nearest, NearestError, NearestPoint};
+use neutrospline::{Degrees, NearestError, RowLengthError};
 use neutrospline_io::PointTable;
 
-use crate::commands::options::ModelArgs;
+use crate::commands::options::{ModelArgs, TableArgs};
 use crate::input;
-use crate::output::{self, TableFormat};
+
 use crate::shape::Shape;
 
 /// Arguments of `query`.
@@ -32,15 +32,9 @@ pub struct QueryArgs {
     #[arg(value_name = "POINTS.csv")]
     pub points: PathBuf,
 
-    /// Output format: csv (a header row, then one row per query point) or json (an array of
-    /// objects keyed by column name)
-    #[arg(long, value_enum, value_name = "FORMAT", default_value_t = TableFormat::Csv)]
-    pub format: TableFormat,
-
-    /// Write to OUT instead of standard output (replaced atomically: on error the old file is
-    /// left untouched)
-    #[arg(short = 'o', long = "output", value_name = "OUT")]
-    pub output: Option<PathBuf>,
+    /// Where the table goes.
+    #[command(flatten)]
+    pub table: TableArgs,
 
     /// Shape settings for CSV files.
     #[command(flatten)]
@@ -76,68 +70,60 @@ pub fn run(args: &QueryArgs) -> anyhow::Result<()> {
         )));
     }
     let columns = columns(&shape);
-    match &shape {
-        Shape::Planar(curve) => emit_curve(args, &columns, curve, &table),
-        Shape::Spatial(curve) => emit_curve(args, &columns, curve, &table),
+    let rows: Box<dyn Iterator<Item = anyhow::Result<Vec<Option<f64>>>>> = match &shape {
+        Shape::Curve(curve) => Box::new(batches(&table, |points: &[f64]| {
+            Ok(curve
+                .nearest_rows(points)?
+                .into_iter()
+                .map(|found| {
+                    found.map(|n| {
+                        let mut row = vec![n.parameter, n.distance];
+                        push_point(&mut row, &n.point.position, &n.point.degrees);
+                        row
+                    })
+                })
+                .collect())
+        })),
         Shape::Surface(surface) => {
             let projector = surface.projector();
-            let rows = batches(&table, |points: &[[f64; 3]]| {
-                projector
-                    .nearest_many(points)
+            Box::new(batches(&table, move |points: &[f64]| {
+                let points: Vec<[f64; 3]> =
+                    points.chunks_exact(3).map(|p| [p[0], p[1], p[2]]).collect();
+                Ok(projector
+                    .nearest_many(&points)
                     .into_iter()
                     .map(|r| {
                         r.map(|n| {
                             let mut row = vec![n.parameter[0], n.parameter[1], n.distance];
-                            push_point(&mut row, &n.point);
+                            push_point(&mut row, &n.point.position, &n.point.degrees);
                             row
                         })
                     })
-                    .collect()
-            });
-            write(args, &columns, rows)
+                    .collect())
+            }))
         }
-    }
-}
-
-fn emit_curve<const D: usize>(
-    args: &QueryArgs,
-    columns: &[String],
-    curve: &AnyCurve<D>,
-    table: &PointTable,
-) -> anyhow::Result<()> {
-    let projector = curve.projector();
-    let rows = batches(table, |points: &[[f64; D]]| {
-        projector
-            .nearest_many(points)
-            .into_iter()
-            .map(|r: Result<Nearest<D>, NearestError>| {
-                r.map(|n| {
-                    let mut row = vec![n.parameter, n.distance];
-                    push_point(&mut row, &n.point);
-                    row
-                })
-            })
-            .collect()
-    });
-    write(args, columns, rows)
+    };
+    write(args, &columns, rows)
 }
 
 /// The rows of the table, computed a batch at a time (index, then what `solve` gives). A
 /// batch with an error yields its first error only, so that [`write`] sees an error of the
 /// first batch before it writes anything.
-fn batches<'a, const D: usize>(
+fn batches<'a>(
     table: &'a PointTable,
-    solve: impl Fn(&[[f64; D]]) -> Vec<Result<Vec<f64>, NearestError>> + 'a,
+    solve: impl Fn(&[f64]) -> Result<Vec<Result<Vec<f64>, NearestError>>, RowLengthError> + 'a,
 ) -> impl Iterator<Item = anyhow::Result<Vec<Option<f64>>>> + 'a {
     let positions = table.positions();
+    let dimension = table.dimension();
     let batches = (0..positions.len()).step_by(BATCH).map(
         move |first| -> anyhow::Result<Vec<Vec<Option<f64>>>> {
             let end = (first + BATCH).min(positions.len());
-            let points: Vec<[f64; D]> = positions[first..end]
+            let points: Vec<f64> = positions[first..end]
                 .iter()
-                .map(|p| core::array::from_fn(|a| p[a]))
+                .flat_map(|p| &p[..dimension])
+                .copied()
                 .collect();
-            solve(&points)
+            solve(&points)?
                 .into_iter()
                 .enumerate()
                 .map(|(k, result)| {
@@ -175,15 +161,13 @@ fn write(
             return Err(e);
         }
     }
-    output::emit(args.output.as_deref(), |w| {
-        output::write_table(w, args.format, columns, rows)
-    })
+    args.table.write(columns, rows)
 }
 
-fn push_point<const D: usize>(row: &mut Vec<f64>, p: &CurvePoint<D>) {
-    row.extend(p.position);
-    row.extend(p.degrees.to_array());
-    row.push(p.degrees.score());
+fn push_point(row: &mut Vec<f64>, position: &[f64], degrees: &Degrees) {
+    row.extend_from_slice(position);
+    row.extend(degrees.to_array());
+    row.push(degrees.score());
 }
 
 /// `index,t,distance,x,y[,z],truth,indeterminacy,falsity,score` (`u,v` for surfaces).

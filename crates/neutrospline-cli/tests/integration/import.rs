@@ -307,7 +307,7 @@ fn import_of_a_plot_gives_curves_through_the_drawn_points() {
         // Some imported curve is the polyline: a degree-1 B-spline whose value at knot k is
         // the k-th drawn point, exactly.
         let found = curves.iter().any(|model| {
-            let neutrospline_io::Shape::Planar(curve) = model.shape() else {
+            let Some(neutrospline::DynCurve::Planar(curve)) = model.shape().curve() else {
                 return false;
             };
             curve.degree() == 1

@@ -100,8 +100,9 @@ fn extent<const D: usize>(curve: &AnyCurve<D>) -> Extent {
 pub(super) fn spline_document(model: &Model) -> Result<String, ExportError> {
     let info = info(model, true);
     Ok(match model.shape() {
-        Shape::Planar(c) => document(extent(c), |t, owner| spline(t, owner, c, &info)),
-        Shape::Spatial(c) => document(extent(c), |t, owner| spline(t, owner, c, &info)),
+        Shape::Curve(c) => neutrospline::on_dimension!(c, c => {
+            document(extent(c), |t, owner| spline(t, owner, c, &info))
+        }),
         Shape::Surface(_) => {
             return Err(ExportError::SurfaceNeedsMesh {
                 kind: model.kind().name().to_owned(),

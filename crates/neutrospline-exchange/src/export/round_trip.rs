@@ -117,8 +117,9 @@ fn dxf_spline_of_every_example_curve_reads_back_exactly() {
         assert_eq!(all.len(), 1, "{file}: one entity");
         let spline = Spline::read(&all[0]);
         let worst = match model.shape() {
-            Shape::Planar(c) => check_spline(&model, c, &spline),
-            Shape::Spatial(c) => check_spline(&model, c, &spline),
+            Shape::Curve(c) => {
+                neutrospline::on_dimension!(c, c => check_spline(&model, c, &spline))
+            }
             Shape::Surface(_) => unreachable!("a curve example"),
         };
         if exact {

@@ -97,8 +97,7 @@ impl Samples {
     /// surface), or without it the adaptive parameters of [`neutrospline::sample`].
     pub fn of(shape: &Shape, samples: Option<usize>) -> Result<Samples, ExportError> {
         match shape {
-            Shape::Planar(c) => curve(c, samples),
-            Shape::Spatial(c) => curve(c, samples),
+            Shape::Curve(c) => neutrospline::on_dimension!(c, c => curve(c, samples)),
             Shape::Surface(s) => surface(s, samples),
         }
     }

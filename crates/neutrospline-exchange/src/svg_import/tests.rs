@@ -15,7 +15,7 @@ fn curves(svg: &str) -> Vec<AnyCurve<2>> {
         .unwrap()
         .into_iter()
         .map(|m| match m.into_shape() {
-            Shape::Planar(c) => c,
+            Shape::Curve(neutrospline::DynCurve::Planar(c)) => c,
             other => panic!("a plane curve, not {:?}", other.kind()),
         })
         .collect()
@@ -183,17 +183,17 @@ fn svg_transforms_hidden_elements_and_markup() {
     let models = parse_svg("t.svg", svg.as_bytes(), defaults(), &Limits::default()).unwrap();
     assert_eq!(models.len(), 3);
     assert_eq!(models[0].name(), Some("a & b"));
-    let Shape::Planar(a) = models[0].shape() else {
+    let Some(neutrospline::DynCurve::Planar(a)) = models[0].shape().curve() else {
         panic!()
     };
     assert_eq!(positions(a), [[12.0, 22.0], [14.0, 22.0]]);
-    let Shape::Planar(b) = models[1].shape() else {
+    let Some(neutrospline::DynCurve::Planar(b)) = models[1].shape().curve() else {
         panic!()
     };
     let p = positions(b);
     assert!((p[0][0] - 10.0).abs() < 1e-15 && p[0][1] == 22.0, "{p:?}");
     assert!((p[1][0] - 10.0).abs() < 1e-15 && p[1][1] == 24.0, "{p:?}");
-    let Shape::Planar(c) = models[2].shape() else {
+    let Some(neutrospline::DynCurve::Planar(c)) = models[2].shape().curve() else {
         panic!()
     };
     assert_eq!(

@@ -209,9 +209,8 @@ fn spread_value() -> impl Strategy<Value = f64> {
 /// symmetric, asymmetric or mixed.
 fn spreads(shape: &Shape) -> BoxedStrategy<Option<Vec<Spread<3>>>> {
     let dimension = match shape {
-        Shape::Planar(_) => 2,
-        Shape::Spatial(_) => 3,
-        _ => return Just(None).boxed(),
+        Shape::Curve(c) => c.dimension(),
+        Shape::Surface(_) => return Just(None).boxed(),
     };
     let one = (
         prop::array::uniform3(spread_value()),
@@ -355,8 +354,7 @@ proptest! {
         }
         text.push_str("\r\n");
         let positions: Vec<Vec<f64>> = match model.shape() {
-            Shape::Planar(c) => c.control_points().iter().map(|p| p.position.to_vec()).collect(),
-            Shape::Spatial(c) => c.control_points().iter().map(|p| p.position.to_vec()).collect(),
+            Shape::Curve(c) => c.control_rows().iter().map(|row| row[..c.dimension()].to_vec()).collect(),
             Shape::Surface(s) => s.control_points().iter().map(|p| p.position.to_vec()).collect(),
         };
         for (i, (position, degrees)) in positions.iter().zip(model.shape().control_degrees()).enumerate() {
@@ -482,7 +480,7 @@ proptest! {
             model.point_names().to_vec()
         };
         prop_assert_eq!(names, expected_names, "{:?}", shown);
-        let Shape::Planar(curve) = model.shape() else {
+        let Some(neutrospline::DynCurve::Planar(curve)) = model.shape().curve() else {
             return Err(TestCaseError::fail("not a plane curve"));
         };
         let points = curve.control_points();

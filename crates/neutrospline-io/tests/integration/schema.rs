@@ -55,15 +55,10 @@ where
     )
     .map_err(|e| TestCaseError::fail(e.to_string()))?;
     let read = match model.shape() {
-        Shape::Planar(c) => c
-            .control_points()
+        Shape::Curve(c) => c
+            .control_rows()
             .iter()
-            .map(|p| p.position.to_vec())
-            .collect(),
-        Shape::Spatial(c) => c
-            .control_points()
-            .iter()
-            .map(|p| p.position.to_vec())
+            .map(|row| row[..c.dimension()].to_vec())
             .collect(),
         Shape::Surface(_) => Vec::new(),
     };

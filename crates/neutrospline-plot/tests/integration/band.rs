@@ -74,7 +74,7 @@ fn zero_spreads_draw_the_crisp_curve_and_nothing_moves() {
     assert!(!plain_svg.contains("band alpha"));
     assert!(!plain_svg.contains("curve centroid"));
     // A curve without a model file (no spreads at all) draws the same figure.
-    let neutrospline_io::Shape::Planar(curve) = plain.shape() else {
+    let Some(neutrospline::DynCurve::Planar(curve)) = plain.shape().curve() else {
         panic!("a planar curve")
     };
     let names: Vec<String> = plain

@@ -36,6 +36,12 @@ from ._neutrospline import (
     score,
 )
 
+# `Surface.bezier(...)` and the others are the subclasses' constructors under their old names,
+# kept for existing code: the same arguments and results as `BezierSurface(...)`.
+Surface.bezier = BezierSurface
+Surface.bspline = BSplineSurface
+Surface.nurbs = NurbsSurface
+
 __all__ = [
     "BSpline",
     "BSplineSurface",

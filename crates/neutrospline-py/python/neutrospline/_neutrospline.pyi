@@ -17,7 +17,7 @@ and is left untouched.
 """
 
 import os
-from typing import Any, List, Literal, Optional, Sequence, Tuple, Union, overload
+from typing import Any, ClassVar, List, Literal, Optional, Sequence, Tuple, Type, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -176,40 +176,10 @@ class Nurbs(Curve):
     ) -> None: ...
 
 class Surface(Shape):
-    @staticmethod
-    def bezier(
-        positions: ArrayLike,
-        degrees: ArrayLike,
-        membership: Membership = "neutrosophic",
-        *,
-        name: Optional[str] = None,
-        description: Optional[str] = None,
-    ) -> "BezierSurface": ...
-    @staticmethod
-    def bspline(
-        positions: ArrayLike,
-        degrees: ArrayLike,
-        degree: Union[int, Tuple[int, int], None] = None,
-        knots_u: Optional[ArrayLike] = None,
-        knots_v: Optional[ArrayLike] = None,
-        membership: Membership = "neutrosophic",
-        *,
-        name: Optional[str] = None,
-        description: Optional[str] = None,
-    ) -> "BSplineSurface": ...
-    @staticmethod
-    def nurbs(
-        positions: ArrayLike,
-        degrees: ArrayLike,
-        weights: ArrayLike,
-        degree: Union[int, Tuple[int, int], None] = None,
-        knots_u: Optional[ArrayLike] = None,
-        knots_v: Optional[ArrayLike] = None,
-        membership: Membership = "neutrosophic",
-        *,
-        name: Optional[str] = None,
-        description: Optional[str] = None,
-    ) -> "NurbsSurface": ...
+    # The subclasses' constructors under their old names (`Surface.bezier(...)`).
+    bezier: ClassVar[Type["BezierSurface"]]
+    bspline: ClassVar[Type["BSplineSurface"]]
+    nurbs: ClassVar[Type["NurbsSurface"]]
     def evaluate(
         self, u: ArrayLike, v: ArrayLike, out: Optional[FloatArray] = None
     ) -> FloatArray: ...

@@ -23,7 +23,25 @@ struct Construction<'a, 'py> {
     meta: Meta,
 }
 
-impl Construction<'_, '_> {
+impl<'a, 'py> Construction<'a, 'py> {
+    /// The arrays and names of a Bézier curve: no weights, degree or knots.
+    fn plain(
+        positions: &'a Bound<'py, PyAny>,
+        degrees: &'a Bound<'py, PyAny>,
+        membership: &'a str,
+        meta: Meta,
+    ) -> Self {
+        Construction {
+            positions,
+            degrees,
+            weights: None,
+            degree: None,
+            knots: None,
+            membership,
+            meta,
+        }
+    }
+
     /// Builds the curve of `kind` and its model.
     fn build(self, kind: CurveKind) -> PyResult<Curve> {
         let membership = model::membership(self.membership)?;
@@ -109,19 +127,16 @@ impl Bezier {
         description: Option<String>,
         point_names: Option<Vec<Option<String>>>,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let curve = Construction {
+        let curve = Construction::plain(
             positions,
             degrees,
-            weights: None,
-            degree: None,
-            knots: None,
             membership,
-            meta: Meta {
+            Meta {
                 name,
                 description,
                 point_names,
             },
-        }
+        )
         .build(CurveKind::Bezier)?;
         Ok(curve.initializer().add_subclass(Bezier))
     }
@@ -161,16 +176,8 @@ impl Bezier {
             .flat_map(|k| (0..dimension).map(move |c| values[c * count + k]))
             .collect();
         let positions = crate::arrays::new_array(py, rows, &[count, dimension])?;
-        let curve = Construction {
-            positions: positions.as_any(),
-            degrees,
-            weights: None,
-            degree: None,
-            knots: None,
-            membership,
-            meta: Meta::default(),
-        }
-        .build(CurveKind::Bezier)?;
+        let curve = Construction::plain(positions.as_any(), degrees, membership, Meta::default())
+            .build(CurveKind::Bezier)?;
         into_py(py, curve.state)
     }
 }
@@ -193,17 +200,18 @@ impl BSpline {
         point_names: Option<Vec<Option<String>>>,
     ) -> PyResult<PyClassInitializer<Self>> {
         let curve = Construction {
-            positions,
-            degrees,
-            weights: None,
             degree: Some(degree),
             knots,
-            membership,
-            meta: Meta {
-                name,
-                description,
-                point_names,
-            },
+            ..Construction::plain(
+                positions,
+                degrees,
+                membership,
+                Meta {
+                    name,
+                    description,
+                    point_names,
+                },
+            )
         }
         .build(CurveKind::BSpline)?;
         Ok(curve.initializer().add_subclass(BSpline))
@@ -229,17 +237,19 @@ impl Nurbs {
         point_names: Option<Vec<Option<String>>>,
     ) -> PyResult<PyClassInitializer<Self>> {
         let curve = Construction {
-            positions,
-            degrees,
             weights: Some(weights),
             degree: Some(degree),
             knots,
-            membership,
-            meta: Meta {
-                name,
-                description,
-                point_names,
-            },
+            ..Construction::plain(
+                positions,
+                degrees,
+                membership,
+                Meta {
+                    name,
+                    description,
+                    point_names,
+                },
+            )
         }
         .build(CurveKind::Nurbs)?;
         Ok(curve.initializer().add_subclass(Nurbs))

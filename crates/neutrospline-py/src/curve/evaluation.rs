@@ -4,7 +4,9 @@ use neutrospline::{BatchOptions, BatchParams, CurveBatch, EvalError, Evaluate};
 use numpy::PyArrayMethods;
 use pyo3::prelude::*;
 
-use super::{Curve, Planarity, State};
+use neutrospline::on_dimension;
+
+use super::{Curve, State};
 use crate::arrays::{Output, Params, Writer};
 use crate::errors::invalid_at;
 
@@ -115,9 +117,9 @@ impl Curve {
         let domain = self.domain_range();
         let result = match &self.state {
             State::Model { curve, .. } => {
-                on_dim!(curve, c => evaluate_batch(py, &c.batch, ts, &mut writer))?
+                on_dimension!(curve, c => evaluate_batch(py, &c.batch, ts, &mut writer))?
             }
-            State::Derivative { derivative, .. } => on_dim!(derivative, d => {
+            State::Derivative { derivative, .. } => on_dimension!(derivative, d => {
                 evaluate_rows(py, ts, &mut writer, columns, |t| d.evaluate(t).map(derivative_row))
             }),
         };
@@ -138,8 +140,8 @@ impl Curve {
 
     pub(super) fn domain_range(&self) -> std::ops::Range<f64> {
         match &self.state {
-            State::Model { curve, .. } => on_dim!(curve, c => c.curve.domain()),
-            State::Derivative { derivative, .. } => on_dim!(derivative, d => d.domain()),
+            State::Model { curve, .. } => on_dimension!(curve, c => c.curve.domain()),
+            State::Derivative { derivative, .. } => on_dimension!(derivative, d => d.domain()),
         }
     }
 }

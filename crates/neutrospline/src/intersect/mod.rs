@@ -100,6 +100,14 @@ pub enum IntersectError {
     /// A curve cannot be evaluated (its values overflow).
     #[error(transparent)]
     Eval(#[from] EvalError),
+    /// A curve is not a plane curve ([`crate::DynCurve::intersections`]).
+    #[error("the {which} curve is {dimension}-D (intersections are of plane curves)")]
+    NotPlanar {
+        /// `first` or `second`.
+        which: &'static str,
+        /// The curve's dimension.
+        dimension: usize,
+    },
 }
 
 /// Sub-pieces smaller than this fraction of the curves' size are polished by Newton's method.
