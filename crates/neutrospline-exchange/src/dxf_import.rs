@@ -539,7 +539,7 @@ pub fn load_dxf(
     defaults: Degrees,
     limits: &Limits,
 ) -> Result<Vec<Model>, ReadError> {
-    let (shown, bytes) = read_whole(path.as_ref(), limits.max_file_size)?;
+    let (shown, bytes) = read_whole(path.as_ref(), limits.max_file_size, "a .dxf file")?;
     parse_dxf(&shown, &bytes, defaults, limits)
 }
 

@@ -31,12 +31,12 @@ use std::io::BufRead;
 use std::path::Path;
 
 use neutrospline::fit::{fit_rows, DynFit, FitError, FitOptions};
-use neutrospline::{DegreeError, Degrees, Membership};
+use neutrospline::{Degrees, Membership};
 
-use crate::csv::Records;
-use crate::parsed::{duplicate_rule, missing_degree, parse_number, Field};
+use crate::csv::{read_degrees, require_degrees, Columns, Table};
+use crate::parsed::{duplicate_rule, Field};
 use crate::read::open_file;
-use crate::{InputError, ReadError};
+use crate::{InputError, PointTable, ReadError};
 
 /// The columns of a data table: a control-point field or the point's parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -62,40 +62,38 @@ impl Column {
 /// parameters, weights and names, with the line each point was read from.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DataTable {
-    file: String,
-    dimension: usize,
-    positions: Vec<[f64; 3]>,
+    /// The file, the positions and their lines: what a table of query points holds.
+    points: PointTable,
     degrees: Vec<Degrees>,
     parameters: Option<Vec<f64>>,
     weights: Option<Vec<f64>>,
     names: Vec<Option<String>>,
-    lines: Vec<usize>,
 }
 
 impl DataTable {
     /// The file as named by the caller.
     pub fn file(&self) -> &str {
-        &self.file
+        self.points.file()
     }
 
     /// 2 (columns `x`, `y`) or 3 (with `z`).
     pub fn dimension(&self) -> usize {
-        self.dimension
+        self.points.dimension()
     }
 
     /// The number of points.
     pub fn len(&self) -> usize {
-        self.positions.len()
+        self.points.len()
     }
 
     /// Whether there are no points (never true for a table that was read).
     pub fn is_empty(&self) -> bool {
-        self.positions.is_empty()
+        self.points.is_empty()
     }
 
     /// The positions, `z = 0` for 2-D data.
     pub fn positions(&self) -> &[[f64; 3]] {
-        &self.positions
+        self.points.positions()
     }
 
     /// The degrees, valid under the membership rule they were read with.
@@ -123,7 +121,7 @@ impl DataTable {
     /// # Panics
     /// When `index` is not a point of the table.
     pub fn line(&self, index: usize) -> usize {
-        self.lines[index]
+        self.points.line(index)
     }
 
     /// Fits a curve of the table's dimension to its points, with its parameters and weights:
@@ -132,15 +130,9 @@ impl DataTable {
     /// # Errors
     /// The located [`FitError`].
     pub fn fit(&self, options: &FitOptions) -> Result<DynFit, InputError> {
-        let d = self.dimension();
-        let positions: Vec<f64> = self
-            .positions
-            .iter()
-            .flat_map(|p| p[..d].to_vec())
-            .collect();
         fit_rows(
-            d,
-            &positions,
+            self.dimension(),
+            &self.points.flat_positions(),
             self.degrees.clone(),
             self.parameters.clone(),
             self.weights.clone(),
@@ -153,8 +145,8 @@ impl DataTable {
     /// (`data.csv:7: repeats the parameter of line 6 ...`), any other names the file.
     pub fn locate(&self, error: &FitError) -> InputError {
         let at = |index: usize, field: Option<&str>, message: String| {
-            let line = self.lines.get(index).copied();
-            InputError::new(&self.file, line, field.map(str::to_owned), message)
+            let line = self.line_at(index);
+            InputError::new(self.file(), line, field.map(str::to_owned), message)
         };
         match error {
             FitError::NotFinite {
@@ -188,7 +180,7 @@ impl DataTable {
                 value,
                 rule,
             } => {
-                let previous = self.lines.get(*previous).copied().unwrap_or_default();
+                let previous = self.line_at(*previous).unwrap_or_default();
                 at(
                     *index,
                     None,
@@ -196,7 +188,7 @@ impl DataTable {
                 )
             }
             FitError::RepeatedPoint { index, previous } => {
-                let previous = self.lines.get(*previous).copied().unwrap_or_default();
+                let previous = self.line_at(*previous).unwrap_or_default();
                 at(
                     *index,
                     None,
@@ -207,8 +199,13 @@ impl DataTable {
                     ),
                 )
             }
-            other => InputError::new(&self.file, None, None, other.to_string()),
+            other => InputError::new(self.file(), None, None, other.to_string()),
         }
+    }
+
+    /// The line of point `index`, when it is a point of the table.
+    fn line_at(&self, index: usize) -> Option<usize> {
+        (index < self.len()).then(|| self.line(index))
     }
 }
 
@@ -225,7 +222,7 @@ fn weight_message(value: f64) -> String {
 /// # Errors
 /// The file cannot be read, or is invalid: see [`read_data`].
 pub fn load_data(path: impl AsRef<Path>, membership: Membership) -> Result<DataTable, ReadError> {
-    let (file, shown) = open_file(path.as_ref())?;
+    let (file, shown) = open_file(path.as_ref(), "a .csv file of data points")?;
     read_data(&shown, std::io::BufReader::new(file), membership)
 }
 
@@ -240,132 +237,69 @@ pub fn read_data(
     reader: impl BufRead,
     membership: Membership,
 ) -> Result<DataTable, ReadError> {
-    let error = |line: Option<usize>, field: Option<String>, message: String| -> ReadError {
-        InputError::new(file, line, field, message).into()
-    };
-    let mut records = Records::new(reader);
-    let mut next = || records.next_cells(file);
-    let Some((header_line, header)) = next()? else {
-        return Err(error(
-            None,
-            None,
-            "empty file (expected a header row such as `x,y,truth,indeterminacy,falsity`)"
-                .to_owned(),
-        ));
-    };
-    let header_line = Some(header_line);
-    let mut columns: Vec<Column> = Vec::with_capacity(header.len());
-    for (i, heading) in header.iter().enumerate() {
-        let column = Column::from_name(heading).ok_or_else(|| {
-            error(
-                header_line,
-                None,
-                format!(
-                    "unknown column `{heading}` (known columns: {})",
-                    Column::known_list()
-                ),
+    let column = |heading: &str| {
+        Column::from_name(heading).ok_or_else(|| {
+            format!(
+                "unknown column `{heading}` (known columns: {})",
+                Column::known_list()
             )
-        })?;
-        if let Some(j) = columns.iter().position(|&c| c == column) {
-            return Err(error(
-                header_line,
-                None,
-                format!(
-                    "column {} `{heading}` repeats column {} `{}` ({})",
-                    i + 1,
-                    j + 1,
-                    header.get(j).unwrap_or_default(),
-                    duplicate_rule()
-                ),
-            ));
-        }
-        columns.push(column);
-    }
-    let has = |f: Field| columns.contains(&Column::Field(f));
-    for f in [Field::X, Field::Y, Field::Truth] {
-        if !has(f) {
-            return Err(error(
-                header_line,
-                None,
-                format!(
-                    "missing column `{}` (every data point needs x, y and its truth)",
-                    f.name()
-                ),
-            ));
-        }
-    }
-    if let Some(DegreeError::Missing { kind, membership }) =
-        missing_degree(membership, has(Field::Indeterminacy), has(Field::Falsity))
-    {
-        return Err(error(
-            header_line,
-            None,
-            format!("missing column `{kind}` ({membership} rule requires it)"),
-        ));
-    }
-    let dimension = if has(Field::Z) { 3 } else { 2 };
-    let has_parameters = columns.contains(&Column::Parameter);
-    let has_weights = has(Field::Weight);
-    let mut table = DataTable {
-        file: file.to_owned(),
-        dimension,
-        positions: Vec::new(),
-        degrees: Vec::new(),
-        parameters: has_parameters.then(Vec::new),
-        weights: has_weights.then(Vec::new),
-        names: Vec::new(),
-        lines: Vec::new(),
+        })
     };
-    while let Some((line, record)) = next()? {
-        let at = Some(line);
-        if record.len() != columns.len() {
-            return Err(error(
-                at,
-                None,
-                format!(
-                    "the row has {} cells but the header has {} (every row needs one cell per \
-                     column)",
-                    record.len(),
-                    columns.len()
-                ),
-            ));
-        }
+    let columns = Columns {
+        example: "`x,y,truth,indeterminacy,falsity`",
+        column: &column,
+        repeat_rule: duplicate_rule(),
+        rows: "data points",
+    };
+    let mut rows = Table::open(file, reader, &columns)?;
+    for f in [Field::X, Field::Y, Field::Truth] {
+        rows.require(
+            Column::Field(f),
+            f.name(),
+            "every data point needs x, y and its truth",
+        )?;
+    }
+    require_degrees(&rows, membership, Column::Field)?;
+    let dimension = if rows.has(Column::Field(Field::Z)) {
+        3
+    } else {
+        2
+    };
+    let mut table = DataTable {
+        points: PointTable::new(file, dimension),
+        degrees: Vec::new(),
+        parameters: rows.has(Column::Parameter).then(Vec::new),
+        weights: rows.has(Column::Field(Field::Weight)).then(Vec::new),
+        names: Vec::new(),
+    };
+    while let Some(row) = rows.next_row()? {
         let mut values = [None::<f64>; Field::ALL.len()];
         let mut parameter = None;
         let mut name = None;
-        for ((&column, cell), heading) in columns.iter().zip(record.iter()).zip(header.iter()) {
-            if column == Column::Field(Field::Name) {
-                name = (!cell.is_empty()).then(|| cell.to_owned());
+        for cell in row.cells() {
+            if cell.column == Column::Field(Field::Name) {
+                name = (!cell.text.is_empty()).then(|| cell.text.to_owned());
                 continue;
             }
-            let value = parse_number(cell)
-                .map_err(|m| error(at, Some(format!("column `{heading}`")), m))?;
-            match column {
+            let value = row.number(&cell)?;
+            match cell.column {
                 Column::Parameter => parameter = Some(value),
                 Column::Field(Field::Weight) if value <= 0.0 => {
-                    return Err(error(
-                        at,
-                        Some(format!("column `{heading}`")),
-                        weight_message(value),
-                    ))
+                    return Err(row.cell_error(&cell, weight_message(value)).into())
                 }
                 Column::Field(field) => values[field.index()] = Some(value),
             }
         }
         let get = |f: Field| values[f.index()];
-        let degrees = Degrees::with_membership(
-            membership,
-            get(Field::Truth).unwrap_or_default(),
-            get(Field::Indeterminacy),
-            get(Field::Falsity),
-        )
-        .map_err(|e| error(at, None, e.to_string()))?;
-        table.positions.push([
-            get(Field::X).unwrap_or_default(),
-            get(Field::Y).unwrap_or_default(),
-            get(Field::Z).unwrap_or_default(),
-        ]);
-        table.degrees.push(degrees);
+        table.degrees.push(read_degrees(&row, membership, &values)?);
+        table.points.push(
+            [
+                get(Field::X).unwrap_or_default(),
+                get(Field::Y).unwrap_or_default(),
+                get(Field::Z).unwrap_or_default(),
+            ],
+            row.line(),
+        );
         if let (Some(list), Some(value)) = (&mut table.parameters, parameter) {
             list.push(value);
         }
@@ -373,14 +307,6 @@ pub fn read_data(
             list.push(value);
         }
         table.names.push(name);
-        table.lines.push(line);
-    }
-    if table.is_empty() {
-        return Err(error(
-            None,
-            None,
-            "no data points (the header row is not followed by any data row)".to_owned(),
-        ));
     }
     Ok(table)
 }

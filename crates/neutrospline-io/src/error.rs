@@ -153,11 +153,15 @@ pub enum ReadError {
         #[source]
         error: io::Error,
     },
-    /// The path names a directory.
-    #[error("{path}: cannot read: it is a directory (give a .csv, .toml or .json file)")]
+    /// The path names a directory. Displays as `PATH: cannot read: it is a directory (give
+    /// EXPECTED)`, `EXPECTED` naming what the reader reads (`a .dxf file`).
+    #[error("{path}: cannot read: it is a directory (give {expected})")]
     IsDirectory {
         /// The path as given.
         path: String,
+        /// What the reader expected in its place: `a .csv, .toml or .json file` for models,
+        /// `a .csv file` for data and query points, `a .dxf file`, `a .svg file`.
+        expected: String,
     },
 }
 

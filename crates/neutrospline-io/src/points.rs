@@ -22,10 +22,9 @@
 use std::io::BufRead;
 use std::path::Path;
 
-use crate::csv::Records;
-use crate::parsed::parse_number;
+use crate::csv::{Columns, Table};
 use crate::read::open_file;
-use crate::{InputError, ReadError};
+use crate::ReadError;
 
 /// Query points read from a CSV file, with the line each was read from.
 #[derive(Debug, Clone, PartialEq)]
@@ -74,12 +73,40 @@ impl PointTable {
 /// The columns of a point table.
 const COLUMNS: [&str; 4] = ["x", "y", "z", "name"];
 
+impl PointTable {
+    /// A table of `file` without points yet.
+    pub(crate) fn new(file: &str, dimension: usize) -> PointTable {
+        PointTable {
+            file: file.to_owned(),
+            dimension,
+            positions: Vec::new(),
+            lines: Vec::new(),
+        }
+    }
+
+    /// The positions' first [`PointTable::dimension`] coordinates, point after point (the
+    /// layout of [`neutrospline::fit::fit_rows`]).
+    pub(crate) fn flat_positions(&self) -> Vec<f64> {
+        let d = self.dimension;
+        self.positions
+            .iter()
+            .flat_map(|p| p[..d].to_vec())
+            .collect()
+    }
+
+    /// Adds the point at `position` read from `line`.
+    pub(crate) fn push(&mut self, position: [f64; 3], line: usize) {
+        self.positions.push(position);
+        self.lines.push(line);
+    }
+}
+
 /// Reads a table of query points from a CSV file.
 ///
 /// # Errors
 /// The file cannot be read, or is invalid: see [`read_points`].
 pub fn load_points(path: impl AsRef<Path>) -> Result<PointTable, ReadError> {
-    let (file, shown) = open_file(path.as_ref())?;
+    let (file, shown) = open_file(path.as_ref(), "a .csv file of query points")?;
     read_points(&shown, std::io::BufReader::new(file))
 }
 
@@ -87,99 +114,36 @@ pub fn load_points(path: impl AsRef<Path>) -> Result<PointTable, ReadError> {
 /// errors.
 ///
 /// # Errors
-/// A located [`InputError`]: an empty file, a missing, unknown or repeated column, a row with
-/// the wrong number of cells, a value that is not a finite number, no points; or the stream
-/// cannot be read.
+/// A located [`InputError`](crate::InputError): an empty file, a missing, unknown or repeated
+/// column, a row with the wrong number of cells, a value that is not a finite number, no
+/// points; or the stream cannot be read.
 pub fn read_points(file: &str, reader: impl BufRead) -> Result<PointTable, ReadError> {
-    let error = |line: Option<usize>, field: Option<String>, message: String| -> ReadError {
-        InputError::new(file, line, field, message).into()
-    };
-    let mut records = Records::new(reader);
-    let mut next = || records.next_cells(file);
-    let Some((header_line, header)) = next()? else {
-        return Err(error(
-            None,
-            None,
-            "empty file (expected a header row such as `x,y` or `x,y,z`)".to_owned(),
-        ));
-    };
-    let header_line = Some(header_line);
-    // columns[k] = index into COLUMNS of the k-th cell.
-    let mut columns: Vec<usize> = Vec::with_capacity(header.len());
-    for (i, heading) in header.iter().enumerate() {
-        let Some(column) = COLUMNS
+    // A column is its index in COLUMNS.
+    let column = |heading: &str| {
+        COLUMNS
             .iter()
-            .position(|c| c.eq_ignore_ascii_case(heading.trim()))
-        else {
-            return Err(error(
-                header_line,
-                None,
-                format!(
-                    "unknown column `{heading}` (known columns of query points: x, y, z, name)"
-                ),
-            ));
-        };
-        if let Some(j) = columns.iter().position(|&c| c == column) {
-            return Err(error(
-                header_line,
-                None,
-                format!(
-                    "column {} `{heading}` repeats column {} `{}` (each column may appear once)",
-                    i + 1,
-                    j + 1,
-                    header.get(j).unwrap_or_default()
-                ),
-            ));
-        }
-        columns.push(column);
-    }
-    for (k, name) in COLUMNS[..2].iter().enumerate() {
-        if !columns.contains(&k) {
-            return Err(error(
-                header_line,
-                None,
-                format!("missing column `{name}` (every query point needs x and y)"),
-            ));
-        }
-    }
-    let dimension = if columns.contains(&2) { 3 } else { 2 };
-    let mut table = PointTable {
-        file: file.to_owned(),
-        dimension,
-        positions: Vec::new(),
-        lines: Vec::new(),
+            .position(|c| c.eq_ignore_ascii_case(heading))
+            .ok_or_else(|| {
+                format!("unknown column `{heading}` (known columns of query points: x, y, z, name)")
+            })
     };
-    while let Some((line, record)) = next()? {
-        let at = Some(line);
-        if record.len() != columns.len() {
-            return Err(error(
-                at,
-                None,
-                format!(
-                    "the row has {} cells but the header has {} (every row needs one cell per \
-                     column)",
-                    record.len(),
-                    columns.len()
-                ),
-            ));
-        }
-        let mut position = [0.0; 3];
-        for ((&column, cell), heading) in columns.iter().zip(record.iter()).zip(header.iter()) {
-            if column == 3 {
-                continue;
-            }
-            position[column] = parse_number(cell)
-                .map_err(|m| error(at, Some(format!("column `{heading}`")), m))?;
-        }
-        table.positions.push(position);
-        table.lines.push(line);
+    let columns = Columns {
+        example: "`x,y` or `x,y,z`",
+        column: &column,
+        repeat_rule: "each column may appear once",
+        rows: "query points",
+    };
+    let mut rows = Table::open(file, reader, &columns)?;
+    for (k, name) in COLUMNS[..2].iter().enumerate() {
+        rows.require(k, name, "every query point needs x and y")?;
     }
-    if table.is_empty() {
-        return Err(error(
-            None,
-            None,
-            "no query points (the header row is not followed by any data row)".to_owned(),
-        ));
+    let mut table = PointTable::new(file, if rows.has(2) { 3 } else { 2 });
+    while let Some(row) = rows.next_row()? {
+        let mut position = [0.0; 3];
+        for cell in row.cells().filter(|cell| cell.column != 3) {
+            position[cell.column] = row.number(&cell)?;
+        }
+        table.push(position, row.line());
     }
     Ok(table)
 }

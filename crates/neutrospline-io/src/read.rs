@@ -69,23 +69,27 @@ pub fn load(path: impl AsRef<Path>, options: &ReadOptions) -> Result<Model, Read
     let format = Format::from_path(path)?;
     options.check(format)?;
     if format == Format::Csv {
-        let (file, shown) = open_file(path)?;
+        let (file, shown) = open_file(path, MODEL_FILE)?;
         return read_csv(&shown, BufReader::new(file), options);
     }
-    let (shown, bytes) = read_whole(path, options.limits.max_file_size)?;
+    let (shown, bytes) = read_whole(path, options.limits.max_file_size, MODEL_FILE)?;
     parse(&shown, format, &bytes, options)
 }
+
+/// What [`load`] reads, for the message of a directory in its place.
+const MODEL_FILE: &str = "a .csv, .toml or .json file";
 
 /// Reads the file at `path` whole, at most `limit` bytes: refused before reading when its size
 /// is larger, and while reading when it grows (a FIFO, a file being written; one byte more
 /// than the limit is read at most). Returns the path as messages show it and the bytes; the
-/// one way the model reader and the drawing importers read a file whole.
+/// one way the model reader and the drawing importers read a file whole. `expected` names
+/// what the caller reads (`a .dxf file`), for the message of a directory.
 ///
 /// # Errors
-/// [`ReadError::Io`], [`ReadError::IsDirectory`], and a located [`ReadError::Input`] naming
-/// the limit for a file larger than `limit`.
-pub fn read_whole(path: &Path, limit: u64) -> Result<(String, Vec<u8>), ReadError> {
-    let (file, shown) = open_file(path)?;
+/// [`ReadError::Io`], [`ReadError::IsDirectory`] (naming `expected`), and a located
+/// [`ReadError::Input`] naming the limit for a file larger than `limit`.
+pub fn read_whole(path: &Path, limit: u64, expected: &str) -> Result<(String, Vec<u8>), ReadError> {
+    let (file, shown) = open_file(path, expected)?;
     let cannot = |error: std::io::Error| ReadError::Io {
         path: shown.clone(),
         error,
@@ -105,8 +109,9 @@ pub fn read_whole(path: &Path, limit: u64) -> Result<(String, Vec<u8>), ReadErro
     Ok((shown, bytes))
 }
 
-/// Opens `path` for reading, refusing a directory: the file and the path as messages show it.
-pub(crate) fn open_file(path: &Path) -> Result<(std::fs::File, String), ReadError> {
+/// Opens `path` for reading, refusing a directory (the message naming the `expected` file):
+/// the file and the path as messages show it.
+pub(crate) fn open_file(path: &Path, expected: &str) -> Result<(std::fs::File, String), ReadError> {
     let shown = path.display().to_string();
     let cannot = |error: std::io::Error| ReadError::Io {
         path: shown.clone(),
@@ -114,7 +119,10 @@ pub(crate) fn open_file(path: &Path) -> Result<(std::fs::File, String), ReadErro
     };
     let file = std::fs::File::open(path).map_err(cannot)?;
     if file.metadata().map_err(cannot)?.is_dir() {
-        return Err(ReadError::IsDirectory { path: shown });
+        return Err(ReadError::IsDirectory {
+            path: shown,
+            expected: expected.to_owned(),
+        });
     }
     Ok((file, shown))
 }

@@ -562,6 +562,50 @@ fn hostile_directory_and_unreadable_paths() {
     assert_eq!(std::fs::read(dir.path().join("out.csv")).unwrap(), OLD);
 }
 
+/// Issue 23: `import DIR.dxf` advised "give a .csv, .toml or .json file". Every command that
+/// reads a file names what it reads when given a directory, exits 1 and writes nothing.
+#[test]
+fn hostile_directory_in_place_of_a_drawing_data_or_points() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("m.csv"),
+        format!("{HEADER}0,0,0.5,0.1,0.1\n1,1,0.5,0.1,0.1\n"),
+    )
+    .unwrap();
+    for name in ["d.dxf", "d.svg", "d.csv"] {
+        std::fs::create_dir(dir.path().join(name)).unwrap();
+    }
+    for (args, message) in [
+        (
+            &["import", "d.dxf", "-o", "out.toml"][..],
+            "error: d.dxf: cannot read: it is a directory (give a .dxf file)\n",
+        ),
+        (
+            &["import", "d.svg", "-o", "out.toml"],
+            "error: d.svg: cannot read: it is a directory (give a .svg file)\n",
+        ),
+        (
+            &["fit", "d.csv", "-o", "out.toml"],
+            "error: d.csv: cannot read: it is a directory (give a .csv file of data points)\n",
+        ),
+        (
+            &["query", "m.csv", "d.csv", "-o", "out.csv"],
+            "error: d.csv: cannot read: it is a directory (give a .csv file of query points)\n",
+        ),
+    ] {
+        let out = run(dir.path(), args);
+        assert_eq!(
+            (
+                out.status.code(),
+                String::from_utf8_lossy(&out.stderr).as_ref()
+            ),
+            (Some(1), message),
+            "{args:?}"
+        );
+        assert!(!dir.path().join(args[args.len() - 1]).exists(), "{args:?}");
+    }
+}
+
 #[test]
 fn hostile_unwritable_output() {
     let dir = tempfile::tempdir().unwrap();

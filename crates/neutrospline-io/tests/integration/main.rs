@@ -3,6 +3,7 @@
 //! (`FileFailurePersistence::SourceParallel`, the default: the sibling of the directory holding
 //! `main.rs`).
 
+mod directories;
 mod roundtrip;
 mod schema;
 mod write;
