@@ -1,6 +1,6 @@
 //! [`Model`]: what a model file holds once validated, in any format.
 
-use neutrospline::{DegreeError, Degrees, FuzzyError, Membership, Spread};
+use neutrospline::{DegreeError, Degrees, Membership, Spread};
 
 use crate::settings::{Kind, KnotRule, KnotSpec};
 use crate::{ReadOptions, Shape};
@@ -161,31 +161,9 @@ impl Model {
     /// [`ModelError::Spread`]: not one spread per control point, a spread that is negative
     /// or not finite, a `z` spread on a planar curve, or a non-zero spread on a surface.
     pub fn with_spreads(mut self, spreads: Vec<Spread<3>>) -> Result<Model, ModelError> {
-        let points = self.shape.control_count();
-        if spreads.len() != points {
-            return Err(ModelError::Spread(
-                FuzzyError::SpreadCount {
-                    spreads: spreads.len(),
-                    points,
-                }
-                .to_string(),
-            ));
-        }
+        Spread::check_all(&spreads, self.shape.control_count())
+            .map_err(|e| ModelError::Spread(e.to_string()))?;
         for (index, spread) in spreads.iter().enumerate() {
-            spread.check().map_err(|e| {
-                ModelError::Spread(match e {
-                    FuzzyError::Spread {
-                        axis, side, value, ..
-                    } => FuzzyError::Spread {
-                        index,
-                        axis,
-                        side,
-                        value,
-                    }
-                    .to_string(),
-                    other => other.to_string(),
-                })
-            })?;
             let bad = match &self.shape {
                 Shape::Surface(_) => !spread.is_zero(),
                 Shape::Curve(c) => {

@@ -22,6 +22,21 @@ pub struct Meta {
     pub point_names: Option<Vec<Option<String>>>,
 }
 
+impl Meta {
+    /// The names given to a constructor.
+    pub fn new(
+        name: Option<String>,
+        description: Option<String>,
+        point_names: Option<Vec<Option<String>>>,
+    ) -> Meta {
+        Meta {
+            name,
+            description,
+            point_names,
+        }
+    }
+}
+
 /// Parses a membership rule name (`neutrosophic`, `intuitionistic`, `fuzzy`).
 pub fn membership(name: &str) -> PyResult<Membership> {
     Membership::from_str(name).map_err(|e| invalid_at("membership", e))

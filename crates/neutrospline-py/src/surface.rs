@@ -252,11 +252,7 @@ fn spline_settings<'a, 'py>(
 
 /// The model's names of a constructor (surfaces have no point names).
 fn names(name: Option<String>, description: Option<String>) -> Meta {
-    Meta {
-        name,
-        description,
-        point_names: None,
-    }
+    Meta::new(name, description, None)
 }
 
 #[pymethods]

@@ -23,6 +23,12 @@ def stub_tree():
             classes[node.name] = {
                 item.name: item for item in node.body if isinstance(item, ast.FunctionDef)
             }
+            # Class attributes (`bezier: ClassVar[Type["BezierSurface"]]`).
+            classes[node.name].update(
+                (item.target.id, item)
+                for item in node.body
+                if isinstance(item, ast.AnnAssign) and isinstance(item.target, ast.Name)
+            )
         elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name):
             names.add(node.target.id)
     return functions, classes, names
@@ -80,6 +86,13 @@ def test_every_method_is_in_the_stub():
             if name.startswith("__") and name not in ("__call__", "__len__", "__eq__", "__reduce__"):
                 continue
             assert name in stub, f"{class_name}.{name}"
+            if isinstance(stub[name], ast.AnnAssign):
+                # An alias of a class: the stub names that class.
+                assert isinstance(member, type), f"{class_name}.{name}"
+                assert f'"{member.__name__}"' in ast.unparse(stub[name].annotation).replace("'", '"'), (
+                    f"{class_name}.{name}"
+                )
+                continue
             if callable(member) and not isinstance(member, (staticmethod, classmethod)):
                 try:
                     runtime = runtime_parameters(member)

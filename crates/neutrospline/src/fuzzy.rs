@@ -194,26 +194,37 @@ fn check_spreads<const D: usize>(
     curve: &AnyCurve<D>,
     spreads: &[Spread<D>],
 ) -> Result<(), FuzzyError> {
-    if spreads.len() != curve.len() {
-        return Err(FuzzyError::SpreadCount {
-            spreads: spreads.len(),
-            points: curve.len(),
-        });
+    Spread::check_all(spreads, curve.len())
+}
+
+impl<const D: usize> Spread<D> {
+    /// Checks the spreads of `points` control points: one per point, each finite and >= 0.
+    ///
+    /// # Errors
+    /// [`FuzzyError::SpreadCount`]; [`FuzzyError::Spread`] for the first bad spread, with its
+    /// control point's index.
+    pub fn check_all(spreads: &[Spread<D>], points: usize) -> Result<(), FuzzyError> {
+        if spreads.len() != points {
+            return Err(FuzzyError::SpreadCount {
+                spreads: spreads.len(),
+                points,
+            });
+        }
+        for (index, spread) in spreads.iter().enumerate() {
+            spread.check().map_err(|e| match e {
+                FuzzyError::Spread {
+                    axis, side, value, ..
+                } => FuzzyError::Spread {
+                    index,
+                    axis,
+                    side,
+                    value,
+                },
+                other => other,
+            })?;
+        }
+        Ok(())
     }
-    for (index, spread) in spreads.iter().enumerate() {
-        spread.check().map_err(|e| match e {
-            FuzzyError::Spread {
-                axis, side, value, ..
-            } => FuzzyError::Spread {
-                index,
-                axis,
-                side,
-                value,
-            },
-            other => other,
-        })?;
-    }
-    Ok(())
 }
 
 /// The curve of the same kind, degree, knots and weights as `curve`, with control point `i`

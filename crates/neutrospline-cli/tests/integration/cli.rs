@@ -1,7 +1,7 @@
 //! End-to-end tests of the `neutrospline` binary: good and bad files written into a temporary
 //! directory, exact messages on stderr, exit codes 0 / 1 / 2, and no panic for any input.
 
-use std::io::{Read, Write};
+use std::io::Read;
 use std::path::Path;
 use std::process::{Command, Stdio};
 
@@ -229,7 +229,10 @@ fn eval_reads_csv_from_stdin() {
 #[test]
 fn eval_membership_rules_on_csv() {
     let dir = dir_with(&[
-        ("ifs.csv", b"x,y,truth,falsity\n0,0,0.5,0.25\n1,1,0.2,0.7\n"),
+        (
+            "ifs.csv",
+            b"x,y,truth,falsity\n0,0,0.5,0.25\n1,1,0.2,0.7\n".as_slice(),
+        ),
         ("fuzzy.csv", b"x,y,truth\n0,0,0.5\n1,1,1\n"),
     ]);
     let out = run_in(
@@ -459,7 +462,7 @@ fn eval_unsupported_extension_exits_2() {
 
 #[test]
 fn eval_missing_file_exits_1() {
-    let dir = dir_with(&[]);
+    let dir = dir_with::<&str>(&[]);
     let out = run_in(dir.path(), &["eval", "nope.csv"], None);
     assert_eq!(out.code, 1);
     assert!(

@@ -4,8 +4,6 @@
 //! sympy reference of `scripts/reference/make_higher_derivative_reference.py`, the first
 //! derivative unchanged, and the usage errors.
 
-use std::process::{Command, Stdio};
-
 use crate::util::examples_dir;
 
 /// Runs the binary in the examples directory.

@@ -3,12 +3,11 @@
 //! exit status and leaves no output file.
 
 use std::path::Path;
-use std::process::{Command, Stdio};
 
 use neutrospline_exchange::{ColorBy, ExportFormat, ExportOptions};
 use neutrospline_io::{load, ReadOptions};
 
-use crate::util::{example, Output, BIN};
+use crate::util::{example, Output};
 
 /// Runs the binary in `dir`, with the file `stdin` as standard input if given.
 fn run_in(dir: &Path, args: &[&str], stdin: Option<&Path>) -> Output {

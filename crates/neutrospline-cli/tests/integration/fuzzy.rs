@@ -2,10 +2,7 @@
 //! headers, values against the closed form), `check`'s spread ranges, and the messages for
 //! bad spreads and bad alphas.
 
-use std::path::Path;
-use std::process::Command;
-
-use crate::util::{examples_dir, run, BIN};
+use crate::util::{examples_dir, run};
 
 /// A temporary directory holding the file `name`.
 fn dir_with(name: &str, text: &str) -> tempfile::TempDir {

@@ -4,11 +4,10 @@
 //! exit status and writes no file.
 
 use std::path::Path;
-use std::process::Command;
 
 use neutrospline_io::{load, to_toml_string, ReadOptions};
 
-use crate::util::{example, run as run_in, BIN};
+use crate::util::{example, run as run_in};
 
 /// The names of the files in `dir`, sorted.
 fn files(dir: &Path) -> Vec<String> {

@@ -3,7 +3,15 @@
 //! circle), curves meeting at their ends, self-intersections when B is A, overlaps refused
 //! with their parameters, and the errors for other shapes.
 
-use crate::util::{dir_with, examples_dir, ok, run};
+use crate::util::{dir_with_examples, ok, run};
+
+/// A temporary directory with the given files and copies of the examples used here.
+fn dir_with(files: &[(&str, &str)]) -> tempfile::TempDir {
+    dir_with_examples(
+        &["nurbs-circle.toml", "helix3d.toml", "surface.toml"],
+        files,
+    )
+}
 
 const HEADER: &str =
     "index,t_a,t_b,x,y,truth_a,indeterminacy_a,falsity_a,truth_b,indeterminacy_b,falsity_b,contact";

@@ -1098,7 +1098,7 @@ fn surface_rows_stream_and_output_file_stays_atomic() {
     assert!(first.starts_with(b"u,v,x,y,z,truth,indeterminacy,falsity,nx,ny,nz\n0,0,0,0,0,"));
 
     let surface = std::fs::read_to_string(examples_dir().join("surface.toml")).unwrap();
-    let dir = dir_with(&[("s.toml", &surface), ("out.csv", "old\n")]);
+    let dir = dir_with(&[("s.toml", surface.as_str()), ("out.csv", "old\n")]);
     let out = run_in(
         dir.path(),
         &["eval", "s.toml", "--at", "0:0,2:0", "-o", "out.csv"],

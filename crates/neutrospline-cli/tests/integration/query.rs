@@ -3,7 +3,20 @@
 //! `examples/nurbs-circle.toml`, the quarter cylinder of `examples/nurbs-surface.json`), JSON
 //! output, the atomic `-o`, and located errors with their exit codes.
 
-use crate::util::{dir_with, examples_dir, ok, run};
+use crate::util::{dir_with_examples, ok, run};
+
+/// A temporary directory with the given files and copies of the examples used here.
+fn dir_with(files: &[(&str, &str)]) -> tempfile::TempDir {
+    dir_with_examples(
+        &[
+            "example1.toml",
+            "nurbs-circle.toml",
+            "helix3d.toml",
+            "nurbs-surface.json",
+        ],
+        files,
+    )
+}
 
 fn rows(table: &str) -> Vec<Vec<f64>> {
     table

@@ -80,7 +80,18 @@ pub fn ok(dir: &Path, args: &[&str]) -> String {
 
 /// A temporary directory holding the given files (name, contents).
 pub fn dir_with<C: AsRef<[u8]>>(files: &[(&str, C)]) -> tempfile::TempDir {
+    dir_with_examples(&[], files)
+}
+
+/// A temporary directory holding copies of the named files of `examples/` and the given files.
+pub fn dir_with_examples<C: AsRef<[u8]>>(
+    examples: &[&str],
+    files: &[(&str, C)],
+) -> tempfile::TempDir {
     let dir = tempfile::tempdir().expect("temp dir");
+    for name in examples {
+        std::fs::copy(example(name), dir.path().join(name)).expect("example copied");
+    }
     for (name, contents) in files {
         std::fs::write(dir.path().join(name), contents).expect("file written");
     }

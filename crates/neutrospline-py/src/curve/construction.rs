@@ -131,11 +131,7 @@ impl Bezier {
             positions,
             degrees,
             membership,
-            Meta {
-                name,
-                description,
-                point_names,
-            },
+            Meta::new(name, description, point_names),
         )
         .build(CurveKind::Bezier)?;
         Ok(curve.initializer().add_subclass(Bezier))
@@ -206,11 +202,7 @@ impl BSpline {
                 positions,
                 degrees,
                 membership,
-                Meta {
-                    name,
-                    description,
-                    point_names,
-                },
+                Meta::new(name, description, point_names),
             )
         }
         .build(CurveKind::BSpline)?;
@@ -244,11 +236,7 @@ impl Nurbs {
                 positions,
                 degrees,
                 membership,
-                Meta {
-                    name,
-                    description,
-                    point_names,
-                },
+                Meta::new(name, description, point_names),
             )
         }
         .build(CurveKind::Nurbs)?;
