@@ -4,7 +4,8 @@
 
 use std::fmt;
 
-use neutrospline_io::{Model, ReadError, ReadOptions};
+use neutrospline::Membership;
+use neutrospline_io::{DataTable, Model, ReadError, ReadOptions};
 
 use crate::commands::options::ModelArgs;
 
@@ -62,4 +63,17 @@ pub fn read_model(file: &str, args: &ModelArgs) -> anyhow::Result<Model> {
         // which `main` would print a second time.
         e => anyhow::Error::msg(e.to_string()),
     })
+}
+
+/// Reads a data file (or standard input for `-`).
+///
+/// # Errors
+/// The located error of the io crate.
+pub fn read_data(file: &str, membership: Membership) -> anyhow::Result<DataTable> {
+    let result = if file == "-" {
+        neutrospline_io::read_data(STDIN_NAME, std::io::stdin().lock(), membership)
+    } else {
+        neutrospline_io::load_data(file, membership)
+    };
+    result.map_err(|e| anyhow::Error::msg(e.to_string()))
 }

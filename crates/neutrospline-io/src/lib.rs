@@ -63,6 +63,7 @@ mod points;
 mod read;
 mod settings;
 mod shape;
+mod text;
 mod tree;
 mod walker;
 mod write;

@@ -1,11 +1,11 @@
 //! What a file holds once parsed and before the core builds its shape: the neutral form shared
 //! by every format ([`Parsed`]), with the origin (line, field) of everything, so that an error
-//! found later (a knot, a weight) can still be located. Also the control-point fields and the
-//! small text helpers the readers share.
+//! found later (a knot, a weight) can still be located. Also the control-point fields.
 
 use neutrospline::{DegreeError, Degrees, Membership, Side, Spread};
 
 use crate::settings::{resolve, Kind, Structure};
+pub(crate) use crate::text::{line_of, not_finite_message, parse_number, strip_bom, Origin};
 use crate::InputError;
 
 /// The fields of a control point: CSV columns and model keys.
@@ -242,15 +242,6 @@ pub(crate) struct PointRecord {
     pub(crate) spread: Spread<3>,
 }
 
-/// Where something was read: the line and the field path of a point.
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
-pub(crate) struct Origin {
-    /// Physical 1-based line, when known.
-    pub(crate) line: Option<usize>,
-    /// Field path such as `control_points[2]`, for models.
-    pub(crate) field: Option<String>,
-}
-
 /// A model file in the neutral form shared by every format, before the shape is built.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Parsed {
@@ -305,38 +296,6 @@ pub(crate) fn missing_degree(
         Err(e @ DegreeError::Missing { .. }) => Some(e),
         _ => None,
     }
-}
-
-/// Parses a number written in a file; NaN and infinities are rejected (message only).
-pub(crate) fn parse_number(text: &str) -> Result<f64, String> {
-    match text.parse::<f64>() {
-        Ok(v) if v.is_finite() => Ok(v),
-        Ok(_) => Err(format!(
-            "value `{text}` is not a finite number (NaN and infinities are not allowed)"
-        )),
-        Err(_) => Err(format!("value `{text}` is not a number")),
-    }
-}
-
-/// Message for a non-finite number that arrived already parsed (TOML `nan`, `inf`).
-pub(crate) fn not_finite_message(value: f64) -> String {
-    format!("value {value} is not a finite number (NaN and infinities are not allowed)")
-}
-
-/// The 1-based line of byte `offset` in `text`.
-pub(crate) fn line_of(text: &[u8], offset: usize) -> usize {
-    let end = offset.min(text.len());
-    text[..end].iter().filter(|&&b| b == b'\n').count() + 1
-}
-
-/// Removes a leading UTF-8 byte order mark.
-pub(crate) fn strip_bom(bytes: &[u8]) -> &[u8] {
-    bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes)
-}
-
-/// `a, b, c`.
-pub(crate) fn join<'a>(items: impl IntoIterator<Item = &'a str>) -> String {
-    items.into_iter().collect::<Vec<_>>().join(", ")
 }
 
 #[cfg(test)]

@@ -6,7 +6,7 @@ use std::fmt;
 use neutrospline::{CurveKind, SurfaceKind};
 
 use crate::number::format_number as number;
-use crate::parsed::{join, parse_number, Origin};
+use crate::text::{join, parse_number, Origin};
 
 /// The kinds of shape a file may declare with `kind = "..."` (or `--kind`): the core's curve
 /// and surface kinds.

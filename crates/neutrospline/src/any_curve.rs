@@ -1,9 +1,9 @@
 //! A curve of any kind, for code that handles Bézier, B-spline and NURBS curves alike.
 
-use core::fmt;
 use core::ops::Range;
 
 use crate::bezier::Bezier;
+pub use crate::curve::CurveKind;
 use crate::curve::{
     Bounded, ControlPolygon, CurveError, Derivative, Elevate, EvalError, Evaluate, Split,
 };
@@ -12,34 +12,6 @@ use crate::derivative::CurveDerivative;
 use crate::knots::KnotVector;
 use crate::point::{Affine, BoundingBox, ControlPoint, CurvePoint};
 use crate::spline_curve::{BSpline, Nurbs};
-
-/// The kinds of curve the library models.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum CurveKind {
-    /// [`Bezier`].
-    Bezier,
-    /// [`BSpline`].
-    BSpline,
-    /// [`Nurbs`].
-    Nurbs,
-}
-
-impl CurveKind {
-    /// The name used in files: `bezier`, `bspline` or `nurbs`.
-    pub const fn name(self) -> &'static str {
-        match self {
-            CurveKind::Bezier => "bezier",
-            CurveKind::BSpline => "bspline",
-            CurveKind::Nurbs => "nurbs",
-        }
-    }
-}
-
-impl fmt::Display for CurveKind {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
 
 /// A curve of any kind; each method forwards to the kind's own.
 ///

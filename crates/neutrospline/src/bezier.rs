@@ -12,7 +12,6 @@ use crate::derivative::CurveDerivative;
 use crate::layout::{lift_degree, pack_points, point_from_row, stride};
 use crate::point::{Affine, BoundingBox, ControlPoint, CurvePoint};
 use crate::spline::Spline;
-use crate::spline_curve::BSpline;
 
 /// A neutrosophic Bézier curve of degree `n` in `D` dimensions (`D` = 2 or 3).
 ///
@@ -95,20 +94,6 @@ impl<const D: usize> Bezier<D> {
     /// [`CurveError::PositionNotFinite`] if a mapped position overflows.
     pub fn transform(&self, map: &Affine<D>) -> Result<Bezier<D>, CurveError> {
         Bezier::new(map.apply_to_points(self.control_points()))
-    }
-
-    /// The same curve as a clamped B-spline: the same control points over `n + 1` knots 0
-    /// then `n + 1` knots 1 (one span on \[0, 1\]).
-    ///
-    /// ```
-    /// use neutrospline::Evaluate;
-    /// let spline = neutrospline::example1().to_bspline();
-    /// assert_eq!(spline.knots().knots(), &[0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0]);
-    /// assert_eq!(spline.evaluate(0.5)?.position, [4.625, 4.0]);
-    /// # Ok::<(), neutrospline::EvalError>(())
-    /// ```
-    pub fn to_bspline(&self) -> BSpline<D> {
-        BSpline::from_spline(Spline::from_bezier(&self.packed, None))
     }
 }
 

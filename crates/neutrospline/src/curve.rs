@@ -6,9 +6,38 @@
 //! ([`Derivative::Output`] is evaluable and differentiable), so generic code can take the
 //! n-th derivative of any curve. See `docs/model.md` for the mathematics.
 
+use core::fmt;
 use core::ops::Range;
 
 use crate::point::{BoundingBox, ControlPoint};
+
+/// The kinds of curve the library models.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CurveKind {
+    /// [`Bezier`](crate::Bezier).
+    Bezier,
+    /// [`BSpline`](crate::BSpline).
+    BSpline,
+    /// [`Nurbs`](crate::Nurbs).
+    Nurbs,
+}
+
+impl CurveKind {
+    /// The name used in files: `bezier`, `bspline` or `nurbs`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            CurveKind::Bezier => "bezier",
+            CurveKind::BSpline => "bspline",
+            CurveKind::Nurbs => "nurbs",
+        }
+    }
+}
+
+impl fmt::Display for CurveKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
 
 /// Why a curve cannot be built from the given control data.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]

@@ -4,8 +4,8 @@
 //! dimension from data never match on it for a job the core can do (docs/architecture.md,
 //! "one definition of every option").
 //!
-//! Code generic over the dimension reaches the value inside with [`on_dimension!`] (one body
-//! for both dimensions) and builds a new one with [`map_dimension!`].
+//! Code generic over the dimension reaches the value inside with [`on_dimension!`](crate::on_dimension) (one body
+//! for both dimensions) and builds a new one with [`map_dimension!`](crate::map_dimension).
 
 use core::ops::Range;
 
@@ -22,7 +22,7 @@ use crate::point::{CurvePoint, DerivativeValue, Interval};
 /// A value for the plane (`P`, 2-D) or for space (`S`, 3-D): the one place where the
 /// dimension, known only at run time, becomes a type. [`DynCurve`] is the curve of either
 /// dimension; front ends hold their own per-dimension state the same way (a prepared batch
-/// evaluator, a derivative) and reach it with [`on_dimension!`].
+/// evaluator, a derivative) and reach it with [`on_dimension!`](crate::on_dimension).
 ///
 /// ```
 /// use neutrospline::{on_dimension, Dimensional};
@@ -62,7 +62,7 @@ macro_rules! on_dimension {
 }
 
 /// Builds a [`Dimensional`] of the same dimension as `$value` from `$body`, evaluated with
-/// `$bind` bound to the value inside (as [`on_dimension!`] does).
+/// `$bind` bound to the value inside (as [`on_dimension!`](crate::on_dimension) does).
 ///
 /// ```
 /// use neutrospline::{map_dimension, AnyCurve, Derivative, DynCurve, DynDerivative};

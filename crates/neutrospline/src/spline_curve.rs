@@ -7,9 +7,9 @@ use core::hash::Hash;
 use core::marker::PhantomData;
 use core::ops::Range;
 
-use crate::any_curve::CurveKind;
 use crate::bernstein::Packed;
 use crate::bezier::Bezier;
+use crate::curve::CurveKind;
 use crate::curve::{
     check_parameter, Bounded, ControlPolygon, CurveError, Derivative, Elevate, EvalError, Evaluate,
     Split, BOUNDS_TOLERANCE,
@@ -444,6 +444,22 @@ impl<const D: usize, W: Weighting> Bounded<D> for SplineCurve<D, W> {
 
     fn control_bounding_box(&self) -> BoundingBox<D> {
         BoundingBox::from_channel_ranges(|c| self.spline.channel_range(c))
+    }
+}
+
+impl<const D: usize> Bezier<D> {
+    /// The same curve as a clamped B-spline: the same control points over `n + 1` knots 0
+    /// then `n + 1` knots 1 (one span on \[0, 1\]).
+    ///
+    /// ```
+    /// use neutrospline::Evaluate;
+    /// let spline = neutrospline::example1().to_bspline();
+    /// assert_eq!(spline.knots().knots(), &[0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0]);
+    /// assert_eq!(spline.evaluate(0.5)?.position, [4.625, 4.0]);
+    /// # Ok::<(), neutrospline::EvalError>(())
+    /// ```
+    pub fn to_bspline(&self) -> BSpline<D> {
+        BSpline::from_spline(Spline::from_bezier(self.packed(), None))
     }
 }
 

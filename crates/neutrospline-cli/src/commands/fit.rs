@@ -6,12 +6,12 @@ use std::path::PathBuf;
 
 use neutrospline::fit::{channel_names, DynFit, FitReport, FitRequest};
 use neutrospline::options::{OptionSet, OptionValue};
-use neutrospline::{DegreeKind, Membership};
+use neutrospline::DegreeKind;
 use neutrospline_io::{DataTable, Format, Model};
 use neutrospline_plot::{DataOverlay, FigureRequest, PlotModel, PlotOptions, View};
 
 use crate::commands::plot::{write_figure, FigureFormat};
-use crate::input::{UsageError, STDIN_NAME};
+use crate::input::{read_data, UsageError};
 use crate::output::{self, number};
 use crate::request::RequestArgs;
 
@@ -145,20 +145,6 @@ pub fn run(args: &FitArgs) -> anyhow::Result<()> {
     }
     Ok(())
 }
-
-/// Reads a data file (or standard input for `-`).
-///
-/// # Errors
-/// The located error of the io crate.
-pub fn read_data(file: &str, membership: Membership) -> anyhow::Result<DataTable> {
-    let result = if file == "-" {
-        neutrospline_io::read_data(STDIN_NAME, std::io::stdin().lock(), membership)
-    } else {
-        neutrospline_io::load_data(file, membership)
-    };
-    result.map_err(|e| anyhow::Error::msg(e.to_string()))
-}
-
 /// The `data` view's model: the fitted curve, the data coloured by `color_by`, whiskers to
 /// the curve at the fitted parameters.
 fn data_plot(

@@ -6,8 +6,8 @@ use neutrospline_plot::{
     render_png, render_svg, DataOverlay, FigureRequest, PlotModel, PlotOptions, View,
 };
 
-use crate::commands::fit::read_data;
 use crate::commands::options::ModelArgs;
+use crate::input::read_data;
 use crate::input::{self, UsageError};
 use crate::output;
 use crate::request::RequestArgs;

@@ -10,6 +10,7 @@ mod across_kinds;
 mod batch_properties;
 mod bspline_properties;
 mod curve_batch_properties;
+mod degree_zero;
 mod fit_properties;
 mod fit_reference;
 mod fuzzy_properties;
