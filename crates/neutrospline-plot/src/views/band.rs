@@ -22,7 +22,7 @@ use crate::layout::{Entry, Legend, LegendPlace, Swatch};
 use crate::model::Mesh;
 use crate::point::Pt;
 use crate::style::{Color, Style};
-use crate::theme::{self, Marker, Theme};
+use crate::theme::{self, Theme};
 
 use super::figure::Figure;
 use super::{control_polygon_entry, draw_control_polygon, draw_crisp_and_controls};

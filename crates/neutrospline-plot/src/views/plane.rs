@@ -18,8 +18,8 @@ use crate::drawing::{Drawing, Painter};
 use crate::layout::{ColorBar, Entry, Legend, LegendPlace, Rect, Swatch};
 use crate::model::Mesh;
 use crate::panels;
-use crate::style::{Color, Style};
-use crate::theme::{self, Marker, Theme};
+use crate::style::Style;
+use crate::theme::{self, Theme};
 
 use super::figure::Figure;
 use super::{control_polygon_entry, draw_control_polygon, draw_crisp_and_controls};
