@@ -107,3 +107,57 @@ pub fn install(limits: Limits) {
 pub fn current() -> Limits {
     LIMITS.get().copied().unwrap_or_default()
 }
+
+#[cfg(test)]
+mod tests {
+    use clap::{Args, Parser};
+
+    use super::*;
+
+    #[derive(Parser)]
+    struct Cli {
+        #[command(flatten)]
+        limits: LimitArgs,
+    }
+
+    #[test]
+    fn limits_options_set_their_own_fields() {
+        let cli = Cli::try_parse_from([
+            "neutrospline",
+            "--max-control-points",
+            "3",
+            "--max-samples",
+            "5",
+            "--max-file-size",
+            "7",
+        ])
+        .unwrap();
+        let expected = Limits {
+            max_control_points: 3,
+            max_samples: 5,
+            max_file_size: 7,
+        };
+        assert_eq!(cli.limits.limits(), expected);
+        for option in ["--max-control-points", "--max-samples", "--max-file-size"] {
+            assert!(
+                Cli::try_parse_from(["neutrospline", option, "0"]).is_err(),
+                "{option} 0"
+            );
+        }
+    }
+
+    #[test]
+    fn limits_file_size_help_names_every_file_read_whole() {
+        // The files `neutrospline_io::read_whole` reads (its message names the same four).
+        let command = LimitArgs::augment_args(clap::Command::new("neutrospline"));
+        let option = command
+            .get_arguments()
+            .find(|a| a.get_id() == "max_file_size")
+            .unwrap();
+        let help = option.get_help().unwrap().to_string();
+        for format in ["TOML", "JSON", "DXF", "SVG"] {
+            assert!(help.contains(format), "{format} not in {help:?}");
+        }
+        assert!(help.contains("CSV files are streamed"), "{help:?}");
+    }
+}
