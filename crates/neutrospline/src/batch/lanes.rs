@@ -50,14 +50,17 @@ pub(crate) trait Lanes: Copy {
     fn store_partial(self, dst: &mut [f64], v: Self::V);
     /// `dst` (a multiple of `LANES` long) as a slice of vectors, without copying.
     fn as_vectors_mut(self, dst: &mut [f64]) -> &mut [Self::V];
-    /// Runs [`kernel::fixed`] where this lane type has the kernels compiled per degree;
-    /// `false` when it has not or they do not serve the degree.
+    /// Runs [`kernel::fixed`] where this lane type has the kernels compiled per degree (by
+    /// default it has); `false` when it has not or they do not serve the degree.
+    #[inline(always)]
     fn fixed<P: Params, const CH: usize>(
         self,
         coeffs: &Coeffs,
         params: &P,
         out: &mut [&mut [f64]; CH],
-    ) -> bool;
+    ) -> bool {
+        kernel::fixed(self, coeffs, params, out)
+    }
 }
 
 /// Four lanes as an array; the portable path, vectorised by the compiler for the baseline
@@ -153,23 +156,16 @@ impl Lanes for Portable {
     /// On x86-64 with the `simd` feature this path only serves processors without AVX2 (before
     /// 2013), and goes without the per-degree kernels (Bernstein weights in a scratch buffer
     /// instead, about half the speed from degree 4 to 15); elsewhere it is the main path and
-    /// has them.
+    /// has them (the trait's default).
+    #[cfg(all(feature = "simd", target_arch = "x86_64"))]
     #[inline(always)]
     fn fixed<Q: Params, const CH: usize>(
         self,
-        coeffs: &Coeffs,
-        params: &Q,
-        out: &mut [&mut [f64]; CH],
+        _: &Coeffs,
+        _: &Q,
+        _: &mut [&mut [f64]; CH],
     ) -> bool {
-        #[cfg(all(feature = "simd", target_arch = "x86_64"))]
-        {
-            let _ = (coeffs, params, out);
-            false
-        }
-        #[cfg(not(all(feature = "simd", target_arch = "x86_64")))]
-        {
-            kernel::fixed(self, coeffs, params, out)
-        }
+        false
     }
 }
 
@@ -230,15 +226,6 @@ impl<S: pulp::Simd> Lanes for Pulp<S> {
     #[inline(always)]
     fn as_vectors_mut(self, dst: &mut [f64]) -> &mut [Self::V] {
         S::as_mut_simd_f64s(dst).0
-    }
-    #[inline(always)]
-    fn fixed<Q: Params, const CH: usize>(
-        self,
-        coeffs: &Coeffs,
-        params: &Q,
-        out: &mut [&mut [f64]; CH],
-    ) -> bool {
-        kernel::fixed(self, coeffs, params, out)
     }
 }
 
