@@ -61,13 +61,25 @@ fn fit_margins(
     result
 }
 
-/// 2-D axes with equal scale on x and y, filling a plot rectangle.
+/// How [`Axes2::new`] scales the two axes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Scale {
+    /// The same pixels per unit on x and y.
+    Equal,
+    /// Equal, except when that would leave more than half of the frame empty in one direction
+    /// (data much wider than tall, or the reverse): then each axis is scaled to fill the frame,
+    /// for data whose residuals must stay visible, such as a long survey profile.
+    Filling,
+}
+
+/// 2-D axes with equal scale on x and y (unless made with [`Scale::Filling`]), filling a plot
+/// rectangle.
 pub(crate) struct Axes2 {
     pub frame: Rect,
     pub xt: Ticks,
     pub yt: Ticks,
     scale: f64,
-    /// Pixels per y unit: `scale` unless the axes were made by [`Axes2::filling`].
+    /// Pixels per y unit: `scale` unless the axes were made by [`Scale::Filling`].
     scale_y: f64,
     xlabel: String,
     ylabel: String,
@@ -78,7 +90,7 @@ pub(crate) struct Axes2 {
 
 impl Axes2 {
     /// Axes for data within `x` and `y` (min, max), with `inner` pixels kept free between the
-    /// data and the frame (for labels drawn around points).
+    /// data and the frame (for labels drawn around points), scaled as `scale` says.
     pub(crate) fn new(
         plot: Rect,
         x: (f64, f64),
@@ -86,34 +98,9 @@ impl Axes2 {
         inner: f64,
         theme: &Theme,
         labels: (&str, &str),
+        scale: Scale,
     ) -> Axes2 {
-        Axes2::placed(plot, x, y, inner, theme, labels, false)
-    }
-
-    /// Like [`Axes2::new`], but when equal scale would leave more than half of the frame empty
-    /// in one direction (data much wider than tall, or the reverse), each axis is scaled to
-    /// fill the frame: for data whose residuals must stay visible, such as a long survey
-    /// profile.
-    pub(crate) fn filling(
-        plot: Rect,
-        x: (f64, f64),
-        y: (f64, f64),
-        inner: f64,
-        theme: &Theme,
-        labels: (&str, &str),
-    ) -> Axes2 {
-        Axes2::placed(plot, x, y, inner, theme, labels, true)
-    }
-
-    fn placed(
-        plot: Rect,
-        x: (f64, f64),
-        y: (f64, f64),
-        inner: f64,
-        theme: &Theme,
-        labels: (&str, &str),
-        fill: bool,
-    ) -> Axes2 {
+        let fill = scale == Scale::Filling;
         let (x0, x1) = padded(x.0, x.1, 0.03);
         let (y0, y1) = padded(y.0, y.1, 0.03);
         let (top, bottom) = (top_margin(theme), bottom_margin(theme));
@@ -203,7 +190,7 @@ impl Axes2 {
         }
     }
 
-    /// Pixels per data unit (of x, for axes made by [`Axes2::filling`]).
+    /// Pixels per data unit (of x, for axes made by [`Scale::Filling`]).
     pub(crate) fn scale(&self) -> f64 {
         self.scale
     }

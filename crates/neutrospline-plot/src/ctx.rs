@@ -3,7 +3,7 @@
 
 use neutrospline::DegreeKind;
 
-use crate::axes2::Axes2;
+use crate::axes2::{Axes2, Scale};
 use crate::axes3::{box_lengths3, Axes3};
 use crate::callout::{draw_names, Keep, Obstacle};
 use crate::camera::Camera;
@@ -134,29 +134,11 @@ impl Ctx<'_> {
         Painter::new(self.options.width(), self.options.height(), &self.title)
     }
 
-    /// 2-D axes x, y for the model in `plot`, with `inner` pixels kept free around the data.
-    pub(crate) fn axes2(&self, plot: Rect, inner: f64) -> Axes2 {
-        Axes2::new(
-            plot,
-            self.extent(0),
-            self.extent(1),
-            inner,
-            &self.theme,
-            ("x", "y"),
-        )
-    }
-
-    /// 2-D axes x, y that fill `plot` when equal scale would leave half of it empty
-    /// ([`Axes2::filling`]).
-    pub(crate) fn axes2_filling(&self, plot: Rect, inner: f64) -> Axes2 {
-        Axes2::filling(
-            plot,
-            self.extent(0),
-            self.extent(1),
-            inner,
-            &self.theme,
-            ("x", "y"),
-        )
+    /// 2-D axes x, y for the model in `plot`, with `inner` pixels kept free around the data,
+    /// scaled as `scale` says.
+    pub(crate) fn axes2(&self, plot: Rect, inner: f64, scale: Scale) -> Axes2 {
+        let (x, y) = (self.extent(0), self.extent(1));
+        Axes2::new(plot, x, y, inner, &self.theme, ("x", "y"), scale)
     }
 
     /// The 3-D box x, y, z of the model (about `target` ticks per axis) fitted into `area`,

@@ -334,9 +334,19 @@ impl PlotModel {
         if controls.is_empty() {
             return Err(PlotError::NoControlPoints);
         }
+        let curve = Geometry::Curve(Arc::new(CurveSampler::<C, D>(curve)));
+        PlotModel::curve_model(curve, controls)
+    }
+
+    /// The model of a `D`-dimensional curve, `curve`, with its control points, unnamed,
+    /// labelled `CURVE_LABEL`.
+    fn curve_model<const D: usize>(
+        curve: Geometry,
+        controls: &[ControlPoint<D>],
+    ) -> Result<PlotModel, PlotError> {
         Ok(PlotModel {
             dimension: D,
-            curve: Geometry::Curve(Arc::new(CurveSampler::<C, D>(curve))),
+            curve,
             controls: to_pts(controls, "control point")?,
             grid: None,
             names: Vec::new(),
@@ -406,16 +416,8 @@ impl PlotModel {
         if controls.is_empty() {
             return Err(PlotError::NoControlPoints);
         }
-        Ok(PlotModel {
-            dimension: D,
-            curve: Geometry::Samples(to_pts(curve, "curve sample")?),
-            controls: to_pts(controls, "control point")?,
-            grid: None,
-            names: Vec::new(),
-            label: CURVE_LABEL.to_string(),
-            data: None,
-            band: None,
-        })
+        let curve = Geometry::Samples(to_pts(curve, "curve sample")?);
+        PlotModel::curve_model(curve, controls)
     }
 
     /// A model of a tensor-product surface of any kind and its control net, labelled by kind

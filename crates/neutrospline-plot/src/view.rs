@@ -79,15 +79,19 @@ impl View {
 
     /// The views that draw any model (every view but `data`, which needs data points, and
     /// `band`, which draws curves only), in the order of [`View::ALL`].
-    pub const MODEL: [View; 7] = [
-        View::Controls,
-        View::Truth,
-        View::Indeterminacy,
-        View::Falsity,
-        View::All,
-        View::Plane,
-        View::Score,
-    ];
+    pub const MODEL: [View; 7] = {
+        let mut model = [View::Controls; 7];
+        let (mut i, mut kept) = (0, 0);
+        while i < View::ALL.len() {
+            if !matches!(View::ALL[i], View::Data | View::Band) {
+                model[kept] = View::ALL[i];
+                kept += 1;
+            }
+            i += 1;
+        }
+        assert!(kept == model.len(), "MODEL is ALL without data and band");
+        model
+    };
 
     /// The names of [`View::ALL`], in its order.
     pub const NAMES: [&'static str; 9] = {

@@ -184,17 +184,12 @@ impl Surface {
         control_points: Vec<ControlPoint<3>>,
     ) -> Result<Self, SurfaceError> {
         check_grid(rows, cols, control_points.len())?;
+        // The B-spline surface over the Bézier knots (one patch), marked as a Bézier surface.
         let knots_u = bezier_knots(rows - 1);
         let knots_v = bezier_knots(cols - 1);
-        Surface::build(
-            SurfaceKind::Bezier,
-            rows,
-            cols,
-            control_points,
-            None,
-            knots_u,
-            knots_v,
-        )
+        let mut surface = Surface::bspline(rows, cols, control_points, knots_u, knots_v)?;
+        surface.kind = SurfaceKind::Bezier;
+        Ok(surface)
     }
 
     /// A B-spline surface over the given knots (degrees are the knots').

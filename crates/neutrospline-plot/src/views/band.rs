@@ -13,6 +13,7 @@
 //!   corners of two consecutive boxes, projected).
 //! - Surface: none ([`crate::PlotError::BandOnSurface`], refused before drawing).
 
+use crate::axes2::Scale;
 use crate::callout::{obstacles_of, Obstacle};
 use crate::ctx::Ctx;
 use crate::curve3d::shadowed_box;
@@ -21,9 +22,10 @@ use crate::layout::{Entry, Legend, LegendPlace, Swatch};
 use crate::model::Mesh;
 use crate::point::Pt;
 use crate::style::{Color, Style};
-use crate::theme::{self, marker_style, Marker, Theme};
+use crate::theme::{self, Theme};
 
 use super::figure::Figure;
+use super::{control_polygon_entry, draw_control_polygon, draw_crisp_and_controls};
 
 /// The `band` view.
 pub(crate) struct Band;
@@ -50,7 +52,7 @@ impl Figure for Band {
     fn curve_2d(&self, ctx: &Ctx) -> Drawing {
         let th = &ctx.theme;
         ctx.figure(legend(ctx, false), LegendPlace::Column, |svg, plot, _| {
-            let axes = ctx.axes2(plot, 40.0 * th.s);
+            let axes = ctx.axes2(plot, 40.0 * th.s, Scale::Equal);
             axes.draw(svg, th);
             let px = |p: [f64; 3]| axes.map(p[0], p[1]);
             let curve = axes.pixels(&ctx.curve);
@@ -186,23 +188,8 @@ fn draw(
             );
         }
     }
-    svg.polyline(
-        ctrl,
-        &Style::stroke(theme::CONSTRUCTION, th.polygon_w())
-            .with_dash(th.dash().0, th.dash().1)
-            .with_class("control-polygon"),
-    );
-    svg.polyline(
-        curve,
-        &Style::stroke(theme::CRISP, th.thin_w()).with_class("curve crisp"),
-    );
-    for p in ctrl {
-        svg.circle(
-            *p,
-            th.marker_r(),
-            &marker_style(th, Color::WHITE).with_class("control-point"),
-        );
-    }
+    draw_control_polygon(svg, th, ctrl);
+    draw_crisp_and_controls(svg, th, curve, ctrl);
 }
 
 /// Whether two pixel polylines differ by more than a quarter pixel somewhere.
@@ -252,13 +239,7 @@ fn legend(ctx: &Ctx, spatial: bool) -> Legend {
             "centroid curve",
         ));
     }
-    entries.push(Entry::polygon(
-        th,
-        theme::CONSTRUCTION,
-        Marker::Circle,
-        Color::WHITE,
-        "control polygon",
-    ));
+    entries.push(control_polygon_entry(th));
     let note = match (widths, spatial) {
         (false, _) => {
             "The control points carry no spreads: the curve is crisp at every alpha.".to_string()

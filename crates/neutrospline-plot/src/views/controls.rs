@@ -8,6 +8,7 @@
 
 use neutrospline::DegreeKind;
 
+use crate::axes2::Scale;
 use crate::callout::{draw_callouts, draw_names, obstacles_of, Keep};
 use crate::ctx::Ctx;
 use crate::curve3d::{control_polygon_3d, drop_lines, shadowed_box};
@@ -38,7 +39,7 @@ impl Figure for Controls {
     fn curve_2d(&self, ctx: &Ctx) -> Drawing {
         let th = &ctx.theme;
         ctx.figure(curve_legend(th), LegendPlace::Column, |svg, plot, _| {
-            let axes = ctx.axes2(plot, 6.0 * th.callout());
+            let axes = ctx.axes2(plot, 6.0 * th.callout(), Scale::Equal);
             axes.draw(svg, th);
             let (curve, ctrl) = (axes.pixels(&ctx.curve), axes.pixels(ctx.controls));
             axes.begin_clip(svg);

@@ -13,6 +13,7 @@
 
 use neutrospline::DegreeKind;
 
+use crate::axes2::Scale;
 use crate::ctx::{Ctx, DataCtx};
 use crate::curve3d::shadowed_box;
 use crate::drawing::Drawing;
@@ -48,7 +49,7 @@ impl Figure for Data {
         let look = Look::new(th, data.points.len());
         let legend = legend(th, data, false);
         ctx.figure(legend, LegendPlace::Column, |svg, plot, _| {
-            let axes = ctx.axes2_filling(plot, 2.0 * look.r);
+            let axes = ctx.axes2(plot, 2.0 * look.r, Scale::Filling);
             axes.draw(svg, th);
             let curve = axes.pixels(&ctx.curve);
             let points = axes.pixels(&data.points);

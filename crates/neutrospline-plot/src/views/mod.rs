@@ -15,7 +15,11 @@ mod single;
 
 use neutrospline::DegreeKind;
 
+use crate::drawing::Painter;
+use crate::layout::Entry;
 use crate::quantity::Quantity;
+use crate::style::{Color, Style};
+use crate::theme::{self, marker_style, Marker, Theme};
 use crate::view::View;
 
 pub(crate) use figure::Figure;
@@ -33,4 +37,48 @@ pub(crate) fn figure(view: View) -> &'static dyn Figure {
         View::Data => &data::Data,
         View::Band => &band::Band,
     }
+}
+
+/// The control polygon of a 2-D figure (pixel points `ctrl`), dashed in the construction
+/// colour.
+fn draw_control_polygon(svg: &mut Painter, th: &Theme, ctrl: &[(f64, f64)]) {
+    svg.polyline(
+        ctrl,
+        &Style::stroke(theme::CONSTRUCTION, th.polygon_w())
+            .with_dash(th.dash().0, th.dash().1)
+            .with_class("control-polygon"),
+    );
+}
+
+/// Over a 2-D figure's other layers: the crisp curve (pixel points `curve`), then the control
+/// points `ctrl` as white markers.
+fn draw_crisp_and_controls(
+    svg: &mut Painter,
+    th: &Theme,
+    curve: &[(f64, f64)],
+    ctrl: &[(f64, f64)],
+) {
+    svg.polyline(
+        curve,
+        &Style::stroke(theme::CRISP, th.thin_w()).with_class("curve crisp"),
+    );
+    for p in ctrl {
+        svg.circle(
+            *p,
+            th.marker_r(),
+            &marker_style(th, Color::WHITE).with_class("control-point"),
+        );
+    }
+}
+
+/// The legend entry of the control polygon and points drawn by [`draw_control_polygon`] and
+/// [`draw_crisp_and_controls`].
+fn control_polygon_entry(th: &Theme) -> Entry {
+    Entry::polygon(
+        th,
+        theme::CONSTRUCTION,
+        Marker::Circle,
+        Color::WHITE,
+        "control polygon",
+    )
 }

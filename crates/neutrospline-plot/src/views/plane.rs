@@ -10,7 +10,7 @@
 
 use neutrospline::DegreeKind;
 
-use crate::axes2::Axes2;
+use crate::axes2::{Axes2, Scale};
 use crate::callout::{obstacles_of, Obstacle};
 use crate::ctx::Ctx;
 use crate::curve3d::shadowed_box;
@@ -18,10 +18,11 @@ use crate::drawing::{Drawing, Painter};
 use crate::layout::{ColorBar, Entry, Legend, LegendPlace, Rect, Swatch};
 use crate::model::Mesh;
 use crate::panels;
-use crate::style::{Color, Style};
-use crate::theme::{self, marker_style, Marker, Theme};
+use crate::style::Style;
+use crate::theme::{self, Theme};
 
 use super::figure::Figure;
+use super::{control_polygon_entry, draw_control_polygon, draw_crisp_and_controls};
 
 /// The `plane` view.
 pub(crate) struct Plane;
@@ -38,7 +39,7 @@ impl Figure for Plane {
     fn curve_2d(&self, ctx: &Ctx) -> Drawing {
         let th = &ctx.theme;
         ctx.figure(band_legend(th), LegendPlace::Column, |svg, plot, _| {
-            let axes = ctx.axes2(plot, 75.0 * th.s);
+            let axes = ctx.axes2(plot, 75.0 * th.s, Scale::Equal);
             axes.draw(svg, th);
             let (curve, ctrl) = (axes.pixels(&ctx.curve), axes.pixels(ctx.controls));
             axes.begin_clip(svg);
@@ -134,13 +135,7 @@ fn draw_bands(svg: &mut Painter, th: &Theme, pts: &[(f64, f64)], degs: &[[f64; 3
 fn band_legend(th: &Theme) -> Legend {
     let mut entries = Entry::bands(|kind| kind.name().to_string());
     entries.push(Entry::line(theme::CRISP, th.thin_w(), None, "crisp curve"));
-    entries.push(Entry::polygon(
-        th,
-        theme::CONSTRUCTION,
-        Marker::Circle,
-        Color::WHITE,
-        "control polygon",
-    ));
+    entries.push(control_polygon_entry(th));
     Legend {
         entries,
         notes: vec![
@@ -155,24 +150,9 @@ fn band_legend(th: &Theme) -> Legend {
 fn plane_data(svg: &mut Painter, ctx: &Ctx, curve: &[(f64, f64)], ctrl: &[(f64, f64)]) {
     let th = &ctx.theme;
     let degs: Vec<[f64; 3]> = ctx.curve.iter().map(|p| p.deg).collect();
-    svg.polyline(
-        ctrl,
-        &Style::stroke(theme::CONSTRUCTION, th.polygon_w())
-            .with_dash(th.dash().0, th.dash().1)
-            .with_class("control-polygon"),
-    );
+    draw_control_polygon(svg, th, ctrl);
     draw_bands(svg, th, curve, &degs);
-    svg.polyline(
-        curve,
-        &Style::stroke(theme::CRISP, th.thin_w()).with_class("curve crisp"),
-    );
-    for p in ctrl {
-        svg.circle(
-            *p,
-            th.marker_r(),
-            &marker_style(th, Color::WHITE).with_class("control-point"),
-        );
-    }
+    draw_crisp_and_controls(svg, th, curve, ctrl);
 }
 
 /// What names must keep clear of: the lanes along the curve and the control polygon.

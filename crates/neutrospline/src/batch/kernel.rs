@@ -23,7 +23,7 @@
 //!   (`u = 2^-53`) and the binomial coefficients exact up to degree 67 and within
 //!   `(n - 66) u` above, so `|computed - exact| <= 3n u max_i |c_{c,i}|` per channel
 //!   (`(2n + 4) u` up to degree 67). Up to degree [`FIXED_MAX_DEGREE`] a kernel compiled per
-//!   degree keeps everything in registers; above, [`weights_long`] keeps the weights in a
+//!   degree keeps everything in registers; above, [`LongWeights`] keeps the weights in a
 //!   scratch buffer. De Casteljau's error is of the same order, so the two agree to a few `n u max |c|` (tested to 1e-14 up to degree
 //!   15, 1e-12 up to 400; the worst measured is about `1.5 n u`). At `t = 0` and `t = 1` the
 //!   weights are exactly `(1, 0, ..., 0)` and `(0, ..., 0, 1)` (and `C(n, 0) = C(n, n) = 1`),
@@ -42,7 +42,7 @@ mod taylor;
 mod weights;
 
 use taylor::{taylor, taylor_row};
-use weights::{casteljau, run, weights_long};
+use weights::{run, Casteljau, LongWeights};
 
 /// Highest degree evaluated with Bernstein weights; de Casteljau above it.
 pub(crate) const DIRECT_MAX_DEGREE: usize = super::DIRECT_MAX_DEGREE;
@@ -284,9 +284,11 @@ pub(crate) fn evaluate<L: Lanes, P: Params, const CH: usize>(
         n => {
             if !l.fixed(coeffs, params, out) {
                 if n <= DIRECT_MAX_DEGREE {
-                    weights_long(l, coeffs, params, out, scratch)
+                    let mut kernel = LongWeights::new(l, coeffs, scratch);
+                    drive::<L, P, _, CH, 1>(l, &mut kernel, params, out);
                 } else {
-                    casteljau(l, coeffs, params, out, scratch)
+                    let mut kernel = Casteljau::new(l, coeffs, scratch);
+                    drive::<L, P, _, CH, 1>(l, &mut kernel, params, out);
                 }
             }
         }
@@ -334,10 +336,11 @@ fn constant<const CH: usize>(coeffs: &Coeffs, out: &mut [&mut [f64]; CH]) {
 /// Runs `kernel` over the whole output, `U` vectors of parameters per step, then the rest one
 /// vector at a time (the last one stored partially). (Running the rest as one more step into
 /// vectors on the stack measured 3-7 % slower at degree 7: the coefficients stay live longer.)
-#[inline(always)]
+// Inlining: as for `run`.
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn drive<L: Lanes, P: Params, K: Kernel<L, CH>, const CH: usize, const U: usize>(
     l: L,
-    kernel: &K,
+    kernel: &mut K,
     params: &P,
     out: &mut [&mut [f64]; CH],
 ) {
@@ -353,14 +356,18 @@ fn drive<L: Lanes, P: Params, K: Kernel<L, CH>, const CH: usize, const U: usize>
     }
     let mut sink = Vectors { heads, j: 0 };
     while sink.j < vectors {
-        kernel.step::<P, _, U>(l, params, sink.j * L::LANES, &mut sink);
+        let at = Step {
+            params,
+            offset: sink.j * L::LANES,
+        };
+        kernel.step::<P, _, U>(l, at, &mut sink);
         sink.j += U;
     }
     // The last, partial step: one vector at a time, stored partially at the end.
     let mut k = full;
     while k < len {
         let mut sink = Tail { out: &mut *out, k };
-        kernel.step::<P, _, 1>(l, params, k, &mut sink);
+        kernel.step::<P, _, 1>(l, Step { params, offset: k }, &mut sink);
         k += L::LANES;
     }
 }
@@ -410,15 +417,43 @@ impl<L: Lanes, const CH: usize> Sink<L> for Tail<'_, '_, CH> {
 /// No closures here: a closure is a function of its own that the compiler may leave out of
 /// line, compiled without the dispatcher's target features.
 trait Kernel<L: Lanes, const CH: usize> {
-    /// The channels at the parameters `offset .. offset + U * LANES`, vector by vector, into
-    /// `sink`.
-    fn step<P: Params, S: Sink<L>, const U: usize>(
-        &self,
-        l: L,
-        params: &P,
-        offset: usize,
-        sink: &mut S,
-    );
+    /// The channels at the `U` vectors of parameters of `at`, vector by vector, into `sink`.
+    fn step<P: Params, S: Sink<L>, const U: usize>(&mut self, l: L, at: Step<P>, sink: &mut S);
+}
+
+/// The parameters of one step of a kernel: the `U` vectors at positions
+/// `offset .. offset + U * LANES` of the run.
+struct Step<'p, P> {
+    params: &'p P,
+    offset: usize,
+}
+
+// (Not derived: that would require `P: Copy`, and only the reference is copied.)
+impl<P> Clone for Step<'_, P> {
+    #[inline(always)]
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<P> Copy for Step<'_, P> {}
+
+impl<P: Params> Step<'_, P> {
+    /// The `U` vectors of parameters.
+    #[inline(always)]
+    fn vectors<L: Lanes, const U: usize>(self, l: L) -> [L::V; U] {
+        let mut ts = [l.splat(0.0); U];
+        for (u, t) in ts.iter_mut().enumerate() {
+            *t = self.params.vector(l, self.offset + u * L::LANES);
+        }
+        ts
+    }
+
+    /// Where the `U` vectors lie with respect to 1/2 ([`Params::side`]).
+    #[inline(always)]
+    fn side<L: Lanes, const U: usize>(self) -> Side {
+        self.params.side::<L>(self.offset, U * L::LANES)
+    }
 }
 
 /// The control range of every channel, broadcast: `[min_i c_{c,i}, max_i c_{c,i}]`.

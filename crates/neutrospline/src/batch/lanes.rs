@@ -50,14 +50,17 @@ pub(crate) trait Lanes: Copy {
     fn store_partial(self, dst: &mut [f64], v: Self::V);
     /// `dst` (a multiple of `LANES` long) as a slice of vectors, without copying.
     fn as_vectors_mut(self, dst: &mut [f64]) -> &mut [Self::V];
-    /// Runs [`kernel::fixed`] where this lane type has the kernels compiled per degree;
-    /// `false` when it has not or they do not serve the degree.
+    /// Runs [`kernel::fixed`] where this lane type has the kernels compiled per degree (by
+    /// default it has); `false` when it has not or they do not serve the degree.
+    #[inline(always)]
     fn fixed<P: Params, const CH: usize>(
         self,
         coeffs: &Coeffs,
         params: &P,
         out: &mut [&mut [f64]; CH],
-    ) -> bool;
+    ) -> bool {
+        kernel::fixed(self, coeffs, params, out)
+    }
 }
 
 /// Four lanes as an array; the portable path, vectorised by the compiler for the baseline
@@ -67,15 +70,28 @@ pub(crate) struct Portable;
 
 const P: usize = 4;
 
-macro_rules! zip {
-    ($a:ident, $b:ident, |$x:ident, $y:ident| $e:expr) => {{
-        let mut r = [0.0; P];
-        for i in 0..P {
-            let ($x, $y) = ($a[i], $b[i]);
-            r[i] = $e;
+/// The lane-wise binary operations of a [`Lanes`] implementation, one
+/// `#[inline(always)] fn name(self, a: Self::V, b: Self::V) -> Self::V` per entry: for
+/// [`Portable`] the expression `e(x, y)` applied to each pair of lanes, for [`Pulp`] the
+/// `pulp::Simd` method of that name.
+macro_rules! binary {
+    (portable: $($name:ident => |$x:ident, $y:ident| $e:expr;)*) => {$(
+        #[inline(always)]
+        fn $name(self, a: Self::V, b: Self::V) -> Self::V {
+            let mut r = [0.0; P];
+            for i in 0..P {
+                let ($x, $y) = (a[i], b[i]);
+                r[i] = $e;
+            }
+            r
         }
-        r
-    }};
+    )*};
+    (pulp: $($name:ident => $method:ident;)*) => {$(
+        #[inline(always)]
+        fn $name(self, a: Self::V, b: Self::V) -> Self::V {
+            self.0.$method(a, b)
+        }
+    )*};
 }
 
 impl Lanes for Portable {
@@ -85,34 +101,18 @@ impl Lanes for Portable {
     fn splat(self, x: f64) -> Self::V {
         [x; P]
     }
-    #[inline(always)]
-    fn add(self, a: Self::V, b: Self::V) -> Self::V {
-        zip!(a, b, |x, y| x + y)
-    }
-    #[inline(always)]
-    fn sub(self, a: Self::V, b: Self::V) -> Self::V {
-        zip!(a, b, |x, y| x - y)
-    }
-    #[inline(always)]
-    fn mul(self, a: Self::V, b: Self::V) -> Self::V {
-        zip!(a, b, |x, y| x * y)
-    }
-    #[inline(always)]
-    fn div(self, a: Self::V, b: Self::V) -> Self::V {
-        zip!(a, b, |x, y| x / y)
+    binary! { portable:
+        add => |x, y| x + y;
+        sub => |x, y| x - y;
+        mul => |x, y| x * y;
+        div => |x, y| x / y;
+        min => |x, y| if x < y { x } else { y };
+        max => |x, y| if x > y { x } else { y };
     }
     #[inline(always)]
     fn mul_add(self, a: Self::V, b: Self::V, c: Self::V) -> Self::V {
         // Not `f64::mul_add`: without FMA hardware that is a slow library call.
         self.add(self.mul(a, b), c)
-    }
-    #[inline(always)]
-    fn min(self, a: Self::V, b: Self::V) -> Self::V {
-        zip!(a, b, |x, y| if x < y { x } else { y })
-    }
-    #[inline(always)]
-    fn max(self, a: Self::V, b: Self::V) -> Self::V {
-        zip!(a, b, |x, y| if x > y { x } else { y })
     }
     #[inline(always)]
     fn select_le(self, t: Self::V, bound: Self::V, if_le: Self::V, otherwise: Self::V) -> Self::V {
@@ -156,23 +156,16 @@ impl Lanes for Portable {
     /// On x86-64 with the `simd` feature this path only serves processors without AVX2 (before
     /// 2013), and goes without the per-degree kernels (Bernstein weights in a scratch buffer
     /// instead, about half the speed from degree 4 to 15); elsewhere it is the main path and
-    /// has them.
+    /// has them (the trait's default).
+    #[cfg(all(feature = "simd", target_arch = "x86_64"))]
     #[inline(always)]
     fn fixed<Q: Params, const CH: usize>(
         self,
-        coeffs: &Coeffs,
-        params: &Q,
-        out: &mut [&mut [f64]; CH],
+        _: &Coeffs,
+        _: &Q,
+        _: &mut [&mut [f64]; CH],
     ) -> bool {
-        #[cfg(all(feature = "simd", target_arch = "x86_64"))]
-        {
-            let _ = (coeffs, params, out);
-            false
-        }
-        #[cfg(not(all(feature = "simd", target_arch = "x86_64")))]
-        {
-            kernel::fixed(self, coeffs, params, out)
-        }
+        false
     }
 }
 
@@ -189,34 +182,18 @@ impl<S: pulp::Simd> Lanes for Pulp<S> {
     fn splat(self, x: f64) -> Self::V {
         self.0.splat_f64s(x)
     }
-    #[inline(always)]
-    fn add(self, a: Self::V, b: Self::V) -> Self::V {
-        self.0.add_f64s(a, b)
-    }
-    #[inline(always)]
-    fn sub(self, a: Self::V, b: Self::V) -> Self::V {
-        self.0.sub_f64s(a, b)
-    }
-    #[inline(always)]
-    fn mul(self, a: Self::V, b: Self::V) -> Self::V {
-        self.0.mul_f64s(a, b)
-    }
-    #[inline(always)]
-    fn div(self, a: Self::V, b: Self::V) -> Self::V {
-        self.0.div_f64s(a, b)
+    binary! { pulp:
+        add => add_f64s;
+        sub => sub_f64s;
+        mul => mul_f64s;
+        div => div_f64s;
+        min => min_f64s;
+        max => max_f64s;
     }
     #[inline(always)]
     fn mul_add(self, a: Self::V, b: Self::V, c: Self::V) -> Self::V {
         // The `_e` form: fused when the instruction set has FMA, else multiply then add.
         self.0.mul_add_e_f64s(a, b, c)
-    }
-    #[inline(always)]
-    fn min(self, a: Self::V, b: Self::V) -> Self::V {
-        self.0.min_f64s(a, b)
-    }
-    #[inline(always)]
-    fn max(self, a: Self::V, b: Self::V) -> Self::V {
-        self.0.max_f64s(a, b)
     }
     #[inline(always)]
     fn select_le(self, t: Self::V, bound: Self::V, if_le: Self::V, otherwise: Self::V) -> Self::V {
@@ -249,15 +226,6 @@ impl<S: pulp::Simd> Lanes for Pulp<S> {
     #[inline(always)]
     fn as_vectors_mut(self, dst: &mut [f64]) -> &mut [Self::V] {
         S::as_mut_simd_f64s(dst).0
-    }
-    #[inline(always)]
-    fn fixed<Q: Params, const CH: usize>(
-        self,
-        coeffs: &Coeffs,
-        params: &Q,
-        out: &mut [&mut [f64]; CH],
-    ) -> bool {
-        kernel::fixed(self, coeffs, params, out)
     }
 }
 

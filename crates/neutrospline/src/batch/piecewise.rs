@@ -446,6 +446,16 @@ struct Run<'r, 'a, 'p> {
     params: BatchParams<'p>,
 }
 
+impl Run<'_, '_, '_> {
+    /// The run's blocks of at most [`BLOCK`] parameters, `(first, end)` each, in order.
+    fn blocks(&self) -> impl Iterator<Item = (usize, usize)> {
+        let end = self.end;
+        (self.start..end)
+            .step_by(BLOCK)
+            .map(move |block| (block, (block + BLOCK).min(end)))
+    }
+}
+
 /// A single non-rational piece on \[0, 1\] (a Bézier curve) at evenly spaced parameters,
 /// generated in the kernels' lanes (no parameter array to write and read back: at degree 3
 /// the evaluation runs at the speed of writing the output).
@@ -456,29 +466,21 @@ impl<const CH: usize> LaneJob for UnitJob<'_, '_, '_, CH> {
 
     #[inline(always)]
     fn run<L: Lanes>(self, l: L) -> Option<usize> {
-        let Run {
-            curve,
-            outs,
-            start,
-            end,
-            params,
-        } = self.0;
-        let denominator = params.len().saturating_sub(1).max(1) as f64;
+        let run = self.0;
+        let denominator = run.params.len().saturating_sub(1).max(1) as f64;
         let mut scratch = Vec::new();
-        let mut block = start;
-        while block < end {
-            let stop = (block + BLOCK).min(end);
-            let run = Uniform {
+        for (block, stop) in run.blocks() {
+            let uniform = Uniform {
                 first: block,
                 denominator,
             };
-            let mut channels = outs.iter_mut();
+            let mut channels = run.outs.iter_mut();
             let mut slots: [&mut [f64]; CH] = core::array::from_fn(|_| match channels.next() {
-                Some(channel) => &mut channel[block - start..stop - start],
+                Some(channel) => &mut channel[block - run.start..stop - run.start],
                 None => unreachable!("a run has CH output channels"),
             });
-            kernel::evaluate(l, &curve.pieces[0].coeffs, &run, &mut slots, &mut scratch);
-            block = stop;
+            let coeffs = &run.curve.pieces[0].coeffs;
+            kernel::evaluate(l, coeffs, &uniform, &mut slots, &mut scratch);
         }
         None
     }
@@ -493,13 +495,15 @@ impl<const H: usize> LaneJob for PieceJob<'_, '_, '_, H> {
 
     #[inline(always)]
     fn run<L: Lanes>(self, l: L) -> Option<usize> {
+        let run = self.0;
+        let blocks = run.blocks();
         let Run {
             curve,
             outs,
             start,
-            end,
             params,
-        } = self.0;
+            ..
+        } = run;
         let mut ws = Workspace {
             local: Vec::new(),
             weight: Vec::new(),
@@ -511,9 +515,7 @@ impl<const H: usize> LaneJob for PieceJob<'_, '_, '_, H> {
             kernel: Vec::new(),
         };
         let mut generated = Vec::new();
-        let mut block = start;
-        while block < end {
-            let stop = (block + BLOCK).min(end);
+        for (block, stop) in blocks {
             let ts: &[f64] = match params {
                 BatchParams::Uniform(count) => {
                     uniform_block(count, block..stop, &curve.domain, &mut generated);
@@ -538,7 +540,6 @@ impl<const H: usize> LaneJob for PieceJob<'_, '_, '_, H> {
                 || ts.windows(2).fold(true, |ok, w| ok & (w[0] <= w[1])); // branch-free
             let outs = &mut slots[..channels];
             self::block::<L, H>(l, curve, ts, in_order, outs, &mut ws);
-            block = stop;
         }
         None
     }

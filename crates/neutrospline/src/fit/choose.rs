@@ -18,6 +18,17 @@ pub(super) struct Chosen {
     pub(super) tolerance_met: Option<bool>,
 }
 
+impl Chosen {
+    /// `layout` as chosen, without refinement or extra tangent rows.
+    fn of(layout: Layout) -> Chosen {
+        Chosen {
+            layout,
+            extras_tangents: false,
+            tolerance_met: None,
+        }
+    }
+}
+
 pub(super) fn too_few(points: usize, why: String) -> FitError {
     FitError::TooFewPoints { points, why }
 }
@@ -82,16 +93,18 @@ pub(super) fn choose<const D: usize>(
                         format!("a degree-{p} Bézier segment needs at least {}", p + 1),
                     ));
                 }
-                Ok(Chosen {
-                    layout: layout(p),
-                    extras_tangents: false,
-                    tolerance_met: None,
-                })
+                Ok(Chosen::of(layout(p)))
             }
         };
     }
     if options.closed {
-        return choose_closed(data, options, target, params, weights);
+        let mut layout = closed_layout(p, m, target, params)?;
+        return match target {
+            FitTarget::Tolerance(e) => {
+                refine(data, &mut layout, params, weights, options.smoothing, e)
+            }
+            _ => Ok(Chosen::of(layout)),
+        };
     }
     if let Some(knots) = &options.knots {
         return given_knots(options, target, params, knots);
@@ -135,11 +148,10 @@ pub(super) fn choose<const D: usize>(
                     format!("{n} control points need at least {n} points"),
                 ));
             }
-            Ok(Chosen {
-                layout: Layout::open(p, least_squares_knots(params, p, n - 1)),
-                extras_tangents: false,
-                tolerance_met: None,
-            })
+            Ok(Chosen::of(Layout::open(
+                p,
+                least_squares_knots(params, p, n - 1),
+            )))
         }
         FitTarget::Tolerance(e) => {
             if m < need {
@@ -183,23 +195,17 @@ pub(super) fn given_knots(
             domain.start, domain.end
         )));
     }
-    Ok(Chosen {
-        layout: Layout::open(p, knots.to_vec()),
-        extras_tangents: false,
-        tolerance_met: None,
-    })
+    Ok(Chosen::of(Layout::open(p, knots.to_vec())))
 }
 
-/// Closed curves: periodic layouts.
-pub(super) fn choose_closed<const D: usize>(
-    data: &FitData<D>,
-    options: &FitOptions,
+/// The periodic layout of degree `p` for a closed curve through `m` points at `params` (which
+/// are remapped into the layout's base period).
+fn closed_layout(
+    p: usize,
+    m: usize,
     target: FitTarget,
     params: &mut [f64],
-    weights: &[f64],
-) -> Result<Chosen, FitError> {
-    let p = options.degree;
-    let m = data.len();
+) -> Result<Layout, FitError> {
     let need = 2 * p + 2;
     let remap = |params: &mut [f64], base: &[f64]| {
         for t in params.iter_mut() {
@@ -233,15 +239,7 @@ pub(super) fn choose_closed<const D: usize>(
     }
     let base = periodic_base(params, p, n);
     remap(params, &base);
-    let mut layout = Layout::closed(p, &base);
-    match target {
-        FitTarget::Tolerance(e) => refine(data, &mut layout, params, weights, options.smoothing, e),
-        _ => Ok(Chosen {
-            layout,
-            extras_tangents: false,
-            tolerance_met: None,
-        }),
-    }
+    Ok(Layout::closed(p, &base))
 }
 
 /// Refuses repeated parameters.

@@ -162,12 +162,25 @@ impl Surface {
                         w.push(per_b[b][ip].weights[a]);
                     }
                 }
-                let mut patch = make_patch(u, v, points, rational.then_some(w), p, q);
-                patch.jump = [
+                let weights = rational.then_some(w);
+                let (low, high) = bounds(&points);
+                let denominator = squared_weight(weights.as_deref(), p, q);
+                let jump = [
                     jumps_at(self.knots_u(), u[1]),
                     jumps_at(self.knots_v(), v[1]),
                 ];
-                patches.push(patch);
+                patches.push(Patch {
+                    u,
+                    v,
+                    points,
+                    weights,
+                    p,
+                    q,
+                    low,
+                    high,
+                    denominator,
+                    jump,
+                });
             }
         }
         patches
@@ -203,26 +216,26 @@ fn segment_parts(
         .collect()
 }
 
-fn make_patch(
-    u: [f64; 2],
-    v: [f64; 2],
-    points: Vec<[f64; 3]>,
-    weights: Option<Vec<f64>>,
-    p: usize,
-    q: usize,
-) -> Patch {
+/// The bounding box `(low, high)` of `points`.
+fn bounds(points: &[[f64; 3]]) -> ([f64; 3], [f64; 3]) {
     let mut low = [f64::INFINITY; 3];
     let mut high = [f64::NEG_INFINITY; 3];
-    for pt in &points {
+    for pt in points {
         for a in 0..3 {
             low[a] = low[a].min(pt[a]);
             high[a] = high[a].max(pt[a]);
         }
     }
+    (low, high)
+}
+
+/// [`Patch::denominator`] of a patch of degrees `(p, q)` with these weights (row-major, or
+/// none): the coefficients of `w^2`, the weights scaled by the largest.
+fn squared_weight(weights: Option<&[f64]>, p: usize, q: usize) -> Vec<f64> {
     let (tu, tv) = (product_table(p), product_table(q));
     let (nu, nv) = (2 * p + 1, 2 * q + 1);
     let mut denominator = vec![0.0; nu * nv];
-    match &weights {
+    match weights {
         None => denominator.iter_mut().for_each(|b| *b = 1.0),
         Some(w) => {
             let top = w.iter().fold(0.0_f64, |m, &x| m.max(x));
@@ -240,18 +253,7 @@ fn make_patch(
             }
         }
     }
-    Patch {
-        u,
-        v,
-        points,
-        weights,
-        p,
-        q,
-        low,
-        high,
-        denominator,
-        jump: [false, false],
-    }
+    denominator
 }
 
 impl<'a> SurfaceProjector<'a> {

@@ -1,7 +1,7 @@
 //! The Taylor kernel (degrees 1 to 3): Horner's rule about the nearer end of \[0, 1\].
 
 use super::{
-    binomial_row, Kernel, Lanes, Params, Range, Side, Sink, TAYLOR_MAX_DEGREE, TAYLOR_STEP,
+    binomial_row, Kernel, Lanes, Params, Range, Side, Sink, Step, TAYLOR_MAX_DEGREE, TAYLOR_STEP,
 };
 use super::{drive, Coeffs};
 
@@ -34,7 +34,8 @@ pub(super) fn taylor<L: Lanes, P: Params, const CH: usize, const N1: usize>(
     out: &mut [&mut [f64]; CH],
 ) {
     const { assert!(N1 - 1 <= TAYLOR_MAX_DEGREE) };
-    drive::<L, P, _, CH, TAYLOR_STEP>(l, &Taylor::<L, CH, N1>::new(l, coeffs), params, out);
+    let mut kernel = Taylor::<L, CH, N1>::new(l, coeffs);
+    drive::<L, P, _, CH, TAYLOR_STEP>(l, &mut kernel, params, out);
 }
 
 /// The Taylor kernel for degree `N1 - 1` (see the module docs): Horner's rule in `t` about
@@ -89,20 +90,10 @@ fn horner<L: Lanes, const CH: usize, const N1: usize, const U: usize>(
 
 impl<L: Lanes, const CH: usize, const N1: usize> Kernel<L, CH> for Taylor<L, CH, N1> {
     #[inline(always)]
-    fn step<P: Params, S: Sink<L>, const U: usize>(
-        &self,
-        l: L,
-        params: &P,
-        offset: usize,
-        sink: &mut S,
-    ) {
-        let one = l.splat(1.0);
-        let mut ts = [one; U];
-        for (u, t) in ts.iter_mut().enumerate() {
-            *t = params.vector(l, offset + u * L::LANES);
-        }
+    fn step<P: Params, S: Sink<L>, const U: usize>(&mut self, l: L, at: Step<P>, sink: &mut S) {
+        let ts = at.vectors::<L, U>(l);
         // (`1 - t` is exact for `t` in [1/2, 1], Sterbenz.)
-        let side = params.side::<L>(offset, U * L::LANES);
+        let side = at.side::<L, U>();
         if side != Side::Mixed {
             let (a, x) = if side == Side::Low {
                 (&self.low, ts)
