@@ -25,6 +25,9 @@ use crate::dxf_xdata::{self, ModelInfo, XTag};
 use neutrospline_io::read_whole;
 use neutrospline_io::{InputError, Kind, Limits, Model, ReadError};
 
+/// The first bytes of a binary DXF file (AutoCAD's DXF reference, "Binary DXF Files").
+const BINARY_SENTINEL: &[u8] = b"AutoCAD Binary DXF";
+
 /// One group: its code, its value and the line of its code (1-based).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Group<'a> {
@@ -34,12 +37,47 @@ pub(crate) struct Group<'a> {
 }
 
 /// The groups of a DXF text: alternate lines of a group code (an integer, spaces allowed
-/// around it) and a value (`\r\n` line ends allowed).
+/// around it) and a value (`\r\n` line ends allowed), up to the `0 EOF` group that ends the
+/// file. After it only blank lines and DOS end-of-file bytes (0x1A) may follow, as programs
+/// write them (Inkscape's R12 files end with a blank line); a file without `0 EOF` may end
+/// with 0x1A bytes.
 ///
 /// # Errors
-/// A line and a message for a group code that is not an integer or a code without a value.
+/// A line and a message for a group code that is not an integer, a code without a value, or
+/// something other than blank lines after `0 EOF`.
 pub(crate) fn groups(text: &str) -> Result<Vec<Group<'_>>, (usize, String)> {
-    let lines: Vec<&str> = text.lines().collect();
+    let mut lines: Vec<&str> = text.lines().collect();
+    let end = lines
+        .chunks_exact(2)
+        .position(|pair| pair[0].trim() == "0" && pair[1].trim() == "EOF");
+    match end {
+        Some(k) => {
+            let after = 2 * k + 2;
+            if let Some(extra) = lines[after..].iter().position(|line| {
+                !line
+                    .trim_matches(|c: char| c.is_whitespace() || c == '\u{1a}')
+                    .is_empty()
+            }) {
+                return Err((
+                    after + extra + 1,
+                    "the file goes on after its end (`0 EOF`): only blank lines may follow it"
+                        .to_owned(),
+                ));
+            }
+            lines.truncate(after);
+        }
+        None => {
+            // A DOS end-of-file byte ends the text.
+            while lines.last().is_some_and(|line| {
+                line.trim_end_matches('\u{1a}').is_empty() && line.contains('\u{1a}')
+            }) {
+                lines.pop();
+            }
+            if let Some(last) = lines.last_mut() {
+                *last = last.trim_end_matches('\u{1a}');
+            }
+        }
+    }
     if !lines.len().is_multiple_of(2) {
         return Err((
             lines.len(),
@@ -499,7 +537,8 @@ fn curve<const D: usize>(
 /// page of older files; the groups this reader uses are ASCII either way).
 ///
 /// # Errors
-/// [`ReadError::Input`] naming the file and line: groups that do not parse, no ENTITIES
+/// [`ReadError::Input`] naming the file and line: a binary DXF file (refused as such), groups
+/// that do not parse or content after `0 EOF`, no ENTITIES
 /// section or one cut short, no SPLINE entity, a SPLINE without its degree or counts, counts
 /// that do not match the knots or control points (the core's rule: control points + degree +
 /// 1 knots, non-decreasing), a spline given by fit points only, extended data that breaks its
@@ -510,6 +549,17 @@ pub fn parse_dxf(
     defaults: Degrees,
     limits: &Limits,
 ) -> Result<Vec<Model>, ReadError> {
+    if bytes.starts_with(BINARY_SENTINEL) {
+        return Err(InputError::new(
+            file,
+            None,
+            None,
+            "a binary DXF file (it starts with `AutoCAD Binary DXF`), which this program does \
+             not read: save the drawing as an ASCII DXF file"
+                .to_owned(),
+        )
+        .into());
+    }
     let text: std::borrow::Cow<'_, str> = match std::str::from_utf8(bytes) {
         Ok(text) => text.into(),
         Err(_) => bytes
@@ -659,6 +709,34 @@ mod tests {
         );
     }
 
+    /// Inkscape's R12 export (dxf2gcode's `Inkspace_dxf_export_kreis_splines.dxf`) ends with a
+    /// blank line after `0 EOF`; DOS programs end a file with 0x1A. Both read as the file
+    /// without them, curve for curve.
+    #[test]
+    fn dxf_blank_lines_and_dos_end_bytes_after_the_end_are_ignored() {
+        let plain = parse_dxf(
+            "f.dxf",
+            dxf(QUADRATIC).as_bytes(),
+            defaults(),
+            &Limits::default(),
+        )
+        .unwrap();
+        assert_eq!(plain.len(), 1);
+        for ending in ["\n", "\n\n  \n", "\u{1a}", "\r\n\u{1a}", "\n\u{1a}\n"] {
+            let text = format!("{}{ending}", dxf(QUADRATIC));
+            let read = parse_dxf("f.dxf", text.as_bytes(), defaults(), &Limits::default());
+            assert_eq!(
+                read.as_ref().ok(),
+                Some(&plain),
+                "ending {ending:?}: {read:?}"
+            );
+        }
+        // Without `0 EOF`, a final 0x1A still ends the text.
+        let cut = dxf(QUADRATIC).replace("  0\nEOF\n", "\u{1a}");
+        let read = parse_dxf("f.dxf", cut.as_bytes(), defaults(), &Limits::default());
+        assert_eq!(read.as_ref().ok(), Some(&plain), "{read:?}");
+    }
+
     #[test]
     fn dxf_errors_are_located() {
         assert_eq!(
@@ -708,6 +786,20 @@ mod tests {
         assert_eq!(
             message("  0\nSECTION\nxx\nENTITIES\n"),
             "f.dxf:3: group code `xx` is not an integer from 0 to 1071"
+        );
+        // The first bytes of ezdxf's and netDxf's binary test files.
+        assert_eq!(
+            message("AutoCAD Binary DXF\r\n\u{1a}\0\0\0SECTION\0"),
+            "f.dxf: a binary DXF file (it starts with `AutoCAD Binary DXF`), which this program \
+             does not read: save the drawing as an ASCII DXF file"
+        );
+        // Something after the end, other than blank lines.
+        assert_eq!(
+            message(&format!("{}  0\nLINE\n", dxf(QUADRATIC))),
+            format!(
+                "f.dxf:{}: the file goes on after its end (`0 EOF`): only blank lines may follow it",
+                dxf(QUADRATIC).lines().count() + 1
+            )
         );
         // Extended data that contradicts the entity.
         let model = example("example1.toml");
