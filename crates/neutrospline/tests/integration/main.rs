@@ -21,5 +21,6 @@ mod nearest;
 mod nurbs_properties;
 mod properties;
 mod reference;
+mod reference_common;
 mod spline_reference;
 mod surface_properties;

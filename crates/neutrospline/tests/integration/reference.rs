@@ -10,13 +10,12 @@
 //! * first derivative: the same times the degree `n` (the hodograph scales by `n`);
 //! * degree 2000: `1e-11` in place of `1e-12`.
 
-use std::collections::BTreeMap;
-use std::fmt::Write as _;
-
 use neutrospline::{
     Bezier, ControlPoint, CurvePoint, Degrees, Derivative, Evaluate, NeutrosophicPoint,
 };
 use serde::Deserialize;
+
+use crate::reference_common::{channel_name, point_channels, read_data, Checker};
 
 // ------------------------------------------------------------------------ data files
 
@@ -72,17 +71,8 @@ struct Example1Json {
     grid: Vec<EvaluationJson>,
 }
 
-fn read_data(name: &str) -> String {
-    let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
-    std::fs::read_to_string(&path).unwrap_or_else(|e| {
-        panic!(
-            "cannot read {path}: {e} (regenerate with scripts/reference/make_bezier_reference.py)"
-        )
-    })
-}
-
 fn load_cases(name: &str) -> Vec<CaseJson> {
-    let file: CaseFile = serde_json::from_str(&read_data(name))
+    let file: CaseFile = serde_json::from_str(&read_data(name, "make_bezier_reference.py"))
         .unwrap_or_else(|e| panic!("cannot parse tests/data/{name}: {e}"));
     assert!(!file.cases.is_empty(), "{name} holds no cases");
     file.cases
@@ -131,97 +121,6 @@ impl Tolerance {
     }
 }
 
-/// Collects failures (all of them, reported together) and the largest error / tolerance.
-#[derive(Default)]
-struct Checker {
-    failures: Vec<String>,
-    /// worst error / tolerance seen, keyed by a label (e.g. a degree band), with its location
-    worst: BTreeMap<String, (f64, String)>,
-}
-
-impl Checker {
-    #[allow(clippy::too_many_arguments)]
-    fn close(
-        &mut self,
-        band: &str,
-        case: &str,
-        t: f64,
-        what: &str,
-        channel: &str,
-        got: f64,
-        expected: f64,
-        tol: f64,
-    ) {
-        let err = (got - expected).abs();
-        let ratio = err / tol;
-        // a NaN (or infinite) result must fail too
-        if err.is_nan() || err > tol {
-            self.failures.push(format!(
-                "{case}: t = {t:e}, {what} {channel}: got {got:e}, expected {expected:e}, \
-                 error {err:e} > tolerance {tol:e} ({ratio:.3} x tolerance)"
-            ));
-        }
-        let kind = if matches!(channel, "x" | "y" | "z") {
-            "position"
-        } else {
-            "degrees"
-        };
-        let entry = self
-            .worst
-            .entry(format!("{band}, {what} {kind}"))
-            .or_insert((0.0, String::new()));
-        if ratio > entry.0 || ratio.is_nan() {
-            *entry = (ratio, format!("{case} t = {t:e} {what} {channel}"));
-        }
-    }
-
-    fn same_bits(&mut self, case: &str, t: f64, what: &str, channel: &str, a: f64, b: f64) {
-        if a.to_bits() != b.to_bits() {
-            self.failures.push(format!(
-                "{case}: t = {t:e}, {channel}: {what}: {a:e} ({:#018x}) != {b:e} ({:#018x})",
-                a.to_bits(),
-                b.to_bits()
-            ));
-        }
-    }
-
-    fn finish(self, test: &str) {
-        let mut summary = String::new();
-        for (band, (ratio, at)) in &self.worst {
-            let _ = writeln!(
-                summary,
-                "  {band:<46} max error / tolerance = {ratio:.3e}  ({at})"
-            );
-        }
-        println!("{test}: worst errors relative to tolerance\n{summary}");
-        if !self.failures.is_empty() {
-            let n = self.failures.len();
-            let shown: Vec<&str> = self.failures.iter().take(40).map(String::as_str).collect();
-            panic!(
-                "{test}: {n} check(s) failed{}:\n  {}\n\nworst errors relative to tolerance:\n{summary}",
-                if n > 40 { " (first 40 shown)" } else { "" },
-                shown.join("\n  ")
-            );
-        }
-    }
-}
-
-fn channel_name(c: usize, dim: usize) -> &'static str {
-    const AXES: [&str; 3] = ["x", "y", "z"];
-    const DEGREES: [&str; 3] = ["truth", "indeterminacy", "falsity"];
-    if c < dim {
-        AXES[c]
-    } else {
-        DEGREES[c - dim]
-    }
-}
-
-fn point_channels<const D: usize>(p: &CurvePoint<D>) -> Vec<f64> {
-    let mut v = p.position.to_vec();
-    v.extend_from_slice(&p.degrees.to_array());
-    v
-}
-
 fn expected_channels(e: &EvaluationJson) -> (Vec<f64>, Vec<f64>) {
     let mut value = e.position.clone();
     value.extend_from_slice(&[e.truth, e.indeterminacy, e.falsity]);
@@ -262,6 +161,7 @@ fn check_curve<const D: usize>(
 
     for (k, e) in evaluations.iter().enumerate() {
         let t = e.t;
+        let at = format!("{case}: t = {t:e}");
         assert_eq!(
             e.position.len(),
             D,
@@ -279,27 +179,15 @@ fn check_curve<const D: usize>(
         for c in 0..channels {
             let name = channel_name(c, D);
             checker.same_bits(
-                case,
-                t,
+                &format!("{at}, {name}"),
                 "evaluate_many != evaluate",
-                name,
                 got_many[c],
                 got[c],
             );
+            checker.close(band, &at, "value", name, got[c], want[c], tol.value(c, D));
             checker.close(
                 band,
-                case,
-                t,
-                "value",
-                name,
-                got[c],
-                want[c],
-                tol.value(c, D),
-            );
-            checker.close(
-                band,
-                case,
-                t,
+                &at,
                 "derivative",
                 name,
                 got_d[c],
@@ -358,8 +246,9 @@ fn check_case(checker: &mut Checker, case: &CaseJson, rel: f64) {
 
 #[test]
 fn example1_exact_values() {
-    let data: Example1Json = serde_json::from_str(&read_data("example1.json"))
-        .expect("cannot parse tests/data/example1.json");
+    let data: Example1Json =
+        serde_json::from_str(&read_data("example1.json", "make_bezier_reference.py"))
+            .expect("cannot parse tests/data/example1.json");
     assert_eq!(data.dimension, 2);
     assert_eq!(data.degree, 3);
     let curve = build_curve::<2>("example1", &data.control_points);

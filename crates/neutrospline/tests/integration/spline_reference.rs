@@ -16,14 +16,15 @@
 //! Convention: right-hand values at interior knots (also at a knot of multiplicity `p + 1`,
 //! where the curve jumps), left-hand at the domain end.
 
-use std::collections::BTreeMap;
-use std::fmt::Write as _;
-
 use neutrospline::{
-    AnyCurve, BSpline, ControlPoint, CurvePoint, Degrees, Derivative, Direction, Evaluate,
-    EvaluateSurface, KnotVector, NeutrosophicPoint, Nurbs, Surface,
+    AnyCurve, BSpline, ControlPoint, Degrees, Derivative, Direction, Evaluate, EvaluateSurface,
+    KnotVector, NeutrosophicPoint, Nurbs, Surface,
 };
 use serde::Deserialize;
+
+use crate::reference_common::{
+    channel_name, derivative_channels, point_channels, read_data, Checker,
+};
 
 // ------------------------------------------------------------------------ data files
 
@@ -128,17 +129,8 @@ struct SurfaceFile {
     cases: Vec<SurfaceCaseJson>,
 }
 
-fn read_data(name: &str) -> String {
-    let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
-    std::fs::read_to_string(&path).unwrap_or_else(|e| {
-        panic!(
-            "cannot read {path}: {e} (regenerate with scripts/reference/make_spline_reference.py)"
-        )
-    })
-}
-
 fn load_curves(name: &str) -> Vec<CurveCaseJson> {
-    let file: CurveFile = serde_json::from_str(&read_data(name))
+    let file: CurveFile = serde_json::from_str(&read_data(name, "make_spline_reference.py"))
         .unwrap_or_else(|e| panic!("cannot parse tests/data/{name}: {e}"));
     assert!(!file.cases.is_empty(), "{name} holds no cases");
     file.cases
@@ -189,109 +181,6 @@ fn derivative_scale(knots: &[f64], p: usize, weights: Option<&[f64]>) -> f64 {
 const REL: f64 = 1e-12;
 
 // ------------------------------------------------------------------------ comparison
-
-/// Collects failures (all of them, reported together) and the largest error / tolerance.
-#[derive(Default)]
-struct Checker {
-    failures: Vec<String>,
-    worst: BTreeMap<String, (f64, String)>,
-}
-
-impl Checker {
-    #[allow(clippy::too_many_arguments)]
-    fn close(
-        &mut self,
-        band: &str,
-        at: &str,
-        what: &str,
-        channel: &str,
-        got: f64,
-        expected: f64,
-        tol: f64,
-    ) {
-        let err = (got - expected).abs();
-        let ratio = if tol > 0.0 {
-            err / tol
-        } else if err == 0.0 {
-            0.0
-        } else {
-            f64::INFINITY
-        };
-        if err.is_nan() || err > tol {
-            self.failures.push(format!(
-                "{at}, {what} {channel}: got {got:e}, expected {expected:e}, \
-                 error {err:e} > tolerance {tol:e} ({ratio:.3} x tolerance)"
-            ));
-        }
-        let kind = if matches!(channel, "x" | "y" | "z") {
-            "position"
-        } else {
-            "degrees"
-        };
-        let entry = self
-            .worst
-            .entry(format!("{band}, {what} {kind}"))
-            .or_insert((0.0, String::new()));
-        if ratio > entry.0 || ratio.is_nan() {
-            *entry = (ratio, format!("{at} {what} {channel}"));
-        }
-    }
-
-    fn same_bits(&mut self, at: &str, what: &str, a: f64, b: f64) {
-        if a.to_bits() != b.to_bits() {
-            self.failures
-                .push(format!("{at}: {what}: {a:e} != {b:e} (bitwise)"));
-        }
-    }
-
-    fn check(&mut self, ok: bool, message: impl FnOnce() -> String) {
-        if !ok {
-            self.failures.push(message());
-        }
-    }
-
-    fn finish(self, test: &str) {
-        let mut summary = String::new();
-        for (band, (ratio, at)) in &self.worst {
-            let _ = writeln!(
-                summary,
-                "  {band:<44} max error / tolerance = {ratio:.3e}  ({at})"
-            );
-        }
-        println!("{test}: worst errors relative to tolerance\n{summary}");
-        if !self.failures.is_empty() {
-            let n = self.failures.len();
-            let shown: Vec<&str> = self.failures.iter().take(40).map(String::as_str).collect();
-            panic!(
-                "{test}: {n} check(s) failed{}:\n  {}\n\nworst errors relative to tolerance:\n{summary}",
-                if n > 40 { " (first 40 shown)" } else { "" },
-                shown.join("\n  ")
-            );
-        }
-    }
-}
-
-fn channel_name(c: usize, dim: usize) -> &'static str {
-    const AXES: [&str; 3] = ["x", "y", "z"];
-    const DEGREES: [&str; 3] = ["truth", "indeterminacy", "falsity"];
-    if c < dim {
-        AXES[c]
-    } else {
-        DEGREES[c - dim]
-    }
-}
-
-fn point_channels<const D: usize>(p: &CurvePoint<D>) -> Vec<f64> {
-    let mut v = p.position.to_vec();
-    v.extend_from_slice(&p.degrees.to_array());
-    v
-}
-
-fn derivative_channels<const D: usize>(d: &neutrospline::DerivativeValue<D>) -> Vec<f64> {
-    let mut v = d.position.to_vec();
-    v.extend_from_slice(&[d.truth, d.indeterminacy, d.falsity]);
-    v
-}
 
 // ------------------------------------------------------------------------ curves
 
@@ -533,8 +422,11 @@ fn build_surface(case: &SurfaceCaseJson) -> Surface {
 
 #[test]
 fn surfaces_match_tensor_products() {
-    let file: SurfaceFile = serde_json::from_str(&read_data("surface_random.json"))
-        .expect("cannot parse tests/data/surface_random.json");
+    let file: SurfaceFile = serde_json::from_str(&read_data(
+        "surface_random.json",
+        "make_spline_reference.py",
+    ))
+    .expect("cannot parse tests/data/surface_random.json");
     assert!(!file.cases.is_empty());
     let mut checker = Checker::default();
     for case in &file.cases {
