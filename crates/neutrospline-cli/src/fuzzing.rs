@@ -112,16 +112,20 @@ fn check_input_error(error: &ReadError) {
     }
 }
 
-/// The degrees the importers give control points without their own.
-fn import_defaults() -> Degrees {
-    Degrees::new(0.75, 0.125, 0.25).unwrap_or_else(|e| panic!("{e}"))
+/// The options of the importers: every kind, and the degrees of control points without their
+/// own.
+fn import_defaults() -> neutrospline_exchange::ImportOptions {
+    neutrospline_exchange::ImportOptions::new(
+        Degrees::new(0.75, 0.125, 0.25).unwrap_or_else(|e| panic!("{e}")),
+    )
 }
 
 /// Fuzzes the DXF importer.
 pub fn dxf_model(data: &[u8]) {
     imported(
         "DXF",
-        neutrospline_exchange::parse_dxf(FILE, data, import_defaults(), &Limits::default()),
+        neutrospline_exchange::parse_dxf(FILE, data, &import_defaults(), &Limits::default())
+            .map(|i| i.models),
     );
 }
 
@@ -129,7 +133,8 @@ pub fn dxf_model(data: &[u8]) {
 pub fn svg_model(data: &[u8]) {
     imported(
         "SVG",
-        neutrospline_exchange::parse_svg(FILE, data, import_defaults(), &Limits::default()),
+        neutrospline_exchange::parse_svg(FILE, data, &import_defaults(), &Limits::default())
+            .map(|i| i.models),
     );
 }
 
@@ -148,7 +153,8 @@ fn imported(read_as: &str, result: Result<Vec<Model>, ReadError>) {
         let dxf = neutrospline_exchange::export(model, ExportFormat::Dxf, &ExportOptions::new())
             .unwrap_or_else(|e| panic!("{read_as} read, DXF export: {e}"));
         let back =
-            neutrospline_exchange::parse_dxf(FILE, &dxf, import_defaults(), &Limits::default())
+            neutrospline_exchange::parse_dxf(FILE, &dxf, &import_defaults(), &Limits::default())
+                .map(|i| i.models)
                 .unwrap_or_else(|e| panic!("{read_as} read, DXF written, read back: {e}"));
         assert_eq!(
             back,

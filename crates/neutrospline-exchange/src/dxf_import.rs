@@ -22,6 +22,7 @@ use neutrospline::{
 };
 
 use crate::dxf_xdata::{self, ModelInfo, XTag};
+use crate::report::{Import, ImportOptions, ImportReport};
 use neutrospline_io::read_whole;
 use neutrospline_io::{InputError, Kind, Limits, Model, ReadError};
 
@@ -546,9 +547,10 @@ fn curve<const D: usize>(
 pub fn parse_dxf(
     file: &str,
     bytes: &[u8],
-    defaults: Degrees,
+    options: &ImportOptions,
     limits: &Limits,
-) -> Result<Vec<Model>, ReadError> {
+) -> Result<Import, ReadError> {
+    let defaults = options.defaults;
     if bytes.starts_with(BINARY_SENTINEL) {
         return Err(InputError::new(
             file,
@@ -569,13 +571,16 @@ pub fn parse_dxf(
             .into(),
     };
     let groups = groups(&text).map_err(|(line, message)| error(file, line, message))?;
-    spline_entities(file, &groups)?
+    let models = spline_entities(file, &groups)?
         .iter()
         .map(|(line, entity)| {
             let s = collect(file, *line, entity)?;
             model(file, &s, defaults, limits)
         })
-        .collect()
+        .collect::<Result<Vec<_>, _>>()?;
+    let mut report = ImportReport::default();
+    report.imported_many("SPLINE", models.len());
+    Ok(Import { models, report })
 }
 
 /// The curves of the DXF file at `path` ([`parse_dxf`]), read whole up to
@@ -586,11 +591,11 @@ pub fn parse_dxf(
 /// [`parse_dxf`] otherwise.
 pub fn load_dxf(
     path: impl AsRef<Path>,
-    defaults: Degrees,
+    options: &ImportOptions,
     limits: &Limits,
-) -> Result<Vec<Model>, ReadError> {
+) -> Result<Import, ReadError> {
     let (shown, bytes) = read_whole(path.as_ref(), limits.max_file_size, "a .dxf file")?;
-    parse_dxf(&shown, &bytes, defaults, limits)
+    parse_dxf(&shown, &bytes, options, limits)
 }
 
 #[cfg(test)]
@@ -629,9 +634,15 @@ mod tests {
     );
 
     fn message(text: &str) -> String {
-        parse_dxf("f.dxf", text.as_bytes(), defaults(), &Limits::default())
-            .unwrap_err()
-            .to_string()
+        parse_dxf(
+            "f.dxf",
+            text.as_bytes(),
+            &ImportOptions::new(defaults()),
+            &Limits::default(),
+        )
+        .map(|i| i.models)
+        .unwrap_err()
+        .to_string()
     }
 
     #[test]
@@ -644,7 +655,14 @@ mod tests {
         ] {
             let model = example(file);
             let bytes = export(&model, ExportFormat::Dxf, &ExportOptions::new()).unwrap();
-            let back = parse_dxf(file, &bytes, defaults(), &Limits::default()).unwrap();
+            let back = parse_dxf(
+                file,
+                &bytes,
+                &ImportOptions::new(defaults()),
+                &Limits::default(),
+            )
+            .map(|i| i.models)
+            .unwrap();
             assert_eq!(back, [model], "{file}");
         }
         // Membership, names with escapes and a long description survive too.
@@ -667,7 +685,14 @@ mod tests {
         .unwrap();
         for model in [model, fuzzy] {
             let bytes = export(&model, ExportFormat::Dxf, &ExportOptions::new()).unwrap();
-            let back = parse_dxf("m.dxf", &bytes, defaults(), &Limits::default()).unwrap();
+            let back = parse_dxf(
+                "m.dxf",
+                &bytes,
+                &ImportOptions::new(defaults()),
+                &Limits::default(),
+            )
+            .map(|i| i.models)
+            .unwrap();
             assert_eq!(back, [model]);
         }
     }
@@ -677,10 +702,11 @@ mod tests {
         let models = parse_dxf(
             "q.dxf",
             dxf(QUADRATIC).as_bytes(),
-            defaults(),
+            &ImportOptions::new(defaults()),
             &Limits::default(),
         )
-        .unwrap();
+        .unwrap()
+        .models;
         assert_eq!(models.len(), 1);
         let model = &models[0];
         assert_eq!(model.kind(), Kind::Curve(CurveKind::BSpline));
@@ -699,7 +725,14 @@ mod tests {
         let weighted = QUADRATIC.replace(" 10\n0\n", " 41\n1\n 41\n0.5\n 41\n1\n 10\n0\n");
         let spatial = QUADRATIC.replace(" 30\n0\n 10\n2\n", " 30\n5\n 10\n2\n");
         let text = dxf(&format!("  0\nLINE\n  8\n0\n{weighted}{spatial}")).replace('\n', "\r\n");
-        let models = parse_dxf("w.dxf", text.as_bytes(), defaults(), &Limits::default()).unwrap();
+        let models = parse_dxf(
+            "w.dxf",
+            text.as_bytes(),
+            &ImportOptions::new(defaults()),
+            &Limits::default(),
+        )
+        .map(|i| i.models)
+        .unwrap();
         assert_eq!(models.len(), 2);
         assert_eq!(models[0].kind(), Kind::Curve(CurveKind::Nurbs));
         assert_eq!(models[0].shape().weights(), Some(&[1.0, 0.5, 1.0][..]));
@@ -717,14 +750,21 @@ mod tests {
         let plain = parse_dxf(
             "f.dxf",
             dxf(QUADRATIC).as_bytes(),
-            defaults(),
+            &ImportOptions::new(defaults()),
             &Limits::default(),
         )
-        .unwrap();
+        .unwrap()
+        .models;
         assert_eq!(plain.len(), 1);
         for ending in ["\n", "\n\n  \n", "\u{1a}", "\r\n\u{1a}", "\n\u{1a}\n"] {
             let text = format!("{}{ending}", dxf(QUADRATIC));
-            let read = parse_dxf("f.dxf", text.as_bytes(), defaults(), &Limits::default());
+            let read = parse_dxf(
+                "f.dxf",
+                text.as_bytes(),
+                &ImportOptions::new(defaults()),
+                &Limits::default(),
+            )
+            .map(|i| i.models);
             assert_eq!(
                 read.as_ref().ok(),
                 Some(&plain),
@@ -733,7 +773,13 @@ mod tests {
         }
         // Without `0 EOF`, a final 0x1A still ends the text.
         let cut = dxf(QUADRATIC).replace("  0\nEOF\n", "\u{1a}");
-        let read = parse_dxf("f.dxf", cut.as_bytes(), defaults(), &Limits::default());
+        let read = parse_dxf(
+            "f.dxf",
+            cut.as_bytes(),
+            &ImportOptions::new(defaults()),
+            &Limits::default(),
+        )
+        .map(|i| i.models);
         assert_eq!(read.as_ref().ok(), Some(&plain), "{read:?}");
     }
 
@@ -813,9 +859,15 @@ mod tests {
             &text[..at],
             text[at..].replacen(" 30\n0\n", " 30\n1\n", 1)
         );
-        let error = parse_dxf("e.dxf", moved.as_bytes(), defaults(), &Limits::default())
-            .unwrap_err()
-            .to_string();
+        let error = parse_dxf(
+            "e.dxf",
+            moved.as_bytes(),
+            &ImportOptions::new(defaults()),
+            &Limits::default(),
+        )
+        .map(|i| i.models)
+        .unwrap_err()
+        .to_string();
         assert!(
             error.ends_with(
                 ": the extended data says the curve is 2-D, but a control point has z other than 0"
@@ -823,9 +875,15 @@ mod tests {
             "{error}"
         );
         let wrong = text.replacen("1040\n0.3\n", "1040\n1.5\n", 1);
-        let error = parse_dxf("e.dxf", wrong.as_bytes(), defaults(), &Limits::default())
-            .unwrap_err()
-            .to_string();
+        let error = parse_dxf(
+            "e.dxf",
+            wrong.as_bytes(),
+            &ImportOptions::new(defaults()),
+            &Limits::default(),
+        )
+        .map(|i| i.models)
+        .unwrap_err()
+        .to_string();
         assert!(
             error.contains(": NEUTROSPLINE extended data: truth = 1.5 is outside [0, 1]"),
             "{error}"
@@ -854,9 +912,9 @@ mod tests {
         ) {
             let body: String = groups.iter().map(|(c, v)| format!("{c}\n{v}\n")).collect();
             let text = dxf(&format!("  0\nSPLINE\n{body}"));
-            let _ = parse_dxf("p.dxf", text.as_bytes(), defaults(), &Limits::default());
+            let _ = parse_dxf("p.dxf", text.as_bytes(), &ImportOptions::new(defaults()), &Limits::default()).map(|i| i.models);
             let with_quadratic = dxf(&format!("{QUADRATIC}1001\nNEUTROSPLINE\n{body}"));
-            let _ = parse_dxf("p.dxf", with_quadratic.as_bytes(), defaults(), &Limits::default());
+            let _ = parse_dxf("p.dxf", with_quadratic.as_bytes(), &ImportOptions::new(defaults()), &Limits::default()).map(|i| i.models);
         }
     }
 }

@@ -17,15 +17,16 @@
 //!
 //! ```
 //! use neutrospline::{example1, AnyCurve, Degrees};
-//! use neutrospline_exchange::{export, parse_dxf, ExportFormat, ExportOptions};
+//! use neutrospline_exchange::{export, parse_dxf, ExportFormat, ExportOptions, ImportOptions};
 //! use neutrospline_io::{Limits, Model};
 //!
 //! let model = Model::new(AnyCurve::Bezier(example1())).with_name("Example 1");
 //! let dxf = export(&model, ExportFormat::Dxf, &ExportOptions::new())?;
 //! // The degrees of a spline without neutrospline's extended data (another program's).
-//! let defaults = Degrees::new(1.0, 0.0, 0.0)?;
-//! let back = parse_dxf("example1.dxf", &dxf, defaults, &Limits::default())?;
-//! assert_eq!(back, [model]);
+//! let options = ImportOptions::new(Degrees::new(1.0, 0.0, 0.0)?);
+//! let back = parse_dxf("example1.dxf", &dxf, &options, &Limits::default())?;
+//! assert_eq!(back.models, [model]);
+//! assert_eq!(back.report.summary(), "imported 1 curve (1 SPLINE)");
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 #![deny(missing_docs)]
@@ -34,11 +35,16 @@
 mod dxf_import;
 mod dxf_xdata;
 mod export;
+mod report;
 mod svg_import;
 
 pub use dxf_import::{load_dxf, parse_dxf};
 pub use export::{
     export, export_file, ColorBy, ExportError, ExportFormat, ExportOptions, MAX_CURVE_SAMPLES,
     MAX_SURFACE_SAMPLES,
+};
+pub use report::{
+    Import, ImportOptions, ImportReport, ImportRequest, Skip, SkipReason, SourceFormat,
+    DXF_ENTITIES, SVG_ELEMENTS,
 };
 pub use svg_import::{load_svg, parse_svg};

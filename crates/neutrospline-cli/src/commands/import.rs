@@ -108,12 +108,14 @@ pub fn run(args: &ImportArgs) -> anyhow::Result<()> {
         .map_err(|e| UsageError(format!("--truth, --indeterminacy, --falsity: {e}")))?;
     let limits = crate::limits::current().file_limits();
     // The messages name the file and the cause already: no error chain.
+    let options = neutrospline_exchange::ImportOptions::new(defaults);
     let models = if extension.as_deref() == Some("svg") {
-        neutrospline_exchange::load_svg(&args.input, defaults, &limits)
+        neutrospline_exchange::load_svg(&args.input, &options, &limits)
     } else {
-        neutrospline_exchange::load_dxf(&args.input, defaults, &limits)
+        neutrospline_exchange::load_dxf(&args.input, &options, &limits)
     }
-    .map_err(|e| anyhow::Error::msg(e.to_string()))?;
+    .map_err(|e| anyhow::Error::msg(e.to_string()))?
+    .models;
     let shown = args.input.display();
     let chosen: Vec<(PathBuf, &Model)> = match (args.index, args.all) {
         (_, true) => models

@@ -36,6 +36,7 @@ use neutrospline::{
     AnyCurve, BSpline, Bezier, ControlPoint, ControlPolygon, Degrees, Elevate, KnotVector, Nurbs,
 };
 
+use crate::report::{Import, ImportOptions, ImportReport};
 use neutrospline_io::read_whole;
 use neutrospline_io::{InputError, Limits, Model, ReadError};
 
@@ -136,9 +137,11 @@ fn curve(segments: &[Segment], matrix: &Matrix, defaults: Degrees) -> Result<Any
 pub fn parse_svg(
     file: &str,
     bytes: &[u8],
-    defaults: Degrees,
+    options: &ImportOptions,
     limits: &Limits,
-) -> Result<Vec<Model>, ReadError> {
+) -> Result<Import, ReadError> {
+    let defaults = options.defaults;
+    let mut report = ImportReport::default();
     let text = std::str::from_utf8(bytes).map_err(|e| {
         InputError::new(
             file,
@@ -196,6 +199,7 @@ pub fn parse_svg(
                 model = model.with_name(id);
             }
             models.push(model);
+            report.imported(&format!("<{}>", element.name));
         }
     }
     if models.is_empty() {
@@ -207,7 +211,7 @@ pub fn parse_svg(
         )
         .into());
     }
-    Ok(models)
+    Ok(Import { models, report })
 }
 
 /// The curves of the SVG file at `path` ([`parse_svg`]), read whole up to
@@ -218,11 +222,11 @@ pub fn parse_svg(
 /// [`parse_svg`] otherwise.
 pub fn load_svg(
     path: impl AsRef<Path>,
-    defaults: Degrees,
+    options: &ImportOptions,
     limits: &Limits,
-) -> Result<Vec<Model>, ReadError> {
+) -> Result<Import, ReadError> {
     let (shown, bytes) = read_whole(path.as_ref(), limits.max_file_size, "a .svg file")?;
-    parse_svg(&shown, &bytes, defaults, limits)
+    parse_svg(&shown, &bytes, options, limits)
 }
 
 #[cfg(test)]

@@ -11,14 +11,20 @@ fn defaults() -> Degrees {
 }
 
 fn curves(svg: &str) -> Vec<AnyCurve<2>> {
-    parse_svg("f.svg", svg.as_bytes(), defaults(), &Limits::default())
-        .unwrap()
-        .into_iter()
-        .map(|m| match m.into_shape() {
-            Shape::Curve(neutrospline::DynCurve::Planar(c)) => c,
-            other => panic!("a plane curve, not {:?}", other.kind()),
-        })
-        .collect()
+    parse_svg(
+        "f.svg",
+        svg.as_bytes(),
+        &ImportOptions::new(defaults()),
+        &Limits::default(),
+    )
+    .map(|i| i.models)
+    .unwrap()
+    .into_iter()
+    .map(|m| match m.into_shape() {
+        Shape::Curve(neutrospline::DynCurve::Planar(c)) => c,
+        other => panic!("a plane curve, not {:?}", other.kind()),
+    })
+    .collect()
 }
 
 fn one(d: &str) -> AnyCurve<2> {
@@ -34,9 +40,15 @@ fn positions(c: &AnyCurve<2>) -> Vec<[f64; 2]> {
 }
 
 fn message(svg: &str) -> String {
-    parse_svg("f.svg", svg.as_bytes(), defaults(), &Limits::default())
-        .unwrap_err()
-        .to_string()
+    parse_svg(
+        "f.svg",
+        svg.as_bytes(),
+        &ImportOptions::new(defaults()),
+        &Limits::default(),
+    )
+    .map(|i| i.models)
+    .unwrap_err()
+    .to_string()
 }
 
 #[test]
@@ -180,7 +192,14 @@ fn svg_transforms_hidden_elements_and_markup() {
   <text><![CDATA[ <path d="M 5 5 L 6 6"/> ]]></text>
   <polygon points="0 0 4 0 4 3"/>
 </svg>"#;
-    let models = parse_svg("t.svg", svg.as_bytes(), defaults(), &Limits::default()).unwrap();
+    let models = parse_svg(
+        "t.svg",
+        svg.as_bytes(),
+        &ImportOptions::new(defaults()),
+        &Limits::default(),
+    )
+    .map(|i| i.models)
+    .unwrap();
     assert_eq!(models.len(), 3);
     assert_eq!(models[0].name(), Some("a & b"));
     let Some(neutrospline::DynCurve::Planar(a)) = models[0].shape().curve() else {
@@ -257,8 +276,8 @@ proptest! {
         markup in "[<>/='\"a-z !?\\[\\]&#;-]{0,30}",
     ) {
         let svg = format!("<svg><g transform='{transform}'><path d='{d}'/></g>{markup}</svg>");
-        let _ = parse_svg("p.svg", svg.as_bytes(), defaults(), &Limits::default());
+        let _ = parse_svg("p.svg", svg.as_bytes(), &ImportOptions::new(defaults()), &Limits::default()).map(|i| i.models);
         let svg = format!("<svg><path d='{d}'/>{markup}<polyline points='{d}'/></svg>");
-        let _ = parse_svg("p.svg", svg.as_bytes(), defaults(), &Limits::default());
+        let _ = parse_svg("p.svg", svg.as_bytes(), &ImportOptions::new(defaults()), &Limits::default()).map(|i| i.models);
     }
 }
