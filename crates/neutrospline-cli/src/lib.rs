@@ -70,8 +70,8 @@ enum Command {
     /// Export a curve or surface to CAD and 3-D programs: DXF (exact splines), glTF, PLY or
     /// OBJ, keeping the degrees where the format can carry them
     Export(ExportArgs),
-    /// Import curves as model files: the SPLINEs of a DXF file (with the degrees `export`
-    /// keeps in it) or the paths of an SVG file, with the given default degrees
+    /// Import curves as model files: the curves of a DXF drawing (with the degrees `export`
+    /// keeps in it) or an SVG drawing, exactly, with a report of what was skipped
     Import(ImportArgs),
     /// For every point of a CSV file, the nearest point of a curve or surface: its parameter,
     /// the distance, the position, the degrees and the score

@@ -4,9 +4,10 @@
 use std::path::PathBuf;
 
 use neutrospline::{AxisSet, AxisSetName, Degrees, PointRelation};
+use neutrospline_exchange::{ImportReport, ImportRequest, SourceFormat};
 use neutrospline_io::{Format, Kind, KnotSpec, Model, ReadOptions};
 use pyo3::prelude::*;
-use pyo3::types::PyTuple;
+use pyo3::types::{PyDict, PyList, PyTuple};
 
 use crate::arrays::{float_array, new_array};
 use crate::curve;
@@ -28,6 +29,16 @@ pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
 /// checks it. Returns a `Bezier`, `BSpline`, `Nurbs` or `Surface`; an invalid file raises
 /// `ModelError` with the command line's message (file, line, field, value and rule).
 ///
+/// A drawing (`.svg`, `.dxf`) is imported as `neutrospline import` imports it: the result is
+/// the pair `(curves, report)`, the list of curves in file order and the import report, a
+/// dictionary with `summary` (the line the command line prints), `imported` (curves by the
+/// kind of element or entity: `{"<path>": 10}`), `skipped` (a list of `{"kind", "reason",
+/// "count"}`, reasons `not-a-curve`, `unsupported`, `hidden`, `not-drawn`, `empty`,
+/// `excluded`) and `warnings`. Its options are the command line's (`import_options()` lists
+/// them): `truth`, `indeterminacy`, `falsity` (the degrees of control points without their
+/// own), `entities` (the kinds to import, `"SPLINE,LWPOLYLINE"` or `"path,rect"`) and `strict`
+/// (raise `ModelError` when a drawn shape is left out).
+///
 /// The keyword options are the command line's `--kind`, `--degree`, `--knots`, `--membership`,
 /// `--rows`, `--cols`, `--degree-u`, `--degree-v`, `--knots-u`, `--knots-v`: a CSV table holds
 /// only the control points, so these say what it is (`knots` a rule name such as
@@ -40,8 +51,11 @@ pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
 /// >>> spline = ns.load("examples/bspline.csv", kind="bspline", degree=3, knots=knots)
 /// >>> spline.kind, spline.knots.tolist() == knots
 /// ('bspline', True)
+/// >>> curves, report = ns.load("examples/drawing.svg", truth=0.8, indeterminacy=0.1)
+/// >>> len(curves), report["imported"], report["skipped"][0]
+/// (2, {'<path>': 1, '<rect>': 1}, {'kind': '<text>', 'reason': 'not-a-curve', 'count': 1})
 #[pyfunction]
-#[pyo3(signature = (path, *, kind = None, degree = None, knots = None, membership = None, rows = None, cols = None, degree_u = None, degree_v = None, knots_u = None, knots_v = None))]
+#[pyo3(signature = (path, *, kind = None, degree = None, knots = None, membership = None, rows = None, cols = None, degree_u = None, degree_v = None, knots_u = None, knots_v = None, **import_options))]
 #[allow(clippy::too_many_arguments)]
 pub fn load(
     py: Python<'_>,
@@ -56,7 +70,44 @@ pub fn load(
     degree_v: Option<usize>,
     knots_u: Option<&Bound<'_, PyAny>>,
     knots_v: Option<&Bound<'_, PyAny>>,
+    import_options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Py<PyAny>> {
+    let extension = path
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    let source = match extension.as_deref() {
+        Some("svg") => Some(SourceFormat::Svg),
+        Some("dxf") => Some(SourceFormat::Dxf),
+        _ => None,
+    };
+    if let Some(source) = source {
+        let given = [
+            ("kind", kind.is_some()),
+            ("degree", degree.is_some()),
+            ("knots", knots.is_some()),
+            ("membership", membership.is_some()),
+            ("rows", rows.is_some()),
+            ("cols", cols.is_some()),
+            ("degree_u", degree_u.is_some()),
+            ("degree_v", degree_v.is_some()),
+            ("knots_u", knots_u.is_some()),
+            ("knots_v", knots_v.is_some()),
+        ];
+        if let Some((name, _)) = given.iter().find(|(_, on)| *on) {
+            return Err(invalid_at(
+                name,
+                "is an option of a model table (.csv, .toml, .json), not of a drawing (the \
+                 options of .svg and .dxf files are import_options())",
+            ));
+        }
+        return import_drawing(py, &path, source, import_options);
+    }
+    if let Some(extra) = import_options.and_then(|o| o.keys().iter().next()) {
+        return Err(invalid_at(
+            extra.extract::<String>()?,
+            "is an option of a drawing (.svg, .dxf), not of a model file",
+        ));
+    }
     let mut options = ReadOptions::default();
     if let Some(kind) = kind {
         options.kind = Some(Kind::from_name(kind).ok_or_else(|| {
@@ -79,6 +130,73 @@ pub fn load(
         .detach(|| neutrospline_io::load(&path, &options))
         .map_err(invalid)?;
     model_into_py(py, model)
+}
+
+/// The curves of a drawing and the import report ([`load`]).
+fn import_drawing(
+    py: Python<'_>,
+    path: &std::path::Path,
+    source: SourceFormat,
+    options: Option<&Bound<'_, PyDict>>,
+) -> PyResult<Py<PyAny>> {
+    let mut request = ImportRequest::default();
+    crate::options::set_from_kwargs(&mut request, options)?;
+    let resolved = request.options(source).map_err(invalid)?;
+    let limits = neutrospline_io::Limits::default();
+    let imported = py
+        .detach(|| match source {
+            SourceFormat::Svg => neutrospline_exchange::load_svg(path, &resolved, &limits),
+            SourceFormat::Dxf => neutrospline_exchange::load_dxf(path, &resolved, &limits),
+        })
+        .map_err(invalid)?;
+    let imported = if request.strict {
+        imported
+            .strict(&path.display().to_string())
+            .map_err(invalid)?
+    } else {
+        imported
+    };
+    let report = report_dict(py, &imported.report)?;
+    let curves = PyList::empty(py);
+    for model in imported.models {
+        curves.append(model_into_py(py, model)?)?;
+    }
+    Ok(PyTuple::new(py, [curves.into_any(), report.into_any()])?
+        .into_any()
+        .unbind())
+}
+
+/// The import report as a dictionary ([`load`]).
+fn report_dict<'py>(py: Python<'py>, report: &ImportReport) -> PyResult<Bound<'py, PyDict>> {
+    let dict = PyDict::new(py);
+    dict.set_item("summary", report.summary())?;
+    let imported = PyDict::new(py);
+    for (kind, count) in &report.imported {
+        imported.set_item(kind, count)?;
+    }
+    dict.set_item("imported", imported)?;
+    let skipped = PyList::empty(py);
+    for skip in &report.skipped {
+        let entry = PyDict::new(py);
+        entry.set_item("kind", &skip.kind)?;
+        entry.set_item("reason", skip.reason.name())?;
+        entry.set_item("count", skip.count)?;
+        skipped.append(entry)?;
+    }
+    dict.set_item("skipped", skipped)?;
+    dict.set_item("warnings", report.warnings.clone())?;
+    Ok(dict)
+}
+
+/// The options of `load` for a drawing (`.svg`, `.dxf`), from the exchange library that
+/// defines them, as `fit_options()` lists the fit's.
+///
+/// >>> import neutrospline as ns
+/// >>> [o["name"] for o in ns.import_options()]
+/// ['truth', 'indeterminacy', 'falsity', 'entities', 'strict']
+#[pyfunction]
+pub fn import_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
+    crate::options::table::<ImportRequest>(py)
 }
 
 /// A knot option: a rule name, or the knot values.

@@ -44,6 +44,7 @@ fn _neutrospline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fitting::fit, m)?)?;
     m.add_function(wrap_pyfunction!(fitting::fit_options, m)?)?;
     m.add_function(wrap_pyfunction!(fitting::figure_options, m)?)?;
+    m.add_function(wrap_pyfunction!(functions::import_options, m)?)?;
     m.add("instruction_set", neutrospline::batch::instruction_set())?;
     Ok(())
 }

@@ -1,13 +1,15 @@
-//! `neutrospline import IN.dxf|IN.svg -o MODEL.toml`: the SPLINE entities of a DXF file, or
-//! the paths of an SVG file, as model files, through `neutrospline-io`'s readers.
+//! `neutrospline import IN.dxf|IN.svg -o MODEL.toml`: the curves of a DXF or SVG drawing as
+//! model files, through `neutrospline-exchange`'s importers, with the import report on
+//! standard error.
 
 use std::path::{Path, PathBuf};
 
-use neutrospline::Degrees;
+use neutrospline_exchange::{ImportRequest, SourceFormat};
 use neutrospline_io::{Format, Model};
 
 use crate::input::UsageError;
 use crate::output;
+use crate::request::RequestArgs;
 
 /// The extensions `import` reads.
 const ACCEPTED: &str = ".dxf, .svg";
@@ -15,12 +17,16 @@ const ACCEPTED: &str = ".dxf, .svg";
 /// Arguments of `import`.
 #[derive(Debug, clap::Args)]
 #[command(
-    after_help = "Every SPLINE entity of the file's ENTITIES section is a curve: degree, \
-knots, control points and weights exactly as written (nurbs when it has weights, bspline \
-otherwise; 2-D when every z is 0). The degrees, kind, membership rule and names come from the \
-extended data that `neutrospline export` writes (application NEUTROSPLINE); a spline without \
-it takes --truth, --indeterminacy and --falsity for every control point. A spline given by fit \
-points only is refused."
+    after_help = "DXF: every SPLINE, LINE, ARC, CIRCLE, ELLIPSE, LWPOLYLINE and POLYLINE of the \
+ENTITIES section, and of the blocks its INSERTs draw, is a curve, exactly (splines as written; \
+arcs, circles, ellipses and polyline bulges as rational quadratic NURBS). The degrees, kind, \
+membership rule and names come from the extended data that `neutrospline export` writes \
+(application NEUTROSPLINE); a curve without it takes --truth, --indeterminacy and --falsity \
+for every control point. SVG: every drawn <path>, <polyline>, <polygon>, <line>, <rect>, \
+<circle> and <ellipse> (with <use> clones, nested <svg> viewports and CSS transforms) is a \
+curve in the root's user units. Standard error gets one line per file: what was imported, and \
+what was skipped, hidden or not drawn, by kind; --strict refuses the file instead of skipping \
+a drawn shape."
 )]
 pub struct ImportArgs {
     /// The file to read: IN.dxf or IN.svg
@@ -32,32 +38,9 @@ pub struct ImportArgs {
     #[arg(short = 'o', long = "output", value_name = "MODEL")]
     pub output: PathBuf,
 
-    /// Truth of every control point of a spline without degrees in the file
-    #[arg(
-        long,
-        value_name = "T",
-        allow_hyphen_values = true,
-        default_value_t = 1.0
-    )]
-    pub truth: f64,
-
-    /// Indeterminacy of every control point of a spline without degrees in the file
-    #[arg(
-        long,
-        value_name = "I",
-        allow_hyphen_values = true,
-        default_value_t = 0.0
-    )]
-    pub indeterminacy: f64,
-
-    /// Falsity of every control point of a spline without degrees in the file
-    #[arg(
-        long,
-        value_name = "F",
-        allow_hyphen_values = true,
-        default_value_t = 0.0
-    )]
-    pub falsity: f64,
+    /// The import's options, defined by the exchange library (`ImportRequest`).
+    #[command(flatten)]
+    pub request: RequestArgs<ImportRequest>,
 
     /// Which curve to write when the file holds several (1 is the first)
     #[arg(long, value_name = "K", conflicts_with = "all", value_parser = clap::value_parser!(u64).range(1..))]
@@ -104,19 +87,33 @@ pub fn run(args: &ImportArgs) -> anyhow::Result<()> {
     }
     let format =
         Format::from_path(&args.output).map_err(|e| UsageError(e.describe(Format::ACCEPTED)))?;
-    let defaults = Degrees::new(args.truth, args.indeterminacy, args.falsity)
-        .map_err(|e| UsageError(format!("--truth, --indeterminacy, --falsity: {e}")))?;
-    let limits = crate::limits::current().file_limits();
-    // The messages name the file and the cause already: no error chain.
-    let options = neutrospline_exchange::ImportOptions::new(defaults);
-    let models = if extension.as_deref() == Some("svg") {
-        neutrospline_exchange::load_svg(&args.input, &options, &limits)
+    let request = args.request.request()?;
+    let source = if extension.as_deref() == Some("svg") {
+        SourceFormat::Svg
     } else {
-        neutrospline_exchange::load_dxf(&args.input, &options, &limits)
-    }
-    .map_err(|e| anyhow::Error::msg(e.to_string()))?
-    .models;
+        SourceFormat::Dxf
+    };
+    let options = request
+        .options(source)
+        .map_err(|e| UsageError(e.to_string()))?;
+    let limits = crate::limits::current().file_limits();
     let shown = args.input.display();
+    // The messages name the file and the cause already: no error chain.
+    let imported = match source {
+        SourceFormat::Svg => neutrospline_exchange::load_svg(&args.input, &options, &limits),
+        SourceFormat::Dxf => neutrospline_exchange::load_dxf(&args.input, &options, &limits),
+    }
+    .map_err(|e| anyhow::Error::msg(e.to_string()))?;
+    // What was read and what was left, before anything is chosen or written.
+    eprintln!("{shown}: {}", imported.report.summary());
+    let imported = if request.strict {
+        imported
+            .strict(&shown.to_string())
+            .map_err(|e| anyhow::Error::msg(e.to_string()))?
+    } else {
+        imported
+    };
+    let models = imported.models;
     let chosen: Vec<(PathBuf, &Model)> = match (args.index, args.all) {
         (_, true) => models
             .iter()

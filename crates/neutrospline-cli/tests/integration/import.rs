@@ -189,7 +189,7 @@ fn import_refusals_have_exact_messages_and_write_nothing() {
             dxf(&quadratic("2")),
             &["--falsity", "-0.5"],
             2,
-            "error: --truth, --indeterminacy, --falsity: falsity = -0.5 is outside [0, 1] (every degree must be in [0, 1])",
+            "error: truth, indeterminacy, falsity: falsity = -0.5 is outside [0, 1] (every degree must be in [0, 1])",
         ),
         (
             "a.dxf",

@@ -17,7 +17,7 @@ and is left untouched.
 """
 
 import os
-from typing import Any, ClassVar, List, Literal, Optional, Sequence, Tuple, Type, Union, overload
+from typing import Any, ClassVar, Dict, List, Literal, Optional, Sequence, Tuple, Type, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -267,7 +267,13 @@ def load(
     degree_v: Optional[int] = None,
     knots_u: Optional[KnotOption] = None,
     knots_v: Optional[KnotOption] = None,
-) -> Model: ...
+    truth: Optional[float] = None,
+    indeterminacy: Optional[float] = None,
+    falsity: Optional[float] = None,
+    entities: Optional[str] = None,
+    strict: Optional[bool] = None,
+) -> Union[Model, Tuple[List[Union[Bezier, BSpline, Nurbs]], Dict[str, Any]]]: ...
+def import_options() -> list[dict[str, Any]]: ...
 def example1() -> Bezier: ...
 def score(degrees: ArrayLike) -> Union[float, FloatArray]: ...
 def accuracy(degrees: ArrayLike) -> Union[float, FloatArray]: ...
