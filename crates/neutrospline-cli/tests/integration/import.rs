@@ -304,3 +304,63 @@ fn import_of_a_plot_gives_curves_through_the_drawn_points() {
         );
     }
 }
+
+#[test]
+fn import_reports_what_it_skipped_and_strict_refuses_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let drawing = example("drawing.svg");
+    let shown = drawing.to_str().unwrap();
+    let (code, stdout, stderr) = run_in(dir.path(), &["import", shown, "-o", "c.toml", "--all"]);
+    assert_eq!(
+        (code, stdout.as_str(), stderr.as_str()),
+        (
+            0,
+            "",
+            format!(
+                "{shown}: imported 2 curves (1 <path>, 1 <rect>); skipped 1 <text> (not a \
+                 curve); hidden: 1 <line> (not displayed)\n"
+            )
+            .as_str()
+        )
+    );
+    assert_eq!(files(dir.path()), ["c-1.toml", "c-2.toml"]);
+    // --strict: the text is a drawn shape left out; nothing is written.
+    let out = tempfile::tempdir().unwrap();
+    let (code, _, stderr) = run_in(
+        out.path(),
+        &["import", shown, "-o", "c.toml", "--all", "--strict"],
+    );
+    assert_eq!(code, 1);
+    assert!(
+        stderr.ends_with(&format!(
+            "error: {shown}: --strict: the import leaves out what the file draws: skipped 1 \
+             <text> (not a curve)\n"
+        )),
+        "{stderr}"
+    );
+    assert!(files(out.path()).is_empty());
+    // --entities: only the rectangle; the path is reported as excluded.
+    let (code, _, stderr) = run_in(
+        out.path(),
+        &["import", shown, "-o", "r.toml", "--entities", "rect"],
+    );
+    assert_eq!(code, 0, "{stderr}");
+    assert!(
+        stderr.contains("excluded by --entities: 1 <path>"),
+        "{stderr}"
+    );
+    let rect = std::fs::read_to_string(out.path().join("r.toml")).unwrap();
+    assert!(rect.contains("name = \"plot\""), "{rect}");
+    let (code, _, stderr) = run_in(
+        out.path(),
+        &["import", shown, "-o", "r.toml", "--entities", "SPLINE"],
+    );
+    assert_eq!(
+        (code, stderr.as_str()),
+        (
+            2,
+            "error: entities = SPLINE: not an element the SVG importer reads (one of path, \
+             polyline, polygon, line, rect, circle, ellipse)\n"
+        )
+    );
+}
