@@ -95,7 +95,8 @@ pub struct Skip {
     pub count: usize,
 }
 
-/// What an import read and what it left, for one file ([module docs](self)).
+/// What an import read and what it left, for one file: every element or entity is imported,
+/// skipped with its reason, or imported with a warning.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct ImportReport {
     /// The curves imported by the kind of element or entity they came from (`<path>`,
