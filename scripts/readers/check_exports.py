@@ -55,6 +55,7 @@ try:
     from ezdxf.math import BSpline
     from plyfile import PlyData
     from OCP.BRep import BRep_Tool
+    from OCP.BRepCheck import BRepCheck_Analyzer
     from OCP.Geom import Geom_BSplineCurve, Geom_BSplineSurface
     from OCP.IFSelect import IFSelect_RetDone
     from OCP.STEPControl import STEPControl_Reader
@@ -356,6 +357,7 @@ def read_step(path):
     reader = STEPControl_Reader()
     check(reader.ReadFile(path) == IFSelect_RetDone, f"{path}: OCC could not read the file")
     check(reader.TransferRoots() == 1, f"{path}: OCC transferred no shape")
+    check(BRepCheck_Analyzer(reader.OneShape()).IsValid(), f"{path}: OCC's shape is not valid (BRepCheck)")
     model = reader.StepModel()
     points = []
     for k in range(1, model.NbEntities() + 1):
@@ -473,8 +475,48 @@ def check_step_curve(model):
           f"({worst_position / scale:.1e} of scale), degrees within {worst_degree:.1e} of eval")
 
 
+def unclamped_surface():
+    """A model file in WORK: a biquadratic B-spline surface over unclamped uniform knots, whose
+    STEP boundaries are iso-parameter curves rather than rows of the grid."""
+    points = []
+    for i in range(4):
+        for j in range(3):
+            t = i / 3
+            points.append(f'  {{ x = {i}, y = {j}, z = {(i * j) % 3 * 0.5}, truth = {t!r}, '
+                          f'indeterminacy = 0.25, falsity = {1 - t!r} }},')
+    text = "\n".join([
+        'kind = "bspline-surface"',
+        'name = "unclamped patch"',
+        "rows = 4", "cols = 3", "degree_u = 2", "degree_v = 2",
+        "knots_u = [0, 1, 2, 3, 4, 5, 6]",
+        "knots_v = [0, 0.5, 1, 1.5, 2, 2.5]",
+        "control_points = [", *points, "]", "",
+    ])
+    path = os.path.join(os.path.abspath(WORK), "unclamped-surface.toml")
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def apex_surface():
+    """A model file in WORK: a bicubic Bezier surface whose first row is one point (an apex),
+    so the STEP face is bounded by three edges."""
+    points = []
+    for i in range(4):
+        for j in range(4):
+            x, y, z = (0.0, 1.5, 2.0) if i == 0 else (float(i), float(j), float((i + j) % 2))
+            points.append(f"  {{ x = {x!r}, y = {y!r}, z = {z!r}, truth = {0.25 * j!r}, "
+                          f"indeterminacy = 0.5, falsity = {0.125 * i!r} }},")
+    text = "\n".join(['kind = "bezier-surface"', "rows = 4", "cols = 4",
+                      "control_points = [", *points, "]", ""])
+    path = os.path.join(os.path.abspath(WORK), "apex-surface.toml")
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
 def check_step_surface(model):
-    path = export(model, model.replace(".", "-") + ".stp")
+    path = export(model, os.path.basename(model).replace(".", "-") + ".stp")
     STEP_MODELS[path] = model
     shape, points = read_step(path)
     faces = subshapes(shape, TopAbs_FACE, TopoDS.Face)
@@ -645,6 +687,8 @@ def main():
             check_step_surface(model)
         else:
             check_step_curve(model)
+    check_step_surface(unclamped_surface())
+    check_step_surface(apex_surface())
     check_browser()
     print(f"{CHECKS} checks passed")
 

@@ -588,3 +588,413 @@ pub(super) fn document(model: &Model) -> Result<String, ExportError> {
     out.push_str("ENDSEC;\nEND-ISO-10303-21;\n");
     Ok(out)
 }
+
+#[cfg(test)]
+mod tests {
+    use std::path::PathBuf;
+
+    use neutrospline::{Bezier, ControlPoint, Degrees, Nurbs};
+    use neutrospline_io::{load, ReadOptions};
+    use proptest::prelude::*;
+
+    use super::super::{export, ExportFormat, ExportOptions};
+    use super::*;
+
+    fn degrees(t: f64, i: f64, f: f64) -> Degrees {
+        Degrees::new(t, i, f).unwrap()
+    }
+
+    /// The HEADER and the product structure every file starts with, up to `#14`.
+    fn preamble(kind: &str, title: &str, description: &str) -> String {
+        let version = env!("CARGO_PKG_VERSION");
+        format!(
+            "ISO-10303-21;
+HEADER;
+FILE_DESCRIPTION(('neutrospline {kind} model','membership neutrosophic','degrees: each control point''s CARTESIAN_POINT is named ''NAME T=truth I=indeterminacy F=falsity'''),'2;1');
+FILE_NAME('{title}','1970-01-01T00:00:00',(''),(''),'neutrospline {version}','neutrospline {version}','');
+FILE_SCHEMA(('AUTOMOTIVE_DESIGN {{ 1 0 10303 214 1 1 1 1 }}'));
+ENDSEC;
+DATA;
+#1=APPLICATION_CONTEXT('automotive_design');
+#2=APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',2000,#1);
+#3=PRODUCT_CONTEXT('',#1,'mechanical');
+#4=PRODUCT('{title}','{title}','{description}',(#3));
+#5=PRODUCT_RELATED_PRODUCT_CATEGORY('part',$,(#4));
+#6=PRODUCT_DEFINITION_FORMATION('','',#4);
+#7=PRODUCT_DEFINITION_CONTEXT('part definition',#1,'design');
+#8=PRODUCT_DEFINITION('design','',#6,#7);
+#9=PRODUCT_DEFINITION_SHAPE('','',#8);
+#10=(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.));
+#11=(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.));
+#12=(NAMED_UNIT(*)SI_UNIT($,.STERADIAN.)SOLID_ANGLE_UNIT());
+#13=UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-7),#10,'distance_accuracy_value','confusion accuracy');
+#14=(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#13))GLOBAL_UNIT_ASSIGNED_CONTEXT((#10,#11,#12))REPRESENTATION_CONTEXT('3D','3D'));
+"
+        )
+    }
+
+    #[test]
+    fn real_has_a_decimal_point_and_an_upper_case_exponent() {
+        assert_eq!(real(1.0), "1.");
+        assert_eq!(real(0.0), "0.");
+        assert_eq!(real(-0.0), "-0.");
+        assert_eq!(real(0.5), "0.5");
+        assert_eq!(real(123456.0), "123456.");
+        assert_eq!(real(0.1 + 0.2), "0.30000000000000004");
+        assert_eq!(real(1e-7), "1.E-7");
+        assert_eq!(real(-2.5e-7), "-2.5E-7");
+        assert_eq!(real(1e20), "1.E20");
+        assert_eq!(real(f64::MAX), "1.7976931348623157E308");
+        assert_eq!(real(5e-324), "5.E-324");
+        for v in [
+            std::f64::consts::FRAC_1_SQRT_2,
+            1.0 / 3.0,
+            6.02214076e23,
+            -1.0e-300,
+        ] {
+            let text = real(v);
+            assert!(text.contains('.'), "{text}");
+            assert_eq!(text.replace('E', "e").parse::<f64>().unwrap(), v);
+        }
+    }
+
+    #[test]
+    fn string_escapes_quotes_backslashes_and_other_characters() {
+        assert_eq!(string(""), "''");
+        assert_eq!(string("it's a\\b"), "'it''s a\\\\b'");
+        assert_eq!(string("caf\u{e9} au lait"), "'caf\\X2\\00E9\\X0\\ au lait'");
+        // Two characters outside ASCII in a row share one \X2\ run; beyond the BMP, the
+        // UTF-16 surrogate pair.
+        assert_eq!(string("\u{3b1}\u{3b2}!"), "'\\X2\\03B103B2\\X0\\!'");
+        assert_eq!(string("\u{1f600}"), "'\\X2\\D83DDE00\\X0\\'");
+        assert_eq!(string("a\nb"), "'a\\X2\\000A\\X0\\b'");
+    }
+
+    #[test]
+    fn distinct_knots_count_multiplicities() {
+        assert_eq!(
+            distinct_knots(&[0.0, 0.0, 0.0, 0.25, 0.25, 1.0, 1.0, 1.0]),
+            (vec![3, 2, 3], vec![0.0, 0.25, 1.0])
+        );
+        // Unclamped: every knot once.
+        assert_eq!(
+            distinct_knots(&[0.0, 1.0, 2.0, 3.0]),
+            (vec![1, 1, 1, 1], vec![0.0, 1.0, 2.0, 3.0])
+        );
+    }
+
+    /// The whole file of a quadratic plane Bézier curve, checked by hand against ISO 10303-21:
+    /// one instance per line, the header's three entities, the points at z = 0 named with
+    /// their degrees (the unnamed third as `P2`), the Bézier knots as 0 and 1 three times.
+    #[test]
+    fn step_text_of_a_small_curve() {
+        let curve = Bezier::new(vec![
+            ControlPoint::new([0.0, 0.0], degrees(1.0, 0.0, 0.0)),
+            ControlPoint::new([0.5, 2.0], degrees(0.5, 0.25, 0.125)),
+            ControlPoint::new([2.0, -1e-7], degrees(0.0, 0.0, 1.0)),
+        ])
+        .unwrap();
+        let model = Model::new(AnyCurve::Bezier(curve))
+            .with_name("arc")
+            .with_description("it's small")
+            .with_point_names([Some("A"), Some("B"), None])
+            .unwrap();
+        let expected = preamble("bezier", "arc", "it''s small")
+            + "#15=CARTESIAN_POINT('A T=1 I=0 F=0',(0.,0.,0.));
+#16=CARTESIAN_POINT('B T=0.5 I=0.25 F=0.125',(0.5,2.,0.));
+#17=CARTESIAN_POINT('P2 T=0 I=0 F=1',(2.,-1.E-7,0.));
+#18=B_SPLINE_CURVE_WITH_KNOTS('',2,(#15,#16,#17),.UNSPECIFIED.,.F.,.U.,(3,3),(0.,1.),.UNSPECIFIED.);
+#19=GEOMETRIC_CURVE_SET('',(#18));
+#20=GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION('arc',(#19),#14);
+#21=SHAPE_DEFINITION_REPRESENTATION(#9,#20);
+ENDSEC;
+END-ISO-10303-21;
+";
+        assert_eq!(document(&model).unwrap(), expected);
+    }
+
+    #[test]
+    fn step_rational_curve_is_the_complex_entity() {
+        let d = degrees(0.5, 0.5, 0.5);
+        let curve = Nurbs::new(
+            vec![
+                ControlPoint::new([1.0, 0.0, 0.0], d),
+                ControlPoint::new([1.0, 1.0, 0.5], d),
+                ControlPoint::new([0.0, 1.0, 1.0], d),
+            ],
+            vec![1.0, std::f64::consts::FRAC_1_SQRT_2, 1.0],
+            KnotVector::new(vec![0.0, 0.0, 0.0, 2.0, 2.0, 2.0], 2, 3).unwrap(),
+        )
+        .unwrap();
+        let text = document(&Model::new(AnyCurve::Nurbs(curve))).unwrap();
+        assert!(text.contains(
+            "#18=(BOUNDED_CURVE()B_SPLINE_CURVE(2,(#15,#16,#17),.UNSPECIFIED.,.F.,.U.)\
+             B_SPLINE_CURVE_WITH_KNOTS((3,3),(0.,2.),.UNSPECIFIED.)CURVE()\
+             GEOMETRIC_REPRESENTATION_ITEM()RATIONAL_B_SPLINE_CURVE((1.,0.7071067811865476,1.))\
+             REPRESENTATION_ITEM(''));\n"
+        ));
+        // No name: the kind names the product, the points are P0, P1, P2.
+        assert!(text.contains("#4=PRODUCT('nurbs','nurbs','',(#3));"));
+        assert!(text.contains("#17=CARTESIAN_POINT('P2 T=0.5 I=0.5 F=0.5',(0.,1.,1.));"));
+    }
+
+    fn grid(rows: usize, cols: usize, z: impl Fn(usize, usize) -> f64) -> Vec<ControlPoint<3>> {
+        let mut points = Vec::new();
+        for i in 0..rows {
+            for j in 0..cols {
+                let t = i as f64 / (rows - 1) as f64;
+                points.push(ControlPoint::new(
+                    [i as f64, j as f64, z(i, j)],
+                    degrees(t, 0.0, 1.0 - t),
+                ));
+            }
+        }
+        points
+    }
+
+    /// The lines of `text` that start with `prefix` after their `#n=`.
+    fn instances<'a>(text: &'a str, prefix: &str) -> Vec<&'a str> {
+        text.lines()
+            .filter(|l| {
+                l.split_once('=')
+                    .is_some_and(|(_, b)| b.starts_with(prefix))
+            })
+            .collect()
+    }
+
+    /// A 2 x 3 grid (two rows along u, three columns along v): the outer list of STEP's
+    /// control points is u, so it is two lists of three, row by row; the degrees are (1, 2).
+    #[test]
+    fn step_surface_grid_is_u_outer_v_inner() {
+        let surface = Surface::bezier(2, 3, grid(2, 3, |i, j| (i * j) as f64)).unwrap();
+        let text = document(&Model::new(surface)).unwrap();
+        assert!(text.contains(
+            "#21=B_SPLINE_SURFACE_WITH_KNOTS('',1,2,((#15,#16,#17),(#18,#19,#20)),\
+             .UNSPECIFIED.,.F.,.F.,.U.,(2,2),(3,3),(0.,1.),(0.,1.),.UNSPECIFIED.);\n"
+        ));
+        assert!(text.contains("#16=CARTESIAN_POINT('P1 T=0 I=0 F=1',(0.,1.,0.));"));
+        assert!(text.contains("#18=CARTESIAN_POINT('P3 T=1 I=0 F=0',(1.,0.,0.));"));
+        // The corners P00, P10, P12, P02 are the grid's points; the four boundaries reuse the
+        // grid's points too: v = v0 runs along u over column 0, u = u1 along v over row 1.
+        assert_eq!(
+            instances(&text, "VERTEX_POINT"),
+            [
+                "#22=VERTEX_POINT('',#15)",
+                "#23=VERTEX_POINT('',#18)",
+                "#24=VERTEX_POINT('',#20)",
+                "#25=VERTEX_POINT('',#17)"
+            ]
+            .map(|l| format!("{l};"))
+        );
+        let edges = instances(&text, "B_SPLINE_CURVE_WITH_KNOTS");
+        assert_eq!(edges.len(), 4);
+        assert!(edges[0].contains("1,(#15,#18),"));
+        assert!(edges[1].contains("2,(#18,#19,#20),"));
+        assert!(edges[2].contains("1,(#17,#20),"));
+        assert!(edges[3].contains("2,(#15,#16,#17),"));
+        assert_eq!(
+            instances(&text, "ORIENTED_EDGE")
+                .iter()
+                .map(|l| l.ends_with(".T.);"))
+                .collect::<Vec<_>>(),
+            [true, true, false, false]
+        );
+        assert_eq!(instances(&text, "EDGE_LOOP").len(), 1);
+        assert!(text.contains("MANIFOLD_SURFACE_SHAPE_REPRESENTATION('bezier-surface',"));
+    }
+
+    /// Unclamped knots: the boundaries are the iso-parameter curves and the corners the
+    /// surface's values, new points without names.
+    #[test]
+    fn step_unclamped_surface_bounds_by_iso_curves() {
+        let knots = || KnotVector::new(vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0], 2, 3).unwrap();
+        let surface =
+            Surface::bspline(3, 3, grid(3, 3, |i, j| (i + j) as f64), knots(), knots()).unwrap();
+        let text = document(&Model::new(surface.clone())).unwrap();
+        let named = instances(&text, "CARTESIAN_POINT('P");
+        assert_eq!(named.len(), 9);
+        let unnamed = instances(&text, "CARTESIAN_POINT(''");
+        // Four corners and 4 x 3 control points of the boundaries.
+        assert_eq!(unnamed.len(), 16);
+        let corner = surface.evaluate(2.0, 2.0).unwrap().position;
+        assert_eq!(corner, [0.5, 0.5, 1.0]);
+        assert!(text.contains("CARTESIAN_POINT('',(0.5,0.5,1.));"));
+        assert!(instances(&text, "B_SPLINE_CURVE_WITH_KNOTS")
+            .iter()
+            .all(|l| l.contains("(1,1,1,1,1,1),(0.,1.,2.,3.,4.,5.)")));
+    }
+
+    /// A boundary collapsed to a point (the first row all at the apex) is left out of the
+    /// loop, which then has three edges.
+    #[test]
+    fn step_collapsed_boundary_is_left_out() {
+        let mut points = grid(3, 3, |_, _| 0.0);
+        for p in &mut points[..3] {
+            p.position = [0.0, 1.0, 2.0];
+        }
+        let surface = Surface::bezier(3, 3, points).unwrap();
+        let text = document(&Model::new(surface)).unwrap();
+        assert_eq!(instances(&text, "EDGE_CURVE").len(), 4);
+        let edge_loop = instances(&text, "EDGE_LOOP");
+        assert_eq!(edge_loop.len(), 1);
+        assert_eq!(edge_loop[0].matches('#').count(), 4, "{}", edge_loop[0]);
+    }
+
+    fn example(name: &str) -> Model {
+        let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+            .join("../../examples")
+            .join(name);
+        load(&path, &ReadOptions::default()).expect("an example model")
+    }
+
+    /// Every example model exports, the same bytes twice, with one named point per control
+    /// point and one B-spline of the model's kind.
+    #[test]
+    fn step_every_example_exports() {
+        let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+        let mut count = 0;
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let name = entry.unwrap().file_name().to_string_lossy().into_owned();
+            if !(name.ends_with(".toml") || name.ends_with(".json")) {
+                continue;
+            }
+            let model = example(&name);
+            let text = document(&model).unwrap();
+            assert_eq!(text, document(&model).unwrap(), "{name}: reproducible");
+            let named = instances(&text, "CARTESIAN_POINT('")
+                .into_iter()
+                .filter(|l| l.contains(" T="))
+                .count();
+            assert_eq!(named, model.shape().control_count(), "{name}");
+            let rational = text.contains("RATIONAL_B_SPLINE_");
+            assert_eq!(rational, model.shape().weights().is_some(), "{name}");
+            let surface = text.contains("ADVANCED_FACE(");
+            assert_eq!(surface, model.shape().is_surface(), "{name}");
+            assert!(text.ends_with("ENDSEC;\nEND-ISO-10303-21;\n"));
+            assert!(text.is_ascii());
+            count += 1;
+        }
+        assert!(count >= 8, "{count} examples");
+    }
+
+    #[test]
+    fn step_export_options() {
+        let model = example("example1.toml");
+        let step = ExportFormat::Step;
+        assert_eq!(
+            export(&model, step, &ExportOptions::new()).unwrap().len(),
+            document(&model).unwrap().len()
+        );
+        let e = export(&model, step, &ExportOptions::new().with_samples(Some(10))).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "--samples does not apply to STEP, which is exact (a B-spline curve or surface)"
+        );
+        assert!(export(&model, step, &ExportOptions::new().with_ascii(true)).is_err());
+    }
+
+    /// Every real of a STEP file's DATA section: the parameters outside strings that start
+    /// with a digit or a sign and have a decimal point; each must read back as an `f64`.
+    fn reals(text: &str) -> Vec<f64> {
+        let data = &text[text.find("DATA;").unwrap()..];
+        let mut outside = String::new();
+        for (k, part) in data.split('\'').enumerate() {
+            if k % 2 == 0 {
+                outside.push_str(part);
+            }
+            outside.push(',');
+        }
+        outside
+            .split(|c| "(),;=".contains(c))
+            .filter(|t| t.contains('.') && t.starts_with(|c: char| c.is_ascii_digit() || c == '-'))
+            .map(|t| t.replace('E', "e").parse::<f64>().unwrap())
+            .collect()
+    }
+
+    fn value() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            -1e6..1e6f64,
+            Just(0.0),
+            Just(-0.0),
+            Just(1e-300),
+            Just(5e-324),
+            Just(1e300),
+            Just(-f64::MAX),
+        ]
+    }
+
+    proptest! {
+        /// Any B-spline or NURBS surface (unclamped knots, extreme coordinates, collapsed
+        /// boundaries) exports without a panic; every real of the file is a finite number in
+        /// STEP's syntax, and the surface's control values are among them to the last bit.
+        #[test]
+        fn step_surface_export_never_panics(
+            rows in 2usize..5,
+            cols in 2usize..5,
+            values in proptest::collection::vec(value(), 48),
+            steps in proptest::collection::vec(0.0..2.0f64, 16),
+            clamp in any::<bool>(),
+            rational in any::<bool>(),
+        ) {
+            let degree_u = rows - 1;
+            let degree_v = (cols - 1).min(2);
+            let knots = |degree: usize, count: usize, offset: usize| {
+                let mut k = Vec::new();
+                let mut x = 0.0;
+                for n in 0..count + degree + 1 {
+                    k.push(x);
+                    let clamped_end = clamp && (n < degree || n >= count);
+                    if !clamped_end {
+                        x += steps[(n + offset) % steps.len()].max(1e-3);
+                    }
+                }
+                KnotVector::new(k, degree, count).unwrap()
+            };
+            let points: Vec<ControlPoint<3>> = (0..rows * cols)
+                .map(|k| ControlPoint::new(
+                    [values[3 * k], values[3 * k + 1], values[3 * k + 2]],
+                    degrees(0.5, 0.25, 0.125),
+                ))
+                .collect();
+            let surface = if rational {
+                let weights = (0..rows * cols).map(|k| 0.5 + steps[k % 16]).collect();
+                Surface::nurbs(rows, cols, points.clone(), weights, knots(degree_u, rows, 0), knots(degree_v, cols, 5))
+            } else {
+                Surface::bspline(rows, cols, points.clone(), knots(degree_u, rows, 0), knots(degree_v, cols, 5))
+            }
+            .unwrap();
+            if let Ok(text) = document(&Model::new(surface)) {
+                prop_assert!(text.is_ascii());
+                let found = reals(&text);
+                for p in &points {
+                    for x in p.position {
+                        prop_assert!(found.iter().any(|f| f.to_bits() == x.to_bits()), "{x} missing");
+                    }
+                }
+            }
+        }
+
+        /// Any curve, plane or spatial, exports; its control values are in the file exactly.
+        #[test]
+        fn step_curve_export_never_panics(
+            values in proptest::collection::vec(value(), 4..24),
+            degree in 1usize..4,
+        ) {
+            let points: Vec<ControlPoint<2>> = values
+                .chunks_exact(2)
+                .map(|p| ControlPoint::new([p[0], p[1]], degrees(1.0, 0.0, 0.0)))
+                .collect();
+            let degree = degree.min(points.len() - 1);
+            let count = points.len();
+            let knots: Vec<f64> = (0..count + degree + 1).map(|k| k as f64 * 0.25).collect();
+            let curve = neutrospline::BSpline::new(points.clone(), KnotVector::new(knots, degree, count).unwrap()).unwrap();
+            let text = document(&Model::new(AnyCurve::BSpline(curve))).unwrap();
+            let found = reals(&text);
+            for p in &points {
+                for x in p.position {
+                    prop_assert!(found.iter().any(|f| f.to_bits() == x.to_bits()), "{x} missing");
+                }
+            }
+        }
+    }
+}
