@@ -26,6 +26,10 @@
 //!   are the grid's entities), otherwise the surface's iso-parameter curve
 //!   ([`Surface::iso_curve`]). A boundary collapsed to a point (all its control points equal)
 //!   is left out of the loop.
+//! - A spline with an interior knot of multiplicity degree + 1 (which ISO 10303-42 does not
+//!   allow in one entity) is written as the exact pieces on either side of it
+//!   ([`pieces`]): a curve as several curves of the `GEOMETRIC_CURVE_SET`, a surface as
+//!   several faces of the shell.
 //!
 //! # The geometry
 //!
@@ -266,24 +270,127 @@ fn curve_knots<const D: usize>(curve: &AnyCurve<D>) -> KnotVector {
     }
 }
 
-/// The curve's entities: the control points (named with their degrees) and the B-spline.
-fn write_curve<const D: usize>(data: &mut Data, model: &Model, curve: &AnyCurve<D>) -> usize {
+/// A part of a spline between interior knots of multiplicity degree + 1: its control points
+/// `start..end` and its knots `t_start ..= t_(end+p)`.
+#[derive(Debug, PartialEq)]
+struct Piece {
+    start: usize,
+    end: usize,
+    knots: Vec<f64>,
+}
+
+/// The pieces of a spline: one, unless an interior knot appears degree + 1 times. There the
+/// spline is two independent splines (the basis functions on either side share no control
+/// point; the curve may jump), which STEP cannot write as one entity (ISO 10303-42 allows an
+/// interior multiplicity of at most the degree, and OpenCASCADE refuses more). A run of
+/// degree + 1 knots starting at index s splits the control points at s: `P_0 .. P_(s-1)` over
+/// `t_0 .. t_(s+p)` and `P_s ..` over `t_s ..`, each the same curve on its part of the domain,
+/// exactly. A piece with at most `degree` control points lies outside the domain (its run is
+/// the domain's end) and is left out.
+fn pieces(knots: &KnotVector) -> Vec<Piece> {
+    let k = knots.knots();
+    let p = knots.degree();
+    let n = knots.control_count();
+    let mut splits = Vec::new();
+    let mut run = 0;
+    while run < k.len() {
+        let len = k[run..].iter().take_while(|&&x| x == k[run]).count();
+        if len == p + 1 && run > 0 && run + p < k.len() - 1 {
+            splits.push(run);
+        }
+        run += len;
+    }
+    let starts = std::iter::once(0).chain(splits.iter().copied());
+    let ends = splits.iter().copied().chain(std::iter::once(n));
+    starts
+        .zip(ends)
+        .filter(|&(start, end)| end - start > p && k[start + p] < k[end])
+        .map(|(start, end)| Piece {
+            start,
+            end,
+            knots: k[start..=end + p].to_vec(),
+        })
+        .collect()
+}
+
+/// The curve's entities: the control points (named with their degrees) and the B-spline, one
+/// per [`pieces`] (one for every curve whose interior knots are not degree + 1 times).
+fn write_curve<const D: usize>(data: &mut Data, model: &Model, curve: &AnyCurve<D>) -> Vec<usize> {
     let control = curve.control_points();
-    let points: Vec<usize> = control
-        .iter()
-        .enumerate()
-        .map(|(k, p)| data.point(&point_label(model, k, &p.degrees), position(&p.position)))
-        .collect();
     let knots = curve_knots(curve);
-    curve_entity(
-        data,
-        &CurveData {
-            degree: curve.degree(),
-            points,
-            weights: curve.weights().map(<[f64]>::to_vec),
-            knots: knots.knots(),
-        },
-    )
+    let weights = curve.weights();
+    pieces(&knots)
+        .into_iter()
+        .map(|piece| {
+            let points: Vec<usize> = (piece.start..piece.end)
+                .map(|k| {
+                    let p = &control[k];
+                    data.point(&point_label(model, k, &p.degrees), position(&p.position))
+                })
+                .collect();
+            curve_entity(
+                data,
+                &CurveData {
+                    degree: curve.degree(),
+                    points,
+                    weights: weights.map(|w| w[piece.start..piece.end].to_vec()),
+                    knots: &piece.knots,
+                },
+            )
+        })
+        .collect()
+}
+
+/// The surface's faces: one, or one per pair of [`pieces`] in u and v (each piece a surface
+/// of its own, its control points named with their indices in the whole grid).
+fn write_surfaces(
+    data: &mut Data,
+    model: &Model,
+    surface: &Surface,
+) -> Result<Vec<usize>, ExportError> {
+    let (rows, cols) = (surface.rows(), surface.cols());
+    let control = surface.control_points();
+    let label = |k: usize| point_label(model, k, &control[k].degrees);
+    let pieces_u = pieces(surface.knots_u());
+    let pieces_v = pieces(surface.knots_v());
+    if pieces_u.len() == 1 && pieces_v.len() == 1 {
+        let labels: Vec<String> = (0..rows * cols).map(label).collect();
+        return Ok(vec![write_surface(data, surface, &labels)?]);
+    }
+    let mut faces = Vec::new();
+    for pu in &pieces_u {
+        for pv in &pieces_v {
+            let indices: Vec<usize> = (pu.start..pu.end)
+                .flat_map(|i| (pv.start..pv.end).map(move |j| i * cols + j))
+                .collect();
+            let points = indices.iter().map(|&k| control[k]).collect();
+            let knots = |piece: &Piece, degree: usize| {
+                KnotVector::new(piece.knots.clone(), degree, piece.end - piece.start)
+            };
+            let (ku, kv) = match (knots(pu, surface.degree_u()), knots(pv, surface.degree_v())) {
+                (Ok(ku), Ok(kv)) => (ku, kv),
+                // A piece has more than `degree` control points, non-decreasing knots of
+                // multiplicity at most degree + 1 and a non-empty domain (`pieces`).
+                (Err(e), _) | (_, Err(e)) => unreachable!("a piece's knots are valid: {e}"),
+            };
+            let (r, c) = (pu.end - pu.start, pv.end - pv.start);
+            let piece = match surface.weights() {
+                None => Surface::bspline(r, c, points, ku, kv),
+                Some(w) => Surface::nurbs(
+                    r,
+                    c,
+                    points,
+                    indices.iter().map(|&k| w[k]).collect(),
+                    ku,
+                    kv,
+                ),
+            }
+            .unwrap_or_else(|e| unreachable!("a piece of a valid surface is valid: {e}"));
+            let labels: Vec<String> = indices.iter().map(|&k| label(k)).collect();
+            faces.push(write_surface(data, &piece, &labels)?);
+        }
+    }
+    Ok(faces)
 }
 
 /// One boundary of a surface: fixed `u` or `v` at the start or the end of its domain.
@@ -304,18 +411,19 @@ fn clamped_at(knots: &KnotVector, at_end: bool) -> bool {
     }
 }
 
-/// The surface's entities: the grid, the surface, and the face bounded by its boundaries.
+/// The surface's entities: the grid (its points named `labels`, row by row), the surface, and
+/// the face bounded by its boundaries; returns the face.
 fn write_surface(
     data: &mut Data,
-    model: &Model,
     surface: &Surface,
-) -> Result<(usize, usize), ExportError> {
+    labels: &[String],
+) -> Result<usize, ExportError> {
     let (rows, cols) = (surface.rows(), surface.cols());
     let control = surface.control_points();
     let grid: Vec<usize> = control
         .iter()
-        .enumerate()
-        .map(|(k, p)| data.point(&point_label(model, k, &p.degrees), p.position))
+        .zip(labels)
+        .map(|(p, label)| data.point(label, p.position))
         .collect();
     let weights = surface.weights();
     let grid_list = list(0..rows, |i| {
@@ -436,10 +544,7 @@ fn write_surface(
     };
     let edge_loop = data.add(format!("EDGE_LOOP('',{})", list(kept, reference)));
     let bound = data.add(format!("FACE_OUTER_BOUND('',#{edge_loop},.T.)"));
-    let face = data.add(format!("ADVANCED_FACE('',(#{bound}),#{surface_id},.T.)"));
-    let shell = data.add(format!("OPEN_SHELL('',(#{face}))"));
-    let model_id = data.add(format!("SHELL_BASED_SURFACE_MODEL('',(#{shell}))"));
-    Ok((model_id, surface_id))
+    Ok(data.add(format!("ADVANCED_FACE('',(#{bound}),#{surface_id},.T.)")))
 }
 
 /// The boundary curve of `side` and its control points' positions: the grid's edge row or
@@ -544,15 +649,20 @@ pub(super) fn document(model: &Model) -> Result<String, ExportError> {
     ));
     let representation = match model.shape() {
         Shape::Curve(c) => {
-            let curve = neutrospline::on_dimension!(c, c => write_curve(&mut data, model, c));
-            let set = data.add(format!("GEOMETRIC_CURVE_SET('',(#{curve}))"));
+            let curves = neutrospline::on_dimension!(c, c => write_curve(&mut data, model, c));
+            let set = data.add(format!(
+                "GEOMETRIC_CURVE_SET('',{})",
+                list(curves, reference)
+            ));
             data.add(format!(
                 "GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION({},(#{set}),#{geometric_context})",
                 string(&title)
             ))
         }
         Shape::Surface(s) => {
-            let (shell_model, _) = write_surface(&mut data, model, s)?;
+            let faces = write_surfaces(&mut data, model, s)?;
+            let shell = data.add(format!("OPEN_SHELL('',{})", list(faces, reference)));
+            let shell_model = data.add(format!("SHELL_BASED_SURFACE_MODEL('',(#{shell}))"));
             data.add(format!(
                 "MANIFOLD_SURFACE_SHAPE_REPRESENTATION({},(#{shell_model}),#{geometric_context})",
                 string(&title)
@@ -974,11 +1084,13 @@ END-ISO-10303-21;
             }
         }
 
-        /// Any curve, plane or spatial, exports; its control values are in the file exactly.
+        /// Any plane B-spline curve (repeated knots, extreme coordinates) exports; the
+        /// control values of its pieces are in the file exactly.
         #[test]
         fn step_curve_export_never_panics(
             values in proptest::collection::vec(value(), 4..24),
             degree in 1usize..4,
+            steps in proptest::collection::vec(prop_oneof![Just(0.0), Just(0.25), 0.01..1.0f64], 30),
         ) {
             let points: Vec<ControlPoint<2>> = values
                 .chunks_exact(2)
@@ -986,15 +1098,101 @@ END-ISO-10303-21;
                 .collect();
             let degree = degree.min(points.len() - 1);
             let count = points.len();
-            let knots: Vec<f64> = (0..count + degree + 1).map(|k| k as f64 * 0.25).collect();
-            let curve = neutrospline::BSpline::new(points.clone(), KnotVector::new(knots, degree, count).unwrap()).unwrap();
+            let knots: Vec<f64> = steps[..count + degree + 1]
+                .iter()
+                .scan(0.0, |x, step| {
+                    *x += step;
+                    Some(*x)
+                })
+                .collect();
+            let Ok(knots) = KnotVector::new(knots, degree, count) else {
+                return Ok(());
+            };
+            let kept: Vec<usize> = pieces(&knots).iter().flat_map(|p| p.start..p.end).collect();
+            let curve = neutrospline::BSpline::new(points.clone(), knots).unwrap();
             let text = document(&Model::new(AnyCurve::BSpline(curve))).unwrap();
+            prop_assert!(!kept.is_empty());
             let found = reals(&text);
-            for p in &points {
-                for x in p.position {
+            for k in kept {
+                for x in points[k].position {
                     prop_assert!(found.iter().any(|f| f.to_bits() == x.to_bits()), "{x} missing");
                 }
             }
         }
+    }
+
+    #[test]
+    fn pieces_split_at_interior_knots_of_full_multiplicity() {
+        let one = KnotVector::new(vec![0.0, 0.0, 0.0, 0.5, 0.5, 1.0, 1.0, 1.0], 2, 5).unwrap();
+        assert_eq!(
+            pieces(&one),
+            [Piece {
+                start: 0,
+                end: 5,
+                knots: one.knots().to_vec()
+            }]
+        );
+        let two = KnotVector::new(vec![0.0, 0.0, 0.0, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0], 2, 6).unwrap();
+        assert_eq!(
+            pieces(&two),
+            [
+                Piece {
+                    start: 0,
+                    end: 3,
+                    knots: vec![0.0, 0.0, 0.0, 0.5, 0.5, 0.5]
+                },
+                Piece {
+                    start: 3,
+                    end: 6,
+                    knots: vec![0.5, 0.5, 0.5, 1.0, 1.0, 1.0]
+                },
+            ]
+        );
+        // Unclamped, with the full run where the domain [t_2, t_5] = [1, 3] starts: the part
+        // before it (one control point) is outside the domain and left out.
+        let start = KnotVector::new(vec![0.0, 1.0, 1.0, 1.0, 2.0, 3.0, 4.0], 2, 4).unwrap();
+        assert_eq!(
+            pieces(&start),
+            [Piece {
+                start: 1,
+                end: 4,
+                knots: vec![1.0, 1.0, 1.0, 2.0, 3.0, 4.0]
+            }]
+        );
+    }
+
+    /// A quadratic curve with a triple knot at 0.5 (it jumps from (2, 0) to (3, 0)) is two
+    /// curves; the points keep their indices in the model.
+    #[test]
+    fn step_curve_with_a_full_interior_knot_is_two_curves() {
+        let d = degrees(1.0, 0.0, 0.0);
+        let points = (0..6)
+            .map(|k| ControlPoint::new([k as f64, (k % 2) as f64], d))
+            .collect();
+        let knots =
+            KnotVector::new(vec![0.0, 0.0, 0.0, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0], 2, 6).unwrap();
+        let curve = neutrospline::BSpline::new(points, knots).unwrap();
+        let text = document(&Model::new(AnyCurve::BSpline(curve))).unwrap();
+        let curves = instances(&text, "B_SPLINE_CURVE_WITH_KNOTS");
+        assert_eq!(curves.len(), 2);
+        assert!(curves[0].ends_with(",(3,3),(0.,0.5),.UNSPECIFIED.);"));
+        assert!(curves[1].ends_with(",(3,3),(0.5,1.),.UNSPECIFIED.);"));
+        assert!(text.contains("#19=CARTESIAN_POINT('P3 T=1 I=0 F=0',(3.,1.,0.));"));
+        assert!(text.contains("GEOMETRIC_CURVE_SET('',(#18,#22));"));
+    }
+
+    /// A bilinear surface with a double knot in u is two faces of one shell.
+    #[test]
+    fn step_surface_with_a_full_interior_knot_is_two_faces() {
+        let u = KnotVector::new(vec![0.0, 0.0, 1.0, 1.0, 2.0, 2.0], 1, 4).unwrap();
+        let v = KnotVector::new(vec![0.0, 0.0, 1.0, 1.0], 1, 2).unwrap();
+        let surface = Surface::bspline(4, 2, grid(4, 2, |i, _| i as f64), u, v).unwrap();
+        let text = document(&Model::new(surface)).unwrap();
+        assert_eq!(instances(&text, "ADVANCED_FACE").len(), 2);
+        let surfaces = instances(&text, "B_SPLINE_SURFACE_WITH_KNOTS");
+        assert!(surfaces[0].contains("(2,2),(2,2),(0.,1.),(0.,1.)"));
+        assert!(surfaces[1].contains("(2,2),(2,2),(1.,2.),(0.,1.)"));
+        assert!(text.contains("CARTESIAN_POINT('P7 T=1 I=0 F=0',(3.,1.,3.));"));
+        assert_eq!(instances(&text, "OPEN_SHELL").len(), 1);
     }
 }
