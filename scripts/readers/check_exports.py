@@ -62,6 +62,7 @@ try:
     from OCP.IFSelect import IFSelect_RetDone
     from OCP.Interface import Interface_CheckTool
     from OCP.STEPControl import STEPControl_Reader
+    from OCP.StepBasic import StepBasic_Product
     from OCP.StepGeom import StepGeom_CartesianPoint
     from OCP.collections import Array1_double, Array1_gp_Pnt, Array1_int, Array2_double, Array2_gp_Pnt
     from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE
@@ -356,7 +357,8 @@ def flat_knots(knot_values, multiplicities):
 
 
 def read_step(path):
-    """OCC's shape of the file and the (name, coordinates) of its CARTESIAN_POINTs."""
+    """OCC's shape of the file and the (name, coordinates) of its CARTESIAN_POINTs; checks
+    that its one PRODUCT has the model's name (or kind) and description."""
     reader = STEPControl_Reader()
     check(reader.ReadFile(path) == IFSelect_RetDone, f"{path}: OCC could not read the file")
     # OCC's checks of the file as it loaded it (syntax) and of every entity against the
@@ -368,11 +370,17 @@ def read_step(path):
     check(BRepCheck_Analyzer(reader.OneShape()).IsValid(), f"{path}: OCC's shape is not valid (BRepCheck)")
     model = reader.StepModel()
     points = []
+    products = []
     for k in range(1, model.NbEntities() + 1):
         entity = model.Value(k)
+        if isinstance(entity, StepBasic_Product):
+            products.append((entity.Name().ToCString(), entity.Description().ToCString()))
         if isinstance(entity, StepGeom_CartesianPoint):
             coordinates = [entity.CoordinatesValue(c) for c in range(1, entity.NbCoordinates() + 1)]
             points.append((entity.Name().ToCString(), coordinates))
+    info = model_info_of(path)
+    expected = (info.get("name", info["kind"]), info.get("description", ""))
+    check(products == [expected], f"{path}: products {products}, not {[expected]}")
     return reader.OneShape(), points
 
 
@@ -439,7 +447,7 @@ def curve_knots(curve):
 
 
 def check_step_curve(model):
-    path = export(model, model.replace(".", "-") + ".step")
+    path = export(model, os.path.basename(model).replace(".", "-") + ".step")
     STEP_MODELS[path] = model
     shape, points = read_step(path)
     edges = subshapes(shape, TopAbs_EDGE, TopoDS.Edge)
@@ -481,6 +489,26 @@ def check_step_curve(model):
     print(f"ok  {os.path.basename(path)}: OCC Geom_BSplineCurve degree {degree}, {n} poles, "
           f"{len(values)} distinct knots; positions within {worst_position:.1e} "
           f"({worst_position / scale:.1e} of scale), degrees within {worst_degree:.1e} of eval")
+
+
+def named_curve():
+    """A model file in WORK whose names need STEP's string encoding: quotes, a backslash,
+    characters outside ASCII and beyond the Basic Multilingual Plane, a line break."""
+    text = "\n".join([
+        'kind = "bspline"',
+        'name = "caf\u00e9 \u03a9 \U0001F600 \'q\' \\\\ end"',
+        'description = "two\\nlines"',
+        "degree = 1",
+        "knots = [0, 0, 1, 1]",
+        "control_points = [",
+        '  { name = "\u00c4 1", x = 0, y = 0, truth = 0.5, indeterminacy = 0.25, falsity = 0 },',
+        "  { x = 1, y = -1e-9, truth = 1, indeterminacy = 0, falsity = 0 },",
+        "]", "",
+    ])
+    path = os.path.join(os.path.abspath(WORK), "named-curve.toml")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text)
+    return path
 
 
 def unclamped_surface():
@@ -695,6 +723,7 @@ def main():
             check_step_surface(model)
         else:
             check_step_curve(model)
+    check_step_curve(named_curve())
     check_step_surface(unclamped_surface())
     check_step_surface(apex_surface())
     check_browser()

@@ -1,6 +1,7 @@
 //! STEP (ISO 10303-21 clear text) export, schema AP214 `AUTOMOTIVE_DESIGN`: the model's curve
-//! or surface as one exact B-spline entity, with the product structure a CAD reader needs to
-//! transfer it as a shape.
+//! or surface as one exact B-spline entity (or its exact pieces, see below), with the product
+//! structure a CAD reader needs to transfer it as a shape. AP214 rather than AP242: it is the
+//! schema OpenCASCADE writes by default and the one most CAD programs read.
 //!
 //! # The file
 //!
@@ -57,8 +58,8 @@
 //! model (or `P` and its index from 0, row by row for a surface, when it has none), then its
 //! truth, indeterminacy and falsity as shortest round-trip decimals. A CAD program shows the
 //! name with the point; a script reads the last three space-separated fields. Strings are
-//! encoded as ISO 10303-21 says: `'` and `\` doubled, a character outside printable ASCII as
-//! `\X2\hhhh\X0\` (UTF-16 code units in hexadecimal).
+//! encoded as ISO 10303-21 says: `'` and `\` doubled, characters outside printable ASCII as
+//! `\X2\hhhh\X0\` (`\X4\hhhhhhhh\X0\` beyond the Basic Multilingual Plane).
 //!
 //! Not carried: the fuzzy spreads of the positions.
 
@@ -111,36 +112,44 @@ fn plain(v: f64) -> String {
     String::from_utf8_lossy(&digits).into_owned()
 }
 
-/// A STEP string literal: quoted, `'` and `\` doubled, characters outside printable ASCII as
-/// `\X2\hhhh\X0\` (UTF-16 code units).
+/// A STEP string literal (ISO 10303-21, 7.3.3): quoted, `'` and `\` doubled, a run of
+/// characters outside printable ASCII as `\X2\hhhh..\X0\` (four hexadecimal digits each) or,
+/// beyond the Basic Multilingual Plane, `\X4\hhhhhhhh..\X0\` (eight each).
 fn string(text: &str) -> String {
     let mut out = String::with_capacity(text.len() + 2);
     out.push('\'');
-    let mut wide = String::new();
-    let flush = |out: &mut String, wide: &mut String| {
-        if !wide.is_empty() {
-            out.push_str("\\X2\\");
-            out.push_str(wide);
-            out.push_str("\\X0\\");
-            wide.clear();
-        }
-    };
+    // The hexadecimal digits per character of the run being written: 4 after `\X2\`, 8 after
+    // `\X4\`, 0 in plain ASCII.
+    let mut run = 0;
     for c in text.chars() {
-        if (' '..='~').contains(&c) {
-            flush(&mut out, &mut wide);
-            match c {
-                '\'' => out.push_str("''"),
-                '\\' => out.push_str("\\\\"),
-                _ => out.push(c),
+        let width = match c {
+            ' '..='~' => 0,
+            '\u{0}'..='\u{ffff}' => 4,
+            _ => 8,
+        };
+        if width != run {
+            if run != 0 {
+                out.push_str("\\X0\\");
             }
-        } else {
-            let mut units = [0u16; 2];
-            for unit in c.encode_utf16(&mut units) {
-                let _ = write!(wide, "{unit:04X}");
+            match width {
+                4 => out.push_str("\\X2\\"),
+                8 => out.push_str("\\X4\\"),
+                _ => {}
+            }
+            run = width;
+        }
+        match (width, c) {
+            (0, '\'') => out.push_str("''"),
+            (0, '\\') => out.push_str("\\\\"),
+            (0, _) => out.push(c),
+            _ => {
+                let _ = write!(out, "{:0width$X}", u32::from(c));
             }
         }
     }
-    flush(&mut out, &mut wide);
+    if run != 0 {
+        out.push_str("\\X0\\");
+    }
     out.push('\'');
     out
 }
@@ -773,10 +782,13 @@ DATA;
         assert_eq!(string(""), "''");
         assert_eq!(string("it's a\\b"), "'it''s a\\\\b'");
         assert_eq!(string("caf\u{e9} au lait"), "'caf\\X2\\00E9\\X0\\ au lait'");
-        // Two characters outside ASCII in a row share one \X2\ run; beyond the BMP, the
-        // UTF-16 surrogate pair.
+        // Two characters outside ASCII in a row share one \X2\ run; beyond the BMP, \X4\.
         assert_eq!(string("\u{3b1}\u{3b2}!"), "'\\X2\\03B103B2\\X0\\!'");
-        assert_eq!(string("\u{1f600}"), "'\\X2\\D83DDE00\\X0\\'");
+        assert_eq!(string("\u{1f600}"), "'\\X4\\0001F600\\X0\\'");
+        assert_eq!(
+            string("a\u{e9}\u{1f600}\u{1f601}b"),
+            "'a\\X2\\00E9\\X0\\\\X4\\0001F6000001F601\\X0\\b'"
+        );
         assert_eq!(string("a\nb"), "'a\\X2\\000A\\X0\\b'");
     }
 
