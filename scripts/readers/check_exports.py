@@ -18,6 +18,15 @@ parameters:
 - pygltflib reads .glb and .gltf files: the accessors of POSITION, _TRUTH, _INDETERMINACY and
   _FALSITY hold the eval values rounded to float32, exactly; the Khronos glTF validator
   (npm `gltf-validator`) reports no errors.
+- OpenCASCADE (cadquery-ocp, the OCP bindings) reads each STEP file (STEPControl_Reader,
+  TransferRoots; no message from its load and entity checks, a valid shape for BRepCheck) of
+  every TOML and JSON example, and of two generated surfaces (unclamped knots, a boundary
+  collapsed to a point): a curve is one edge whose Geom_BSplineCurve, a surface one face whose
+  Geom_BSplineSurface, has the model's degree(s), poles (u index outer), weights, knots and
+  multiplicities exactly, and OCC's Value(t) / Value(u, v) gives the eval positions to 1e-12 of
+  the bounding box's diagonal; the CARTESIAN_POINT names (read through OCC's StepModel) carry
+  the model's point names and degrees, and OCC's B-spline of those degrees (same knots and
+  weights) gives the eval degrees to 1e-12. The maximum deviation is printed per example.
 - A real viewer: three.js (npm `three`) loads the .glb of the example surface in headless
   Chromium and draws it with its vertex colours, blue-dominant where the truth is low and
   green-dominant where it is high (viridis). Skipped when Chromium is not installed, unless
@@ -47,6 +56,19 @@ try:
     import pygltflib
     from ezdxf.math import BSpline
     from plyfile import PlyData
+    from OCP.BRep import BRep_Tool
+    from OCP.BRepCheck import BRepCheck_Analyzer
+    from OCP.Geom import Geom_BSplineCurve, Geom_BSplineSurface
+    from OCP.IFSelect import IFSelect_RetDone
+    from OCP.Interface import Interface_CheckTool
+    from OCP.STEPControl import STEPControl_Reader
+    from OCP.StepBasic import StepBasic_Product
+    from OCP.StepGeom import StepGeom_CartesianPoint
+    from OCP.collections import Array1_double, Array1_gp_Pnt, Array1_int, Array2_double, Array2_gp_Pnt
+    from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopoDS import TopoDS
+    from OCP.gp import gp_Pnt
 except ImportError as error:
     print(f"missing reader: {error}", file=sys.stderr)
     sys.exit(MISSING)
@@ -317,6 +339,274 @@ def check_ezdxf_import():
         print(f"ok  {os.path.basename(model)}: imported from ezdxf, eval within {worst:.1e} of ezdxf")
 
 
+def model_knots(info, key, degree, count):
+    """A direction's knots from the model file: listed, the rule `clamped-uniform`, or a Bezier
+    one's p + 1 zeros and p + 1 ones."""
+    knots = info.get(key)
+    if knots is None:
+        return [0.0] * (degree + 1) + [1.0] * (degree + 1)
+    if knots == "clamped-uniform":
+        spans = count - degree
+        return [0.0] * (degree + 1) + [j / spans for j in range(1, spans)] + [1.0] * (degree + 1)
+    check(isinstance(knots, list), f"knot rule {knots!r} is not one this check knows")
+    return [float(k) for k in knots]
+
+
+def flat_knots(knot_values, multiplicities):
+    return [k for k, m in zip(knot_values, multiplicities) for _ in range(m)]
+
+
+def read_step(path):
+    """OCC's shape of the file and the (name, coordinates) of its CARTESIAN_POINTs; checks
+    that its one PRODUCT has the model's name (or kind) and description."""
+    reader = STEPControl_Reader()
+    check(reader.ReadFile(path) == IFSelect_RetDone, f"{path}: OCC could not read the file")
+    # OCC's checks of the file as it loaded it (syntax) and of every entity against the
+    # schema (parameter counts and types): no failure and no warning.
+    check(reader.WS().ModelCheckList().IsEmpty(False), f"{path}: OCC's load check has messages")
+    check(Interface_CheckTool(reader.StepModel()).CompleteCheckList().IsEmpty(False),
+          f"{path}: OCC's entity check has messages")
+    check(reader.TransferRoots() == 1, f"{path}: OCC transferred no shape")
+    check(BRepCheck_Analyzer(reader.OneShape()).IsValid(), f"{path}: OCC's shape is not valid (BRepCheck)")
+    model = reader.StepModel()
+    points = []
+    products = []
+    for k in range(1, model.NbEntities() + 1):
+        entity = model.Value(k)
+        if isinstance(entity, StepBasic_Product):
+            products.append((entity.Name().ToCString(), entity.Description().ToCString()))
+        if isinstance(entity, StepGeom_CartesianPoint):
+            coordinates = [entity.CoordinatesValue(c) for c in range(1, entity.NbCoordinates() + 1)]
+            points.append((entity.Name().ToCString(), coordinates))
+    info = model_info_of(path)
+    expected = (info.get("name", info["kind"]), info.get("description", ""))
+    check(products == [expected], f"{path}: products {products}, not {[expected]}")
+    return reader.OneShape(), points
+
+
+def subshapes(shape, kind, cast):
+    found = []
+    explorer = TopExp_Explorer(shape, kind)
+    while explorer.More():
+        found.append(cast(explorer.Current()))
+        explorer.Next()
+    return found
+
+
+def check_point_names(path, points, rows):
+    """The CARTESIAN_POINTs named `NAME T=t I=i F=f`, in the model's order, at the model's
+    control points; returns their degrees."""
+    info = model_info_of(path)
+    named = [(name, xyz) for name, xyz in points if " T=" in name]
+    check(len(named) == len(rows), f"{path}: {len(named)} named points, {len(rows)} control points")
+    degrees = []
+    for k, ((name, xyz), (position, triple, _)) in enumerate(zip(named, rows)):
+        fields = name.split(" ")
+        label = " ".join(fields[:-3])
+        expected_label = info["control_points"][k].get("name", f"P{k}")
+        check(label == expected_label, f"{path}: point {k} is named {label!r}, not {expected_label!r}")
+        check([f[:2] for f in fields[-3:]] == ["T=", "I=", "F="], f"{path}: point name {name!r}")
+        values = [float(f[2:]) for f in fields[-3:]]
+        check(values == triple, f"{path}: point {k}: degrees {values} != {triple}")
+        check(xyz == position, f"{path}: point {k} at {xyz}, not {position}")
+        degrees.append(values)
+    return degrees
+
+
+STEP_MODELS = {}
+
+
+def model_info_of(path):
+    return model_info(STEP_MODELS[path])
+
+
+def scale_of(rows):
+    lo = np.min([p for p, _, _ in rows], axis=0)
+    hi = np.max([p for p, _, _ in rows], axis=0)
+    return float(np.linalg.norm(hi - lo))
+
+
+def real_array(values):
+    array = Array1_double(1, len(values))
+    for k, v in enumerate(values, start=1):
+        array.SetValue(k, float(v))
+    return array
+
+
+def int_array(values):
+    array = Array1_int(1, len(values))
+    for k, v in enumerate(values, start=1):
+        array.SetValue(k, int(v))
+    return array
+
+
+def curve_knots(curve):
+    values = [curve.Knot(k) for k in range(1, curve.NbKnots() + 1)]
+    multiplicities = [curve.Multiplicity(k) for k in range(1, curve.NbKnots() + 1)]
+    return values, multiplicities
+
+
+def check_step_curve(model):
+    path = export(model, os.path.basename(model).replace(".", "-") + ".step")
+    STEP_MODELS[path] = model
+    shape, points = read_step(path)
+    edges = subshapes(shape, TopAbs_EDGE, TopoDS.Edge)
+    check(len(edges) == 1, f"{path}: {len(edges)} edges, not 1")
+    curve = BRep_Tool.Curve_s(edges[0], 0.0, 0.0)
+    check(isinstance(curve, Geom_BSplineCurve), f"{path}: OCC's curve is a {type(curve).__name__}")
+    info, rows = control_rows(model)
+    n = len(rows)
+    degree = info.get("degree", n - 1)
+    check(curve.Degree() == degree, f"{path}: degree {curve.Degree()} != {degree}")
+    poles = [list(curve.Pole(k).Coord()) for k in range(1, curve.NbPoles() + 1)]
+    check(poles == [p for p, _, _ in rows], f"{path}: poles {poles}")
+    weights = [curve.Weight(k) for k in range(1, curve.NbPoles() + 1)]
+    check(weights == [w for _, _, w in rows], f"{path}: weights {weights}")
+    check(curve.IsRational() == (info["kind"] == "nurbs"), f"{path}: rational")
+    values, multiplicities = curve_knots(curve)
+    knots = model_knots(info, "knots", degree, n)
+    check(flat_knots(values, multiplicities) == knots, f"{path}: knots {values} x {multiplicities}")
+    degrees = check_point_names(path, points, rows)
+    # OCC's B-spline of the degrees: the same knots and weights, the degrees as poles.
+    degree_poles = Array1_gp_Pnt(1, n)
+    for k, triple in enumerate(degrees, start=1):
+        degree_poles.SetValue(k, gp_Pnt(*triple))
+    degree_curve = Geom_BSplineCurve(
+        degree_poles, real_array(weights), real_array(values), int_array(multiplicities), degree
+    )
+    table = eval_table(model, 41)
+    scale = scale_of(rows)
+    worst_position = worst_degree = 0.0
+    for row in table:
+        x = curve.Value(row["t"]).Coord()
+        d = degree_curve.Value(row["t"]).Coord()
+        expected = [row["x"], row["y"], row.get("z", 0.0)]
+        worst_position = max(worst_position, max(abs(a - b) for a, b in zip(x, expected)))
+        want = [row["truth"], row["indeterminacy"], row["falsity"]]
+        worst_degree = max(worst_degree, max(abs(a - b) for a, b in zip(d, want)))
+    check(worst_position <= 1e-12 * scale, f"{path}: OCC positions off by {worst_position}")
+    check(worst_degree <= 1e-12, f"{path}: OCC degrees off by {worst_degree}")
+    print(f"ok  {os.path.basename(path)}: OCC Geom_BSplineCurve degree {degree}, {n} poles, "
+          f"{len(values)} distinct knots; positions within {worst_position:.1e} "
+          f"({worst_position / scale:.1e} of scale), degrees within {worst_degree:.1e} of eval")
+
+
+def named_curve():
+    """A model file in WORK whose names need STEP's string encoding: quotes, a backslash,
+    characters outside ASCII and beyond the Basic Multilingual Plane, a line break."""
+    text = "\n".join([
+        'kind = "bspline"',
+        'name = "caf\u00e9 \u03a9 \U0001F600 \'q\' \\\\ end"',
+        'description = "two\\nlines"',
+        "degree = 1",
+        "knots = [0, 0, 1, 1]",
+        "control_points = [",
+        '  { name = "\u00c4 1", x = 0, y = 0, truth = 0.5, indeterminacy = 0.25, falsity = 0 },',
+        "  { x = 1, y = -1e-9, truth = 1, indeterminacy = 0, falsity = 0 },",
+        "]", "",
+    ])
+    path = os.path.join(os.path.abspath(WORK), "named-curve.toml")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text)
+    return path
+
+
+def unclamped_surface():
+    """A model file in WORK: a biquadratic B-spline surface over unclamped uniform knots, whose
+    STEP boundaries are iso-parameter curves rather than rows of the grid."""
+    points = []
+    for i in range(4):
+        for j in range(3):
+            t = i / 3
+            points.append(f'  {{ x = {i}, y = {j}, z = {(i * j) % 3 * 0.5}, truth = {t!r}, '
+                          f'indeterminacy = 0.25, falsity = {1 - t!r} }},')
+    text = "\n".join([
+        'kind = "bspline-surface"',
+        'name = "unclamped patch"',
+        "rows = 4", "cols = 3", "degree_u = 2", "degree_v = 2",
+        "knots_u = [0, 1, 2, 3, 4, 5, 6]",
+        "knots_v = [0, 0.5, 1, 1.5, 2, 2.5]",
+        "control_points = [", *points, "]", "",
+    ])
+    path = os.path.join(os.path.abspath(WORK), "unclamped-surface.toml")
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def apex_surface():
+    """A model file in WORK: a bicubic Bezier surface whose first row is one point (an apex),
+    so the STEP face is bounded by three edges."""
+    points = []
+    for i in range(4):
+        for j in range(4):
+            x, y, z = (0.0, 1.5, 2.0) if i == 0 else (float(i), float(j), float((i + j) % 2))
+            points.append(f"  {{ x = {x!r}, y = {y!r}, z = {z!r}, truth = {0.25 * j!r}, "
+                          f"indeterminacy = 0.5, falsity = {0.125 * i!r} }},")
+    text = "\n".join(['kind = "bezier-surface"', "rows = 4", "cols = 4",
+                      "control_points = [", *points, "]", ""])
+    path = os.path.join(os.path.abspath(WORK), "apex-surface.toml")
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def check_step_surface(model):
+    path = export(model, os.path.basename(model).replace(".", "-") + ".stp")
+    STEP_MODELS[path] = model
+    shape, points = read_step(path)
+    faces = subshapes(shape, TopAbs_FACE, TopoDS.Face)
+    check(len(faces) == 1, f"{path}: {len(faces)} faces, not 1")
+    surface = BRep_Tool.Surface_s(faces[0])
+    check(isinstance(surface, Geom_BSplineSurface), f"{path}: OCC's surface is a {type(surface).__name__}")
+    info, rows = control_rows(model)
+    nu, nv = int(info["rows"]), int(info["cols"])
+    du, dv = info.get("degree_u", nu - 1), info.get("degree_v", nv - 1)
+    check((surface.UDegree(), surface.VDegree()) == (du, dv), f"{path}: degrees")
+    check((surface.NbUPoles(), surface.NbVPoles()) == (nu, nv), f"{path}: a {nu} x {nv} grid")
+    # Pole (i, j) of OCC is the model's row i (along u), column j (along v): row by row.
+    for i in range(nu):
+        for j in range(nv):
+            position, _, weight = rows[i * nv + j]
+            pole = list(surface.Pole(i + 1, j + 1).Coord())
+            check(pole == position, f"{path}: pole ({i}, {j}) {pole} != {position}")
+            check(surface.Weight(i + 1, j + 1) == weight, f"{path}: weight ({i}, {j})")
+    u_values = [surface.UKnot(k) for k in range(1, surface.NbUKnots() + 1)]
+    u_mults = [surface.UMultiplicity(k) for k in range(1, surface.NbUKnots() + 1)]
+    v_values = [surface.VKnot(k) for k in range(1, surface.NbVKnots() + 1)]
+    v_mults = [surface.VMultiplicity(k) for k in range(1, surface.NbVKnots() + 1)]
+    check(flat_knots(u_values, u_mults) == model_knots(info, "knots_u", du, nu), f"{path}: knots_u")
+    check(flat_knots(v_values, v_mults) == model_knots(info, "knots_v", dv, nv), f"{path}: knots_v")
+    degrees = check_point_names(path, points, rows)
+    degree_poles = Array2_gp_Pnt(1, nu, 1, nv)
+    weights = Array2_double(1, nu, 1, nv)
+    for i in range(nu):
+        for j in range(nv):
+            degree_poles.SetValue(i + 1, j + 1, gp_Pnt(*degrees[i * nv + j]))
+            weights.SetValue(i + 1, j + 1, rows[i * nv + j][2])
+    degree_surface = Geom_BSplineSurface(
+        degree_poles, weights, real_array(u_values), real_array(v_values),
+        int_array(u_mults), int_array(v_mults), du, dv,
+    )
+    table = eval_table(model, 13)  # steps of 1/12 of each domain: not binary fractions
+    scale = scale_of(rows)
+    worst_position = worst_degree = 0.0
+    for row in table:
+        x = surface.Value(row["u"], row["v"]).Coord()
+        d = degree_surface.Value(row["u"], row["v"]).Coord()
+        expected = [row["x"], row["y"], row["z"]]
+        worst_position = max(worst_position, max(abs(a - b) for a, b in zip(x, expected)))
+        want = [row["truth"], row["indeterminacy"], row["falsity"]]
+        worst_degree = max(worst_degree, max(abs(a - b) for a, b in zip(d, want)))
+    check(worst_position <= 1e-12 * scale, f"{path}: OCC positions off by {worst_position}")
+    check(worst_degree <= 1e-12, f"{path}: OCC degrees off by {worst_degree}")
+    edges = subshapes(faces[0], TopAbs_EDGE, TopoDS.Edge)
+    print(f"ok  {os.path.basename(path)}: OCC Geom_BSplineSurface degrees {du} x {dv}, {nu} x {nv} "
+          f"poles, a face of {len(edges)} edges; positions within {worst_position:.1e} "
+          f"({worst_position / scale:.1e} of scale), degrees within {worst_degree:.1e} of eval")
+
+
+
 VIEWER = """<!doctype html>
 <html><head><style>body { margin: 0; background: #fff; }</style>
 <script type="importmap">{"imports": {"three": "./three/build/three.module.js",
@@ -425,6 +715,17 @@ def main():
     check_gltf("helix3d.toml", 9, "helix3d.gltf")
     check_gltf("surface.toml", 8, "surface.glb")
     check_gltf("nurbs-surface.json", 6, "nurbs-surface.gltf")
+    # Every TOML and JSON model of the examples (the CSV tables are curves of these).
+    step_models = sorted(f for f in os.listdir(EXAMPLES) if f.endswith((".toml", ".json")))
+    check(len(step_models) >= 8, f"only {len(step_models)} example models in {EXAMPLES}")
+    for model in step_models:
+        if model_info(model)["kind"].endswith("-surface"):
+            check_step_surface(model)
+        else:
+            check_step_curve(model)
+    check_step_curve(named_curve())
+    check_step_surface(unclamped_surface())
+    check_step_surface(apex_surface())
     check_browser()
     print(f"{CHECKS} checks passed")
 

@@ -15,6 +15,7 @@ mod ply;
 #[cfg(test)]
 mod round_trip;
 mod samples;
+mod step;
 
 use std::fmt;
 use std::path::Path;
@@ -46,22 +47,27 @@ pub enum ExportFormat {
     Ply,
     /// Wavefront OBJ (`.obj`) with vertex colours.
     Obj,
+    /// STEP AP214 (`.step` or `.stp`, ISO 10303-21): the curve or surface as one exact
+    /// B-spline entity, the degrees in the names of its control points.
+    Step,
 }
 
 impl ExportFormat {
     /// Every format.
-    pub const ALL: [ExportFormat; 5] = [
+    pub const ALL: [ExportFormat; 6] = [
         ExportFormat::Dxf,
         ExportFormat::Glb,
         ExportFormat::Gltf,
         ExportFormat::Ply,
         ExportFormat::Obj,
+        ExportFormat::Step,
     ];
 
     /// The extensions [`ExportFormat::from_path`] accepts, for messages.
-    pub const ACCEPTED: &'static str = ".dxf, .glb, .gltf, .ply, .obj";
+    pub const ACCEPTED: &'static str = ".dxf, .glb, .gltf, .ply, .obj, .step, .stp";
 
-    /// The extension, without its dot.
+    /// The extension, without its dot (STEP's is `step`; [`ExportFormat::from_path`] takes
+    /// `stp` too).
     pub const fn extension(self) -> &'static str {
         match self {
             ExportFormat::Dxf => "dxf",
@@ -69,6 +75,7 @@ impl ExportFormat {
             ExportFormat::Gltf => "gltf",
             ExportFormat::Ply => "ply",
             ExportFormat::Obj => "obj",
+            ExportFormat::Step => "step",
         }
     }
 
@@ -84,13 +91,16 @@ impl ExportFormat {
             .map(|e| e.to_string_lossy().to_ascii_lowercase());
         ExportFormat::ALL
             .into_iter()
-            .find(|f| extension.as_deref() == Some(f.extension()))
+            .find(|f| {
+                extension.as_deref() == Some(f.extension())
+                    || (*f == ExportFormat::Step && extension.as_deref() == Some("stp"))
+            })
             .ok_or_else(|| UnsupportedFormat::new(path))
     }
 }
 
 impl fmt::Display for ExportFormat {
-    /// `DXF`, `GLB`, `glTF`, `PLY`, `OBJ`.
+    /// `DXF`, `GLB`, `glTF`, `PLY`, `OBJ`, `STEP`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(match self {
             ExportFormat::Dxf => "DXF",
@@ -98,6 +108,7 @@ impl fmt::Display for ExportFormat {
             ExportFormat::Gltf => "glTF",
             ExportFormat::Ply => "PLY",
             ExportFormat::Obj => "OBJ",
+            ExportFormat::Step => "STEP",
         })
     }
 }
@@ -290,6 +301,12 @@ fn check(model: &Model, format: ExportFormat, options: &ExportOptions) -> Result
                 .to_owned(),
         ));
     }
+    if format == ExportFormat::Step && options.samples.is_some() {
+        return Err(ExportError::Options(
+            "--samples does not apply to STEP, which is exact (a B-spline curve or surface)"
+                .to_owned(),
+        ));
+    }
     if format == ExportFormat::Dxf && surface && !options.mesh {
         return Err(ExportError::SurfaceNeedsMesh {
             kind: model.kind().name().to_owned(),
@@ -313,7 +330,8 @@ fn check(model: &Model, format: ExportFormat, options: &ExportOptions) -> Result
 /// The model in `format`, as the bytes of a file.
 ///
 /// Curves and surfaces are sampled ([`ExportOptions::samples`]) for glTF, PLY, OBJ and DXF
-/// meshes; a DXF curve is one exact SPLINE entity.
+/// meshes; a DXF curve is one exact SPLINE entity, a STEP curve or surface one exact B-spline
+/// entity.
 ///
 /// # Errors
 /// [`ExportError::Options`] for options that do not fit the format or the shape,
@@ -327,6 +345,9 @@ pub fn export(
     if format == ExportFormat::Dxf && !options.mesh {
         return Ok(dxf::spline_document(model)?.into_bytes());
     }
+    if format == ExportFormat::Step {
+        return Ok(step::document(model)?.into_bytes());
+    }
     let samples = Samples::of(model.shape(), options.samples)?;
     Ok(match format {
         ExportFormat::Dxf => dxf::mesh_document(model, &samples, options.color_by).into_bytes(),
@@ -334,6 +355,7 @@ pub fn export(
         ExportFormat::Gltf => gltf::gltf(model, &samples, options.color_by).into_bytes(),
         ExportFormat::Ply => ply::ply(model, &samples, options.color_by, options.ascii),
         ExportFormat::Obj => obj::obj(model, &samples, options.color_by).into_bytes(),
+        ExportFormat::Step => step::document(model)?.into_bytes(),
     })
 }
 
@@ -390,10 +412,12 @@ mod tests {
     fn formats_by_extension() {
         assert_eq!(ExportFormat::from_path("a.DXF"), Ok(ExportFormat::Dxf));
         assert_eq!(ExportFormat::from_path("a.gltf"), Ok(ExportFormat::Gltf));
+        assert_eq!(ExportFormat::from_path("a.step"), Ok(ExportFormat::Step));
+        assert_eq!(ExportFormat::from_path("a.STP"), Ok(ExportFormat::Step));
         let e = ExportFormat::from_path("a.stl").unwrap_err();
         assert_eq!(
             ExportError::Format(e).to_string(),
-            "a.stl: unsupported file extension `.stl` (accepted: .dxf, .glb, .gltf, .ply, .obj)"
+            "a.stl: unsupported file extension `.stl` (accepted: .dxf, .glb, .gltf, .ply, .obj, .step, .stp)"
         );
     }
 

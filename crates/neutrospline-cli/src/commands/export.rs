@@ -1,4 +1,4 @@
-//! `neutrospline export FILE -o OUT.dxf|.glb|.gltf|.ply|.obj`: the model in the format of a CAD
+//! `neutrospline export FILE -o OUT.dxf|.step|.glb|.gltf|.ply|.obj`: the model in the format of a CAD
 //! or 3-D program, through `neutrospline-io`'s exporters.
 
 use std::path::PathBuf;
@@ -20,6 +20,9 @@ fn parse_color_by(text: &str) -> Result<ColorBy, String> {
 weights; a Bezier curve as its clamped B-spline) with the control points' truth,\n               \
 indeterminacy and falsity as extended data (application NEUTROSPLINE); a surface\n               \
 only with --mesh, as a POLYFACE mesh whose vertices keep their degrees\n  \
+.step, .stp  STEP AP214 (ISO 10303-21): the curve or surface as one exact B-spline (a surface\n               \
+as a face bounded by its boundary curves); each control point named\n               \
+'NAME T=truth I=indeterminacy F=falsity'; unit mm, fixed time stamp\n  \
 .glb, .gltf  glTF 2.0 (binary, or JSON with the buffer embedded): a curve as a line strip, a\n               \
 surface as triangles with normals; vertex colours and the attributes _TRUTH,\n               \
 _INDETERMINACY, _FALSITY\n  \
@@ -33,7 +36,8 @@ pub struct ExportArgs {
     #[arg(value_name = "FILE")]
     pub file: String,
 
-    /// The file to write: OUT.dxf, OUT.glb, OUT.gltf, OUT.ply or OUT.obj (replaced atomically)
+    /// The file to write: OUT.dxf, OUT.step (or .stp), OUT.glb, OUT.gltf, OUT.ply or OUT.obj
+    /// (replaced atomically)
     #[arg(short = 'o', long = "output", value_name = "OUT")]
     pub output: PathBuf,
 

@@ -209,7 +209,7 @@ fn export_refusals_have_exact_messages_and_leave_no_file() {
         "e.stl",
         &[],
         2,
-        "error: e.stl: unsupported file extension `.stl` (accepted: .dxf, .glb, .gltf, .ply, .obj)",
+        "error: e.stl: unsupported file extension `.stl` (accepted: .dxf, .glb, .gltf, .ply, .obj, .step, .stp)",
     );
     assert_refused(
         &surface,

@@ -3,8 +3,11 @@
 //! ezdxf agree with `eval` to 1e-12 of scale, positions and degrees; splines that ezdxf writes
 //! import to curves that `eval` evaluates as ezdxf does), plyfile (PLY: the `eval`
 //! values exactly), pygltflib (glTF: the `eval` values in float32 exactly), the Khronos glTF
-//! validator (no errors) and three.js in headless Chromium (the surface drawn in its viridis
-//! vertex colours).
+//! validator (no errors), OpenCASCADE (STEP: every example model read back through
+//! `STEPControl_Reader` as a `Geom_BSplineCurve` or `Geom_BSplineSurface` with the model's
+//! degrees, poles, weights and knots exactly, evaluating to `eval` within 1e-12 of scale, the
+//! degrees in the point names) and three.js in headless Chromium (the surface drawn in its
+//! viridis vertex colours).
 //!
 //! Runs when the readers are installed (`scripts/readers/install`, which `scripts/check` runs,
 //! puts the Python ones into the virtual environment `scripts/readers/.venv`).
