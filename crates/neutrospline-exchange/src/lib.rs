@@ -5,15 +5,19 @@
 //! needs.
 //!
 //! - Exporting: [`export`] and [`export_file`] write DXF (a curve as one exact SPLINE entity, a
-//!   surface as a POLYFACE mesh), glTF 2.0 (`.glb`, `.gltf`), PLY and OBJ (sampled polylines
-//!   and triangle meshes), with the degrees kept where the format can carry them
-//!   ([`ExportFormat`], [`ExportOptions`], [`ColorBy`]).
-//! - Importing: [`load_dxf`] and [`parse_dxf`] read the SPLINE entities of a DXF file exactly,
-//!   with the degrees the exporter keeps in their extended data (a DXF export reads back to an
-//!   equal model, numbers to the last bit); [`load_svg`] and [`parse_svg`] read the path data
-//!   of an SVG file's `<path>` elements (lines, Bézier segments, elliptical arcs as exact
-//!   rational quadratic pieces), `<polyline>`s and `<polygon>`s as curves. Errors are
-//!   `neutrospline-io`'s [`ReadError`](neutrospline_io::ReadError)s, located at the file's line.
+//!   surface as a POLYFACE mesh), STEP (ISO 10303-21, AP214: exact B-spline curves and
+//!   surfaces, the degrees in the control points' names), glTF 2.0 (`.glb`, `.gltf`), PLY and
+//!   OBJ (sampled polylines and triangle meshes), with the degrees kept where the format can
+//!   carry them ([`ExportFormat`], [`ExportOptions`], [`ColorBy`]).
+//! - Importing: [`load_dxf`] and [`parse_dxf`] read the curves of a DXF drawing exactly (SPLINE
+//!   entities as written, with the degrees the exporter keeps in their extended data, so a DXF
+//!   export reads back to an equal model, numbers to the last bit; lines, arcs, circles,
+//!   ellipses and polylines as exact NURBS); [`load_svg`] and [`parse_svg`] read the drawn
+//!   shapes of an SVG drawing as curves. Each returns an [`Import`]: the models and the
+//!   [`ImportReport`] of what was imported and what was skipped, by kind and reason, so that
+//!   nothing is dropped without a word. The options are [`ImportRequest`]'s, defined once for
+//!   every front end. Errors are `neutrospline-io`'s
+//!   [`ReadError`](neutrospline_io::ReadError)s, located at the file's line.
 //!
 //! ```
 //! use neutrospline::{example1, AnyCurve, Degrees};
