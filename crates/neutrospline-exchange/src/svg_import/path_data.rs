@@ -1,7 +1,6 @@
-//! Path data (SVG 1.1, section 8.3) and point lists: subpaths as lists of segments, arcs
-//! converted into rational quadratic pieces.
+//! Path data (SVG 1.1, section 8.3) and point lists, parsed by svgtypes: subpaths as lists of
+//! segments, arcs converted into exact rational quadratic pieces.
 
-use super::numbers::Numbers;
 use super::transform::{apply, Matrix};
 
 /// A segment of a subpath: its control points and weights (all 1 unless an arc piece).
@@ -107,10 +106,20 @@ pub(super) fn arc(
     out
 }
 
-/// The subpaths of path data, each a list of segments (subpaths that draw nothing are left
-/// out).
-pub(super) fn path_data(d: &str) -> Result<Vec<Vec<Segment>>, String> {
-    let mut numbers = Numbers::new(d);
+/// Path data read up to its end or its first error: the subpaths that draw something, and
+/// the error, when there is one, with the number of segments before it.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct PathData {
+    pub(super) subpaths: Vec<Vec<Segment>>,
+    pub(super) error: Option<String>,
+}
+
+/// The subpaths of path data (SVG 1.1, section 8.3, parsed by svgtypes), each a list of
+/// segments; subpaths that draw nothing are left out. As the SVG specification's error
+/// handling says (SVG 1.1, appendix F.2; SVG 2, "Error handling" of path data), data that
+/// breaks off is drawn up to the last complete command before the error: those segments are
+/// kept and the error is returned beside them.
+pub(super) fn path_data(d: &str) -> PathData {
     let mut subpaths: Vec<Vec<Segment>> = Vec::new();
     let mut current: Vec<Segment> = Vec::new();
     let mut point = [0.0, 0.0];
@@ -118,130 +127,198 @@ pub(super) fn path_data(d: &str) -> Result<Vec<Vec<Segment>>, String> {
     // The last control point of a cubic (for S) or a quadratic (for T) segment.
     let mut last_cubic: Option<[f64; 2]> = None;
     let mut last_quadratic: Option<[f64; 2]> = None;
-    let mut command: Option<u8> = None;
-    let mut first = true;
-    let finish = |current: &mut Vec<Segment>, subpaths: &mut Vec<Vec<Segment>>| {
-        if !current.is_empty() {
-            subpaths.push(std::mem::take(current));
-        }
-    };
-    while !numbers.at_end() {
-        let c = numbers.text[numbers.k];
-        let position = numbers.position();
-        let letter = if c.is_ascii_alphabetic() {
-            numbers.k += 1;
-            c
-        } else {
-            // Implicit repetition; after M the pairs are L (m: l).
-            match command {
-                Some(b'M') => b'L',
-                Some(b'm') => b'l',
-                Some(b'Z' | b'z') | None => {
-                    return Err(format!(
-                        "expected a command at character {position}, found `{}`",
-                        char::from(c)
-                    ))
-                }
-                Some(other) => other,
+    let mut error = None;
+    for segment in svgtypes::PathParser::from(d) {
+        let segment = match segment {
+            Ok(segment) => segment,
+            Err(e) => {
+                error = Some(e.to_string());
+                break;
             }
         };
-        if first && !matches!(letter, b'M' | b'm') {
-            return Err(format!(
-                "the path data starts with `{}`, not with a moveto (M or m)",
-                char::from(letter)
-            ));
-        }
-        first = false;
-        let relative = letter.is_ascii_lowercase();
+        let relative = !segment.is_abs();
         let base = if relative { point } else { [0.0, 0.0] };
-        let at = |p: [f64; 2]| [base[0] + p[0], base[1] + p[1]];
+        let at = |x: f64, y: f64| [base[0] + x, base[1] + y];
         let mut cubic = None;
         let mut quadratic = None;
-        match letter.to_ascii_uppercase() {
-            b'M' => {
-                finish(&mut current, &mut subpaths);
-                point = at(numbers.pair()?);
+        use svgtypes::PathSegment as S;
+        match segment {
+            S::MoveTo { x, y, .. } => {
+                if !current.is_empty() {
+                    subpaths.push(std::mem::take(&mut current));
+                }
+                point = at(x, y);
                 start = point;
             }
-            b'L' => {
-                let p = at(numbers.pair()?);
+            S::LineTo { x, y, .. } => {
+                let p = at(x, y);
                 current.push(Segment::polynomial(vec![point, p]));
                 point = p;
             }
-            b'H' => {
-                let x = numbers.number()? + base[0];
-                let p = [x, point[1]];
+            S::HorizontalLineTo { x, .. } => {
+                let p = [x + base[0], point[1]];
                 current.push(Segment::polynomial(vec![point, p]));
                 point = p;
             }
-            b'V' => {
-                let y = numbers.number()? + base[1];
-                let p = [point[0], y];
+            S::VerticalLineTo { y, .. } => {
+                let p = [point[0], y + base[1]];
                 current.push(Segment::polynomial(vec![point, p]));
                 point = p;
             }
-            b'C' | b'S' => {
-                let c1 = if letter.eq_ignore_ascii_case(&b'C') {
-                    at(numbers.pair()?)
-                } else {
-                    // The reflection of the previous cubic's second control point, or the
-                    // current point.
-                    last_cubic.map_or(point, |q| [2.0 * point[0] - q[0], 2.0 * point[1] - q[1]])
-                };
-                let c2 = at(numbers.pair()?);
-                let p = at(numbers.pair()?);
+            S::CurveTo {
+                x1, y1, x2, y2, x, y, ..
+            } => {
+                let (c1, c2, p) = (at(x1, y1), at(x2, y2), at(x, y));
                 current.push(Segment::polynomial(vec![point, c1, c2, p]));
                 cubic = Some(c2);
                 point = p;
             }
-            b'Q' | b'T' => {
-                let c1 = if letter.eq_ignore_ascii_case(&b'Q') {
-                    at(numbers.pair()?)
-                } else {
-                    last_quadratic.map_or(point, |q| [2.0 * point[0] - q[0], 2.0 * point[1] - q[1]])
-                };
-                let p = at(numbers.pair()?);
+            S::SmoothCurveTo { x2, y2, x, y, .. } => {
+                // The reflection of the previous cubic's second control point, or the current
+                // point.
+                let c1 = last_cubic.map_or(point, |q| [2.0 * point[0] - q[0], 2.0 * point[1] - q[1]]);
+                let (c2, p) = (at(x2, y2), at(x, y));
+                current.push(Segment::polynomial(vec![point, c1, c2, p]));
+                cubic = Some(c2);
+                point = p;
+            }
+            S::Quadratic { x1, y1, x, y, .. } => {
+                let (c1, p) = (at(x1, y1), at(x, y));
                 current.push(Segment::polynomial(vec![point, c1, p]));
                 quadratic = Some(c1);
                 point = p;
             }
-            b'A' => {
-                let radii = [numbers.number()?, numbers.number()?];
-                let rotation = numbers.number()?;
-                let large = numbers.flag()?;
-                let sweep = numbers.flag()?;
-                let p = at(numbers.pair()?);
-                current.extend(arc(point, radii, rotation, large, sweep, p));
+            S::SmoothQuadratic { x, y, .. } => {
+                let c1 = last_quadratic
+                    .map_or(point, |q| [2.0 * point[0] - q[0], 2.0 * point[1] - q[1]]);
+                let p = at(x, y);
+                current.push(Segment::polynomial(vec![point, c1, p]));
+                quadratic = Some(c1);
                 point = p;
             }
-            b'Z' => {
+            S::EllipticalArc {
+                rx,
+                ry,
+                x_axis_rotation,
+                large_arc,
+                sweep,
+                x,
+                y,
+                ..
+            } => {
+                let p = at(x, y);
+                current.extend(arc(point, [rx, ry], x_axis_rotation, large_arc, sweep, p));
+                point = p;
+            }
+            S::ClosePath { .. } => {
                 if point != start {
                     current.push(Segment::polynomial(vec![point, start]));
                 }
-                finish(&mut current, &mut subpaths);
+                if !current.is_empty() {
+                    subpaths.push(std::mem::take(&mut current));
+                }
                 point = start;
-            }
-            _ => {
-                return Err(format!(
-                    "unknown command `{}` at character {position} (known: M, L, H, V, C, S, Q, T, A, Z and their lower-case relative forms)",
-                    char::from(letter)
-                ))
             }
         }
         last_cubic = cubic;
         last_quadratic = quadratic;
-        command = Some(letter);
     }
-    finish(&mut current, &mut subpaths);
-    Ok(subpaths)
+    if !current.is_empty() {
+        subpaths.push(current);
+    }
+    PathData { subpaths, error }
 }
 
-/// The points of a `points` attribute.
-pub(super) fn point_list(text: &str) -> Result<Vec<[f64; 2]>, String> {
-    let mut numbers = Numbers::new(text);
-    let mut out = Vec::new();
-    while !numbers.at_end() {
-        out.push(numbers.pair()?);
+/// The points of a `points` attribute (svgtypes' number list), and the error that ends it
+/// early: a number that does not parse, or an odd number of coordinates (the last one has no
+/// partner and is left out, as SVG 1.1, section 9.7.1, says).
+pub(super) fn point_list(text: &str) -> (Vec<[f64; 2]>, Option<String>) {
+    let mut numbers = Vec::new();
+    let mut error = None;
+    for number in svgtypes::NumberListParser::from(text) {
+        match number {
+            Ok(x) => numbers.push(x),
+            Err(e) => {
+                error = Some(e.to_string());
+                break;
+            }
+        }
     }
-    Ok(out)
+    if numbers.len() % 2 == 1 && error.is_none() {
+        error = Some(format!(
+            "an odd number of coordinates ({}): the last one is left out",
+            numbers.len()
+        ));
+    }
+    let points = numbers.chunks_exact(2).map(|p| [p[0], p[1]]).collect();
+    (points, error)
+}
+
+/// The rational quadratic piece of the ellipse with centre `c` and radii `r` from angle `a`
+/// to angle `b` (radians, `|b - a| <= pi / 2`; y down, so increasing angles turn from +x
+/// towards +y), between the end points `from = c + r (cos a, sin a)` and `to = c + r (cos b,
+/// sin b)`, given exactly by the caller so that pieces and sides meet in the same numbers: the
+/// control points `from`, `c + r (cos m, sin m) / cos h`, `to` with `m = (a + b) / 2`,
+/// `h = (b - a) / 2`, and the weights `1, cos h, 1`.
+fn ellipse_piece(c: [f64; 2], r: [f64; 2], a: f64, b: f64, from: [f64; 2], to: [f64; 2]) -> Segment {
+    let (m, h) = ((a + b) / 2.0, (b - a) / 2.0);
+    let middle = [
+        c[0] + r[0] * m.cos() / h.cos(),
+        c[1] + r[1] * m.sin() / h.cos(),
+    ];
+    Segment {
+        points: vec![from, middle, to],
+        weights: Some(vec![1.0, h.cos(), 1.0]),
+    }
+}
+
+/// The closed ellipse with centre `c` and radii `r` (SVG 2, section 10.4: it starts at
+/// `(cx + rx, cy)` and turns towards +y): four exact quarter pieces.
+pub(super) fn ellipse(c: [f64; 2], r: [f64; 2]) -> Vec<Segment> {
+    let q = std::f64::consts::FRAC_PI_2;
+    let quarter = [
+        [c[0] + r[0], c[1]],
+        [c[0], c[1] + r[1]],
+        [c[0] - r[0], c[1]],
+        [c[0], c[1] - r[1]],
+    ];
+    (0..4)
+        .map(|k| {
+            let angle = q * k as f64;
+            ellipse_piece(c, r, angle, angle + q, quarter[k], quarter[(k + 1) % 4])
+        })
+        .collect()
+}
+
+/// The outline of a rectangle at `(x, y)` of size `w x h` with corner radii `r` (already
+/// resolved and clamped to half the sides, SVG 2 section 10.2): from `(x + rx, y)` clockwise
+/// on screen, sides as lines and corners as exact quarter-ellipse pieces; no corner pieces
+/// when a radius is 0.
+pub(super) fn rectangle(x: f64, y: f64, w: f64, h: f64, r: [f64; 2]) -> Vec<Segment> {
+    let [rx, ry] = r;
+    let (right, bottom) = (x + w, y + h);
+    if rx <= 0.0 || ry <= 0.0 {
+        let corners = [[x, y], [right, y], [right, bottom], [x, bottom], [x, y]];
+        return corners
+            .windows(2)
+            .map(|p| Segment::polynomial(p.to_vec()))
+            .collect();
+    }
+    let q = std::f64::consts::FRAC_PI_2;
+    let (x0, x1, y0, y1) = (x + rx, right - rx, y + ry, bottom - ry);
+    let mut out = Vec::new();
+    let line = |a: [f64; 2], b: [f64; 2], out: &mut Vec<Segment>| {
+        if a != b {
+            out.push(Segment::polynomial(vec![a, b]));
+        }
+    };
+    line([x0, y], [x1, y], &mut out);
+    out.push(ellipse_piece([x1, y0], r, -q, 0.0, [x1, y], [right, y0]));
+    line([right, y0], [right, y1], &mut out);
+    out.push(ellipse_piece([x1, y1], r, 0.0, q, [right, y1], [x1, bottom]));
+    line([x1, bottom], [x0, bottom], &mut out);
+    out.push(ellipse_piece([x0, y1], r, q, 2.0 * q, [x0, bottom], [x, y1]));
+    line([x, y1], [x, y0], &mut out);
+    out.push(ellipse_piece([x0, y0], r, 2.0 * q, 3.0 * q, [x, y0], [x0, y]));
+    out
 }

@@ -1,6 +1,6 @@
 //! Affine maps of the plane: SVG's `transform` attribute (SVG 1.1, section 7.6).
 
-use super::numbers::Numbers;
+use std::str::FromStr;
 
 /// An affine map of the plane, SVG's `matrix(a b c d e f)`: (x, y) -> (a x + c y + e,
 /// b x + d y + f).
@@ -29,57 +29,17 @@ pub(super) fn apply(m: &Matrix, p: [f64; 2]) -> [f64; 2] {
     ]
 }
 
-/// The matrix of a `transform` attribute: a list of matrix, translate, scale, rotate, skewX
-/// and skewY, applied right to left.
+/// The matrix of a `transform` attribute or CSS property: a list of matrix, translate, scale,
+/// rotate, skewX and skewY, applied right to left (parsed by svgtypes). The CSS form's units
+/// (`rotate(45deg)`, `translate(10px, 0)`) are read as SVG's (degrees, user units); other
+/// units are refused.
 pub(super) fn transform(text: &str) -> Result<Matrix, String> {
-    let mut matrix = IDENTITY;
-    let mut rest = text.trim();
-    while !rest.is_empty() {
-        let open = rest
-            .find('(')
-            .ok_or_else(|| format!("`{rest}` is not a transform"))?;
-        let close = open
-            + rest[open..]
-                .find(')')
-                .ok_or_else(|| format!("`{rest}` is not closed"))?;
-        let name = rest[..open].trim().trim_start_matches(',').trim();
-        let mut numbers = Numbers::new(&rest[open + 1..close]);
-        let mut args = Vec::new();
-        while !numbers.at_end() {
-            args.push(numbers.number()?);
-        }
-        let degrees = |a: f64| a.to_radians();
-        let m: Matrix = match (name, args.as_slice()) {
-            ("matrix", &[a, b, c, d, e, f]) => [a, b, c, d, e, f],
-            ("translate", &[x]) => [1.0, 0.0, 0.0, 1.0, x, 0.0],
-            ("translate", &[x, y]) => [1.0, 0.0, 0.0, 1.0, x, y],
-            ("scale", &[s]) => [s, 0.0, 0.0, s, 0.0, 0.0],
-            ("scale", &[x, y]) => [x, 0.0, 0.0, y, 0.0, 0.0],
-            ("rotate", &[a]) => {
-                let (s, c) = degrees(a).sin_cos();
-                [c, s, -s, c, 0.0, 0.0]
-            }
-            ("rotate", &[a, x, y]) => {
-                let (s, c) = degrees(a).sin_cos();
-                let r = [c, s, -s, c, 0.0, 0.0];
-                compose(&compose(&[1.0, 0.0, 0.0, 1.0, x, y], &r), &[1.0, 0.0, 0.0, 1.0, -x, -y])
-            }
-            ("skewX", &[a]) => [1.0, 0.0, degrees(a).tan(), 1.0, 0.0, 0.0],
-            ("skewY", &[a]) => [1.0, degrees(a).tan(), 0.0, 1.0, 0.0, 0.0],
-            ("matrix" | "translate" | "scale" | "rotate" | "skewX" | "skewY", _) => {
-                return Err(format!("{name} with {} numbers (matrix takes 6, translate and scale 1 or 2, rotate 1 or 3, skewX and skewY 1)", args.len()));
-            }
-            _ => {
-                return Err(format!(
-                    "`{name}` is not a transform (known: matrix, translate, scale, rotate, skewX, skewY)"
-                ))
-            }
-        };
-        matrix = compose(&matrix, &m);
-        rest = rest[close + 1..]
-            .trim_start()
-            .trim_start_matches(',')
-            .trim_start();
+    let plain = text.replace("deg", "").replace("px", "");
+    let t = svgtypes::Transform::from_str(&plain).map_err(|e| e.to_string())?;
+    let m = [t.a, t.b, t.c, t.d, t.e, t.f];
+    if m.iter().all(|v| v.is_finite()) {
+        Ok(m)
+    } else {
+        Err("the transform is not finite".to_owned())
     }
-    Ok(matrix)
 }
