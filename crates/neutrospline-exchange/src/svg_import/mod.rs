@@ -152,7 +152,8 @@ fn decoded<'b>(file: &str, bytes: &'b [u8]) -> Result<std::borrow::Cow<'b, str>,
         Ok(text) => return Ok(text.into()),
         Err(e) => e,
     };
-    let error = |message: String| -> ReadError { InputError::new(file, None, None, message).into() };
+    let error =
+        |message: String| -> ReadError { InputError::new(file, None, None, message).into() };
     // The declaration is ASCII in every encoding it may name.
     let head = String::from_utf8_lossy(&bytes[..bytes.len().min(256)]);
     let label = head
@@ -160,7 +161,10 @@ fn decoded<'b>(file: &str, bytes: &'b [u8]) -> Result<std::borrow::Cow<'b, str>,
         .and_then(|rest| rest.split("?>").next())
         .and_then(|declaration| {
             let at = declaration.find("encoding")?;
-            let value = declaration[at + "encoding".len()..].trim_start().strip_prefix('=')?.trim_start();
+            let value = declaration[at + "encoding".len()..]
+                .trim_start()
+                .strip_prefix('=')?
+                .trim_start();
             let quote = value.chars().next().filter(|q| *q == '"' || *q == '\'')?;
             value[1..].split(quote).next().map(str::to_owned)
         });
@@ -170,11 +174,17 @@ fn decoded<'b>(file: &str, bytes: &'b [u8]) -> Result<std::borrow::Cow<'b, str>,
             utf8_error.valid_up_to()
         )));
     };
-    let encoding = encoding_rs::Encoding::for_label(label.as_bytes())
-        .ok_or_else(|| error(format!("the XML declaration's encoding {label:?} is not one this reader knows")))?;
+    let encoding = encoding_rs::Encoding::for_label(label.as_bytes()).ok_or_else(|| {
+        error(format!(
+            "the XML declaration's encoding {label:?} is not one this reader knows"
+        ))
+    })?;
     let (text, _, malformed) = encoding.decode(bytes);
     if malformed {
-        return Err(error(format!("the file is not {} text, as its XML declaration says", encoding.name())));
+        return Err(error(format!(
+            "the file is not {} text, as its XML declaration says",
+            encoding.name()
+        )));
     }
     Ok(text.into_owned().into())
 }
@@ -229,10 +239,7 @@ pub fn parse_svg(
             file,
             None,
             None,
-            format!(
-                "the file has no curve to import ({})",
-                report.summary()
-            ),
+            format!("the file has no curve to import ({})", report.summary()),
         )
         .into());
     }

@@ -166,7 +166,13 @@ pub(super) fn path_data(d: &str) -> PathData {
                 point = p;
             }
             S::CurveTo {
-                x1, y1, x2, y2, x, y, ..
+                x1,
+                y1,
+                x2,
+                y2,
+                x,
+                y,
+                ..
             } => {
                 let (c1, c2, p) = (at(x1, y1), at(x2, y2), at(x, y));
                 current.push(Segment::polynomial(vec![point, c1, c2, p]));
@@ -176,7 +182,8 @@ pub(super) fn path_data(d: &str) -> PathData {
             S::SmoothCurveTo { x2, y2, x, y, .. } => {
                 // The reflection of the previous cubic's second control point, or the current
                 // point.
-                let c1 = last_cubic.map_or(point, |q| [2.0 * point[0] - q[0], 2.0 * point[1] - q[1]]);
+                let c1 =
+                    last_cubic.map_or(point, |q| [2.0 * point[0] - q[0], 2.0 * point[1] - q[1]]);
                 let (c2, p) = (at(x2, y2), at(x, y));
                 current.push(Segment::polynomial(vec![point, c1, c2, p]));
                 cubic = Some(c2);
@@ -260,7 +267,14 @@ pub(super) fn point_list(text: &str) -> (Vec<[f64; 2]>, Option<String>) {
 /// sin b)`, given exactly by the caller so that pieces and sides meet in the same numbers: the
 /// control points `from`, `c + r (cos m, sin m) / cos h`, `to` with `m = (a + b) / 2`,
 /// `h = (b - a) / 2`, and the weights `1, cos h, 1`.
-fn ellipse_piece(c: [f64; 2], r: [f64; 2], a: f64, b: f64, from: [f64; 2], to: [f64; 2]) -> Segment {
+fn ellipse_piece(
+    c: [f64; 2],
+    r: [f64; 2],
+    a: f64,
+    b: f64,
+    from: [f64; 2],
+    to: [f64; 2],
+) -> Segment {
     let (m, h) = ((a + b) / 2.0, (b - a) / 2.0);
     let middle = [
         c[0] + r[0] * m.cos() / h.cos(),
@@ -315,10 +329,31 @@ pub(super) fn rectangle(x: f64, y: f64, w: f64, h: f64, r: [f64; 2]) -> Vec<Segm
     line([x0, y], [x1, y], &mut out);
     out.push(ellipse_piece([x1, y0], r, -q, 0.0, [x1, y], [right, y0]));
     line([right, y0], [right, y1], &mut out);
-    out.push(ellipse_piece([x1, y1], r, 0.0, q, [right, y1], [x1, bottom]));
+    out.push(ellipse_piece(
+        [x1, y1],
+        r,
+        0.0,
+        q,
+        [right, y1],
+        [x1, bottom],
+    ));
     line([x1, bottom], [x0, bottom], &mut out);
-    out.push(ellipse_piece([x0, y1], r, q, 2.0 * q, [x0, bottom], [x, y1]));
+    out.push(ellipse_piece(
+        [x0, y1],
+        r,
+        q,
+        2.0 * q,
+        [x0, bottom],
+        [x, y1],
+    ));
     line([x, y1], [x, y0], &mut out);
-    out.push(ellipse_piece([x0, y0], r, 2.0 * q, 3.0 * q, [x, y0], [x0, y]));
+    out.push(ellipse_piece(
+        [x0, y0],
+        r,
+        2.0 * q,
+        3.0 * q,
+        [x, y0],
+        [x0, y],
+    ));
     out
 }

@@ -53,7 +53,9 @@ impl<'a> Sheets<'a> {
     pub(super) fn of(document: &'a roxmltree::Document<'a>) -> Sheets<'a> {
         let mut sheet = StyleSheet::new();
         for node in document.descendants().filter(|n| is_svg(n, "style")) {
-            let css = node.attribute("type").is_none_or(|t| t.trim() == "text/css");
+            let css = node
+                .attribute("type")
+                .is_none_or(|t| t.trim() == "text/css");
             if !css {
                 continue;
             }

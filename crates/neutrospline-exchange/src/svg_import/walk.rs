@@ -165,7 +165,10 @@ impl<'a, 'input> Walker<'a, 'input> {
             .and_then(|v| svgtypes::ViewBox::from_str(v).ok())
         {
             Some(view) => [view.w, view.h],
-            None => [number("width").unwrap_or(100.0), number("height").unwrap_or(100.0)],
+            None => [
+                number("width").unwrap_or(100.0),
+                number("height").unwrap_or(100.0),
+            ],
         };
         let context = Context {
             matrix: IDENTITY,
@@ -190,7 +193,11 @@ impl<'a, 'input> Walker<'a, 'input> {
     /// `line L: <path id="a">`, naming an element in warnings.
     fn named(&self, node: Node<'_, '_>) -> String {
         match node.attribute("id") {
-            Some(id) => format!("line {}: <{} id=\"{id}\">", self.line(node), node.tag_name().name()),
+            Some(id) => format!(
+                "line {}: <{} id=\"{id}\">",
+                self.line(node),
+                node.tag_name().name()
+            ),
             None => format!("line {}: <{}>", self.line(node), node.tag_name().name()),
         }
     }
@@ -201,7 +208,13 @@ impl<'a, 'input> Walker<'a, 'input> {
             Some(id) => format!("<{} id=\"{id}\">", node.tag_name().name()),
             None => kind(node),
         };
-        InputError::new(self.file, Some(self.line(node)), None, format!("{name}: {message}")).into()
+        InputError::new(
+            self.file,
+            Some(self.line(node)),
+            None,
+            format!("{name}: {message}"),
+        )
+        .into()
     }
 
     /// The element a `<use>` refers to (`href` or `xlink:href`, `#id`).
@@ -325,7 +338,13 @@ impl<'a, 'input> Walker<'a, 'input> {
 
     /// A length attribute in user units; `None` when it is not given. A value that does not
     /// parse is reported and read as not given (SVG 2, "error processing").
-    fn length(&mut self, node: Node<'_, '_>, name: &str, axis: Axis, context: Context) -> Option<f64> {
+    fn length(
+        &mut self,
+        node: Node<'_, '_>,
+        name: &str,
+        axis: Axis,
+        context: Context,
+    ) -> Option<f64> {
         let text = node.attribute(name)?;
         let [w, h] = context.viewport;
         let reference = match axis {
@@ -349,7 +368,12 @@ impl<'a, 'input> Walker<'a, 'input> {
     /// A nested `<svg>` (or one a `<use>` draws, with its `size`): its x, y, width, height,
     /// viewBox and preserveAspectRatio make the user space of its content (SVG 1.1, section
     /// 7.9). Its content is not clipped to the viewport.
-    fn viewport(&mut self, node: Node<'a, 'input>, context: Context, size: Option<[Option<f64>; 2]>) -> Result<(), ReadError> {
+    fn viewport(
+        &mut self,
+        node: Node<'a, 'input>,
+        context: Context,
+        size: Option<[Option<f64>; 2]>,
+    ) -> Result<(), ReadError> {
         let x = self.length(node, "x", Axis::X, context).unwrap_or(0.0);
         let y = self.length(node, "y", Axis::Y, context).unwrap_or(0.0);
         let given = size.unwrap_or([None, None]);
@@ -364,7 +388,13 @@ impl<'a, 'input> Walker<'a, 'input> {
 
     /// The content of `node` (a `<svg>` or `<symbol>`) shown at `origin` in a viewport of
     /// `size`, through its viewBox and preserveAspectRatio.
-    fn viewbox_content(&mut self, node: Node<'a, 'input>, context: Context, origin: [f64; 2], size: [f64; 2]) -> Result<(), ReadError> {
+    fn viewbox_content(
+        &mut self,
+        node: Node<'a, 'input>,
+        context: Context,
+        origin: [f64; 2],
+        size: [f64; 2],
+    ) -> Result<(), ReadError> {
         if !(size[0] > 0.0 && size[1] > 0.0) {
             // A viewport of no size draws nothing (SVG 1.1, section 7.9).
             for child in node.children() {
@@ -405,17 +435,25 @@ impl<'a, 'input> Walker<'a, 'input> {
             let message = format!(
                 "{}: it refers to no element of the file (href {:?})",
                 self.named(node),
-                node.attribute((XLINK_NS, "href")).or_else(|| node.attribute("href")).unwrap_or("")
+                node.attribute((XLINK_NS, "href"))
+                    .or_else(|| node.attribute("href"))
+                    .unwrap_or("")
             );
             self.report.warn(message);
             self.report.skip("<use>", SkipReason::Empty);
             return Ok(());
         };
-        if target.ancestors().any(|a| a == node) || node.ancestors().any(|a| a == target) || self.uses.contains(&node.id()) {
+        if target.ancestors().any(|a| a == node)
+            || node.ancestors().any(|a| a == target)
+            || self.uses.contains(&node.id())
+        {
             return Err(self.error(node, "it draws itself (the element it refers to contains it, or a <use> chain comes back to it)".to_owned()));
         }
         if self.uses.len() >= MAX_USE_DEPTH {
-            return Err(self.error(node, format!("<use> elements nest deeper than {MAX_USE_DEPTH}")));
+            return Err(self.error(
+                node,
+                format!("<use> elements nest deeper than {MAX_USE_DEPTH}"),
+            ));
         }
         let x = self.length(node, "x", Axis::X, context).unwrap_or(0.0);
         let y = self.length(node, "y", Axis::Y, context).unwrap_or(0.0);
@@ -430,7 +468,10 @@ impl<'a, 'input> Walker<'a, 'input> {
                 Ok(())
             } else {
                 let inner = self.inherit(target, inner);
-                let size = [width.unwrap_or(inner.viewport[0]), height.unwrap_or(inner.viewport[1])];
+                let size = [
+                    width.unwrap_or(inner.viewport[0]),
+                    height.unwrap_or(inner.viewport[1]),
+                ];
                 self.viewbox_content(target, inner, [0.0, 0.0], size)
             }
         } else if is_svg(&target, "svg") {
@@ -502,7 +543,9 @@ impl<'a, 'input> Walker<'a, 'input> {
             let named = walker.named(node);
             walker.report.warn(format!("{named}: {message}"));
         };
-        let number = |walker: &mut Self, attribute: &str, axis: Axis| walker.length(node, attribute, axis, context);
+        let number = |walker: &mut Self, attribute: &str, axis: Axis| {
+            walker.length(node, attribute, axis, context)
+        };
         match name {
             "path" => {
                 let Some(d) = node.attribute("d") else {
@@ -518,7 +561,14 @@ impl<'a, 'input> Walker<'a, 'input> {
             "polyline" | "polygon" => {
                 let (mut points, error) = point_list(node.attribute("points").unwrap_or(""));
                 if let Some(e) = error {
-                    warn(self, format!("points: {e}; drawn up to it ({} point{} kept)", points.len(), if points.len() == 1 { "" } else { "s" }));
+                    warn(
+                        self,
+                        format!(
+                            "points: {e}; drawn up to it ({} point{} kept)",
+                            points.len(),
+                            if points.len() == 1 { "" } else { "s" }
+                        ),
+                    );
                 }
                 if name == "polygon" && points.len() > 1 && points.first() != points.last() {
                     points.push(points[0]);
@@ -550,7 +600,10 @@ impl<'a, 'input> Walker<'a, 'input> {
                 let w = number(self, "width", Axis::X).unwrap_or(0.0);
                 let h = number(self, "height", Axis::Y).unwrap_or(0.0);
                 if w < 0.0 || h < 0.0 {
-                    warn(self, format!("a negative width or height ({w} x {h}) is an error; not drawn"));
+                    warn(
+                        self,
+                        format!("a negative width or height ({w} x {h}) is an error; not drawn"),
+                    );
                     return Vec::new();
                 }
                 if w == 0.0 || h == 0.0 {
@@ -575,7 +628,10 @@ impl<'a, 'input> Walker<'a, 'input> {
                 let cy = number(self, "cy", Axis::Y).unwrap_or(0.0);
                 let r = number(self, "r", Axis::Diagonal).unwrap_or(0.0);
                 if r < 0.0 {
-                    warn(self, format!("a negative radius ({r}) is an error; not drawn"));
+                    warn(
+                        self,
+                        format!("a negative radius ({r}) is an error; not drawn"),
+                    );
                 }
                 if r > 0.0 {
                     vec![ellipse([cx, cy], [r, r])]
