@@ -505,4 +505,24 @@ proptest! {
         let svg = format!("<svg><path d='{d}'/>{markup}<polyline points='{d}'/></svg>");
         let _ = parse_svg("p.svg", svg.as_bytes(), &ImportOptions::new(defaults()), &Limits::default()).map(|i| i.models);
     }
+
+    /// Any lengths, viewBoxes, styles and references on the elements give curves or a
+    /// message, never a panic.
+    #[test]
+    fn svg_elements_never_panic(
+        a in "[0-9a-z.%# -]{0,8}",
+        b in "[0-9a-z.%# -]{0,8}",
+        style in "[a-z:;()0-9 .-]{0,24}",
+    ) {
+        let svg = format!(
+            "<svg viewBox='{a}' width='{b}'><style>rect {{ {style} }}</style>\
+             <rect id='r' x='{a}' width='{b}' height='{a}' rx='{b}' style='{style}'/>\
+             <circle r='{a}' transform='{style}'/><ellipse rx='{b}' ry='{a}'/>\
+             <line x2='{a}' y2='{b}'/><use href='#{a}' x='{b}' width='{a}'/>\
+             <svg width='{a}' height='{b}' viewBox='{b}' preserveAspectRatio='{style}'><use href='#r'/></svg>\
+             <symbol id='{a}' viewBox='{a}'><use href='#{b}'/></symbol><g id='{b}'><use href='#{a}'/></g>\
+             </svg>"
+        );
+        let _ = parse_svg("p.svg", svg.as_bytes(), &ImportOptions::new(defaults()), &Limits::default());
+    }
 }

@@ -501,6 +501,13 @@ impl<'a, 'input> Walker<'a, 'input> {
             self.report.skip(&what, SkipReason::Hidden);
             return Ok(());
         }
+        let [a, b, c, d, ..] = context.matrix;
+        if a * d - b * c == 0.0 {
+            // A transform that flattens the plane to a line or a point draws nothing
+            // (resvg's zeroed-matrix test).
+            self.report.skip(&what, SkipReason::Empty);
+            return Ok(());
+        }
         let subpaths = self.subpaths(node, context);
         if subpaths.is_empty() {
             self.report.skip(&what, SkipReason::Empty);
