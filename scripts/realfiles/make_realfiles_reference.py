@@ -182,7 +182,11 @@ def svg_reference(rel):
         points = []
         length = 0.0
         for segment in shape.segments(transformed=True):
-            if isinstance(segment, se.Move):
+            # A move draws nothing, nor does a close or line of length zero (the importer
+            # records such a subpath as empty).
+            if isinstance(segment, se.Move) or (
+                isinstance(segment, (se.Line, se.Close)) and segment.start == segment.end
+            ):
                 continue
             for t in QUARTERS:
                 p = segment.point(t)
@@ -614,10 +618,11 @@ def main():
     if svg:
         write("svg.json", f"svgelements {se.SVGELEMENTS_VERSION}", svg)
     dxf = []
-    for rel in files_of("dxf"):
+    for rel in files_of("dxf") if "--svg-only" not in sys.argv else []:
         print(rel, file=sys.stderr, flush=True)
         dxf.append(dxf_reference(rel))
-    write("dxf.json", f"ezdxf {ezdxf.__version__}", dxf)
+    if dxf:
+        write("dxf.json", f"ezdxf {ezdxf.__version__}", dxf)
     for kind, entries in (("svg", svg), ("dxf", dxf)):
         shapes = sum(len(e["shapes"]) for e in entries)
         errors = sum(1 for e in entries if "error" in e)

@@ -13,8 +13,8 @@
 //!   ([`DynCurve::nearest_rows`]); a curve is asked only for the points inside its control
 //!   points' bounding box grown by the tolerance (the curve lies in the convex hull of its
 //!   control points, so a point outside is farther than the tolerance), and a point found
-//!   within the tolerance is not asked again, so its distance is that of the first curve in
-//!   file order that holds it (an upper bound of the nearest distance). SVG coverage and DXF
+//!   within `NEAR_ENOUGH` of the tolerance is not asked again (its distance is then an upper
+//!   bound of the nearest, good to that fraction of the tolerance). SVG coverage and DXF
 //!   coverage, over all shapes, are each at least `MIN_COVERAGE`;
 //! - every SPLINE written as is in a DXF file (not transformed by an INSERT) equals an
 //!   imported curve exactly: degree, knots, control points and weights compared as `f64`s
@@ -56,6 +56,10 @@ const LENGTH_ACCURACY: f64 = 1e-10;
 
 /// The least fraction of the reference shapes covered, SVG and DXF each.
 const MIN_COVERAGE: f64 = 0.95;
+
+/// A point already this close (as a fraction of the tolerance) to a curve is not asked again:
+/// the deviation printed is exact to this fraction of the tolerance.
+const NEAR_ENOUGH: f64 = 1e-4;
 
 /// At most this many failures are printed in full.
 const SHOWN_FAILURES: usize = 60;
@@ -138,7 +142,7 @@ fn distances(curves: &[Candidate], points: &[[f64; 3]], tolerance: f64) -> Vec<f
     for candidate in curves {
         let inside: Vec<usize> = (0..points.len())
             .filter(|&k| {
-                best[k] > tolerance
+                best[k] > NEAR_ENOUGH * tolerance
                     && (0..3).all(|a| {
                         points[k][a] >= candidate.low[a] - tolerance
                             && points[k][a] <= candidate.high[a] + tolerance
