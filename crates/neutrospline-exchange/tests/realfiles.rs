@@ -373,7 +373,7 @@ fn check_format(
                 })
                 .sum();
             let difference = (total - expected).abs();
-            if !(difference <= LENGTH_TOLERANCE * expected) {
+            if difference.is_nan() || difference > LENGTH_TOLERANCE * expected {
                 failures.push(format!(
                     "{file}: the imported curves are {total} long, the reference's shapes \
                      {expected} (relative difference {:.3e})",
