@@ -567,19 +567,6 @@ impl Drawer<'_, '_> {
     }
 }
 
-/// The text of a DXF file's bytes: UTF-8 when it is (DXF R2007 and later, and ASCII files),
-/// otherwise Latin-1.
-fn decode(bytes: &[u8]) -> std::borrow::Cow<'_, str> {
-    match std::str::from_utf8(bytes) {
-        Ok(text) => text.into(),
-        Err(_) => bytes
-            .iter()
-            .map(|&b| char::from(b))
-            .collect::<String>()
-            .into(),
-    }
-}
-
 /// The curves of a DXF file held in memory: one model per curve entity drawn in model space
 /// ([module docs](self)), in the order of the ENTITIES section (an INSERT's in the order of
 /// its block), with the report of every entity met. `file` names it in messages;
@@ -600,20 +587,29 @@ pub fn parse_dxf(
     options: &ImportOptions,
     limits: &Limits,
 ) -> Result<Import, ReadError> {
-    if bytes.starts_with(BINARY_SENTINEL) {
-        return Err(InputError::new(
-            file,
-            None,
-            None,
-            "a binary DXF file (it starts with `AutoCAD Binary DXF`), which this program does \
-             not read: save the drawing as an ASCII DXF file"
-                .to_owned(),
-        )
-        .into());
-    }
-    let text = decode(bytes);
-    let groups = groups(&text).map_err(|(line, message)| error(file, line, message))?;
     let mut report = ImportReport::default();
+    let text;
+    let binary: Vec<(u16, String)>;
+    let groups: Vec<Group<'_>> = if bytes.starts_with(BINARY_SENTINEL) {
+        let (read, warning) =
+            groups::binary_groups(bytes).map_err(|(line, message)| error(file, line, message))?;
+        binary = read;
+        report.warnings.extend(warning);
+        binary
+            .iter()
+            .enumerate()
+            .map(|(k, (code, value))| Group {
+                code: *code,
+                value,
+                line: 2 * k + 1,
+            })
+            .collect()
+    } else {
+        let (decoded, warning) = groups::decode_text(bytes);
+        text = decoded;
+        report.warnings.extend(warning);
+        groups(&text).map_err(|(line, message)| error(file, line, message))?
+    };
     let sections = sections(file, &groups, &mut report)?;
     let Some(&(entities, end_line)) = sections.get("ENTITIES") else {
         return Err(InputError::new(

@@ -238,8 +238,11 @@ fn dxf_errors_are_located() {
     // The first bytes of ezdxf's and netDxf's binary test files.
     assert_eq!(
         message("AutoCAD Binary DXF\r\n\u{1a}\0\0\0SECTION\0"),
-        "f.dxf: a binary DXF file (it starts with `AutoCAD Binary DXF`), which this program \
-         does not read: save the drawing as an ASCII DXF file"
+        "f.dxf: the file has no ENTITIES section (a DXF file holds its curves there)"
+    );
+    assert_eq!(
+        message("AutoCAD Binary DXF\r\n\u{1a}\0\0\0SECTION\0\x0a\0"),
+        "f.dxf:3: the binary group 2 is cut short (the file ends)"
     );
     // Something after the end, other than blank lines.
     assert_eq!(
@@ -677,14 +680,15 @@ fn dxf_real_files_import() {
             "bsplineUnclamped.dxf",
             "knot vector has 8 knots, expected 15",
         ),
+        // ezdxf's binary R2000 file holds one TEXT.
+        (
+            "bin_dxf_r2000.dxf",
+            "the file has no curve to import (skipped 1 TEXT (not a curve))",
+        ),
         (
             "Minimal_DXF_AC1009.dxf",
             "the file has no curve to import (it is empty)",
         ),
-        ("bin_dxf_r12.dxf", "binary DXF"),
-        ("bin_dxf_r2000.dxf", "binary DXF"),
-        ("diamond-bin.dxf", "binary DXF"),
-        ("sample_binary.dxf", "binary DXF"),
     ];
     let mut total = crate::ImportReport::default();
     let mut curves = 0;
@@ -714,4 +718,104 @@ fn dxf_real_files_import() {
     }
     println!("total: {curves} curves; {}", total.summary());
     assert_eq!(curves, total.curve_count());
+}
+
+/// A binary DXF file (R13 and later: 2-byte group codes) with a LINE whose layer is named in
+/// windows-1251, and the same as text: both decode the name (the INSERT's error names it).
+#[test]
+fn dxf_binary_groups_and_code_pages() {
+    fn group(out: &mut Vec<u8>, code: u16, value: &[u8]) {
+        out.extend(code.to_le_bytes());
+        out.extend(value);
+    }
+    fn text(s: &[u8]) -> Vec<u8> {
+        [s, b"\0"].concat()
+    }
+    let mut b = b"AutoCAD Binary DXF\r\n\x1a\0".to_vec();
+    group(&mut b, 0, &text(b"SECTION"));
+    group(&mut b, 2, &text(b"ENTITIES"));
+    group(&mut b, 0, &text(b"LINE"));
+    group(&mut b, 8, &text(b"0"));
+    for (code, x) in [
+        (10, 1.0f64),
+        (20, 0.1),
+        (30, 0.0),
+        (11, -2.5),
+        (21, 3.0),
+        (31, 0.0),
+    ] {
+        group(&mut b, code, &x.to_le_bytes());
+    }
+    group(&mut b, 0, &text(b"ENDSEC"));
+    group(&mut b, 0, &text(b"EOF"));
+    let import = parse_dxf(
+        "b.dxf",
+        &b,
+        &ImportOptions::new(defaults()),
+        &Limits::default(),
+    )
+    .unwrap();
+    assert_eq!(import.report.summary(), "imported 1 curve (1 LINE)");
+    assert_eq!(at(&import.models[0], 0.0), [1.0, 0.1, 0.0]);
+    assert_eq!(at(&import.models[0], 1.0), [-2.5, 3.0, 0.0]);
+    // "Слой" in windows-1251 as an INSERT's block name that is not defined.
+    let name = [0xD1u8, 0xEB, 0xEE, 0xE9];
+    let body = [
+        &b"  0\nSECTION\n  2\nHEADER\n  9\n$DWGCODEPAGE\n  3\nANSI_1251\n  0\nENDSEC\n"[..],
+        b"  0\nSECTION\n  2\nENTITIES\n  0\nINSERT\n  8\n0\n  2\n",
+        &name,
+        b"\n  0\nENDSEC\n  0\nEOF\n",
+    ]
+    .concat();
+    let err = parse_dxf(
+        "c.dxf",
+        &body,
+        &ImportOptions::new(defaults()),
+        &Limits::default(),
+    )
+    .unwrap_err()
+    .to_string();
+    assert_eq!(
+        err,
+        "c.dxf:15: the INSERT draws the block `Слой`, which the BLOCKS section does not define"
+    );
+    // An unknown code page: windows-1252, with a warning.
+    let other = [
+        &b"  0\nSECTION\n  2\nHEADER\n  9\n$DWGCODEPAGE\n  3\nANSI_9999\n  0\nENDSEC\n"[..],
+        b"  0\nSECTION\n  2\nENTITIES\n  0\nLINE\n  8\n\xe9\n 10\n0\n 20\n0\n 11\n1\n 21\n0\n  0\nENDSEC\n  0\nEOF\n",
+    ]
+    .concat();
+    let import = parse_dxf(
+        "u.dxf",
+        &other,
+        &ImportOptions::new(defaults()),
+        &Limits::default(),
+    )
+    .unwrap();
+    assert_eq!(
+        import.report.warnings,
+        ["the code page `ANSI_9999` ($DWGCODEPAGE) is not one this reader knows: the text is read as windows-1252"]
+    );
+    assert_eq!(
+        super::groups::code_page("dos850").map(|p| p.decode(&[0x9B, 0x41])),
+        Some("øA".to_owned())
+    );
+}
+
+/// netDxf's sample drawing written as text and as binary DXF reads to the same models.
+#[test]
+fn dxf_binary_and_text_samples_agree() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../tests/realfiles/dxf/netdxf");
+    let read = |name: &str| {
+        crate::load_dxf(
+            root.join(name),
+            &ImportOptions::new(defaults()),
+            &Limits::default(),
+        )
+        .unwrap()
+    };
+    let (text, binary) = (read("sample.dxf"), read("sample_binary.dxf"));
+    assert_eq!(text.models.len(), 30);
+    assert_eq!(text.models, binary.models);
+    assert_eq!(text.report, binary.report);
 }
