@@ -139,12 +139,11 @@ fn polyline_pieces(vertices: &[([f64; 2], f64)], closed: bool, z: f64) -> Vec<Pi
     let n = vertices.len();
     let segments = if closed { n } else { n - 1 };
     (0..segments)
-        .map(|i| {
+        .flat_map(|i| {
             let (p0, b) = vertices[i];
             let (p1, _) = vertices[(i + 1) % n];
             bulge_pieces(p0, p1, b, z)
         })
-        .flatten()
         .collect()
 }
 

@@ -101,7 +101,8 @@ pub(super) fn ocs(normal: [f64; 3]) -> Result<Affine, String> {
 
 /// (sin d, cos d) of an angle `d` in degrees, exact at the multiples of 45° and symmetric
 /// under quarter turns: d is reduced to d = 90 q + r with |r| <= 45 and the values of r
-/// rotated by q quarter turns, so that sin 90° = 0-free 1, cos 90° = 0 exactly.
+/// rotated by q quarter turns, so that sin 90° = 1 and cos 90° = 0 exactly and
+/// sin 45° = cos 45° = 1/√2 to the same bit.
 pub(super) fn sin_cos_degrees(d: f64) -> (f64, f64) {
     let turned = d.rem_euclid(360.0);
     let quarter = (turned / 90.0).round();

@@ -188,6 +188,9 @@ pub(super) fn decode_text(bytes: &[u8]) -> (std::borrow::Cow<'_, str>, Option<St
     }
 }
 
+/// The groups of a binary file as (code, text) pairs, with a warning about its code page.
+pub(super) type BinaryGroups = (Vec<(u16, String)>, Option<String>);
+
 /// The sentinel that starts a binary DXF file.
 pub(super) const BINARY_START: &[u8] = b"AutoCAD Binary DXF\r\n\x1a\0";
 
@@ -212,9 +215,7 @@ enum Raw {
 ///
 /// # Errors
 /// The position and a message for a group cut short or of a code outside every range.
-pub(super) fn binary_groups(
-    bytes: &[u8],
-) -> Result<(Vec<(u16, String)>, Option<String>), (usize, String)> {
+pub(super) fn binary_groups(bytes: &[u8]) -> Result<BinaryGroups, (usize, String)> {
     let body = &bytes[BINARY_START.len().min(bytes.len())..];
     let wide = body.starts_with(b"\0\0SECTION");
     let mut raw: Vec<(u16, Raw)> = Vec::new();

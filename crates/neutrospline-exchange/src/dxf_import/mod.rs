@@ -292,8 +292,6 @@ fn sections<'a, 'g>(
 
 /// A block of the BLOCKS section.
 struct Block<'a> {
-    /// Its name as written.
-    name: &'a str,
     /// The base point (10/20/30), subtracted from its entities when inserted.
     base: [f64; 3],
     entities: Vec<Entity<'a>>,
@@ -317,7 +315,6 @@ fn blocks<'a>(file: &str, groups: &[Group<'a>]) -> Result<HashMap<String, Block<
         let name = head.text(2).unwrap_or("");
         let base = head.point(file, 10, [0.0; 3])?;
         out.entry(name.to_uppercase()).or_insert(Block {
-            name,
             base,
             entities: all[k + 1..end].to_vec(),
         });
@@ -567,12 +564,27 @@ impl Drawer<'_, '_> {
     }
 }
 
-/// The curves of a DXF file held in memory: one model per curve entity drawn in model space
-/// ([module docs](self)), in the order of the ENTITIES section (an INSERT's in the order of
-/// its block), with the report of every entity met. `file` names it in messages;
-/// `options.defaults` are the degrees of every control point (but a SPLINE's with
-/// `NEUTROSPLINE` extended data), `options.entities` the curve kinds to import (the others
-/// recorded as excluded; INSERTs are always followed, the filter applying inside them).
+/// The curves of a DXF file held in memory (text in UTF-8 or the code page of its
+/// `$DWGCODEPAGE`, or binary DXF): one model per curve entity drawn in model space, in the
+/// order of the ENTITIES section (an INSERT's in the order of its block), with the report of
+/// every entity met. `file` names it in messages; `options.defaults` are the degrees of every
+/// control point (but a SPLINE's with `NEUTROSPLINE` extended data), `options.entities` the
+/// curve kinds to import (the others recorded as excluded; INSERTs are always followed, the
+/// filter applying inside them).
+///
+/// Every curve is exact: a SPLINE as written; a LINE a degree-1 Bézier curve; an ARC, CIRCLE,
+/// ELLIPSE, and a polyline segment of bulge b (included angle 4 atan b) rational quadratic
+/// pieces of at most 90° (the piece from angle a to b of the unit circle has the control
+/// points (cos a, sin a), (cos m, sin m) / cos h, (cos b, sin b), m = (a + b) / 2,
+/// h = (b - a) / 2, weights 1, cos h, 1, mapped onto the circle or ellipse); a polyline's
+/// pieces joined into one B-spline (NURBS with an arc) whose piece k spans the knots
+/// \[k, k + 1\]; a spline-fit POLYLINE the uniform B-spline of its frame. Entities in an
+/// object coordinate system (ARC, CIRCLE, LWPOLYLINE, 2-D POLYLINE, INSERT) are mapped to the
+/// world by the Arbitrary Axis Algorithm of their extrusion direction; an INSERT maps its
+/// block by `ocs ∘ translate(point + array offset) ∘ rotate ∘ scale ∘ translate(-base)`.
+/// Layers off or frozen hide their entities; paper space, blocks never inserted, entities
+/// that are not curves or not read exactly are recorded in the report, never dropped
+/// silently.
 ///
 /// # Errors
 /// [`ReadError::Input`] naming the file and line: groups that do not parse or content after
@@ -669,7 +681,6 @@ pub fn parse_dxf(
     never.sort_by_key(|(key, _)| *key);
     let mut unused = Vec::new();
     for (_, block) in never {
-        let _ = block.name;
         for e in &block.entities {
             unused.push(e.kind);
         }

@@ -839,3 +839,38 @@ fn dxf_binary_and_text_samples_agree() {
     }
     assert_eq!(text.report, binary.report);
 }
+
+proptest! {
+    /// Any groups in any curve entity, block or INSERT give models or a message, never a
+    /// panic; so do any bytes after the binary sentinel.
+    #[test]
+    fn dxf_entities_never_panic(
+        kind in prop_oneof![Just("LINE"), Just("ARC"), Just("CIRCLE"), Just("ELLIPSE"),
+                            Just("LWPOLYLINE"), Just("POLYLINE"), Just("VERTEX"), Just("INSERT"),
+                            Just("SEQEND"), Just("TEXT")],
+        groups in proptest::collection::vec(
+            (
+                prop_oneof![Just("10"), Just("20"), Just("30"), Just("11"), Just("21"),
+                            Just("31"), Just("40"), Just("41"), Just("42"), Just("43"),
+                            Just("44"), Just("45"), Just("50"), Just("51"), Just("70"),
+                            Just("71"), Just("75"), Just("38"), Just("2"), Just("8"),
+                            Just("67"), Just("210"), Just("220"), Just("230"), Just("0")],
+                prop_oneof![Just("0".to_owned()), Just("1".to_owned()), Just("-1".to_owned()),
+                            Just("B".to_owned()), Just("VERTEX".to_owned()),
+                            Just("1e308".to_owned()), Just("16".to_owned()),
+                            Just("3000".to_owned()), "[0-9.e-]{1,6}"],
+            ),
+            0..30,
+        ),
+        bytes in proptest::collection::vec(any::<u8>(), 0..200),
+    ) {
+        let body: String = groups.iter().map(|(c, v)| format!("{c}\n{v}\n")).collect();
+        let block = format!(
+            "  0\nSECTION\n  2\nBLOCKS\n  0\nBLOCK\n  2\nB\n  0\n{kind}\n{body}  0\nENDBLK\n  0\nENDSEC\n"
+        );
+        let text = format!("{block}{}", dxf(&format!("  0\n{kind}\n{body}  0\nINSERT\n  2\nB\n")));
+        let _ = parse_dxf("p.dxf", text.as_bytes(), &ImportOptions::new(defaults()), &Limits::default());
+        let binary = [&b"AutoCAD Binary DXF\r\n\x1a\0"[..], &bytes].concat();
+        let _ = parse_dxf("b.dxf", &binary, &ImportOptions::new(defaults()), &Limits::default());
+    }
+}
