@@ -8,9 +8,10 @@
 //!   surface as a POLYFACE mesh), glTF 2.0 (`.glb`, `.gltf`), PLY and OBJ (sampled polylines
 //!   and triangle meshes), with the degrees kept where the format can carry them
 //!   ([`ExportFormat`], [`ExportOptions`], [`ColorBy`]).
-//! - Importing: [`load_dxf`] and [`parse_dxf`] read the SPLINE entities of a DXF file exactly,
-//!   with the degrees the exporter keeps in their extended data (a DXF export reads back to an
-//!   equal model, numbers to the last bit); [`load_svg`] and [`parse_svg`] read the path data
+//! - Importing: [`load_dxf`] and [`parse_dxf`] read the curve entities of a DXF file (text or
+//!   binary) exactly: SPLINE, LINE, ARC, CIRCLE, ELLIPSE, LWPOLYLINE, POLYLINE, through the
+//!   blocks of INSERTs, with a SPLINE's degrees from the extended data the exporter writes (a
+//!   DXF export reads back to an equal model, numbers to the last bit); [`load_svg`] and [`parse_svg`] read the path data
 //!   of an SVG file's `<path>` elements (lines, Bézier segments, elliptical arcs as exact
 //!   rational quadratic pieces), `<polyline>`s and `<polygon>`s as curves. Errors are
 //!   `neutrospline-io`'s [`ReadError`](neutrospline_io::ReadError)s, located at the file's line.

@@ -1,16 +1,16 @@
-//! Reading curves from DXF files: every SPLINE entity of the ENTITIES section becomes a model,
+//! SPLINE entities: each becomes a model,
 //! exactly (degree, knots, control points and weights as written, numbers parsed with Rust's
 //! correctly rounded `f64` parser), with the degrees, kind, membership rule and names of its
 //! `NEUTROSPLINE` extended data ([`crate::dxf_xdata`]) when it has them and the given default
 //! degrees when it has none.
 //!
-//! A DXF file is a sequence of groups, each a line with an integer group code and a line with
-//! its value. A SPLINE entity (AutoCAD's DXF reference, "SPLINE") has the flags (70: 4
+//! A SPLINE entity (AutoCAD's DXF reference, "SPLINE") has the flags (70: 4
 //! rational), the degree (71), the numbers of knots (72), control points (73) and fit points
 //! (74), the knots (40, in order), the weights (41, one per control point when the curve is
-//! rational) and the control points (10, 20, 30: x, y, z, in order). A spline given by fit
-//! points only is refused: its curve is defined by the CAD program's interpolation, not by the
-//! file.
+//! rational) and the control points (10, 20, 30: x, y, z, in world coordinates, in order),
+//! mapped by the INSERTs it is drawn through (an affine map: the weights stay). A spline given
+//! by fit points only is not read (the caller records it as unsupported): its curve is
+//! defined by the CAD program's interpolation, not by the file.
 //!
 //! Without extended data, a spline whose control points all have `z = 0` is a plane curve, and
 //! its kind is `nurbs` when it has weights, `bspline` otherwise.

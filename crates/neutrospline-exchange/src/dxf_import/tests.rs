@@ -874,3 +874,24 @@ proptest! {
         let _ = parse_dxf("b.dxf", &binary, &ImportOptions::new(defaults()), &Limits::default());
     }
 }
+
+/// A closed spline-fit POLYLINE: the periodic uniform quadratic B-spline of its frame, which
+/// at each knot is the midpoint of two consecutive frame points.
+#[test]
+fn dxf_closed_spline_fit_polyline_is_periodic() {
+    let text = dxf(concat!(
+        "  0\nPOLYLINE\n  8\n0\n 66\n1\n 70\n5\n 75\n5\n",
+        "  0\nVERTEX\n  8\n0\n 10\n0\n 20\n0\n 70\n16\n",
+        "  0\nVERTEX\n  8\n0\n 10\n2\n 20\n0\n 70\n16\n",
+        "  0\nVERTEX\n  8\n0\n 10\n2\n 20\n2\n 70\n16\n",
+        "  0\nVERTEX\n  8\n0\n 10\n0\n 20\n2\n 70\n16\n",
+        "  0\nSEQEND\n  8\n0\n",
+    ));
+    let m = &import(&text).models[0];
+    assert_eq!(m.shape().control_count(), 6);
+    assert_eq!(domain(m), (2.0, 6.0));
+    assert_eq!(at(m, 2.0), [1.0, 0.0, 0.0]);
+    assert_eq!(at(m, 3.0), [2.0, 1.0, 0.0]);
+    assert_eq!(at(m, 5.0), [0.0, 1.0, 0.0]);
+    assert_eq!(at(m, 6.0), [1.0, 0.0, 0.0]);
+}
