@@ -9,10 +9,10 @@
 //!   surfaces, the degrees in the control points' names), glTF 2.0 (`.glb`, `.gltf`), PLY and
 //!   OBJ (sampled polylines and triangle meshes), with the degrees kept where the format can
 //!   carry them ([`ExportFormat`], [`ExportOptions`], [`ColorBy`]).
-//! - Importing: [`load_dxf`] and [`parse_dxf`] read the curves of a DXF drawing exactly (SPLINE
-//!   entities as written, with the degrees the exporter keeps in their extended data, so a DXF
-//!   export reads back to an equal model, numbers to the last bit; lines, arcs, circles,
-//!   ellipses and polylines as exact NURBS); [`load_svg`] and [`parse_svg`] read the drawn
+//! - Importing: [`load_dxf`] and [`parse_dxf`] read the curve entities of a DXF drawing (text or
+//!   binary) exactly: SPLINE as written, with the degrees the exporter keeps in its extended
+//!   data (a DXF export reads back to an equal model, numbers to the last bit); LINE, ARC,
+//!   CIRCLE, ELLIPSE, LWPOLYLINE and POLYLINE as exact NURBS; through the blocks of INSERTs; [`load_svg`] and [`parse_svg`] read the drawn
 //!   shapes of an SVG drawing as curves. Each returns an [`Import`]: the models and the
 //!   [`ImportReport`] of what was imported and what was skipped, by kind and reason, so that
 //!   nothing is dropped without a word. The options are [`ImportRequest`]'s, defined once for

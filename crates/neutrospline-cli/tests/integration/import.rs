@@ -67,7 +67,7 @@ fn import_of_an_export_is_the_model() {
 fn import_chooses_among_several_curves_with_default_degrees() {
     let dir = tempfile::tempdir().unwrap();
     let text = dxf(&format!(
-        "  0\nLINE\n  8\n0\n{}{}",
+        "  0\nTEXT\n  8\n0\n{}{}",
         quadratic("2"),
         quadratic("4")
     ));
@@ -161,7 +161,7 @@ fn import_refusals_have_exact_messages_and_write_nothing() {
             dxf("  0\nCIRCLE\n  8\n0\n"),
             &[],
             1,
-            "error: a.dxf:9: the ENTITIES section has no SPLINE entity (it holds CIRCLE)",
+            "error: a.dxf:5: the CIRCLE has no centre x (group code 10)",
         ),
         (
             "a.txt",
