@@ -55,7 +55,7 @@ pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
 /// >>> len(curves), report["imported"], report["skipped"][0]
 /// (2, {'<path>': 1, '<rect>': 1}, {'kind': '<text>', 'reason': 'not-a-curve', 'count': 1})
 #[pyfunction]
-#[pyo3(signature = (path, *, kind = None, degree = None, knots = None, membership = None, rows = None, cols = None, degree_u = None, degree_v = None, knots_u = None, knots_v = None, **import_options))]
+#[pyo3(signature = (path, *, kind = None, degree = None, knots = None, membership = None, rows = None, cols = None, degree_u = None, degree_v = None, knots_u = None, knots_v = None, **options))]
 #[allow(clippy::too_many_arguments)]
 pub fn load(
     py: Python<'_>,
@@ -70,7 +70,7 @@ pub fn load(
     degree_v: Option<usize>,
     knots_u: Option<&Bound<'_, PyAny>>,
     knots_v: Option<&Bound<'_, PyAny>>,
-    import_options: Option<&Bound<'_, PyDict>>,
+    options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Py<PyAny>> {
     let extension = path
         .extension()
@@ -100,34 +100,34 @@ pub fn load(
                  options of .svg and .dxf files are import_options())",
             ));
         }
-        return import_drawing(py, &path, source, import_options);
+        return import_drawing(py, &path, source, options);
     }
-    if let Some(extra) = import_options.and_then(|o| o.keys().iter().next()) {
+    if let Some(extra) = options.and_then(|o| o.keys().iter().next()) {
         return Err(invalid_at(
             extra.extract::<String>()?,
             "is an option of a drawing (.svg, .dxf), not of a model file",
         ));
     }
-    let mut options = ReadOptions::default();
+    let mut read = ReadOptions::default();
     if let Some(kind) = kind {
-        options.kind = Some(Kind::from_name(kind).ok_or_else(|| {
+        read.kind = Some(Kind::from_name(kind).ok_or_else(|| {
             invalid_at(
                 "kind",
                 format!("{kind:?} is not a kind (one of {})", Kind::known_list()),
             )
         })?);
     }
-    options.membership = membership.map(model::membership).transpose()?;
-    options.degree = degree;
-    options.rows = rows;
-    options.cols = cols;
-    options.degree_u = degree_u;
-    options.degree_v = degree_v;
-    options.knots = knots.map(|k| knot_spec(k, "knots")).transpose()?;
-    options.knots_u = knots_u.map(|k| knot_spec(k, "knots_u")).transpose()?;
-    options.knots_v = knots_v.map(|k| knot_spec(k, "knots_v")).transpose()?;
+    read.membership = membership.map(model::membership).transpose()?;
+    read.degree = degree;
+    read.rows = rows;
+    read.cols = cols;
+    read.degree_u = degree_u;
+    read.degree_v = degree_v;
+    read.knots = knots.map(|k| knot_spec(k, "knots")).transpose()?;
+    read.knots_u = knots_u.map(|k| knot_spec(k, "knots_u")).transpose()?;
+    read.knots_v = knots_v.map(|k| knot_spec(k, "knots_v")).transpose()?;
     let model = py
-        .detach(|| neutrospline_io::load(&path, &options))
+        .detach(|| neutrospline_io::load(&path, &read))
         .map_err(invalid)?;
     model_into_py(py, model)
 }

@@ -77,7 +77,7 @@ fn import_chooses_among_several_curves_with_default_degrees() {
         (code, stderr.as_str()),
         (
             2,
-            "two.dxf: imported 2 curves (2 SPLINE)\nerror: two.dxf holds 2 curves: choose one \
+            "two.dxf: imported 2 curves (2 SPLINE); skipped 1 TEXT (not a curve)\nerror: two.dxf holds 2 curves: choose one \
              with --index K (1 to 2) or write each to its own file with --all\n"
         )
     );

@@ -340,12 +340,14 @@ impl<'a, 'input> Walker<'a, 'input> {
     /// parse is reported and read as not given (SVG 2, "error processing").
     fn length(
         &mut self,
-        node: Node<'_, '_>,
+        node: Node<'a, 'input>,
         name: &str,
         axis: Axis,
         context: Context,
     ) -> Option<f64> {
-        let text = node.attribute(name)?;
+        // SVG 2 makes the geometry attributes properties: CSS may set them.
+        let text = self.sheets.property(node, name)?;
+        let text = text.as_str();
         let [w, h] = context.viewport;
         let reference = match axis {
             Axis::X => w,
