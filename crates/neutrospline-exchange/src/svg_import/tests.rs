@@ -465,6 +465,16 @@ fn svg_entities_leave_out_the_other_kinds() {
 }
 
 #[test]
+fn svg_a_used_symbol_outside_defs_is_drawn_and_an_unused_one_reported() {
+    let svg = "<svg><symbol id='s'><path d='M0 0 L1 1'/></symbol>\
+               <symbol id='t'><rect width='1' height='1'/></symbol><use href='#s'/></svg>";
+    assert_eq!(
+        import(svg).report.summary(),
+        "imported 1 curve (1 <path>); not drawn: 1 <rect> in <symbol> (definitions never used)"
+    );
+}
+
+#[test]
 fn svg_use_bombs_are_refused() {
     // Ten levels of ten clones: 10^10 curves.
     let mut svg = String::from("<svg><defs><path id='l0' d='M0 0 L1 1'/>");

@@ -296,6 +296,10 @@ impl<'a, 'input> Walker<'a, 'input> {
             return Ok(());
         }
         if NOT_DRAWN.contains(&name) {
+            if self.used.contains(&node.id()) {
+                // A <symbol> that a <use> draws: its content is counted where it is drawn.
+                return Ok(());
+            }
             for child in node.children() {
                 self.count(child, SkipReason::NotDrawn, Some(name));
             }
