@@ -39,6 +39,7 @@
 mod dxf_import;
 mod dxf_xdata;
 mod export;
+mod pieces;
 mod report;
 mod svg_import;
 

@@ -4,7 +4,7 @@
 
 use std::f64::consts::FRAC_1_SQRT_2;
 
-use neutrospline::{AnyCurve, BSpline, Bezier, ControlPoint, Degrees, KnotVector, Nurbs};
+use neutrospline::{AnyCurve, BSpline, ControlPoint, Degrees, KnotVector};
 use neutrospline_io::Shape;
 
 /// An affine map of space, `p -> linear p + offset` (`linear` by rows).
@@ -304,22 +304,7 @@ fn build<const D: usize>(
             ControlPoint::new(position, defaults)
         })
         .collect();
-    let built = if pieces == 1 && !rational {
-        Bezier::new(points).map(AnyCurve::Bezier)
-    } else {
-        let mut knots = vec![0.0; degree + 1];
-        for k in 1..pieces {
-            knots.extend(std::iter::repeat_n(k as f64, degree));
-        }
-        knots.extend(std::iter::repeat_n(pieces as f64, degree + 1));
-        let knots = KnotVector::new(knots, degree, points.len()).map_err(|e| e.to_string())?;
-        if rational {
-            Nurbs::new(points, weights, knots).map(AnyCurve::Nurbs)
-        } else {
-            BSpline::new(points, knots).map(AnyCurve::BSpline)
-        }
-    };
-    built.map_err(|e| e.to_string())
+    crate::pieces::joined(points, weights, pieces, degree, rational)
 }
 
 /// The B-spline of `points` (mapped by `map`) with `knots` and `degree`: a plane curve when

@@ -61,7 +61,7 @@ mod walk;
 use std::path::Path;
 
 use neutrospline::{
-    AnyCurve, BSpline, Bezier, ControlPoint, ControlPolygon, Degrees, Elevate, KnotVector, Nurbs,
+    AnyCurve, Bezier, ControlPoint, ControlPolygon, Degrees, Elevate, KnotVector, Nurbs,
 };
 
 use crate::report::{Import, ImportOptions};
@@ -121,23 +121,7 @@ fn curve(segments: &[Segment], matrix: &Matrix, defaults: Degrees) -> Result<Any
         .iter()
         .map(|&p| ControlPoint::new(apply(matrix, p), defaults))
         .collect();
-    let built = if segments.len() == 1 && !rational {
-        Bezier::new(points).map(AnyCurve::Bezier)
-    } else {
-        let m = segments.len();
-        let mut knots = vec![0.0; degree + 1];
-        for k in 1..m {
-            knots.extend(std::iter::repeat_n(k as f64, degree));
-        }
-        knots.extend(std::iter::repeat_n(m as f64, degree + 1));
-        let knots = KnotVector::new(knots, degree, points.len()).map_err(|e| e.to_string())?;
-        if rational {
-            Nurbs::new(points, weights, knots).map(AnyCurve::Nurbs)
-        } else {
-            BSpline::new(points, knots).map(AnyCurve::BSpline)
-        }
-    };
-    built.map_err(|e| e.to_string())
+    crate::pieces::joined(points, weights, segments.len(), degree, rational)
 }
 
 /// The text of an SVG file: UTF-8, or the encoding its XML declaration names
