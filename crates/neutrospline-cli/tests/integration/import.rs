@@ -89,7 +89,8 @@ fn import_chooses_among_several_curves_with_default_degrees() {
         (code, stderr.as_str()),
         (
             2,
-            "error: --index 3: two.dxf holds 2 curves (give 1 to 2)\n"
+            "two.dxf: imported 2 curves (2 SPLINE); skipped 1 TEXT (not a curve)\nerror: --index \
+             3: two.dxf holds 2 curves (give 1 to 2)\n"
         )
     );
     assert_eq!(files(dir.path()), ["two.dxf"]);
