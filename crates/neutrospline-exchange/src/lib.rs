@@ -41,7 +41,7 @@ mod dxf_xdata;
 mod export;
 mod pieces;
 mod report;
-mod svg_import;
+pub mod svg_import;
 
 pub use dxf_import::{load_dxf, parse_dxf};
 pub use export::{
