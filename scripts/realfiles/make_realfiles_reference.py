@@ -9,8 +9,13 @@ How to run (from the workspace root):
       && /work/venv-ref/bin/python scripts/realfiles/make_realfiles_reference.py
 
 It writes tests/realfiles/reference/svg.json and dxf.json (deterministic: same input, same
-bytes). Numbers are written by Python's json module (the shortest repr that reads back to the
-same double); the exact SPLINE data are strings of that repr, which the Rust test parses with
+bytes). `--svg-only` or `--dxf-only` writes one of the two. `--root DIR` reads another folder
+laid out as tests/realfiles (DIR/svg/FOLDER/*.svg, DIR/dxf/FOLDER/*.dxf) and writes DIR/reference/:
+a check on files the tests have not seen, without committing them (run the Rust test with
+NEUTROSPLINE_REALFILES=DIR, crates/neutrospline-exchange/tests/realfiles.rs).
+
+Numbers are written by Python's json module (the shortest repr that reads back to the same
+double); the exact SPLINE data are strings of that repr, which the Rust test parses with
 the correctly rounded `str::parse::<f64>`.
 
 SVG (svgelements 1.9.6, `SVG.parse(path, reify=True)`):
@@ -611,6 +616,10 @@ def write(name, reader, entries):
 
 
 def main():
+    global REALFILES, OUT
+    if "--root" in sys.argv:
+        REALFILES = os.path.abspath(sys.argv[sys.argv.index("--root") + 1])
+        OUT = os.path.join(REALFILES, "reference")
     svg = []
     for rel in files_of("svg") if "--dxf-only" not in sys.argv else []:
         print(rel, file=sys.stderr, flush=True)

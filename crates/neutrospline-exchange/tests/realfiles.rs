@@ -29,6 +29,12 @@
 //! readers, each citing the README) are left out of the geometry checks. The test prints the
 //! coverage and the worst deviation per folder, then every failure with its file, shape,
 //! point and distance.
+//!
+//! `NEUTROSPLINE_REALFILES=DIR` runs the same checks on another folder laid out as
+//! `tests/realfiles/` (`DIR/svg/FOLDER/*.svg`, `DIR/dxf/FOLDER/*.dxf`, the reference written by
+//! `make_realfiles_reference.py --root DIR` into `DIR/reference/`; `exceptions.json` there is
+//! optional): files the tests have not seen, checked without committing them. It also prints
+//! every failure and uncovered shape, and the import report of every file.
 
 use std::collections::{BTreeMap, HashSet};
 use std::path::PathBuf;
@@ -64,8 +70,14 @@ const NEAR_ENOUGH: f64 = 1e-4;
 /// At most this many failures are printed in full.
 const SHOWN_FAILURES: usize = 60;
 
+/// The folder set by `NEUTROSPLINE_REALFILES` (module docs), if any.
+fn other_folder() -> Option<PathBuf> {
+    std::env::var_os("NEUTROSPLINE_REALFILES").map(PathBuf::from)
+}
+
 fn realfiles() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../tests/realfiles")
+    other_folder()
+        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../tests/realfiles"))
 }
 
 fn reference(name: &str) -> Value {
@@ -85,6 +97,9 @@ fn shape_name(shape: &Value) -> String {
 
 /// The (file, shape) pairs excluded from the geometry checks.
 fn exceptions() -> HashSet<(String, String)> {
+    if other_folder().is_some() && !realfiles().join("reference/exceptions.json").exists() {
+        return HashSet::new();
+    }
     let value = reference("exceptions.json");
     value["exceptions"]
         .as_array()
@@ -225,6 +240,9 @@ struct Tally {
     /// The largest distance of a point of a covered shape, as a fraction of the size.
     worst: f64,
     worst_at: String,
+    /// SPLINEs written as is, and those an imported curve equals exactly.
+    splines: usize,
+    exact_splines: usize,
 }
 
 /// Checks one format's reference; returns the tallies per folder and pushes failures.
@@ -249,10 +267,17 @@ fn check_format(
             .map(|a| a.iter().collect())
             .unwrap_or_default();
         let bytes = std::fs::read(realfiles().join(file)).unwrap();
-        let result: Result<Import, ReadError> = if name == "svg" {
-            parse_svg(file, &bytes, &options, &limits)
-        } else {
-            parse_dxf(file, &bytes, &options, &limits)
+        // A panic is a failure of this file, not the end of the run.
+        let parsed = std::panic::catch_unwind(|| -> Result<Import, ReadError> {
+            if name == "svg" {
+                parse_svg(file, &bytes, &options, &limits)
+            } else {
+                parse_dxf(file, &bytes, &options, &limits)
+            }
+        });
+        let Ok(result) = parsed else {
+            failures.push(format!("{file}: the import panics"));
+            continue;
         };
         let checked: Vec<&Value> = shapes
             .iter()
@@ -261,8 +286,16 @@ fn check_format(
             .collect();
         tally.shapes += checked.len();
         let import = match result {
-            Ok(import) => import,
+            Ok(import) => {
+                if other_folder().is_some() {
+                    println!("report {file}: {}", import.report.summary());
+                }
+                import
+            }
             Err(error) => {
+                if other_folder().is_some() {
+                    println!("error {file}: {error}");
+                }
                 if !checked.is_empty() {
                     failures.push(format!(
                         "{file}: the import fails where the reference draws {} shapes: {error}",
@@ -351,7 +384,10 @@ fn check_format(
                 &points,
                 &numbers(&spline["weights"]),
             );
-            if !keys.contains(&key) {
+            tally.splines += 1;
+            if keys.contains(&key) {
+                tally.exact_splines += 1;
+            } else {
                 failures.push(format!(
                     "{file}: SPLINE {}: no imported curve equals it exactly (degree {}, {} \
                      control points)",
@@ -412,10 +448,17 @@ fn print_tallies(name: &str, tallies: &BTreeMap<String, Tally>) -> f64 {
         "{:<24} {:>5} {:>7} {:>7} {:>9}  worst deviation / size",
         name, "files", "shapes", "covered", "coverage"
     );
-    let (mut shapes, mut covered) = (0, 0);
+    let mut all = Tally::default();
     for (folder, t) in tallies {
-        shapes += t.shapes;
-        covered += t.covered;
+        all.files += t.files;
+        all.shapes += t.shapes;
+        all.covered += t.covered;
+        all.splines += t.splines;
+        all.exact_splines += t.exact_splines;
+        if t.worst > all.worst {
+            all.worst = t.worst;
+            all.worst_at.clone_from(&t.worst_at);
+        }
         println!(
             "{folder:<24} {:>5} {:>7} {:>7} {:>8.1}%  {:.2e} {}",
             t.files,
@@ -426,18 +469,33 @@ fn print_tallies(name: &str, tallies: &BTreeMap<String, Tally>) -> f64 {
             t.worst_at
         );
     }
-    let coverage = covered as f64 / shapes.max(1) as f64;
+    let coverage = all.covered as f64 / all.shapes.max(1) as f64;
     println!(
-        "{:<24} {:>5} {shapes:>7} {covered:>7} {:>8.1}%",
+        "{:<24} {:>5} {:>7} {:>7} {:>8.1}%  {:.2e} {}",
         format!("{name} overall"),
-        "",
-        100.0 * coverage
+        all.files,
+        all.shapes,
+        all.covered,
+        100.0 * coverage,
+        all.worst,
+        all.worst_at
     );
+    if all.splines > 0 {
+        println!(
+            "{name}: {} of {} SPLINEs written as is imported exactly",
+            all.exact_splines, all.splines
+        );
+    }
     coverage
 }
 
 #[test]
 fn realfiles_match_the_reference_readers() {
+    let shown = if other_folder().is_some() {
+        usize::MAX
+    } else {
+        SHOWN_FAILURES
+    };
     let exceptions = exceptions();
     let mut failures = Vec::new();
     let mut uncovered = Vec::new();
@@ -453,7 +511,7 @@ fn realfiles_match_the_reference_readers() {
         }
     }
     println!("{} shapes not covered", uncovered.len());
-    for line in uncovered.iter().take(SHOWN_FAILURES) {
+    for line in uncovered.iter().take(shown) {
         println!("  {line}");
     }
     assert!(
@@ -462,12 +520,12 @@ fn realfiles_match_the_reference_readers() {
         failures.len(),
         failures
             .iter()
-            .take(SHOWN_FAILURES)
+            .take(shown)
             .cloned()
             .collect::<Vec<_>>()
             .join("\n"),
-        if failures.len() > SHOWN_FAILURES {
-            format!("\n... and {} more", failures.len() - SHOWN_FAILURES)
+        if failures.len() > shown {
+            format!("\n... and {} more", failures.len() - shown)
         } else {
             String::new()
         }
