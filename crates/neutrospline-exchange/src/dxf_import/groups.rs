@@ -10,18 +10,20 @@ pub(crate) struct Group<'a> {
 
 /// The groups of a DXF text: alternate lines of a group code (an integer, spaces allowed
 /// around it) and a value (`\r\n` line ends allowed), up to the `0 EOF` group that ends the
-/// file. After it only blank lines and DOS end-of-file bytes (0x1A) may follow, as programs
-/// write them (Inkscape's R12 files end with a blank line); a file without `0 EOF` may end
-/// with 0x1A bytes.
+/// file. After it, blank lines and DOS end-of-file bytes (0x1A) are what programs write
+/// (Inkscape's R12 files end with a blank line) and are passed over; anything else there is
+/// not read, as CAD programs and ezdxf do (a file with data appended after its end), and the
+/// second value is a warning that says so. A file without `0 EOF` may end with 0x1A bytes.
 ///
 /// # Errors
-/// A line and a message for a group code that is not an integer, a code without a value, or
-/// something other than blank lines after `0 EOF`.
-pub(crate) fn groups(text: &str) -> Result<Vec<Group<'_>>, (usize, String)> {
+/// A line and a message for a group code that is not an integer or a code without a value.
+#[allow(clippy::type_complexity)]
+pub(crate) fn groups(text: &str) -> Result<(Vec<Group<'_>>, Option<String>), (usize, String)> {
     let mut lines: Vec<&str> = text.lines().collect();
     let end = lines
         .chunks_exact(2)
         .position(|pair| pair[0].trim() == "0" && pair[1].trim() == "EOF");
+    let mut warning = None;
     match end {
         Some(k) => {
             let after = 2 * k + 2;
@@ -30,10 +32,12 @@ pub(crate) fn groups(text: &str) -> Result<Vec<Group<'_>>, (usize, String)> {
                     .trim_matches(|c: char| c.is_whitespace() || c == '\u{1a}')
                     .is_empty()
             }) {
-                return Err((
+                warning = Some(format!(
+                    "line {}: the file goes on after its end (`0 EOF` at line {}): the {} lines \
+                     from there on are not read, as CAD programs do",
                     after + extra + 1,
-                    "the file goes on after its end (`0 EOF`): only blank lines may follow it"
-                        .to_owned(),
+                    after - 1,
+                    lines.len() - after - extra
                 ));
             }
             lines.truncate(after);
@@ -79,7 +83,8 @@ pub(crate) fn groups(text: &str) -> Result<Vec<Group<'_>>, (usize, String)> {
                 line,
             })
         })
-        .collect()
+        .collect::<Result<Vec<_>, _>>()
+        .map(|groups| (groups, warning))
 }
 
 /// The upper halves (bytes 0x80 to 0xFF) of the DOS code pages 437 and 850, which

@@ -35,6 +35,8 @@ mod groups;
 mod spline;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_unseen;
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -244,13 +246,17 @@ fn split_entities<'a>(groups: &[Group<'a>]) -> Vec<Entity<'a>> {
 }
 
 /// The sections of a file by name: the groups between `0 SECTION`, `2 NAME` and `0 ENDSEC`,
-/// with the line of the `0 ENDSEC`.
-fn sections<'a, 'g>(
+/// with the line of the last `0 ENDSEC`. A name that comes back (a file written by joining
+/// several drawings: ezdxf's `recover01.dxf` has 397 ENTITIES sections) is one section of
+/// all its parts in order, with a warning: nothing in a later part is dropped.
+fn sections<'a>(
     file: &str,
-    groups: &'g [Group<'a>],
+    groups: &[Group<'a>],
     report: &mut ImportReport,
-) -> Result<HashMap<&'a str, (&'g [Group<'a>], usize)>, ReadError> {
-    let mut out = HashMap::new();
+) -> Result<HashMap<&'a str, (Vec<Group<'a>>, usize)>, ReadError> {
+    let mut out: HashMap<&'a str, (Vec<Group<'a>>, usize)> = HashMap::new();
+    // Each repeated name with its number of parts and the line of its first part.
+    let mut parts: Vec<(&'a str, usize, usize)> = Vec::new();
     let mut k = 0;
     // A fragment that starts at `2 ENTITIES` (without `0 SECTION`), as hand-written files do.
     let fragment = groups
@@ -283,9 +289,20 @@ fn sections<'a, 'g>(
                     format!("the {name} section has no end (`0 ENDSEC`): the file is cut short"),
                 )
             })?;
-        out.entry(name)
-            .or_insert((&groups[body..end], groups[end].line));
+        let section = out.entry(name).or_default();
+        section.0.extend_from_slice(&groups[body..end]);
+        section.1 = groups[end].line;
+        match parts.iter_mut().find(|p| p.0 == name) {
+            Some(p) => p.1 += 1,
+            None => parts.push((name, 1, groups[name_at].line)),
+        }
         k = end + 1;
+    }
+    for (name, count, line) in parts.into_iter().filter(|p| p.1 > 1) {
+        report.warn(format!(
+            "the file has {count} {name} sections (the first at line {line}): read as one, \
+             their content in order"
+        ));
     }
     Ok(out)
 }
@@ -620,10 +637,13 @@ pub fn parse_dxf(
         let (decoded, warning) = groups::decode_text(bytes);
         text = decoded;
         report.warnings.extend(warning);
-        groups(&text).map_err(|(line, message)| error(file, line, message))?
+        let (read, warning) =
+            groups(&text).map_err(|(line, message)| error(file, line, message))?;
+        report.warnings.extend(warning);
+        read
     };
     let sections = sections(file, &groups, &mut report)?;
-    let Some(&(entities, end_line)) = sections.get("ENTITIES") else {
+    let Some((entities, end_line)) = sections.get("ENTITIES") else {
         return Err(InputError::new(
             file,
             None,
@@ -632,7 +652,8 @@ pub fn parse_dxf(
         )
         .into());
     };
-    let header = sections.get("HEADER").map_or(&[][..], |s| s.0);
+    let end_line = *end_line;
+    let header = sections.get("HEADER").map_or(&[][..], |s| &s.0[..]);
     let spline_degree = header
         .windows(2)
         .find(|w| w[0].code == 9 && w[0].value.trim() == "$SPLINETYPE")
@@ -641,8 +662,8 @@ pub fn parse_dxf(
         file,
         options,
         limits,
-        layers: layers(file, sections.get("TABLES").map_or(&[][..], |s| s.0))?,
-        blocks: blocks(file, sections.get("BLOCKS").map_or(&[][..], |s| s.0))?,
+        layers: layers(file, sections.get("TABLES").map_or(&[][..], |s| &s.0[..]))?,
+        blocks: blocks(file, sections.get("BLOCKS").map_or(&[][..], |s| &s.0[..]))?,
         inserted: Default::default(),
         stack: Vec::new(),
         spline_degree,

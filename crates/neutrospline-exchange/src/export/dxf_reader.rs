@@ -88,7 +88,7 @@ impl<'a> Entity<'a> {
 /// # Panics
 /// If the text has no ENTITIES section or its groups do not parse.
 pub(super) fn entities(text: &str) -> Vec<Entity<'_>> {
-    let groups = groups(text).expect("DXF groups");
+    let groups = groups(text).expect("DXF groups").0;
     let start = groups
         .windows(2)
         .position(|w| w[0].code == 0 && w[0].value == "SECTION" && w[1].value == "ENTITIES")

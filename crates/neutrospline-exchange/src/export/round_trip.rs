@@ -182,7 +182,7 @@ fn dxf_example1_spline_entity() {
         ["0.3", "0.6", "0.1", "0.8", "0.1", "0.1", "0.7", "0.1", "0.2", "0.2", "0.4", "0.4"]
     );
     // Handles are unique, and $HANDSEED is past the last of them.
-    let all = groups(&text).unwrap();
+    let all = groups(&text).unwrap().0;
     let mut handles: Vec<u32> = all
         .iter()
         .filter(|g| g.code == 5 || g.code == 105)
