@@ -20,7 +20,8 @@ pub(super) enum Drawn {
         degree: usize,
         map: Affine,
     },
-    /// Nothing: a zero radius, a line of length zero, a polyline with fewer than 2 vertices.
+    /// Nothing: a zero radius, a line of length zero, a polyline with fewer than 2 vertices
+    /// or all its vertices at one point.
     Empty,
     /// A form that is not a curve this importer reads (a polyface or polygon mesh).
     Unsupported,
@@ -133,6 +134,13 @@ pub(super) fn ellipse(file: &str, e: &Entity<'_>) -> Result<Drawn, ReadError> {
     Ok(Drawn::Pieces(pieces, Affine::IDENTITY))
 }
 
+/// Whether every one of `points` is the first (a polyline that draws a point, not a curve).
+fn coincident<T: PartialEq>(points: impl IntoIterator<Item = T>) -> bool {
+    let mut points = points.into_iter();
+    let first = points.next();
+    points.all(|p| Some(p) == first)
+}
+
 /// The pieces of a 2-D polyline through `vertices` (x, y, bulge) at height `z`, closed back to
 /// the first vertex when `closed` ([`bulge_pieces`]).
 fn polyline_pieces(vertices: &[([f64; 2], f64)], closed: bool, z: f64) -> Vec<Piece> {
@@ -149,7 +157,8 @@ fn polyline_pieces(vertices: &[([f64; 2], f64)], closed: bool, z: f64) -> Vec<Pi
 
 /// The curve of an LWPOLYLINE (vertices 10/20 with bulges 42 in its object coordinates at
 /// the elevation 38; flag 70 bit 1 closed): one curve of its segments, a segment of bulge b
-/// != 0 the exact circular arc of included angle 4 atan b ([`bulge_pieces`]).
+/// != 0 the exact circular arc of included angle 4 atan b ([`bulge_pieces`]). Fewer than two
+/// vertices, or all at one point, draw nothing.
 pub(super) fn lwpolyline(file: &str, e: &Entity<'_>) -> Result<Drawn, ReadError> {
     let mut vertices: Vec<([f64; 2], f64)> = Vec::new();
     let mut pending_x: Option<f64> = None;
@@ -195,7 +204,7 @@ pub(super) fn lwpolyline(file: &str, e: &Entity<'_>) -> Result<Drawn, ReadError>
     }
     let closed = e.int_or(file, 70, 0)? & 1 != 0;
     let z = e.real_or(file, 38, 0.0, "elevation")?;
-    if vertices.len() < 2 {
+    if vertices.len() < 2 || coincident(vertices.iter().map(|v| v.0)) {
         return Ok(Drawn::Empty);
     }
     Ok(Drawn::Pieces(
@@ -219,7 +228,8 @@ pub(super) fn lwpolyline(file: &str, e: &Entity<'_>) -> Result<Drawn, ReadError>
 ///   round periodically (a closed one, flag 1); the vertices the CAD program computed on that
 ///   spline (vertex flag 8, an approximation) are not read. A spline-fit polyline without
 ///   frame vertices is read through its vertices as written;
-/// - a polygon or polyface mesh (flags 16, 64) is a surface: [`Drawn::Unsupported`].
+/// - a polygon or polyface mesh (flags 16, 64) is a surface: [`Drawn::Unsupported`];
+/// - vertices (or frame vertices) all at one point draw nothing: [`Drawn::Empty`].
 pub(super) fn polyline(
     file: &str,
     e: &Entity<'_>,
@@ -246,6 +256,9 @@ pub(super) fn polyline(
         object_map(file, e)?
     };
     if flags & 4 != 0 && !frame.is_empty() {
+        if coincident(frame.iter().copied()) {
+            return Ok(Drawn::Empty);
+        }
         let degree = match e.int_or(file, 75, 0)? {
             5 => 2,
             6 => 3,
@@ -293,7 +306,7 @@ pub(super) fn polyline(
     } else {
         read.iter().collect()
     };
-    if fitted.len() < 2 {
+    if fitted.len() < 2 || coincident(fitted.iter().map(|v| v.0)) {
         return Ok(Drawn::Empty);
     }
     if spatial {

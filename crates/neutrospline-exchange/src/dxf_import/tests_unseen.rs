@@ -69,3 +69,35 @@ fn dxf_every_repeated_entities_section_is_read() {
         .collect();
     assert_eq!(lengths, [8.0, 5.0]);
 }
+
+/// A polyline whose vertices all lie at one point draws a point, as a LINE of length zero
+/// does: both are reported as drawing nothing (the LWPOLYLINE was imported as a curve of
+/// length zero, the LINE skipped). The LWPOLYLINE 118 of dxf2gcode's `2010-06-13 test.dxf`
+/// (tests/realfiles/SOURCES.tsv), and POLYLINEs (2-D, 3-D, spline-fit) of one point.
+#[test]
+fn dxf_polylines_of_one_point_draw_nothing() {
+    let lwpolyline = "  0\nLWPOLYLINE\n  5\n118\n100\nAcDbEntity\n  8\n0\n 62\n7\n100\n\
+        AcDbPolyline\n 90\n2\n 70\n0\n 10\n21.861969\n 20\n-23.611595\n 30\n0.0\n 10\n\
+        21.861969\n 20\n-23.611595\n 30\n0.0\n";
+    let vertex = "  0\nVERTEX\n  8\n0\n 10\n1.5\n 20\n2\n 30\n0\n";
+    let frame = "  0\nVERTEX\n  8\n0\n 10\n1.5\n 20\n2\n 30\n0\n 70\n16\n";
+    let polyline = |flags: u8, vertices: &str| {
+        format!("  0\nPOLYLINE\n  8\n0\n 66\n1\n 70\n{flags}\n{vertices}  0\nSEQEND\n")
+    };
+    let line = "  0\nLINE\n  8\n0\n 10\n0\n 20\n0\n 11\n1\n 21\n0\n";
+    let entities = [
+        lwpolyline.to_owned(),
+        polyline(0, &vertex.repeat(3)),
+        polyline(8, &vertex.repeat(2)),
+        polyline(4, &frame.repeat(4)),
+        line.to_owned(),
+    ]
+    .concat();
+    let read = import(&format!(
+        "  0\nSECTION\n  2\nENTITIES\n{entities}  0\nENDSEC\n  0\nEOF\n"
+    ));
+    assert_eq!(
+        read.report.summary(),
+        "imported 1 curve (1 LINE); empty: 1 LWPOLYLINE, 3 POLYLINE (draws nothing)"
+    );
+}
