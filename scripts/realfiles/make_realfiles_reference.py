@@ -61,7 +61,9 @@ DXF (ezdxf 1.4.5, `ezdxf.readfile`, `ezdxf.recover.readfile` when that fails):
     that ezdxf does read (the numbers must agree exactly), and the check's result is written
     to the file's `cross_check`.
   * not curves: every other entity kind counted by kind (TEXT, MTEXT, HATCH, DIMENSION,
-    POINT, VIEWPORT, ...; polyface and polygon meshes as `POLYLINE` meshes).
+    POINT, VIEWPORT, ...; polyface and polygon meshes as `POLYLINE` meshes), and a curve
+    entity all of whose points coincide (a LINE of length zero, a CIRCLE of radius zero): it
+    draws a point, not a curve.
 
 The drawing's size is the diagonal of the bounding box of every reference point of the file.
 """
@@ -568,6 +570,12 @@ def dxf_reference(rel):
             shape = dxf_curve(e, name, not inserts)
             if shape is None:
                 key = f"{t} (mesh, or no control points, or knots not control points + degree + 1)"
+                entry["not_curves"][key] = entry["not_curves"].get(key, 0) + 1
+                continue
+            if t != "SPLINE" and all(p == shape["points"][0] for p in shape["points"]):
+                # A LINE of length zero, a CIRCLE or ARC of radius zero: a point, no curve
+                # (the importer reports it as drawing nothing).
+                key = f"{t} (draws nothing: length zero)"
                 entry["not_curves"][key] = entry["not_curves"].get(key, 0) + 1
                 continue
             if t == "SPLINE" and not inserts:
