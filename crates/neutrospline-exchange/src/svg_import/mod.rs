@@ -23,7 +23,8 @@
 //! `visibility:hidden` or `collapse` inherited), content not drawn where it stands (in
 //! `<defs>`, `<clipPath>`, `<mask>`, `<marker>`, `<pattern>`, an unused `<symbol>`, the
 //! `<switch>` children not chosen), drawn elements that are not curves (`<text>`, `<image>`,
-//! `<foreignObject>`), shapes that draw nothing (a rectangle or circle of size zero, a path
+//! `<foreignObject>`, Inkscape's flowed text `<flowRoot>`, whose `<flowRegion>` shapes are
+//! the frame its text flows in and are not drawn), shapes that draw nothing (a rectangle or circle of size zero, a path
 //! with only movetos, a zero-length line), kinds left out by the `entities` option. Data
 //! that breaks off is drawn up to its error with a warning naming the element, its line and
 //! the position (SVG 2, path data error handling); an attribute value that does not parse (a
@@ -247,3 +248,5 @@ pub fn load_svg(
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_unseen;

@@ -16,8 +16,10 @@ use crate::report::{ImportOptions, ImportReport, SkipReason};
 const SHAPES: [&str; 7] = [
     "path", "polyline", "polygon", "line", "rect", "circle", "ellipse",
 ];
-/// Elements that are drawn but are not curves.
-const NOT_CURVES: [&str; 3] = ["text", "image", "foreignObject"];
+/// Elements that are drawn but are not curves. Inkscape's `<flowRoot>` (flowed text of the
+/// SVG 1.2 draft) is text that Inkscape draws; the shapes of its `<flowRegion>` are the frame
+/// the text flows in, never drawn (browsers draw none of it).
+const NOT_CURVES: [&str; 4] = ["text", "image", "foreignObject", "flowRoot"];
 /// Containers whose content is not drawn where it stands.
 const NOT_DRAWN: [&str; 6] = ["defs", "clipPath", "mask", "marker", "pattern", "symbol"];
 /// How deep `<use>` elements may nest.
@@ -276,7 +278,8 @@ impl<'a, 'input> Walker<'a, 'input> {
             };
             self.report.skip(&what, reason);
         }
-        if name == "text" {
+        if NOT_CURVES.contains(&name) {
+            // Its content is part of it (tspans, a flowed text's frame).
             return;
         }
         for child in node.children() {
