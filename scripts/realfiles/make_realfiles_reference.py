@@ -23,9 +23,9 @@ SVG (svgelements 1.9.6, `SVG.parse(path, reify=True)`):
     of svgelements' tree. svgelements itself leaves out `display:none`, the content of
     `<defs>`, `<clipPath>` and `<pattern>`, and expands `<use>` (the referenced element is
     a child of the Use object). It draws `<marker>`, `<mask>` and `<symbol>` content in place
-    (a known error of the reader, tests/realfiles/README.md): this script walks the tree and
-    leaves out whatever lies under a marker or mask, and under a symbol that is not the
-    child of a Use. `visibility:hidden` / `collapse` (inherited through svgelements' values)
+    (a known error of the reader, tests/realfiles/README.md): this script moves them into
+    `<defs>` before parsing, and Inkscape's `<flowRoot>` too (svgelements draws the frame of
+    the flowed text). `visibility:hidden` / `collapse` (inherited through svgelements' values)
     is left out too. svgelements drops degenerate shapes itself (a zero-size rect).
   * coordinates: svgelements maps the root's viewBox onto its viewport (width/height in px);
     the importer produces the root's user units (viewBox coordinates). So every shape is
@@ -118,14 +118,16 @@ def size_of(shapes):
 # ------------------------------------------------------------------------------------- SVG
 
 SVG_NS = "http://www.w3.org/2000/svg"
-NOT_IN_PLACE = {"marker", "mask", "symbol"}
+NOT_IN_PLACE = {"marker", "mask", "symbol", "flowRoot"}
 
 
 def without_content_in_place(path):
-    """The file's bytes with every `<marker>`, `<mask>` and `<symbol>` moved into a `<defs>`
-    of its own where it stands: svgelements keeps an element it does not know (and puts the
-    element's content in the tree as drawn), but never draws `<defs>` content, and a `<use>`
-    still finds a moved symbol by its id."""
+    """The file's bytes with every `<marker>`, `<mask>`, `<symbol>` and Inkscape `<flowRoot>`
+    (flowed text: svgelements draws the shapes of its `<flowRegion>`, the frame the text
+    flows in, which no renderer draws) moved into a `<defs>` of its own where it stands:
+    svgelements keeps an element it does not know (and puts the element's content in the
+    tree as drawn), but never draws `<defs>` content, and a `<use>` still finds a moved
+    symbol by its id."""
     ET.register_namespace("", SVG_NS)
     ET.register_namespace("xlink", "http://www.w3.org/1999/xlink")
     tree = ET.parse(path)
@@ -199,7 +201,8 @@ def svg_reference(rel):
                 p = segment.point(t)
                 append_point(points, [p.x, p.y])
             length += segment.length(error=1e-12)
-        if not points:
+        if not points or all(p == points[0] for p in points):
+            # Nothing drawn, or a point (svgelements keeps a <rect> without a size).
             continue
         entry["shapes"].append(
             {
