@@ -32,12 +32,14 @@ pub(crate) fn groups(text: &str) -> Result<(Vec<Group<'_>>, Option<String>), (us
                     .trim_matches(|c: char| c.is_whitespace() || c == '\u{1a}')
                     .is_empty()
             }) {
+                let left = lines.len() - after - extra;
                 warning = Some(format!(
-                    "line {}: the file goes on after its end (`0 EOF` at line {}): the {} lines \
-                     from there on are not read, as CAD programs do",
+                    "line {}: the file goes on after its end (`0 EOF` at line {}): the {left} \
+                     line{} from there on {} not read, as CAD programs do",
                     after + extra + 1,
                     after - 1,
-                    lines.len() - after - extra
+                    if left == 1 { "" } else { "s" },
+                    if left == 1 { "is" } else { "are" },
                 ));
             }
             lines.truncate(after);
