@@ -3,7 +3,7 @@
 //!
 //! A thin layer over the `neutrospline` library: it parses arguments, reads files through
 //! `neutrospline-io`, calls the library, writes tables and maps errors to exit codes (0
-//! success, 1 invalid input or failure, 2 usage error). Only [`main_with_args`] and the fuzz
+//! success, 1 invalid input or failure, 2 usage error). Only [`main_with_args`], [`run_with_args`] and the fuzz
 //! target bodies ([`fuzzing`]) are public.
 
 mod commands;
@@ -113,29 +113,41 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
 
 /// Parses the command line, runs the command and maps the outcome to the exit status.
 pub fn main_with_args() -> ExitCode {
-    let cli = match Cli::try_parse() {
+    ExitCode::from(run_with_args(std::env::args_os()))
+}
+
+/// Parses `args` (the program name first, as `std::env::args_os` gives them), runs the command
+/// and returns the exit status: 0 success, 1 invalid input or failure, 2 usage error, 130 / 143
+/// interrupted. The `neutrospline` binary and the Python wheel's `neutrospline` console script
+/// both run through here, so they behave the same.
+pub fn run_with_args<I, T>(args: I) -> u8
+where
+    I: IntoIterator<Item = T>,
+    T: Into<std::ffi::OsString> + Clone,
+{
+    let cli = match Cli::try_parse_from(args) {
         Ok(cli) => cli,
         Err(e) => {
             // Help and version exit 0, errors 2; a closed pipe while printing is ignored.
             let _ = e.print();
-            return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
+            return u8::try_from(e.exit_code()).unwrap_or(2);
         }
     };
     limits::install(cli.limits.limits());
     match run(&cli) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) if output::is_broken_pipe(&e) => ExitCode::SUCCESS,
+        Ok(()) => 0,
+        Err(e) if output::is_broken_pipe(&e) => 0,
         Err(e) => {
             let _ = writeln!(std::io::stderr(), "error: {e:#}");
             if let Some(i) = e
                 .chain()
                 .find_map(|c| c.downcast_ref::<signals::Interrupted>())
             {
-                ExitCode::from(i.exit_code())
+                i.exit_code()
             } else if e.downcast_ref::<input::UsageError>().is_some() {
-                ExitCode::from(2)
+                2
             } else {
-                ExitCode::FAILURE
+                1
             }
         }
     }

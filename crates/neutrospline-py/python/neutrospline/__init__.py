@@ -23,6 +23,7 @@ from ._neutrospline import (
     NurbsSurface,
     Shape,
     Surface,
+    __version__,
     accuracy,
     certainty,
     check_relation,
@@ -44,6 +45,7 @@ Surface.bspline = BSplineSurface
 Surface.nurbs = NurbsSurface
 
 __all__ = [
+    "__version__",
     "BSpline",
     "BSplineSurface",
     "Bezier",

@@ -34,6 +34,12 @@ ViewName = Literal[
 Triple = Tuple[float, float, float]
 
 instruction_set: str
+# The package's version, the workspace's (Cargo.toml).
+__version__: str
+
+def _run_cli(argv: Sequence[str]) -> int:
+    """Runs the ``neutrospline`` command line (``argv[0]`` is the program name) and returns its
+    exit status; the body of the wheel's ``neutrospline`` console script."""
 
 class ModelError(ValueError): ...
 
