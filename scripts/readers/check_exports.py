@@ -10,7 +10,7 @@ parameters:
   positions to 1e-12 of the bounding box's diagonal; the same evaluation of the control points'
   truth, indeterminacy and falsity (from the NEUTROSPLINE extended data) gives the eval degrees
   to 1e-12. A surface's POLYFACE mesh has the sample grid's vertices, with their degrees.
-- plyfile reads binary and ASCII PLY files: the properties and counts the README states, the
+- plyfile reads binary and ASCII PLY files: the properties and counts docs/cli.md states, the
   eval positions and degrees exactly (doubles).
 - ezdxf writes DXF R2000 splines (open and rational, plane and spatial) that
   `neutrospline import` reads back: `eval` of the imported curves agrees with ezdxf's

@@ -3,7 +3,7 @@ the seed.
 
 The harness checks the library against references that share no code with it (mpmath, sympy,
 Python's csv module, brute force written here). `scripts/check` runs it with a small budget;
-`scripts/differential --long` runs the long budget (see the README).
+`scripts/differential --long` runs the long budget (see docs/correctness.md).
 
 Environment:
   NEUTROSPLINE_BIN         the command line (default: target/debug/neutrospline, built when missing)

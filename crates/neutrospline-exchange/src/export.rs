@@ -2,8 +2,8 @@
 //! mesh of a surface), glTF 2.0 (`.glb` and `.gltf`), PLY and OBJ (sampled polylines and
 //! triangle meshes), each keeping the degrees where the format can carry them.
 //!
-//! [`export`] makes the bytes of a file, [`export_file`] writes one atomically. The README's
-//! section "Command line" (`neutrospline export`) says what each format keeps.
+//! [`export`] makes the bytes of a file, [`export_file`] writes one atomically. The command-line
+//! reference, `docs/cli.md` (`neutrospline export`), says what each format keeps.
 
 mod dxf;
 mod dxf_document;

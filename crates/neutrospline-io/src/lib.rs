@@ -44,7 +44,7 @@
 //! # Ok::<(), neutrospline_io::ReadError>(())
 //! ```
 //!
-//! The formats are described in the repository's README (section "File formats"); the
+//! The formats are described in the repository's `docs/formats.md`; the
 //! messages name a setting by the `neutrospline` command's option for it (`--degree`).
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
