@@ -36,7 +36,7 @@ def test_the_python_quickstart_runs_and_prints_its_comment(root, workdir):
     assert printed.getvalue().strip() == "[4.625 4.    0.625 0.2   0.175]"
     np.testing.assert_allclose(namespace["rows"][5], [4.625, 4.0, 0.625, 0.2, 0.175], atol=1e-15)
     assert (workdir / "survey.toml").is_file()
-    assert (workdir / "survey.svg").read_text().startswith("<svg")
+    assert "<svg" in (workdir / "survey.svg").read_text()
     assert namespace["report"]["control_points"] == 12
 
 
