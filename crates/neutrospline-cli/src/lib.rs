@@ -25,7 +25,7 @@ use commands::studio::StudioArgs;
 use commands::{
     bench::BenchArgs, bench_fit::BenchFitArgs, check::CheckArgs, eval::EvalArgs,
     example::ExampleArgs, export::ExportArgs, fit::FitArgs, import::ImportArgs,
-    intersect::IntersectArgs, plot::PlotArgs, query::QueryArgs,
+    intersect::IntersectArgs, plot::PlotArgs, query::QueryArgs, relation::RelationArgs,
 };
 
 /// Evaluate and check neutrosophic curves and surfaces (Bezier, B-spline, NURBS): control
@@ -79,6 +79,10 @@ enum Command {
     /// Every point where two plane curves meet (or where a curve crosses itself, when B is A):
     /// the parameters on both, the point and the degrees of each curve there
     Intersect(IntersectArgs),
+    /// The paper's Def. 4: the largest neutrosophic point relation of two axis sets (CSV), as
+    /// the control points of a plane curve; or, with --check MODEL, whether a model's control
+    /// points form a relation of the two sets
+    Relation(RelationArgs),
     /// Run the paper's Example 1 from built-in data: print its control points and curve, and
     /// with --out DIR write the paper's five figures and the curve table
     Example(ExampleArgs),
@@ -104,6 +108,7 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         Command::Import(args) => commands::import::run(args),
         Command::Query(args) => commands::query::run(args),
         Command::Intersect(args) => commands::intersect::run(args),
+        Command::Relation(args) => commands::relation::run(args),
         Command::Example(args) => commands::example::run(args),
         Command::Bench(args) => commands::bench::run(args, &mut std::io::stdout().lock()),
         Command::BenchFit(args) => commands::bench_fit::run(args, &mut std::io::stdout().lock()),

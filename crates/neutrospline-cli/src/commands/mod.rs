@@ -13,6 +13,7 @@ pub mod intersect;
 pub mod options;
 pub mod plot;
 pub mod query;
+pub mod relation;
 pub mod studio;
 
 use neutrospline::Membership;

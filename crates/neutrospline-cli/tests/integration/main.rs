@@ -16,5 +16,6 @@ mod kinds;
 mod plot;
 mod query;
 mod readers;
+mod relation;
 mod studio;
 mod util;
