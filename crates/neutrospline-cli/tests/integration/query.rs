@@ -3,7 +3,7 @@
 //! `examples/nurbs-circle.toml`, the quarter cylinder of `examples/nurbs-surface.json`), JSON
 //! output, the atomic `-o`, and located errors with their exit codes.
 
-use crate::util::{dir_with_examples, ok, run};
+use crate::util::{dir_with_examples, ok, rows, run};
 
 /// A temporary directory with the given files and copies of the examples used here.
 fn dir_with(files: &[(&str, &str)]) -> tempfile::TempDir {
@@ -16,14 +16,6 @@ fn dir_with(files: &[(&str, &str)]) -> tempfile::TempDir {
         ],
         files,
     )
-}
-
-fn rows(table: &str) -> Vec<Vec<f64>> {
-    table
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
-        .collect()
 }
 
 #[test]

@@ -3,7 +3,7 @@
 //! control points is exactly Table 1 of the paper (each degree the smaller of M's at r and N's
 //! at s, worked out by hand below), so the model it writes evaluates as `examples/example1.toml`.
 
-use crate::util::{dir_with, example, ok, run};
+use crate::util::{dir_with, example, ok, rows, run};
 
 /// A temporary directory with the relation examples and Example 1, and the given files.
 fn dir(files: &[(&str, &str)]) -> tempfile::TempDir {
@@ -13,14 +13,6 @@ fn dir(files: &[(&str, &str)]) -> tempfile::TempDir {
     }
     std::fs::copy(example("example1.toml"), dir.path().join("example1.toml")).unwrap();
     dir
-}
-
-fn rows(table: &str) -> Vec<Vec<f64>> {
-    table
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
-        .collect()
 }
 
 #[test]

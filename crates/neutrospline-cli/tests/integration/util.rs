@@ -97,3 +97,12 @@ pub fn dir_with_examples<C: AsRef<[u8]>>(
     }
     dir
 }
+
+/// The numbers of a CSV table without its header row, row by row.
+pub fn rows(table: &str) -> Vec<Vec<f64>> {
+    table
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
+        .collect()
+}
