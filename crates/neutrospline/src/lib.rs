@@ -104,6 +104,7 @@ mod degrees;
 mod derivative;
 mod dyn_curve;
 mod example;
+mod family;
 pub mod fit;
 mod fuzzy;
 mod geometry;
@@ -134,6 +135,10 @@ pub use degrees::{
 pub use derivative::CurveDerivative;
 pub use dyn_curve::{Dimensional, DynCurve, DynDerivative, DynPoint, NearestRow, RowLengthError};
 pub use example::{example1, EXAMPLE1_NAMES, EXAMPLE1_TABLE};
+pub use family::{
+    Family, FamilyValues, LinearConstraint, ParseFamilyError, PowerRule, RuleError, FAMILY_FORMS,
+    MAX_CHANNELS, RULE_TOLERANCE,
+};
 pub use fuzzy::{alpha_cut, centroid_curve, FuzzyError, Side, Spread};
 pub use geometry::{
     ArcAverages, CurveGeometry, GeometryError, DEFAULT_ACCURACY, FINEST_ACCURACY, MAX_SUBINTERVALS,

@@ -1,0 +1,276 @@
+use super::*;
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-15 * (1.0 + b.abs())
+}
+
+#[test]
+fn names_parse_and_print_back() {
+    for family in Family::EXAMPLES {
+        assert_eq!(family.to_string().parse::<Family>().unwrap(), family);
+        assert!(family.channel_count() >= 1 && family.channel_count() <= MAX_CHANNELS);
+        assert_eq!(family.channels().len(), family.channel_count());
+    }
+    assert_eq!(
+        " Q-RUNG : 7 ".parse::<Family>().unwrap(),
+        Family::q_rung(7).unwrap()
+    );
+    assert_eq!(
+        "t-spherical:3".parse::<Family>().unwrap().to_string(),
+        "t-spherical:3"
+    );
+    let forms = "expected one of: neutrosophic, intuitionistic, fuzzy, pythagorean, fermatean, \
+q-rung:Q, picture, spherical, t-spherical:N, interval-neutrosophic, interval-intuitionistic, \
+interval-type2, bipolar-neutrosophic (Q and N integers >= 1)";
+    for (given, reason) in [
+        ("crisp", "no such family"),
+        (
+            "q-rung",
+            "the parameter is missing, as in q-rung:4 or t-spherical:3",
+        ),
+        ("q-rung:0", "the parameter must be an integer >= 1"),
+        ("t-spherical:1.5", "the parameter must be an integer >= 1"),
+        ("q-rung:-2", "the parameter must be an integer >= 1"),
+        ("picture:2", "this family takes no parameter"),
+    ] {
+        assert_eq!(
+            given.parse::<Family>().unwrap_err().to_string(),
+            format!("unknown membership family `{given}` ({reason}; {forms})")
+        );
+    }
+    assert!(Family::q_rung(0).is_err() && Family::t_spherical(0).is_err());
+}
+
+#[test]
+fn legacy_membership_converts_both_ways() {
+    for m in [
+        Membership::Neutrosophic,
+        Membership::Intuitionistic,
+        Membership::Fuzzy,
+    ] {
+        let family = Family::from(m);
+        assert_eq!(family.membership(), Some(m));
+        assert_eq!(family.to_string(), m.to_string());
+    }
+    let d = Degrees::new(0.3, 0.6, 0.1).unwrap();
+    let v = Family::Neutrosophic.from_degrees(&d).unwrap();
+    assert_eq!(Family::Neutrosophic.to_degrees(&v).unwrap(), d);
+    let d = Degrees::fuzzy(0.4).unwrap();
+    assert_eq!(&*Family::Fuzzy.from_degrees(&d).unwrap(), &[0.4]);
+    assert_eq!(Family::Fuzzy.to_degrees(&[0.4]).unwrap(), d);
+    assert!(Family::Intuitionistic.to_degrees(&[0.7, 0.6]).is_err());
+    assert!(Family::Picture.from_degrees(&d).is_none());
+    assert!(Family::Picture.to_degrees(&[0.1, 0.1, 0.1]).is_err());
+    assert!(Family::Neutrosophic.to_degrees(&[0.1, 0.1]).is_err());
+}
+
+#[test]
+fn refusals_name_the_rule_and_the_value() {
+    let q4 = Family::q_rung(4).unwrap();
+    let t3 = Family::t_spherical(3).unwrap();
+    let cases: [(Family, &[f64], &str); 12] = [
+        (
+            Family::Pythagorean,
+            &[0.8, 0.7],
+            "truth^2 + falsity^2 = 1.1300000000000001 exceeds 1 (pythagorean rule)",
+        ),
+        (
+            Family::Intuitionistic,
+            &[0.5, 0.75],
+            "truth + falsity = 1.25 exceeds 1 (intuitionistic rule)",
+        ),
+        (
+            Family::Fermatean,
+            &[1.0, 0.5],
+            "truth^3 + falsity^3 = 1.125 exceeds 1 (fermatean rule)",
+        ),
+        (
+            q4,
+            &[1.0, 0.5],
+            "truth^4 + falsity^4 = 1.0625 exceeds 1 (q-rung:4 rule)",
+        ),
+        (
+            Family::Picture,
+            &[0.5, 0.25, 0.5],
+            "truth + indeterminacy + falsity = 1.25 exceeds 1 (picture rule)",
+        ),
+        (
+            t3,
+            &[1.0, 0.5, 0.0],
+            "truth^3 + indeterminacy^3 + falsity^3 = 1.125 exceeds 1 (t-spherical:3 rule)",
+        ),
+        (
+            Family::Neutrosophic,
+            &[0.5, 1.5, 0.0],
+            "indeterminacy = 1.5 is outside [0, 1] (neutrosophic rule)",
+        ),
+        (
+            Family::IntervalNeutrosophic,
+            &[0.1, 0.2, 0.5, 0.4, 0.0, 0.0],
+            "indeterminacy_lower = 0.5 exceeds indeterminacy_upper = 0.4 (interval-neutrosophic rule: lower <= upper)",
+        ),
+        (
+            Family::IntervalIntuitionistic,
+            &[0.25, 0.5, 0.25, 0.75],
+            "truth_upper + falsity_upper = 1.25 exceeds 1 (interval-intuitionistic rule)",
+        ),
+        (
+            Family::BipolarNeutrosophic,
+            &[0.5, 0.5, 0.5, 0.25, 0.0, 0.0],
+            "negative_truth = 0.25 is outside [-1, 0] (bipolar-neutrosophic rule)",
+        ),
+        (
+            Family::Fuzzy,
+            &[f64::NAN],
+            "truth = NaN is not a finite number (fuzzy rule)",
+        ),
+        (
+            Family::IntervalType2,
+            &[0.5],
+            "1 values given; the interval-type2 family has 2 channels (truth_lower, truth_upper)",
+        ),
+    ];
+    for (family, values, message) in cases {
+        assert_eq!(family.check(values).unwrap_err().to_string(), message);
+    }
+    // On the boundary is valid; a tolerance admits rounding, not more.
+    assert!(Family::Pythagorean.check(&[0.6, 0.8]).is_ok());
+    assert!(Family::Intuitionistic
+        .check_within(&[0.5, 0.5 + 1e-13], RULE_TOLERANCE)
+        .is_ok());
+    assert!(Family::Intuitionistic
+        .check_within(&[0.5, 0.5 + 1e-11], RULE_TOLERANCE)
+        .is_err());
+}
+
+#[test]
+fn derived_degrees_and_scores_have_their_closed_forms() {
+    let q5 = Family::q_rung(5).unwrap();
+    let t4 = Family::t_spherical(4).unwrap();
+    // (family, channels, derived, score, accuracy), by hand.
+    type Case<'a> = (Family, &'a [f64], &'a [f64], f64, Option<f64>);
+    let cases: [Case; 13] = [
+        (Family::Neutrosophic, &[0.7, 0.1, 0.2], &[], 0.8, Some(0.5)),
+        (
+            Family::Intuitionistic,
+            &[0.5, 0.25],
+            &[0.25],
+            0.25,
+            Some(0.75),
+        ),
+        (Family::Fuzzy, &[0.4], &[], 0.4, None),
+        (Family::Pythagorean, &[0.6, 0.0], &[0.8], 0.36, Some(0.36)),
+        (
+            Family::Fermatean,
+            &[0.5, 0.5],
+            &[0.75f64.cbrt()],
+            0.0,
+            Some(0.25),
+        ),
+        (
+            q5,
+            &[0.5, 0.25],
+            &[(1.0 - 1.0 / 32.0 - 1.0 / 1024.0f64).powf(0.2)],
+            1.0 / 32.0 - 1.0 / 1024.0,
+            Some(1.0 / 32.0 + 1.0 / 1024.0),
+        ),
+        (
+            Family::Picture,
+            &[0.5, 0.125, 0.25],
+            &[0.125],
+            0.25,
+            Some(0.875),
+        ),
+        (Family::Spherical, &[0.5, 0.5, 0.5], &[0.5], 0.0, Some(0.75)),
+        (
+            t4,
+            &[0.5, 0.5, 0.0],
+            &[0.875f64.powf(0.25)],
+            0.0625,
+            Some(0.125),
+        ),
+        (
+            Family::IntervalNeutrosophic,
+            &[0.5, 1.0, 0.0, 0.25, 0.25, 0.5],
+            &[],
+            4.5 / 6.0,
+            None,
+        ),
+        (
+            Family::IntervalIntuitionistic,
+            &[0.25, 0.5, 0.125, 0.25],
+            &[0.25, 0.625],
+            0.1875,
+            Some(0.5625),
+        ),
+        (Family::IntervalType2, &[0.25, 0.75], &[0.5, 0.5], 0.5, None),
+        (
+            Family::BipolarNeutrosophic,
+            &[0.5, 0.25, 0.25, -0.5, -0.25, -0.5],
+            &[],
+            3.25 / 6.0,
+            None,
+        ),
+    ];
+    for (family, values, derived, score, accuracy) in cases {
+        assert!(family.check(values).is_ok(), "{family}");
+        let got = family.derived(values);
+        assert_eq!(got.len(), derived.len(), "{family}");
+        assert_eq!(family.derived_names().len(), derived.len(), "{family}");
+        for (g, d) in got.iter().zip(derived) {
+            assert!(close(*g, *d), "{family}: derived {g} vs {d}");
+        }
+        assert!(
+            close(family.score(values), score),
+            "{family}: score {}",
+            family.score(values)
+        );
+        match (family.accuracy(values), accuracy) {
+            (Some(a), Some(b)) => assert!(close(a, b), "{family}: accuracy {a} vs {b}"),
+            (a, b) => assert_eq!(a, b, "{family}"),
+        }
+    }
+}
+
+#[test]
+fn linear_constraints_describe_each_rule() {
+    // Counts: boxes without the implied ends, orders and the sum.
+    let counts = [6, 3, 2, 2, 2, 2, 4, 3, 3, 9, 5, 3, 12];
+    for (family, count) in Family::EXAMPLES.into_iter().zip(counts) {
+        let constraints = family.linear_constraints();
+        assert_eq!(constraints.len(), count, "{family}");
+        assert_eq!(family.is_linear(), family.power_rule().is_none());
+        // The corners of the channel boxes that pass the check satisfy every constraint, and
+        // a failing corner breaks one of them or the power rule.
+        let k = family.channel_count();
+        for corner in 0..1u32 << k {
+            let x: Vec<f64> = (0..k)
+                .map(|c| {
+                    let (low, high) = family.channel_range(c);
+                    if corner >> c & 1 == 1 {
+                        high
+                    } else {
+                        low
+                    }
+                })
+                .collect();
+            let linear_ok = constraints.iter().all(|c| c.slack(&x) >= 0.0);
+            let round_ok = family
+                .power_rule()
+                .is_none_or(|r| rule::power_sum(&x, r.channels, r.power) <= 1.0);
+            assert_eq!(
+                family.check(&x).is_ok(),
+                linear_ok && round_ok,
+                "{family} {x:?}"
+            );
+        }
+    }
+    assert_eq!(
+        Family::Spherical.power_rule(),
+        Some(PowerRule {
+            power: 2,
+            channels: &[0, 1, 2]
+        })
+    );
+    assert_eq!(Family::q_rung(1).unwrap().power_rule(), None);
+}
