@@ -63,9 +63,9 @@ enum Command {
     Check(CheckArgs),
     /// Draw a figure of a curve or surface (SVG or PNG): the paper's views and a plane view
     Plot(PlotArgs),
-    /// Fit a curve to measured data points (CSV with positions and degrees): interpolation or
-    /// least squares, the degrees kept within their bounds; the model to standard output or
-    /// -o, the error report to standard error
+    /// Fit a curve (or with --surface a surface) to measured data points (CSV with positions
+    /// and degrees): interpolation or least squares, the degrees kept within their bounds; the
+    /// model to standard output or -o, the error report to standard error
     Fit(FitArgs),
     /// Export a curve or surface to CAD and 3-D programs: DXF (exact splines), glTF, PLY or
     /// OBJ, keeping the degrees where the format can carry them

@@ -30,7 +30,10 @@
 use std::io::BufRead;
 use std::path::Path;
 
-use neutrospline::fit::{fit_rows, DynFit, FitError, FitOptions};
+use neutrospline::fit::{
+    fit_rows, fit_surface, DynFit, FitError, FitOptions, SurfaceFit, SurfaceFitData,
+    SurfaceFitOptions,
+};
 use neutrospline::{Degrees, Membership};
 
 use crate::csv::{read_degrees, require_degrees, Columns, Table};
@@ -43,18 +46,27 @@ use crate::{InputError, PointTable, ReadError};
 enum Column {
     Field(Field),
     Parameter,
+    /// A surface's parameters `u` and `v`.
+    U,
+    V,
 }
 
 impl Column {
     fn from_name(text: &str) -> Option<Column> {
-        if text.eq_ignore_ascii_case("parameter") {
-            return Some(Column::Parameter);
+        for (name, column) in [
+            ("parameter", Column::Parameter),
+            ("u", Column::U),
+            ("v", Column::V),
+        ] {
+            if text.eq_ignore_ascii_case(name) {
+                return Some(column);
+            }
         }
         Field::from_name(text, true).map(Column::Field)
     }
 
     fn known_list() -> String {
-        format!("{}, parameter", Field::known_list())
+        format!("{}, parameter, u, v", Field::known_list())
     }
 }
 
@@ -66,6 +78,7 @@ pub struct DataTable {
     points: PointTable,
     degrees: Vec<Degrees>,
     parameters: Option<Vec<f64>>,
+    surface_parameters: Option<Vec<[f64; 2]>>,
     weights: Option<Vec<f64>>,
     names: Vec<Option<String>>,
 }
@@ -101,6 +114,11 @@ impl DataTable {
         &self.degrees
     }
 
+    /// The `u` and `v` columns (a surface's parameters), when the file has them.
+    pub fn surface_parameters(&self) -> Option<&[[f64; 2]]> {
+        self.surface_parameters.as_deref()
+    }
+
     /// The `parameter` column, when the file has one.
     pub fn parameters(&self) -> Option<&[f64]> {
         self.parameters.as_deref()
@@ -130,6 +148,12 @@ impl DataTable {
     /// # Errors
     /// The located [`FitError`].
     pub fn fit(&self, options: &FitOptions) -> Result<DynFit, InputError> {
+        if self.surface_parameters.is_some() {
+            return Err(self.file_error(
+                "columns `u` and `v` are a surface's parameters: fit a surface (--surface), or \
+                 give a curve's `parameter` column",
+            ));
+        }
         fit_rows(
             self.dimension(),
             &self.points.flat_positions(),
@@ -139,6 +163,78 @@ impl DataTable {
             options,
         )
         .map_err(|e| self.locate(&e))
+    }
+
+    /// Fits a surface to the table's points (which need a `z` column): a grid of
+    /// `[rows, cols]` points in the order of the rows, or scattered points; with the `u`, `v`
+    /// columns as the points' parameters and the `weight` column as their weights, when the
+    /// file has them. Errors are located in the file ([`DataTable::locate`]).
+    ///
+    /// ```
+    /// use neutrospline::fit::{SurfaceFitOptions, SurfaceTarget};
+    /// use neutrospline::Membership;
+    /// use neutrospline_io::read_data;
+    /// let mut csv = String::from("x,y,z,T,I,F\n");
+    /// for k in 0..4 {
+    ///     for l in 0..3 {
+    ///         csv.push_str(&format!("{k},{l},{},0.5,0.2,0.1\n", k * l));
+    ///     }
+    /// }
+    /// let table = read_data("grid.csv", csv.as_bytes(), Membership::Neutrosophic)?;
+    /// let options = SurfaceFitOptions::default()
+    ///     .with_degrees(3, 2)
+    ///     .with_target(SurfaceTarget::Interpolate);
+    /// let fitted = table.fit_surface(Some([4, 3]), &options)?;
+    /// assert_eq!(fitted.report.control_points, [4, 3]);
+    /// let wrong = table.fit_surface(Some([5, 3]), &options).unwrap_err();
+    /// assert_eq!(
+    ///     wrong.to_string(),
+    ///     "grid.csv: a grid of 5 x 3 points does not hold 12 points (rows x cols must be the \
+    ///      number of points, each at least 1)"
+    /// );
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// No `z` column, a `parameter` column (a curve's), the located [`FitError`].
+    pub fn fit_surface(
+        &self,
+        grid: Option<[usize; 2]>,
+        options: &SurfaceFitOptions,
+    ) -> Result<SurfaceFit, InputError> {
+        if self.dimension() != 3 {
+            return Err(self
+                .file_error("a surface is fitted to points in 3-D: the data needs a `z` column"));
+        }
+        if self.parameters.is_some() {
+            return Err(self.file_error(
+                "column `parameter` is a curve's parameter: give a surface's parameters as \
+                 columns `u` and `v`",
+            ));
+        }
+        let positions = self.positions().to_vec();
+        let degrees = self.degrees.clone();
+        let data = match grid {
+            Some([rows, cols]) => SurfaceFitData::grid(rows, cols, positions, degrees),
+            None => SurfaceFitData::scattered(positions, degrees),
+        };
+        let mut data = data.map_err(|e| self.locate(&e))?;
+        if let Some(uv) = &self.surface_parameters {
+            data = data
+                .with_parameters(uv.clone())
+                .map_err(|e| self.locate(&e))?;
+        }
+        if let Some(weights) = &self.weights {
+            data = data
+                .with_weights(weights.clone())
+                .map_err(|e| self.locate(&e))?;
+        }
+        fit_surface(&data, options).map_err(|e| self.locate(&e))
+    }
+
+    /// An error about the whole file.
+    fn file_error(&self, message: &str) -> InputError {
+        InputError::new(self.file(), None, None, message.to_owned())
     }
 
     /// A fitting error located in this file: an error about one point names the point's line
@@ -260,6 +356,21 @@ pub fn read_data(
         )?;
     }
     require_degrees(&rows, membership, Column::Field)?;
+    for (given, missing) in [(Column::U, "v"), (Column::V, "u")] {
+        if rows.has(given) && !rows.has(if missing == "v" { Column::V } else { Column::U }) {
+            let given = if missing == "v" { "u" } else { "v" };
+            return Err(InputError::new(
+                file,
+                None,
+                None,
+                format!(
+                    "column `{given}` without column `{missing}`: a surface's parameters are \
+                     given as both"
+                ),
+            )
+            .into());
+        }
+    }
     let dimension = if rows.has(Column::Field(Field::Z)) {
         3
     } else {
@@ -269,12 +380,14 @@ pub fn read_data(
         points: PointTable::new(file, dimension),
         degrees: Vec::new(),
         parameters: rows.has(Column::Parameter).then(Vec::new),
+        surface_parameters: rows.has(Column::U).then(Vec::new),
         weights: rows.has(Column::Field(Field::Weight)).then(Vec::new),
         names: Vec::new(),
     };
     while let Some(row) = rows.next_row()? {
         let mut values = [None::<f64>; Field::ALL.len()];
         let mut parameter = None;
+        let mut uv = [0.0; 2];
         let mut name = None;
         for cell in row.cells() {
             if cell.column == Column::Field(Field::Name) {
@@ -284,6 +397,8 @@ pub fn read_data(
             let value = row.number(&cell)?;
             match cell.column {
                 Column::Parameter => parameter = Some(value),
+                Column::U => uv[0] = value,
+                Column::V => uv[1] = value,
                 Column::Field(Field::Weight) if value <= 0.0 => {
                     return Err(row.cell_error(&cell, weight_message(value)).into())
                 }
@@ -302,6 +417,9 @@ pub fn read_data(
         );
         if let (Some(list), Some(value)) = (&mut table.parameters, parameter) {
             list.push(value);
+        }
+        if let Some(list) = &mut table.surface_parameters {
+            list.push(uv);
         }
         if let (Some(list), Some(value)) = (&mut table.weights, get(Field::Weight)) {
             list.push(value);
@@ -356,7 +474,8 @@ mod tests {
             ("x,truth,indeterminacy,falsity\n1,0,0,0\n", "d.csv:1: missing column `y` (every data point needs x, y and its truth)"),
             ("x,y,truth,indeterminacy\n1,2,0,0\n", "d.csv:1: missing column `falsity` (neutrosophic rule requires it)"),
             ("x,y,t,truth,I,F\n", "d.csv:1: column 4 `truth` repeats column 3 `t` (each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity)"),
-            ("x,y,T,I,F,u\n", "d.csv:1: unknown column `u` (known columns: x, y, z, truth (T), indeterminacy (I), falsity (F), weight, name, parameter)"),
+            ("x,y,T,I,F,q\n", "d.csv:1: unknown column `q` (known columns: x, y, z, truth (T), indeterminacy (I), falsity (F), weight, name, parameter, u, v)"),
+            ("x,y,z,T,I,F,u\n", "d.csv: column `u` without column `v`: a surface's parameters are given as both"),
             ("x,y,T,I,F\n1,2,0.5,0.5\n", "d.csv:2: the row has 4 cells but the header has 5 (every row needs one cell per column)"),
             ("x,y,T,I,F\n1,nan,0.5,0.5,0\n", "d.csv:2: column `y`: value `nan` is not a finite number (NaN and infinities are not allowed)"),
             ("x,y,T,I,F\n1,2,1.5,0.5,0\n", "d.csv:2: truth = 1.5 is outside [0, 1] (every degree must be in [0, 1])"),

@@ -1,10 +1,13 @@
-//! `neutrospline fit DATA.csv`: a neutrosophic curve fitted to measured points, written as a
-//! model, with the error report on standard error (docs/model.md section 8).
+//! `neutrospline fit DATA.csv`: a neutrosophic curve (or, with `--surface`, a B-spline
+//! surface) fitted to measured points, written as a model, with the error report on standard
+//! error (docs/model.md section 8 and "Surface fitting").
 
 use std::io::Write;
 use std::path::PathBuf;
 
-use neutrospline::fit::{channel_names, DynFit, FitReport, FitRequest};
+use neutrospline::fit::{
+    channel_names, DynFit, FitReport, FitRequest, SurfaceFitReport, SurfaceFitRequest,
+};
 use neutrospline::options::{OptionSet, OptionValue};
 use neutrospline::DegreeKind;
 use neutrospline_io::{DataTable, Format, Model};
@@ -13,7 +16,7 @@ use neutrospline_plot::{DataOverlay, FigureRequest, PlotModel, PlotOptions, View
 use crate::commands::plot::{write_figure, FigureFormat};
 use crate::input::{read_data, UsageError};
 use crate::output::{self, number};
-use crate::request::RequestArgs;
+use crate::request::UnionArgs;
 
 /// `--report` values.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -47,7 +50,12 @@ Target (one of): --interpolate (through every point), --control-points N (least 
 The degrees of the fitted control points are solved under the bounds of the membership rule, so \
 the model always passes `neutrospline check`. The report (residuals per channel, worst point, \
 Schoenberg-Whitney conditions, condition estimate, control degrees on a bound) goes to standard \
-error."
+error.\n\
+--surface: a B-spline surface of degrees --degree P[,Q] fitted to x, y, z data (columns u and v \
+optional: the points' parameters): --grid ROWSxCOLS for a grid given row by row (interpolation \
+or least squares, parameters averaged over rows and columns), else scattered points (least \
+squares, parameters by --projection); targets --interpolate (grids), --control-points M[,N], \
+--tolerance E; --smoothing adds the thin-plate energy."
 )]
 pub struct FitArgs {
     /// The data: a CSV file of measured points; `-` reads standard input
@@ -59,9 +67,14 @@ pub struct FitArgs {
     #[arg(short = 'o', long = "output", value_name = "MODEL")]
     pub output: Option<PathBuf>,
 
-    /// The fit's options (defined by the library's `FitRequest`)
+    /// Fit a B-spline surface (the options of the library's `SurfaceFitRequest`) instead of
+    /// a curve
+    #[arg(long)]
+    pub surface: bool,
+
+    /// The fit's options (defined by the library's `FitRequest` and `SurfaceFitRequest`)
     #[command(flatten)]
-    pub request: RequestArgs<FitRequest>,
+    pub request: UnionArgs<FitRequest, SurfaceFitRequest>,
 
     /// The report's format (on standard error)
     #[arg(long, value_enum, value_name = "FORMAT", default_value = "text")]
@@ -87,26 +100,40 @@ pub struct FitArgs {
 /// Usage errors (contradicting options, an unsupported extension), a located data error, a
 /// fitting error, a write error.
 pub fn run(args: &FitArgs) -> anyhow::Result<()> {
-    let model_format = match &args.output {
+    let model_format = model_format(args)?;
+    if args.surface {
+        return run_surface(args, model_format);
+    }
+    run_curve(args, model_format)
+}
+
+/// The model's format: by the extension of `-o`, TOML on standard output.
+fn model_format(args: &FitArgs) -> anyhow::Result<Format> {
+    let what = if args.surface { "surface" } else { "curve" };
+    Ok(match &args.output {
         Some(path) => match Format::from_path(path) {
             Ok(Format::Toml) => Format::Toml,
             Ok(Format::Json) => Format::Json,
             _ => {
                 return Err(UsageError(format!(
-                    "{}: unsupported model extension for a fitted curve (accepted: .toml, .json)",
+                    "{}: unsupported model extension for a fitted {what} (accepted: .toml, .json)",
                     path.display()
                 ))
                 .into())
             }
         },
         None => Format::Toml,
-    };
+    })
+}
+
+/// The curve fit.
+fn run_curve(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
     let figure_format = args
         .plot
         .as_deref()
         .map(FigureFormat::from_path)
         .transpose()?;
-    let request = args.request.request()?;
+    let request = args.request.first("with --surface")?;
     let options = request.validate().map_err(|e| UsageError(e.to_string()))?;
     let membership = request.membership;
     let table = read_data(&args.data, membership)?;
@@ -145,6 +172,169 @@ pub fn run(args: &FitArgs) -> anyhow::Result<()> {
     }
     Ok(())
 }
+/// The surface fit: the same data file, model and report channels as a curve's.
+fn run_surface(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
+    if args.plot.is_some() {
+        return Err(UsageError(
+            "--plot draws the data view of a fitted curve; the data view of a surface fit is \
+             not available yet (plot the model with `neutrospline plot`)"
+                .into(),
+        )
+        .into());
+    }
+    let request = args.request.second("without --surface")?;
+    let options = request.validate().map_err(|e| UsageError(e.to_string()))?;
+    let membership = request.membership;
+    let table = read_data(&args.data, membership)?;
+    request
+        .weights
+        .check_data(table.file(), table.weights().is_some())
+        .map_err(|e| UsageError(e.to_string()))?;
+    let fitted = table
+        .fit_surface(request.grid, &options)
+        .map_err(|e| anyhow::Error::msg(e.to_string()))?;
+    let shape = match request.grid {
+        Some([rows, cols]) => format!("a grid of {rows} x {cols} points"),
+        None => format!("{} scattered points", table.len()),
+    };
+    let mut model = Model::new(fitted.surface.clone())
+        .with_membership(membership)?
+        .with_description(format!(
+            "Fitted to {} ({shape}) by neutrospline fit --surface",
+            table.file()
+        ));
+    if let Some(name) = &args.name {
+        model = model.with_name(name.clone());
+    }
+    let text = neutrospline_io::to_string(&model, model_format)?;
+    output::emit(args.output.as_deref(), |w| {
+        w.write_all(text.as_bytes())?;
+        Ok(())
+    })?;
+    let report = &fitted.report;
+    let mut err = std::io::stderr().lock();
+    match args.report {
+        ReportFormat::Text => write!(err, "{}", surface_report_text(report, &table))?,
+        ReportFormat::Json => writeln!(err, "{}", surface_report_json(report))?,
+    }
+    Ok(())
+}
+
+/// A surface fit's report as aligned text lines.
+fn surface_report_text(report: &SurfaceFitReport, table: &DataTable) -> String {
+    let mut out = String::new();
+    let mut line = |label: &str, value: String| {
+        out.push_str(&format!("{label:<21}{value}\n"));
+    };
+    let ([m, n], [p, q]) = (report.control_points, report.degrees);
+    line(
+        "control points",
+        format!(
+            "{m} x {n} (degrees {p}, {q}; {})",
+            if report.two_pass {
+                "two passes of the curve solver"
+            } else {
+                "whole tensor system"
+            }
+        ),
+    );
+    if let Some(e) = report.tolerance {
+        let met = match report.tolerance_met {
+            Some(true) => "met".to_owned(),
+            _ => format!(
+                "NOT met: no knot span with a point beyond it can be split further (achieved {})",
+                number(report.worst_distance)
+            ),
+        };
+        line("tolerance", format!("{}, {met}", output::rounded(e, 6)));
+    }
+    let [u, v] = report.worst_parameters;
+    line(
+        "worst point",
+        format!(
+            "{} (line {}, u = {}, v = {}): position residual {}",
+            report.worst_index,
+            table.line(report.worst_index),
+            output::rounded(u, 6),
+            output::rounded(v, 6),
+            number(report.worst_distance)
+        ),
+    );
+    line("channel", "max error              rms error".to_owned());
+    for ((name, max), (_, rms)) in report.max_error.iter().zip(&report.rms_error) {
+        line(
+            &format!("  {name}"),
+            format!("{:<23}{}", number(*max), number(*rms)),
+        );
+    }
+    line(
+        "data in supports",
+        if report.data_in_every_support {
+            "every control point has data in its support".to_owned()
+        } else {
+            "not every control point (smoothing determines the others)".to_owned()
+        },
+    );
+    line(
+        "condition estimate",
+        format!("{:.3e}", report.condition_estimate),
+    );
+    if report.at_bound.is_empty() {
+        line("at bound", "none".to_owned());
+    } else {
+        let list: Vec<String> = report
+            .at_bound
+            .iter()
+            .map(|a| {
+                format!(
+                    "({}, {}) {} = {}",
+                    a.index / n,
+                    a.index % n,
+                    a.channel,
+                    a.bound
+                )
+            })
+            .collect();
+        line("at bound", list.join(", "));
+    }
+    out
+}
+
+/// A surface fit's report as one JSON object (the curve report's keys, with pairs where a
+/// surface has two directions).
+fn surface_report_json(report: &SurfaceFitReport) -> String {
+    let channels = |values: &[(&'static str, f64)]| {
+        serde_json::Value::Object(
+            values
+                .iter()
+                .map(|(name, v)| ((*name).to_owned(), json_number(*v)))
+                .collect(),
+        )
+    };
+    let n = report.control_points[1];
+    let value = serde_json::json!({
+        "control_points": report.control_points,
+        "degrees": report.degrees,
+        "max_error": channels(&report.max_error),
+        "rms_error": channels(&report.rms_error),
+        "worst_index": report.worst_index,
+        "worst_parameters": report.worst_parameters.map(json_number),
+        "worst_distance": json_number(report.worst_distance),
+        "data_in_every_support": report.data_in_every_support,
+        "two_pass": report.two_pass,
+        "condition_estimate": json_number(report.condition_estimate),
+        "at_bound": report.at_bound.iter().map(|a| serde_json::json!({
+            "row": a.index / n,
+            "col": a.index % n,
+            "channel": a.channel,
+            "bound": a.bound,
+        })).collect::<Vec<_>>(),
+        "tolerance": report.tolerance.map(json_number),
+        "tolerance_met": report.tolerance_met,
+    });
+    value.to_string()
+}
+
 /// The `data` view's model: the fitted curve, the data coloured by `color_by`, whiskers to
 /// the curve at the fitted parameters.
 fn data_plot(

@@ -7,6 +7,7 @@ mod derivatives;
 mod export;
 mod faults;
 mod fit;
+mod fit_surface;
 mod fuzz_corpus;
 mod fuzzy;
 mod hostile;

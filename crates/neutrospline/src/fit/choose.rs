@@ -277,7 +277,7 @@ pub(super) fn position_residuals<const D: usize>(
     weights: &[f64],
     lambda: f64,
 ) -> Result<Vec<f64>, FitError> {
-    let q = Values {
+    let q = Values::Points {
         positions: data.positions(),
         degrees: None,
     };

@@ -34,12 +34,14 @@
 
 mod banded;
 mod basis;
+mod bounds;
 mod choose;
 mod knots;
 mod qp;
 mod report;
 mod request;
 mod solve;
+mod surface;
 mod system;
 mod width;
 
@@ -49,10 +51,15 @@ use crate::any_curve::AnyCurve;
 use crate::curve::CurveError;
 use crate::degrees::{DegreeError, DegreeKind, Degrees, Membership};
 use crate::dyn_curve::DynCurve;
+use crate::surface::SurfaceError;
 
 pub use knots::Parametrization;
 pub use report::{AtBound, FitReport};
 pub use request::FitRequest;
+pub use surface::{
+    fit_surface, Projection, SurfaceFit, SurfaceFitData, SurfaceFitOptions, SurfaceFitReport,
+    SurfaceFitRequest, SurfaceShape, SurfaceTarget,
+};
 
 /// Data to fit: points with their degrees, and optionally their parameters and weights.
 #[derive(Clone, Debug, PartialEq)]
@@ -458,6 +465,32 @@ pub enum FitError {
     /// The fitted curve could not be built (a value overflowed).
     #[error(transparent)]
     Curve(#[from] CurveError),
+    /// A grid whose size is not the number of points.
+    #[error("a grid of {rows} x {cols} points does not hold {points} points (rows x cols must be the number of points, each at least 1)")]
+    GridShape {
+        /// The rows given.
+        rows: usize,
+        /// The columns given.
+        cols: usize,
+        /// The number of points.
+        points: usize,
+    },
+    /// A control point of a surface has no data in its support and there is no smoothing to
+    /// determine it.
+    #[error("control point (row {row}, column {col}) has no data in its support [{}, {}] x [{}, {}] of (u, v) and there is no smoothing: give smoothing, fewer control points, or data there", u[0], u[1], v[0], v[1])]
+    EmptyCell {
+        /// The control point's row (along u).
+        row: usize,
+        /// Its column (along v).
+        col: usize,
+        /// Its support along u.
+        u: [f64; 2],
+        /// Its support along v.
+        v: [f64; 2],
+    },
+    /// The fitted surface could not be built.
+    #[error(transparent)]
+    Surface(#[from] SurfaceError),
 }
 
 /// Fits a curve to `data`.

@@ -273,7 +273,19 @@ impl FitRequest {
     /// # Errors
     /// [`OptionError::Data`].
     pub fn check_data_weights(&self, source: &str, has_weights: bool) -> Result<(), OptionError> {
-        match (self.weights == DataWeights::Given, has_weights) {
+        self.weights.check_data(source, has_weights)
+    }
+}
+
+impl DataWeights {
+    /// Whether these weights and a data source's own agree: a source with a weight column
+    /// is fitted with `column` only, and `column` needs the column (the rule of
+    /// [`FitRequest::check_data_weights`], shared by surface fits).
+    ///
+    /// # Errors
+    /// [`OptionError::Data`].
+    pub fn check_data(self, source: &str, has_weights: bool) -> Result<(), OptionError> {
+        match (self == DataWeights::Given, has_weights) {
             (true, false) => Err(OptionError::Data(format!(
                 "weights = column: {source} has no `weight` column"
             ))),

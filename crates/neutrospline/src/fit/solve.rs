@@ -1,16 +1,15 @@
 //! The fit itself: parameters, knots, the basis matrix, the normal equations, the tolerance
 //! loop, the bounded degree channels and the report.
 
+use super::bounds::{bounded_degrees, degrees_of, Bounded};
 use super::choose::{choose, schoenberg_whitney, Chosen};
 use super::knots::parameters;
-use super::report::{AtBound, FitReport};
+use super::report::FitReport;
 use super::system::{Extra, Layout, Rows, System, Values};
-use super::{
-    channel_names, qp, DataWeights, Fit, FitData, FitError, FitKind, FitOptions, FitTarget,
-};
+use super::{channel_names, DataWeights, Fit, FitData, FitError, FitKind, FitOptions, FitTarget};
 use crate::any_curve::AnyCurve;
 use crate::bezier::Bezier;
-use crate::degrees::{Degrees, Membership};
+use crate::degrees::Degrees;
 use crate::knots::KnotVector;
 use crate::point::ControlPoint;
 use crate::spline_curve::BSpline;
@@ -76,7 +75,7 @@ pub(super) fn run<const D: usize>(
     let target = match (&options.knots, options.target) {
         (_, Some(target)) => target,
         (Some(knots), None) => FitTarget::ControlPoints(knots.len().saturating_sub(p + 1)),
-        (None, None) => FitTarget::Tolerance(1e-3 * diagonal(data)),
+        (None, None) => FitTarget::Tolerance(1e-3 * diagonal(data.positions())),
     };
     if let FitTarget::Tolerance(e) = target {
         if !(e > 0.0 && e.is_finite()) {
@@ -104,10 +103,10 @@ pub(super) fn run<const D: usize>(
 }
 
 /// The bounding-box diagonal of the data's positions.
-fn diagonal<const D: usize>(data: &FitData<D>) -> f64 {
+pub(super) fn diagonal<const D: usize>(positions: &[[f64; D]]) -> f64 {
     let mut lo = [f64::INFINITY; D];
     let mut hi = [f64::NEG_INFINITY; D];
-    for p in data.positions() {
+    for p in positions {
         for a in 0..D {
             lo[a] = lo[a].min(p[a]);
             hi[a] = hi[a].max(p[a]);
@@ -154,7 +153,7 @@ fn finish<const D: usize>(
     };
     // Every channel at once: positions, then truth, indeterminacy, falsity.
     let cc = D + 3;
-    let q = Values {
+    let q = Values::Points {
         positions: data.positions(),
         degrees: Some(degrees),
     };
@@ -165,104 +164,18 @@ fn finish<const D: usize>(
     let column = |x: &[f64], j: usize| -> Vec<f64> { (0..n).map(|i| x[i * cc + j]).collect() };
     let coords: Vec<Vec<f64>> = (0..D).map(|a| column(&all, a)).collect();
     // The degree channels: unconstrained, then under the rule's bounds where they leave them.
-    let mut at_bound = Vec::new();
-    let mut bounded = |k: usize, columns: &[usize]| -> Result<Vec<Vec<f64>>, FitError> {
-        let free: Vec<Vec<f64>> = columns.iter().map(|&c| column(&all, D + c)).collect();
-        let mut start = vec![0.0; n * k];
-        let mut b = vec![0.0; n * k];
-        for (j, &c) in columns.iter().enumerate() {
-            for i in 0..n {
-                start[i * k + j] = free[j][i];
-                b[i * k + j] = rhs[i * cc + D + c];
-            }
-        }
-        let feasible = start
-            .chunks_exact(k)
-            .all(|x| x.iter().all(|v| (0.0..=1.0).contains(v)) && (k == 1 || x[0] + x[1] <= 1.0));
-        if feasible {
-            return Ok(free);
-        }
-        let solution = qp::solve(&system.matrix, k, &b, &start).ok_or(FitError::Singular)?;
-        for (i, active) in solution.active.iter().enumerate() {
-            for c in active {
-                let (name, bound) = match (c, k) {
-                    (qp::Bound::Lower(j), _) => (channel_names(0)[columns[*j]], 0.0),
-                    (qp::Bound::Upper, _) => (channel_names(0)[columns[0]], 1.0),
-                    (qp::Bound::Sum, _) => ("truth + falsity", 1.0),
-                };
-                at_bound.push(AtBound {
-                    index: i,
-                    channel: name,
-                    bound,
-                });
-            }
-        }
-        Ok((0..k)
-            .map(|j| (0..n).map(|i| solution.x[i * k + j]).collect())
-            .collect())
-    };
-    // Control degrees per point: [truth, indeterminacy, falsity].
-    let mut control = vec![[0.0; 3]; n];
-    match options.membership {
-        Membership::Neutrosophic => {
-            for c in 0..3 {
-                let values = bounded(1, &[c])?.remove(0);
-                for (i, v) in values.into_iter().enumerate() {
-                    control[i][c] = v.clamp(0.0, 1.0);
-                }
-            }
-        }
-        Membership::Intuitionistic => {
-            let tf = bounded(2, &[0, 2])?;
-            for i in 0..n {
-                let t = tf[0][i].clamp(0.0, 1.0);
-                let f = tf[1][i].clamp(0.0, 1.0 - t);
-                control[i] = [t, 1.0 - t - f, f];
-            }
-        }
-        Membership::Fuzzy => {
-            let t = bounded(1, &[0])?.remove(0);
-            for i in 0..n {
-                control[i] = [t[i].clamp(0.0, 1.0), 0.0, 0.0];
-            }
-        }
-    }
-    // Values exactly on a bound that the unconstrained solution reached by itself.
-    for (i, row) in control.iter().enumerate() {
-        for c in 0..3 {
-            let name = channel_names(0)[c];
-            if options.membership == Membership::Intuitionistic && c == 1 {
-                continue;
-            }
-            if options.membership == Membership::Fuzzy && c > 0 {
-                continue;
-            }
-            for bound in [0.0, 1.0] {
-                if row[c] == bound && !at_bound.iter().any(|a| a.index == i && a.channel == name) {
-                    at_bound.push(AtBound {
-                        index: i,
-                        channel: name,
-                        bound,
-                    });
-                }
-            }
-        }
-    }
-    at_bound.sort_by(|a, b| a.index.cmp(&b.index).then(a.channel.cmp(b.channel)));
+    let free = [0, 1, 2].map(|c| column(&all, D + c));
+    let Bounded { control, at_bound } = bounded_degrees(free, options.membership, &mut || {
+        let b = [0, 1, 2].map(|c| column(rhs, D + c));
+        Ok((system.matrix.clone(), b))
+    })?;
     let points: Vec<ControlPoint<D>> = (0..n)
         .map(|i| {
             let mut position = [0.0; D];
             for a in 0..D {
                 position[a] = coords[a][i];
             }
-            let [t, ind, f] = control[i];
-            let degrees = match options.membership {
-                Membership::Neutrosophic => Degrees::new(t, ind, f),
-                Membership::Intuitionistic => Degrees::intuitionistic(t, f),
-                Membership::Fuzzy => Degrees::fuzzy(t),
-            }
-            .unwrap_or_else(|_| Degrees::new_unchecked(t, ind, f));
-            ControlPoint::new(position, degrees)
+            ControlPoint::new(position, degrees_of(control[i], options.membership))
         })
         .collect();
     let curve = build_curve(layout, points, options.kind)?;

@@ -94,28 +94,44 @@ impl Layout {
 }
 
 /// The data values a pass reads: the positions, and after them the degrees (truth,
-/// indeterminacy, falsity) when every channel is fitted: `D` or `D + 3` channels per point.
+/// indeterminacy, falsity) when every channel is fitted (`D` or `D + 3` channels per point);
+/// or a table of any number of channels per point (a pass of the two-pass surface solver,
+/// whose "points" are whole rows of a grid).
 #[derive(Clone, Copy)]
-pub(super) struct Values<'a, const D: usize> {
-    pub(super) positions: &'a [[f64; D]],
-    pub(super) degrees: Option<&'a [Degrees]>,
+pub(super) enum Values<'a, const D: usize> {
+    Points {
+        positions: &'a [[f64; D]],
+        degrees: Option<&'a [Degrees]>,
+    },
+    Table {
+        /// Point `k`'s channels at `values[k * channels..(k + 1) * channels]`.
+        values: &'a [f64],
+        channels: usize,
+    },
 }
 
 impl<const D: usize> Values<'_, D> {
     pub(super) fn channels(&self) -> usize {
-        if self.degrees.is_some() {
-            D + 3
-        } else {
-            D
+        match self {
+            Values::Points { degrees: None, .. } => D,
+            Values::Points { .. } => D + 3,
+            Values::Table { channels, .. } => *channels,
         }
     }
 
     /// Point `k`'s channels into `out`.
     #[inline(always)]
     fn load(&self, k: usize, out: &mut [f64]) {
-        out[..D].copy_from_slice(&self.positions[k]);
-        if let Some(degrees) = self.degrees {
-            out[D..D + 3].copy_from_slice(&degrees[k].to_array());
+        match self {
+            Values::Points { positions, degrees } => {
+                out[..D].copy_from_slice(&positions[k]);
+                if let Some(degrees) = degrees {
+                    out[D..D + 3].copy_from_slice(&degrees[k].to_array());
+                }
+            }
+            Values::Table { values, channels } => {
+                out.copy_from_slice(&values[k * channels..(k + 1) * channels]);
+            }
         }
     }
 }
@@ -436,12 +452,18 @@ pub(super) fn add_outer(
     }
 }
 
-/// `lambda R`, `R_ij = int N_i'' N_j''` over the domain, by Gauss-Legendre quadrature with `p`
-/// nodes per span (exact: the integrand has degree `2 (p - 2)`).
+/// `lambda R`, `R_ij = int N_i'' N_j''` over the domain (the curve's smoothing penalty).
 pub(super) fn second_derivative_gram(layout: &Layout, lambda: f64) -> Normal {
+    derivative_gram(layout, 2, lambda)
+}
+
+/// `scale G`, `G_ij = int N_i^(r) N_j^(r)` over the domain for the derivative order `r <= 2`,
+/// by Gauss-Legendre quadrature with `p + 1` nodes per span for `r = 0` and `p` otherwise
+/// (exact: the integrand has degree `2 (p - r)`).
+pub(super) fn derivative_gram(layout: &Layout, order: usize, scale: f64) -> Normal {
     let p = layout.p;
     let mut r = layout.normal();
-    let (nodes, weights) = gauss_legendre(p.max(1));
+    let (nodes, weights) = gauss_legendre(p.max(1) + usize::from(order == 0));
     let mut ders = vec![0.0; 3 * (p + 1)];
     for (a, b) in layout.spans() {
         let half = 0.5 * (b - a);
@@ -449,9 +471,9 @@ pub(super) fn second_derivative_gram(layout: &Layout, lambda: f64) -> Normal {
             let t = a + half * (x + 1.0);
             let k = basis::span(&layout.knots, p, t);
             basis::derivatives(&layout.knots, p, k, t, 2, &mut ders);
-            let second = &ders[2 * (p + 1)..];
+            let values = &ders[order * (p + 1)..(order + 1) * (p + 1)];
             let first = (k - p) % layout.n;
-            add_outer(&mut r, layout, first, second, lambda * w * half);
+            add_outer(&mut r, layout, first, values, scale * w * half);
         }
     }
     r

@@ -24,4 +24,5 @@ mod properties;
 mod reference;
 mod reference_common;
 mod spline_reference;
+mod surface_fit_reference;
 mod surface_properties;

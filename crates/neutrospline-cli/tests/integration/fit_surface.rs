@@ -1,0 +1,196 @@
+//! End-to-end tests of `neutrospline fit --surface`: the model reads back in `eval`, `check`
+//! and `plot`, interpolation passes through the grid, the report, located refusals with no
+//! output written.
+
+use std::fs;
+
+use crate::util::run;
+
+/// A 5 x 4 grid of `z = x y / 4 + sin x` with its `(u, v)` and gently varying degrees.
+fn grid_csv() -> String {
+    let mut csv = String::from("u,v,x,y,z,T,I,F\n");
+    for k in 0..5 {
+        for l in 0..4 {
+            let (u, v) = (k as f64 / 4.0, l as f64 / 3.0);
+            let (x, y) = (2.0 * u + 0.1 * v, 3.0 * v);
+            let z = x * y / 4.0 + x.sin();
+            csv.push_str(&format!(
+                "{u},{v},{x},{y},{z},{},{},{}\n",
+                0.4 + 0.2 * u,
+                0.2 + 0.1 * v,
+                0.3 - 0.1 * u * v
+            ));
+        }
+    }
+    csv
+}
+
+fn numbers(line: &str) -> Vec<f64> {
+    line.split(',').map(|c| c.parse().unwrap()).collect()
+}
+
+#[test]
+fn grid_interpolation_reads_back_in_eval_check_and_plot() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = grid_csv();
+    fs::write(dir.path().join("g.csv"), &csv).unwrap();
+    let (code, _, stderr) = run(
+        dir.path(),
+        &[
+            "fit",
+            "g.csv",
+            "--surface",
+            "--grid",
+            "5x4",
+            "--degree",
+            "3,2",
+            "--interpolate",
+            "-o",
+            "m.toml",
+            "--report",
+            "json",
+        ],
+    );
+    assert_eq!(code, 0, "{stderr}");
+    let report: serde_json::Value = serde_json::from_str(stderr.trim()).unwrap();
+    assert_eq!(report["control_points"], serde_json::json!([5, 4]));
+    assert_eq!(report["degrees"], serde_json::json!([3, 2]));
+    assert_eq!(report["two_pass"], serde_json::json!(true));
+    assert!(report["worst_distance"].as_f64().unwrap() < 1e-12);
+    let rows: Vec<Vec<f64>> = csv.lines().skip(1).map(numbers).collect();
+    let at: Vec<String> = rows.iter().map(|r| format!("{}:{}", r[0], r[1])).collect();
+    let (code, table, stderr) = run(dir.path(), &["eval", "m.toml", "--at", &at.join(",")]);
+    assert_eq!(code, 0, "{stderr}");
+    let header = table.lines().next().unwrap();
+    assert!(
+        header.starts_with("u,v,x,y,z,truth,indeterminacy,falsity"),
+        "{header}"
+    );
+    for (line, point) in table.lines().skip(1).zip(&rows) {
+        let got = numbers(line);
+        for c in 2..8 {
+            assert!((got[c] - point[c]).abs() < 1e-12, "{got:?} {point:?}");
+        }
+    }
+    let (code, _, stderr) = run(dir.path(), &["check", "m.toml"]);
+    assert_eq!(code, 0, "{stderr}");
+    let (code, _, stderr) = run(dir.path(), &["plot", "m.toml", "-o", "m.svg"]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(fs::read_to_string(dir.path().join("m.svg"))
+        .unwrap()
+        .contains("<svg"));
+}
+
+#[test]
+fn scattered_least_squares_reports_in_text() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut csv = String::from("x,y,z,T,I,F\n");
+    for k in 0..300 {
+        let x = (k as f64 * 0.618_033_988_749_895).fract() * 4.0;
+        let y = (k as f64 * 0.414_213_562_373_095_1).fract() * 2.0;
+        csv.push_str(&format!("{x},{y},{},0.6,0.2,0.1\n", (x - 2.0) * (y - 1.0)));
+    }
+    fs::write(dir.path().join("s.csv"), &csv).unwrap();
+    let (code, stdout, stderr) = run(
+        dir.path(),
+        &[
+            "fit",
+            "s.csv",
+            "--surface",
+            "--scattered",
+            "--projection",
+            "xy",
+            "--control-points",
+            "5,4",
+            "--degree",
+            "2",
+        ],
+    );
+    assert_eq!(code, 0, "{stderr}");
+    assert!(
+        stdout.contains("Fitted to s.csv (300 scattered points)"),
+        "{stdout}"
+    );
+    // z = (x - 2)(y - 1) is bilinear: every spline space of degree 2 holds it.
+    assert!(
+        stderr.starts_with("control points       5 x 4 (degrees 2, 2; whole tensor system)\n"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("at bound             none\n"), "{stderr}");
+    let (code, _, stderr) = run(
+        dir.path(),
+        &[
+            "fit",
+            "s.csv",
+            "--surface",
+            "--projection",
+            "xy",
+            "--control-points",
+            "5,4",
+            "--degree",
+            "2",
+            "--report",
+            "json",
+        ],
+    );
+    assert_eq!(code, 0, "{stderr}");
+    let report: serde_json::Value = serde_json::from_str(stderr.trim()).unwrap();
+    assert!(
+        report["max_error"]["z"].as_f64().unwrap() < 1e-12,
+        "{report}"
+    );
+    assert_eq!(report["two_pass"], serde_json::json!(false));
+}
+
+#[test]
+fn refusals_name_the_rule_and_write_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("g.csv"), grid_csv()).unwrap();
+    let cases: [(&[&str], &str); 5] = [
+        (
+            &["fit", "g.csv", "--surface", "--grid", "4x4", "-o", "m.toml"],
+            "error: g.csv: a grid of 4 x 4 points does not hold 20 points (rows x cols must be \
+             the number of points, each at least 1)\n",
+        ),
+        (
+            &["fit", "g.csv", "--grid", "5x4", "-o", "m.toml"],
+            "error: --grid applies only with --surface\n",
+        ),
+        (
+            &["fit", "g.csv", "--surface", "--closed", "-o", "m.toml"],
+            "error: --closed applies only without --surface\n",
+        ),
+        (
+            &[
+                "fit",
+                "g.csv",
+                "--surface",
+                "--degree",
+                "3,2,1",
+                "-o",
+                "m.toml",
+            ],
+            "error: degree = 3,2,1: a degree is one or two whole numbers (P or P,Q)\n",
+        ),
+        (
+            &[
+                "fit",
+                "g.csv",
+                "--surface",
+                "--scattered",
+                "--interpolate",
+                "-o",
+                "m.toml",
+            ],
+            "error: g.csv: interpolation needs gridded data (a grid of rows x cols points); \
+             fit scattered data by least squares (control points or a tolerance)\n",
+        ),
+    ];
+    for (args, want) in cases {
+        let (code, stdout, stderr) = run(dir.path(), args);
+        assert_ne!(code, 0, "{args:?}");
+        assert_eq!(stderr, want, "{args:?}");
+        assert!(stdout.is_empty());
+        assert!(!dir.path().join("m.toml").exists(), "{args:?}");
+    }
+}
