@@ -29,7 +29,8 @@
 //! 300). NURBS curves: within 1e-13 up to degree 15 with weights in \[0.1, 10\] (worst
 //! measured 3.5e-15); the homogeneous form adds errors of the order of the ratio of the
 //! largest to the smallest weight of a piece times `n u`. At a knot, `u` is exactly 0 or 1
-//! and a non-rational piece gives exactly de Boor's value there.
+//! and a non-rational piece gives exactly the plain de Boor value there (the scalar
+//! evaluation, compensated, is within about a rounding of it).
 
 use core::ops::Range;
 
