@@ -27,7 +27,13 @@
 //! near 0 and 1 included), the end parameters give the end control points exactly, and every
 //! channel is projected onto the range of its control values, which provably contains the
 //! exact value (the weights are non-negative and sum to 1), so degrees stay inside \[0, 1\].
-//! Above degree 1000 the results are bit-identical to scalar evaluation.
+//! Above degree 1000 the results are bit-identical to the plain de Casteljau recurrence.
+//!
+//! With [`BatchOptions::with_accuracy`]`(`[`Accuracy::Compensated`]`)` every point is instead
+//! evaluated by the compensated de Casteljau or de Boor algorithm of
+//! [`Evaluate::evaluate`](crate::Evaluate::evaluate), on the curve itself (not its Bézier
+//! pieces), bit for bit the scalar result: about one rounding of the exact value at any
+//! degree, at a higher cost (`neutrospline bench --compensated` reports both speeds).
 //!
 //! ## Instruction sets and threads
 //! With the `simd` feature the widest instruction set of the processor is chosen at run time
@@ -45,7 +51,8 @@ pub use piecewise::CurveBatch;
 use core::ops::Range;
 
 /// Highest degree evaluated through Bernstein weights; above it the batch kernels run
-/// de Casteljau's algorithm and give results bit-identical to scalar evaluation.
+/// de Casteljau's algorithm and give results bit-identical to its plain (not compensated)
+/// recurrence.
 pub const DIRECT_MAX_DEGREE: usize = 1000;
 
 /// Default of [`BatchOptions::parallel_threshold`]: `2^18` units of work, i.e. 65,536
@@ -121,7 +128,51 @@ pub fn uniform_parameter(k: usize, count: usize, Range { start: a, end: b }: Ran
     }
 }
 
-/// Threads and threshold of a batch evaluation.
+/// How a batch evaluation computes each point: the fast SIMD kernels, or the compensated
+/// algorithms of the scalar evaluation.
+///
+/// ```
+/// use neutrospline::{Accuracy, BatchOptions};
+/// assert_eq!(BatchOptions::default().accuracy(), Accuracy::Fast);
+/// let exact = BatchOptions::default().with_accuracy(Accuracy::Compensated);
+/// assert_eq!(exact.accuracy(), Accuracy::Compensated);
+/// assert_eq!(Accuracy::from_name("compensated"), Some(Accuracy::Compensated));
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Accuracy {
+    /// The SIMD kernels (the default): within a few `n u max |c|` of the exact value
+    /// (`u = 2^-53`, `n` the degree, `c` a channel's control values); see the module
+    /// documentation.
+    #[default]
+    Fast,
+    /// Compensated de Casteljau or de Boor per point, exactly as
+    /// [`Evaluate::evaluate`](crate::Evaluate::evaluate) (bit for bit): about one rounding of
+    /// the exact value at any degree, a few times slower than the kernels at low degree and
+    /// O(n^2) instead of O(n) per point at high degree.
+    Compensated,
+}
+
+impl Accuracy {
+    /// Every setting, in the order of [`Accuracy::NAMES`].
+    pub const ALL: [Accuracy; 2] = [Accuracy::Fast, Accuracy::Compensated];
+    /// The settings' names (`fast`, `compensated`), as every front end spells them.
+    pub const NAMES: [&'static str; 2] = ["fast", "compensated"];
+
+    /// The setting's name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Accuracy::Fast => Self::NAMES[0],
+            Accuracy::Compensated => Self::NAMES[1],
+        }
+    }
+
+    /// The setting with this name, if any.
+    pub fn from_name(name: &str) -> Option<Accuracy> {
+        Self::ALL.into_iter().find(|a| a.name() == name)
+    }
+}
+
+/// Threads, threshold and accuracy of a batch evaluation.
 ///
 /// ```
 /// use neutrospline::BatchOptions;
@@ -132,14 +183,16 @@ pub fn uniform_parameter(k: usize, count: usize, Range { start: a, end: b }: Ran
 pub struct BatchOptions {
     threads: usize,
     parallel_threshold: usize,
+    accuracy: Accuracy,
 }
 
 impl Default for BatchOptions {
-    /// All threads of the current rayon pool, above [`PARALLEL_THRESHOLD`].
+    /// All threads of the current rayon pool, above [`PARALLEL_THRESHOLD`], the fast kernels.
     fn default() -> Self {
         BatchOptions {
             threads: 0,
             parallel_threshold: PARALLEL_THRESHOLD,
+            accuracy: Accuracy::Fast,
         }
     }
 }
@@ -163,6 +216,18 @@ impl BatchOptions {
     pub fn with_parallel_threshold(mut self, work: usize) -> Self {
         self.parallel_threshold = work;
         self
+    }
+
+    /// Evaluates with the fast kernels ([`Accuracy::Fast`], the default) or compensated
+    /// ([`Accuracy::Compensated`]).
+    pub fn with_accuracy(mut self, accuracy: Accuracy) -> Self {
+        self.accuracy = accuracy;
+        self
+    }
+
+    /// The accuracy setting.
+    pub fn accuracy(&self) -> Accuracy {
+        self.accuracy
     }
 
     /// The requested thread count (0: the current pool's).
@@ -350,14 +415,15 @@ mod tests {
     use crate::point::ControlPoint;
     use crate::Degrees;
 
-    /// Channel-major values from scalar evaluation.
+    /// Channel-major values from the plain (not compensated) de Casteljau recurrence, which
+    /// the kernels reproduce bit for bit above degree 1000.
     fn reference<const D: usize>(curve: &Bezier<D>, ts: &[f64]) -> Vec<f64> {
         let mut out = vec![0.0; stride(D) * ts.len()];
+        let mut row = [0.0; 6];
         for (k, &t) in ts.iter().enumerate() {
-            let p = curve.evaluate(t).unwrap();
-            let channels = p.position.into_iter().chain(p.degrees.to_array());
-            for (c, v) in channels.enumerate() {
-                out[c * ts.len() + k] = v;
+            curve.packed().evaluate(t, &mut row);
+            for (c, v) in row[..stride(D)].iter().enumerate() {
+                out[c * ts.len() + k] = *v;
             }
         }
         out
@@ -552,5 +618,61 @@ mod tests {
         for (a, b) in out.iter().zip(&expected) {
             assert!((a - b).abs() <= 1e-14 * 9.0);
         }
+    }
+
+    /// `Accuracy::Compensated` gives the scalar (compensated) evaluation bit for bit, for
+    /// several curves at once, split between threads, and reports the first bad parameter.
+    #[test]
+    fn batch_compensated_is_the_scalar_evaluation() {
+        use crate::curve::ControlPolygon;
+        let bezier = example1();
+        let spline = crate::BSpline::clamped_uniform(
+            (0..12).map(|i| bezier.control_point(i % 4)).collect(),
+            5,
+        )
+        .unwrap();
+        let weights = (0..12).map(|i| 0.5 + 0.1 * i as f64).collect();
+        let nurbs =
+            crate::Nurbs::new(spline.control_points(), weights, spline.knots().clone()).unwrap();
+        let curves = [
+            CurveBatch::from(&bezier),
+            CurveBatch::from(&spline),
+            CurveBatch::from(&nurbs),
+        ];
+        let scalar = [
+            crate::AnyCurve::from(bezier.clone()),
+            crate::AnyCurve::from(spline.clone()),
+            crate::AnyCurve::from(nurbs),
+        ];
+        let count = 257;
+        let options = BatchOptions::default()
+            .with_accuracy(Accuracy::Compensated)
+            .with_threads(2)
+            .with_parallel_threshold(0);
+        let mut out = vec![0.0; 3 * 5 * count];
+        CurveBatch::evaluate_all(&curves, BatchParams::Uniform(count), &mut out, &options).unwrap();
+        for (j, curve) in scalar.iter().enumerate() {
+            for k in 0..count {
+                let t = uniform_parameter(k, count, curve.domain());
+                let p = curve.evaluate(t).unwrap();
+                let channels = p.position.into_iter().chain(p.degrees.to_array());
+                for (c, v) in channels.enumerate() {
+                    assert_eq!(
+                        out[(j * 5 + c) * count + k],
+                        v,
+                        "curve {j} channel {c} at {t}"
+                    );
+                }
+            }
+        }
+        let ts = [0.0, 0.5, 1.5, f64::NAN];
+        let mut out = vec![0.0; 5 * ts.len()];
+        let error = curves[1]
+            .evaluate(BatchParams::Values(&ts), &mut out, &options)
+            .unwrap_err();
+        assert_eq!(
+            error,
+            crate::curve::check_parameter(1.5, &(0.0..1.0)).unwrap_err()
+        );
     }
 }

@@ -3,6 +3,7 @@
 use core::ops::Range;
 
 use crate::bernstein::Packed;
+use crate::compensated::{self, Step};
 use crate::curve::{
     check_parameter, Bounded, ControlPolygon, CurveError, Derivative, Elevate, EvalError, Evaluate,
     Split, BOUNDS_TOLERANCE,
@@ -30,8 +31,8 @@ use crate::spline::Spline;
 /// Invariants (tested): every evaluated point is a valid neutrosophic point, its degrees within
 /// the range of the control degrees; the curve interpolates its end control points, degrees
 /// included; it lies in the convex hull of the control points; affine maps of the positions
-/// commute with evaluation. Evaluation is de Casteljau's algorithm, stable at any degree (no
-/// binomial coefficient is ever formed).
+/// commute with evaluation. Evaluation is the compensated de Casteljau algorithm, stable at
+/// any degree (no binomial coefficient is ever formed) and accurate to about one rounding.
 ///
 /// # Examples
 /// The paper's Example 1 at t = 0.5:
@@ -136,15 +137,21 @@ impl<const D: usize> Evaluate for Bezier<D> {
         0.0..1.0
     }
 
-    /// The point at `t` in \[0, 1\], by de Casteljau's algorithm (exactly the first and last
-    /// control points at 0 and 1).
+    /// The point at `t` in \[0, 1\], by the compensated de Casteljau algorithm (error-free
+    /// transformations; see `crate::compensated`): about one rounding of the exact value at
+    /// any degree (scaled error below 5e-16 at degree 2000, tested against mpmath), exactly
+    /// the first and last control points at 0 and 1, degrees within their control range.
     ///
     /// # Errors
     /// `t` not finite or outside \[0, 1\].
     fn evaluate(&self, t: f64) -> Result<CurvePoint<D>, EvalError> {
         check_parameter(t, &(0.0..1.0))?;
         let mut row = [0.0; 6];
-        self.packed.evaluate(t, &mut row);
+        let step = Step::casteljau(t);
+        let data = self.packed.data();
+        if !compensated::evaluate(stride(D), data, None, |_, _| step, &mut row) {
+            self.packed.evaluate(t, &mut row);
+        }
         Ok(point_from_row(&row))
     }
 }

@@ -15,12 +15,12 @@ use crate::spline::Spline;
 /// - Bézier and B-spline curves: the k-th derivative is again a spline (for a Bézier curve
 ///   of degree `n` the hodograph, degree `n - 1`, control vectors `n (P_{i+1} - P_i)`; for a
 ///   B-spline of degree `p`, degree `p - 1` on the knots without their first and last, with
-///   control values `p (P_{i+1} - P_i) / (u_{i+p+1} - u_{i+1})`), evaluated by de Boor's
-///   algorithm.
+///   control values `p (P_{i+1} - P_i) / (u_{i+p+1} - u_{i+1})`), evaluated by the
+///   compensated de Boor algorithm of the curves themselves.
 /// - NURBS curves: with the homogeneous numerator `A(t) = sum_i N_i(t) w_i (P_i, 1)` (its last
 ///   channel is the weight function `w(t)`) and `C = A / w`, Leibniz's rule gives
 ///   `C^(k) = (A^(k) - sum_{i=1..k} binom(k, i) w^(i) C^(k-i)) / w`
-///   (The NURBS Book, eq. 4.8); the derivatives of `A` are splines.
+///   (The NURBS Book, eq. 4.8); the derivatives of `A` are splines, evaluated the same way.
 ///
 /// At an interior knot where the derivative jumps, the value from the right is returned (from
 /// the left at the end of the domain).

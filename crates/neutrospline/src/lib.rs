@@ -68,7 +68,8 @@
 //! - Surfaces: [`Surface`] (Bézier, B-spline, NURBS), [`EvaluateSurface`], partial
 //!   derivatives, normals and iso-parameter curves.
 //! - Batch evaluation into flat arrays, SIMD with run-time dispatch and threads:
-//!   [`CurveBatch`] with [`BatchParams`] and [`BatchOptions`]; [`uniform_parameter`] is the
+//!   [`CurveBatch`] with [`BatchParams`] and [`BatchOptions`] (fast kernels by default, or
+//!   compensated: [`Accuracy`]); [`uniform_parameter`] is the
 //!   evenly spaced sampling every front end uses. The tuning constants are in [`batch`].
 //! - Fitting data (points with degrees, not control points): [`fit::fit`] interpolates or
 //!   fits by weighted least squares (to a number of control points or a tolerance), open or
@@ -99,6 +100,7 @@ mod bernstein;
 mod bernstein_scalar;
 mod bezier;
 pub mod color;
+mod compensated;
 mod curve;
 mod degrees;
 mod derivative;
@@ -123,7 +125,7 @@ pub mod strategies;
 mod surface;
 
 pub use any_curve::{AnyCurve, CurveKind};
-pub use batch::{uniform_parameter, BatchOptions, BatchParams, CurveBatch};
+pub use batch::{uniform_parameter, Accuracy, BatchOptions, BatchParams, CurveBatch};
 pub use bezier::Bezier;
 pub use curve::{
     Bounded, ControlPolygon, CurveError, Derivative, Elevate, EvalError, Evaluate, Split,

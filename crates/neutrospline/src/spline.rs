@@ -10,6 +10,7 @@
 use core::ops::Range;
 
 use crate::bernstein::{lerp, Packed};
+use crate::compensated::{self, Step};
 use crate::knots::{KnotError, KnotVector};
 
 /// Combines rows `left` and `right` of `buf` (stride `stride`) with coefficients `ca`, `cb`
@@ -160,17 +161,39 @@ impl Spline {
         )
     }
 
-    /// The value at `t` (in the domain) into `out`; returns the weight.
-    pub(crate) fn evaluate(&self, t: f64, out: &mut [f64]) -> f64 {
-        self.evaluate_sum(t, 0.0, out)
+    /// The value at `t` (in the domain) into `out`, by the compensated de Boor algorithm
+    /// (see [`Spline::evaluate_sum`]).
+    pub(crate) fn evaluate(&self, t: f64, out: &mut [f64]) {
+        self.evaluate_sum(t, 0.0, out);
     }
 
-    /// The value at the exact sum `origin + offset` (its rounding in the domain) into `out`;
-    /// returns the weight. Each knot difference is `(origin - u_i) + offset`, so a parameter
-    /// finer than the floats near `origin` still moves the value.
-    pub(crate) fn evaluate_sum(&self, origin: f64, offset: f64, out: &mut [f64]) -> f64 {
+    /// The value at the exact sum `origin + offset` (its rounding in the domain) into `out`,
+    /// by the compensated de Boor algorithm ([`crate::compensated`]): about one rounding of
+    /// the exact value at any degree, rational curves in homogeneous form with a compensated
+    /// division. Each knot difference is `(origin - u_i) + offset`, so a parameter finer than
+    /// the floats near `origin` still moves the value. Should a product overflow (control
+    /// values near the largest float), the plain Euclidean form ([`Spline::evaluate_plain`]),
+    /// which never overflows, gives the value instead.
+    pub(crate) fn evaluate_sum(&self, origin: f64, offset: f64, out: &mut [f64]) {
         let k = self.knots.span(origin + offset);
-        self.blossom(k, |_| (origin, offset), out)
+        let p = self.degree();
+        let u = self.knots.knots();
+        let (first, stride) = (k - p, self.stride);
+        let rows = &self.data[first * stride..(k + 1) * stride];
+        let weights = self.weights.as_ref().map(|w| &w[first..=k]);
+        let step =
+            |r: usize, j: usize| Step::de_boor(origin, offset, u[j + k - p], u[j + 1 + k - r]);
+        if !compensated::evaluate(stride, rows, weights, step, out) {
+            self.blossom(k, |_| (origin, offset), out);
+        }
+    }
+
+    /// The value at `t` by the plain de Boor algorithm (each step a convex combination
+    /// rounded once, `O(p u) max |c|` error, the form of [`blossom`]) into `out`; returns the
+    /// weight.
+    pub(crate) fn evaluate_plain(&self, t: f64, out: &mut [f64]) -> f64 {
+        let k = self.knots.span(t);
+        self.blossom(k, |_| (t, 0.0), out)
     }
 
     /// Boehm's knot insertion of `u` once: for `k - p + 1 <= i <= k`,

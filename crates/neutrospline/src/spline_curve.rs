@@ -67,7 +67,8 @@ impl Weighting for Rational {
 /// for `t` in the domain `[u_p, u_{m-p}]`. The basis is non-negative with unit sum, so every
 /// property of a neutrosophic Bézier curve holds: degrees stay within the control range,
 /// the curve lies in the convex hull of its control points (locally, of `p + 1` of them), and
-/// affine maps commute. Evaluation is de Boor's algorithm on all channels at once.
+/// affine maps commute. Evaluation is the compensated de Boor algorithm on all channels at
+/// once.
 ///
 /// ```
 /// use neutrospline::{BSpline, ControlPoint, Degrees, Evaluate, KnotVector};
@@ -92,8 +93,9 @@ pub type BSpline<const D: usize> = SplineCurve<D, Polynomial>;
 /// C(t) = sum_i R_i(t) P_i,  T(t) = sum_i R_i(t) T_i,  (same for I and F)
 /// ```
 ///
-/// so every invariant of the Bézier model carries over. Evaluation is the rational de Boor
-/// algorithm in Euclidean form: each step forms a new weight and a convex combination.
+/// so every invariant of the Bézier model carries over. Evaluation is the compensated de Boor
+/// algorithm on the homogeneous rows `(w P, w)`, then a compensated division; the result is
+/// projected onto the range of the span's control values, which contains the exact value.
 ///
 /// ```
 /// use neutrospline::{ControlPoint, Degrees, Evaluate, KnotVector, Nurbs};
@@ -115,10 +117,10 @@ pub type Nurbs<const D: usize> = SplineCurve<D, Rational>;
 /// A spline curve of degree `p` in `D` dimensions (`D` = 2 or 3), polynomial ([`BSpline`])
 /// or rational ([`Nurbs`]); use those two names.
 ///
-/// Positions and the three degrees are channels of one packed array blended by one de Boor
-/// routine, rational curves in Euclidean form (each step a convex combination), so the
-/// degrees of every computed point stay between their inputs. A B-spline is the NURBS curve
-/// whose weights are all 1, and gives bit for bit the same values.
+/// Positions and the three degrees are channels of one packed array blended by one
+/// (compensated) de Boor routine, and every computed point is projected onto the range of
+/// its span's control values, so its degrees stay between their inputs. A B-spline is the
+/// NURBS curve whose weights are all 1, and gives bit for bit the same values.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SplineCurve<const D: usize, W: Weighting> {
     spline: Spline,
@@ -351,7 +353,10 @@ impl<const D: usize, W: Weighting> Evaluate for SplineCurve<D, W> {
         self.spline.knots.domain()
     }
 
-    /// The point at `t` in the domain, by de Boor's algorithm (rational for NURBS).
+    /// The point at `t` in the domain, by the compensated de Boor algorithm (error-free
+    /// transformations; for NURBS the homogeneous numerator and weight compensated, then a
+    /// compensated division): about one rounding of the exact value at any degree (scaled
+    /// error below 5e-16 at degree 2000, tested against mpmath).
     ///
     /// # Errors
     /// `t` not finite or outside the domain.

@@ -29,13 +29,16 @@
 //! 300). NURBS curves: within 1e-13 up to degree 15 with weights in \[0.1, 10\] (worst
 //! measured 3.5e-15); the homogeneous form adds errors of the order of the ratio of the
 //! largest to the smallest weight of a piece times `n u`. At a knot, `u` is exactly 0 or 1
-//! and a non-rational piece gives exactly de Boor's value there.
+//! and a non-rational piece gives exactly the plain de Boor value there (the scalar
+//! evaluation, compensated, is within about a rounding of it).
 
 use core::ops::Range;
 
 use super::kernel::{self, Coeffs, Uniform, Values, MAX_CHANNELS};
 use super::lanes::{self, LaneJob, Lanes};
-use super::{first_outside, partition, plan, run_tasks, BatchOptions, BatchParams, Task, BLOCK};
+use super::{
+    first_outside, partition, plan, run_tasks, Accuracy, BatchOptions, BatchParams, Task, BLOCK,
+};
 use crate::any_curve::AnyCurve;
 use crate::bezier::Bezier;
 use crate::curve::{check_parameter, EvalError, Evaluate};
@@ -87,6 +90,8 @@ struct Pieces {
     /// Where each piece starts, increasing (a copy of the pieces' `start`, searched).
     starts: Vec<f64>,
     pieces: Vec<Piece>,
+    /// The curve itself (a Bézier curve on Bézier knots), for [`Accuracy::Compensated`].
+    source: Spline,
 }
 
 /// One Bézier piece on `[start, end]`.
@@ -182,14 +187,15 @@ impl<const D: usize> CurveBatch<D> {
 
     /// Every curve of the library is 2-D or 3-D (their constructors check it), so `D + 3`
     /// channels are 5 or 6.
-    fn from_pieces(domain: Range<f64>, degree: usize, rational: bool, pieces: Vec<Piece>) -> Self {
+    fn from_pieces(domain: Range<f64>, source: Spline, pieces: Vec<Piece>) -> Self {
         CurveBatch {
             inner: Pieces {
                 domain,
-                degree,
-                rational,
+                degree: source.degree(),
+                rational: source.weights.is_some(),
                 starts: pieces.iter().map(|p| p.start).collect(),
                 pieces,
+                source,
             },
         }
     }
@@ -208,7 +214,7 @@ impl<const D: usize> CurveBatch<D> {
                 )
             })
             .collect();
-        Self::from_pieces(domain, spline.degree(), spline.weights.is_some(), pieces)
+        Self::from_pieces(domain, spline.clone(), pieces)
     }
 
     /// The parameter domain `start..end` (\[0, 1\] for a Bézier curve).
@@ -302,7 +308,8 @@ impl Pieces {
 impl<const D: usize> From<&Bezier<D>> for CurveBatch<D> {
     fn from(curve: &Bezier<D>) -> Self {
         let piece = Piece::new(0.0, 1.0, stride(D), curve.packed().data(), None);
-        Self::from_pieces(0.0..1.0, curve.degree(), false, vec![piece])
+        let source = Spline::from_bezier(curve.packed(), None);
+        Self::from_pieces(0.0..1.0, source, vec![piece])
     }
 }
 
@@ -348,7 +355,11 @@ fn evaluate_channels<const CH: usize>(
     };
     let refs: Vec<(usize, &Pieces)> = curves.iter().copied().enumerate().collect();
     let tasks = partition::<_, CH>(&refs, count, out, threads);
-    match run_tasks(tasks, threads, |task| run_task(task, params)) {
+    let failure = match options.accuracy() {
+        Accuracy::Fast => run_tasks(tasks, threads, |task| run_task(task, params)),
+        Accuracy::Compensated => run_tasks(tasks, threads, |task| compensated_task(task, params)),
+    };
+    match failure {
         None => Ok(()),
         Some((k, j)) => {
             let domain = &curves[j].domain;
@@ -431,6 +442,38 @@ fn run_task<const CH: usize>(
         if let Some(k) = bad {
             let found = (k, *index);
             first_bad = Some(first_bad.map_or(found, |f| f.min(found)));
+        }
+    }
+    first_bad
+}
+
+/// Evaluates one task point by point with the compensated algorithms of the scalar
+/// evaluation, on each curve itself; returns the first invalid parameter's index and curve
+/// (lowest index, then lowest curve).
+fn compensated_task<const CH: usize>(
+    task: Task<'_, (usize, &Pieces), CH>,
+    params: BatchParams<'_>,
+) -> Option<(usize, usize)> {
+    let Task {
+        start,
+        end,
+        mut items,
+    } = task;
+    let mut first_bad: Option<(usize, usize)> = None;
+    let mut row = [0.0; MAX_CHANNELS];
+    for ((index, curve), outs) in items.iter_mut() {
+        let domain = &curve.domain;
+        for k in start..end {
+            let t = params.get(k, domain.clone());
+            if !(domain.start <= t && t <= domain.end) {
+                let found = (k, *index);
+                first_bad = Some(first_bad.map_or(found, |f| f.min(found)));
+                break;
+            }
+            curve.source.evaluate(t, &mut row);
+            for (out, &v) in outs.iter_mut().zip(&row) {
+                out[k - start] = v;
+            }
         }
     }
     first_bad
@@ -652,7 +695,7 @@ fn block<L: Lanes, const H: usize>(
 fn euclidean_run<const H: usize>(spline: &Spline, us: &[f64], target: &mut [&mut [f64]; H]) {
     let mut row = [0.0; MAX_CHANNELS];
     for (k, &u) in us.iter().enumerate() {
-        spline.evaluate(u, &mut row);
+        spline.evaluate_plain(u, &mut row);
         for (c, channel) in target.iter_mut().enumerate() {
             channel[k] = if c + 1 < H { row[c] } else { 1.0 };
         }

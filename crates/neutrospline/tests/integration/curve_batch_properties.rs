@@ -86,8 +86,18 @@ fn check<const D: usize>(
                 lo <= g && g <= hi,
                 "channel {c}, t = {t}: {g} outside [{lo}, {hi}]"
             );
+            // At a knot the batch gives the plain de Boor value exactly (the piece's end
+            // control value); the scalar evaluation is compensated: a rounding or so apart.
             if !rational && knots.contains(&t) {
-                prop_assert_eq!(g, w, "channel {}, at the knot {}", c, t);
+                let ulps = (curve.degree() + 1) as f64 * f64::EPSILON * scale;
+                prop_assert!(
+                    (g - w).abs() <= ulps,
+                    "channel {}, at the knot {}: {} vs {}",
+                    c,
+                    t,
+                    g,
+                    w
+                );
             }
         }
     }
