@@ -338,6 +338,8 @@ fn row_count(args: &EvalArgs, shape: &Shape) -> u64 {
 /// `--geometry` for a surface), an
 /// evaluation error, or a write error.
 pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
+    // The table's options are refused before the file is read.
+    args.table.table_output()?;
     let model = input::read_model(&args.file, &args.model)?;
     let file = input::label(&args.file);
     let fuzzy = if args.alpha.is_some() || args.centroid {

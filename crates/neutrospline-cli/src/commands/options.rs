@@ -6,16 +6,17 @@ use neutrospline::{CurveKind, SurfaceKind};
 use std::path::PathBuf;
 
 use crate::commands::MembershipArg;
-use crate::output::{self, TableCell, TableFormat};
-use neutrospline_io::{Kind, KnotSpec, ReadOptions};
+use crate::input::UsageError;
+use crate::output;
+use crate::request::RequestArgs;
+use neutrospline_io::{Kind, KnotSpec, ReadOptions, TableCell, TableOutput};
 
 /// Where and how a command that makes a table (`eval`, `query`, `intersect`) writes it.
 #[derive(Debug, Clone, clap::Args)]
 pub struct TableArgs {
-    /// Output format: csv (a header row, then one row per line of the table) or json (an
-    /// array of objects keyed by column name)
-    #[arg(long, value_enum, value_name = "FORMAT", default_value_t = TableFormat::Csv)]
-    pub format: TableFormat,
+    /// The table's format and digits (defined by neutrospline-io's `TableOutput`)
+    #[command(flatten)]
+    pub format: RequestArgs<TableOutput>,
 
     /// Write to OUT instead of standard output (replaced atomically: on error the old file is
     /// left untouched)
@@ -24,17 +25,29 @@ pub struct TableArgs {
 }
 
 impl TableArgs {
+    /// The format and digits, checked.
+    ///
+    /// # Errors
+    /// A [`UsageError`] with the library's message (`--digits` with csv or json, out of
+    /// range).
+    pub fn table_output(&self) -> Result<TableOutput, UsageError> {
+        let output = *self.format.request()?;
+        output.validate().map_err(|e| UsageError(e.to_string()))?;
+        Ok(output)
+    }
+
     /// Writes the table ([`output::write_table`]) to OUT, atomically, or to standard output.
     ///
     /// # Errors
-    /// The first error of `rows`, or a write error.
+    /// The options' usage error, the first error of `rows`, or a write error.
     pub fn write<C: TableCell>(
         &self,
         columns: &[String],
         rows: impl IntoIterator<Item = anyhow::Result<Vec<C>>>,
     ) -> anyhow::Result<()> {
+        let table_output = self.table_output()?;
         output::emit(self.output.as_deref(), |w| {
-            output::write_table(w, self.format, columns, rows)
+            output::write_table(w, &table_output, columns, rows)
         })
     }
 }

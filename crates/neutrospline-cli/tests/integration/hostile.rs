@@ -933,7 +933,7 @@ fn hostile_usage_errors_exit_2() {
         ),
         (
             &["eval", "m.csv", "--format", "xml"][..],
-            "invalid value 'xml'",
+            "format = xml: expected one of csv, json, latex, markdown",
         ),
         (
             &["eval", "m.csv", "--max-samples", "10", "--samples", "11"][..],

@@ -17,4 +17,5 @@ mod plot;
 mod query;
 mod readers;
 mod studio;
+mod tables;
 mod util;
