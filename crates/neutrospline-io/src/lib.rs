@@ -62,28 +62,32 @@ mod model;
 mod number;
 mod options;
 mod parsed;
+mod path_order;
 mod points;
 mod read;
 mod settings;
 mod shape;
 mod table;
+mod table_input;
 mod text;
 mod tree;
 mod walker;
 mod write;
 
 pub use atomic::{write_atomically, AtomicFile};
-pub use data::{load_data, read_data, DataTable};
+pub use data::{load_data, load_data_with, read_data, read_data_with, DataTable};
 pub use error::{InputError, ReadError, UnsupportedFormat, WriteError};
 pub use format::{Format, Limits, DEFAULT_MAX_CONTROL_POINTS, DEFAULT_MAX_FILE_SIZE, MAX_INTEGER};
 pub use model::{KnotSource, Model, ModelError};
 pub use number::{format_justified, format_number, format_significant, push_number};
 pub use options::ReadOptions;
-pub use points::{load_points, read_points, PointTable};
+pub use path_order::{path_disorder, PathDisorder, JUMP as PATH_JUMP, SPREAD as PATH_SPREAD};
+pub use points::{load_points, load_points_with, read_points, read_points_with, PointTable};
 pub use read::{load, parse, read_csv, read_whole};
 pub use settings::{Kind, KnotRule, KnotSpec};
 pub use shape::Shape;
 pub use table::{
     latex_heading, write_table, Cell, TableCell, TableFormat, TableOutput, MAX_DIGITS,
 };
+pub use table_input::TableInput;
 pub use write::{save, to_csv_string, to_json_string, to_string, to_toml_string};

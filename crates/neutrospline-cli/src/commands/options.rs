@@ -9,7 +9,7 @@ use crate::commands::MembershipArg;
 use crate::input::UsageError;
 use crate::output;
 use crate::request::RequestArgs;
-use neutrospline_io::{Kind, KnotSpec, ReadOptions, TableCell, TableOutput};
+use neutrospline_io::{Kind, KnotSpec, ReadOptions, TableCell, TableInput, TableOutput};
 
 /// Where and how a command that makes a table (`eval`, `query`, `intersect`) writes it.
 #[derive(Debug, Clone, clap::Args)]
@@ -137,9 +137,21 @@ pub struct ModelArgs {
     /// Knots along v of a bspline or nurbs surface: clamped-uniform (default) or K0,K1,...
     #[arg(long, value_name = "RULE|K0,K1,...", value_parser = parse_knots, allow_hyphen_values = true)]
     pub knots_v: Option<KnotSpec>,
+
+    /// How CSV tables are read (defined by neutrospline-io's `TableInput`)
+    #[command(flatten)]
+    pub table: RequestArgs<TableInput>,
 }
 
 impl ModelArgs {
+    /// How CSV tables are read ([`table_input`]).
+    ///
+    /// # Errors
+    /// As [`table_input`].
+    pub fn table_input(&self) -> Result<TableInput, UsageError> {
+        table_input(&self.table)
+    }
+
     /// The options as the readers take them (with the default limits; see
     /// [`crate::input::read_options`]).
     pub fn read_options(&self) -> ReadOptions {
@@ -157,4 +169,15 @@ impl ModelArgs {
         options.knots_v = self.knots_v.clone();
         options
     }
+}
+
+/// The table options of `args`, checked.
+///
+/// # Errors
+/// A [`UsageError`] with the library's message (a delimiter that is not one character, a
+/// decimal comma with the delimiter `,`).
+pub fn table_input(args: &RequestArgs<TableInput>) -> Result<TableInput, UsageError> {
+    let input = args.request()?.clone();
+    input.validate().map_err(|e| UsageError(e.to_string()))?;
+    Ok(input)
 }

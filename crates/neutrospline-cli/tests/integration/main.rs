@@ -4,6 +4,7 @@
 mod bench;
 mod cli;
 mod derivatives;
+mod dialects;
 mod export;
 mod faults;
 mod fit;
@@ -19,3 +20,4 @@ mod readers;
 mod studio;
 mod tables;
 mod util;
+mod warnings;
