@@ -5,7 +5,7 @@
 use std::fmt;
 
 use neutrospline::Membership;
-use neutrospline_io::{DataTable, Model, ReadError, ReadOptions};
+use neutrospline_io::{DataTable, Model, ReadError, ReadOptions, TableInput};
 
 use crate::commands::options::ModelArgs;
 
@@ -13,7 +13,7 @@ use crate::commands::options::ModelArgs;
 pub const STDIN_NAME: &str = "<stdin>";
 
 /// The file extensions the command accepts, with `-` meaning CSV on standard input.
-pub const ACCEPTED_EXTENSIONS: &str = ".csv, .toml, .json; `-` reads CSV from standard input";
+pub const ACCEPTED_EXTENSIONS: &str = ".csv, .tsv, .toml, .json; `-` reads CSV from standard input";
 
 /// An error in the command line that only shows once the arguments are interpreted
 /// (for example an unsupported file extension). `main` exits with status 2 for it.
@@ -38,10 +38,14 @@ pub fn label(file: &str) -> &str {
 }
 
 /// The options of `args` with the limits in force ([`crate::limits::current`]).
-pub fn read_options(args: &ModelArgs) -> ReadOptions {
+///
+/// # Errors
+/// A [`UsageError`] for table options that do not fit together.
+pub fn read_options(args: &ModelArgs) -> Result<ReadOptions, UsageError> {
     let mut options = args.read_options();
     options.limits = crate::limits::current().file_limits();
-    options
+    options.table = args.table_input()?;
+    Ok(options)
 }
 
 /// Reads and validates `file` (`-` for CSV on standard input, streamed).
@@ -50,7 +54,7 @@ pub fn read_options(args: &ModelArgs) -> ReadOptions {
 /// A [`UsageError`] for an unsupported extension or options that do not fit together; the
 /// library's message (file, line, field, value and rule; or the I/O error) otherwise.
 pub fn read_model(file: &str, args: &ModelArgs) -> anyhow::Result<Model> {
-    let options = read_options(args);
+    let options = read_options(args)?;
     let result = if file == "-" {
         neutrospline_io::read_csv(STDIN_NAME, std::io::stdin().lock(), &options)
     } else {
@@ -65,15 +69,29 @@ pub fn read_model(file: &str, args: &ModelArgs) -> anyhow::Result<Model> {
     })
 }
 
-/// Reads a data file (or standard input for `-`).
+/// Reads a data file (or standard input for `-`) as `input` says.
 ///
 /// # Errors
-/// The located error of the io crate.
-pub fn read_data(file: &str, membership: Membership) -> anyhow::Result<DataTable> {
+/// A [`UsageError`] for an extension that is not a table's; the located error of the io
+/// crate.
+pub fn read_data(
+    file: &str,
+    membership: Membership,
+    input: &TableInput,
+) -> anyhow::Result<DataTable> {
     let result = if file == "-" {
-        neutrospline_io::read_data(STDIN_NAME, std::io::stdin().lock(), membership)
+        neutrospline_io::read_data_with(STDIN_NAME, std::io::stdin().lock(), membership, input)
     } else {
-        neutrospline_io::load_data(file, membership)
+        neutrospline_io::load_data_with(file, membership, input)
     };
-    result.map_err(|e| anyhow::Error::msg(e.to_string()))
+    result.map_err(table_error)
+}
+
+/// A table reader's error as the command's: an extension that is not a table's is a usage
+/// error (exit 2), with the same message in every command.
+pub fn table_error(error: ReadError) -> anyhow::Error {
+    match error {
+        ReadError::Format(e) => UsageError(e.to_string()).into(),
+        e => anyhow::Error::msg(e.to_string()),
+    }
 }

@@ -8,16 +8,8 @@ use std::path::Path;
 use anyhow::Context as _;
 use neutrospline_io::AtomicFile;
 
-/// The formats of `eval`'s table.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum TableFormat {
-    /// A header row then one comma-separated row per parameter.
-    Csv,
-    /// An array of objects, one per parameter, keyed by column name.
-    Json,
-}
-
-pub use neutrospline_io::{format_number as number, push_number};
+pub use neutrospline_io::format_number as number;
+use neutrospline_io::{TableCell, TableOutput};
 
 /// A number rounded to `decimals` places for reading, without trailing zeros (`-0` prints `0`).
 pub fn rounded(v: f64, decimals: usize) -> String {
@@ -34,120 +26,24 @@ pub fn rounded(v: f64, decimals: usize) -> String {
     }
 }
 
-/// A cell of a table: a number (or a missing value), or a word (a name from a fixed list, such
-/// as an intersection's contact, written as it is in CSV and as a JSON string).
-pub trait TableCell {
-    /// Appends the cell as CSV.
-    fn push_csv(&self, line: &mut Vec<u8>);
-    /// Appends the cell as a JSON value.
-    fn push_json(&self, line: &mut Vec<u8>);
-}
-
-impl TableCell for Option<f64> {
-    fn push_csv(&self, line: &mut Vec<u8>) {
-        if let Some(v) = self {
-            push_number(line, *v);
-        }
-    }
-
-    fn push_json(&self, line: &mut Vec<u8>) {
-        match self {
-            Some(v) => push_number(line, *v),
-            None => line.extend_from_slice(b"null"),
-        }
-    }
-}
-
-/// A numeric cell or a word (see [`TableCell`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Cell {
-    /// A number.
-    Number(f64),
-    /// A word: letters, digits and `-` only, so that CSV needs no quotes.
-    Word(&'static str),
-}
-
-impl TableCell for Cell {
-    fn push_csv(&self, line: &mut Vec<u8>) {
-        match self {
-            Cell::Number(v) => push_number(line, *v),
-            Cell::Word(w) => line.extend_from_slice(w.as_bytes()),
-        }
-    }
-
-    fn push_json(&self, line: &mut Vec<u8>) {
-        match self {
-            Cell::Number(v) => push_number(line, *v),
-            Cell::Word(w) => line.extend_from_slice(json_string(w).as_bytes()),
-        }
-    }
-}
-
-/// Writes a numeric table. Rows are produced lazily, so that any number of samples streams.
-///
-/// CSV: the header, then one line per row. JSON: `[` then one object per row with the columns
-/// as keys in column order, then `]`. A missing value (`None`) is an empty CSV cell or a JSON
-/// `null`.
+/// Writes a numeric table with neutrospline-io's [`neutrospline_io::write_table`] (CSV and
+/// JSON streamed; LaTeX and Markdown once every row is read), checking between rows for an
+/// interruption (SIGINT, SIGTERM). Rows are produced lazily, so that any number of samples
+/// streams.
 ///
 /// # Errors
-/// The first error of `rows`, or a write error.
+/// The first error of `rows`, an interruption, or a write error.
 pub fn write_table<W: Write + ?Sized, C: TableCell>(
     w: &mut W,
-    format: TableFormat,
+    output: &TableOutput,
     columns: &[String],
     rows: impl IntoIterator<Item = anyhow::Result<Vec<C>>>,
 ) -> anyhow::Result<()> {
-    // Each row is formatted into one reused buffer and written with one call.
-    let mut line: Vec<u8> = Vec::with_capacity(32 * columns.len());
-    match format {
-        TableFormat::Csv => {
-            writeln!(w, "{}", columns.join(","))?;
-            for row in rows {
-                crate::signals::check()?;
-                let row = row?;
-                line.clear();
-                for (i, value) in row.iter().enumerate() {
-                    if i > 0 {
-                        line.push(b',');
-                    }
-                    value.push_csv(&mut line);
-                }
-                line.push(b'\n');
-                w.write_all(&line)?;
-            }
-        }
-        TableFormat::Json => {
-            let keys: Vec<String> = columns
-                .iter()
-                .map(|c| format!("{}: ", json_string(c)))
-                .collect();
-            write!(w, "[")?;
-            let mut first = true;
-            for row in rows {
-                crate::signals::check()?;
-                let row = row?;
-                line.clear();
-                line.extend_from_slice(if first { b"\n  {" } else { b",\n  {" });
-                for (i, (key, value)) in keys.iter().zip(&row).enumerate() {
-                    if i > 0 {
-                        line.extend_from_slice(b", ");
-                    }
-                    line.extend_from_slice(key.as_bytes());
-                    value.push_json(&mut line);
-                }
-                line.push(b'}');
-                w.write_all(&line)?;
-                first = false;
-            }
-            writeln!(w, "{}]", if first { "" } else { "\n" })?;
-        }
-    }
-    Ok(())
-}
-
-/// A JSON string literal.
-fn json_string(s: &str) -> String {
-    serde_json::Value::String(s.to_owned()).to_string()
+    let rows = rows.into_iter().map(|row| {
+        crate::signals::check()?;
+        row
+    });
+    neutrospline_io::write_table(w, output, columns, rows)
 }
 
 /// How a column of a text table is aligned.
@@ -293,22 +189,6 @@ pub fn is_broken_pipe(error: &anyhow::Error) -> bool {
 mod tests {
     use super::*;
 
-    fn table(format: TableFormat, rows: Vec<Vec<f64>>) -> String {
-        table_with_gaps(
-            format,
-            rows.into_iter()
-                .map(|r| r.into_iter().map(Some).collect())
-                .collect(),
-        )
-    }
-
-    fn table_with_gaps(format: TableFormat, rows: Vec<Vec<Option<f64>>>) -> String {
-        let columns = vec!["t".to_owned(), "x".to_owned()];
-        let mut out = Vec::new();
-        write_table(&mut out, format, &columns, rows.into_iter().map(Ok)).unwrap();
-        String::from_utf8(out).unwrap()
-    }
-
     #[test]
     fn rounded_trims() {
         assert_eq!(rounded(4.625, 6), "4.625");
@@ -316,39 +196,6 @@ mod tests {
         assert_eq!(rounded(0.30000000000000004, 6), "0.3");
         assert_eq!(rounded(-1e-9, 6), "0");
         assert_eq!(rounded(1.23456789, 6), "1.234568");
-    }
-
-    #[test]
-    fn write_table_csv() {
-        assert_eq!(
-            table(TableFormat::Csv, vec![vec![0.0, 1.5], vec![1.0, -2.0]]),
-            "t,x\n0,1.5\n1,-2\n"
-        );
-    }
-
-    #[test]
-    fn write_table_json() {
-        let s = table(TableFormat::Json, vec![vec![0.0, 1.5], vec![1.0, 1e-20]]);
-        assert_eq!(
-            s,
-            "[\n  {\"t\": 0, \"x\": 1.5},\n  {\"t\": 1, \"x\": 0.00000000000000000001}\n]\n"
-        );
-        let v: serde_json::Value = serde_json::from_str(&s).unwrap();
-        assert_eq!(v[1]["x"].as_f64(), Some(1e-20));
-        assert_eq!(table(TableFormat::Json, vec![]), "[]\n");
-    }
-
-    #[test]
-    fn write_table_missing_values() {
-        let rows = vec![vec![Some(0.5), None]];
-        assert_eq!(
-            table_with_gaps(TableFormat::Csv, rows.clone()),
-            "t,x\n0.5,\n"
-        );
-        assert_eq!(
-            table_with_gaps(TableFormat::Json, rows),
-            "[\n  {\"t\": 0.5, \"x\": null}\n]\n"
-        );
     }
 
     #[test]

@@ -38,8 +38,9 @@ use neutrospline::{Degrees, Membership};
 
 use crate::csv::{read_degrees, require_degrees, Columns, Table};
 use crate::parsed::{duplicate_rule, Field};
-use crate::read::open_file;
-use crate::{InputError, PointTable, ReadError};
+use crate::path_order::{path_disorder, PathDisorder};
+use crate::read::{open_table, table_input_for};
+use crate::{InputError, PointTable, ReadError, TableInput};
 
 /// The columns of a data table: a control-point field or the point's parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -132,6 +133,12 @@ impl DataTable {
     /// The `name` column's cells (`None` for an empty cell or without the column).
     pub fn names(&self) -> &[Option<String>] {
         &self.names
+    }
+
+    /// How far the points are from an ordered path, when far enough to warn that a curve
+    /// fitted through them in the order of the rows zigzags ([`path_disorder`]).
+    pub fn path_disorder(&self) -> Option<PathDisorder> {
+        path_disorder(self.positions())
     }
 
     /// The physical line (1-based) point `index` was read from.
@@ -318,8 +325,24 @@ fn weight_message(value: f64) -> String {
 /// # Errors
 /// The file cannot be read, or is invalid: see [`read_data`].
 pub fn load_data(path: impl AsRef<Path>, membership: Membership) -> Result<DataTable, ReadError> {
-    let (file, shown) = open_file(path.as_ref(), "a .csv file of data points")?;
-    read_data(&shown, std::io::BufReader::new(file), membership)
+    load_data_with(path, membership, &TableInput::default())
+}
+
+/// Reads a data table from a CSV file (`.csv`, `.txt`; `.tsv` tab-separated) as `input`
+/// says ([`TableInput`]: delimiter, decimal comma, columns mapped or left out).
+///
+/// # Errors
+/// Another extension ([`ReadError::Format`]; a spreadsheet says how to save it as CSV), the
+/// file cannot be read, or is invalid: see [`read_data`].
+pub fn load_data_with(
+    path: impl AsRef<Path>,
+    membership: Membership,
+    input: &TableInput,
+) -> Result<DataTable, ReadError> {
+    let path = path.as_ref();
+    let (file, shown) = open_table(path, "a .csv file of data points")?;
+    let input = table_input_for(path, input);
+    read_data_with(&shown, std::io::BufReader::new(file), membership, &input)
 }
 
 /// Reads a data table from a CSV stream, one line at a time; `file` names it in errors.
@@ -332,6 +355,19 @@ pub fn read_data(
     file: &str,
     reader: impl BufRead,
     membership: Membership,
+) -> Result<DataTable, ReadError> {
+    read_data_with(file, reader, membership, &TableInput::default())
+}
+
+/// [`read_data`] as `input` says ([`TableInput`]).
+///
+/// # Errors
+/// As [`read_data`]; a column that `input` maps or leaves out but the header lacks.
+pub fn read_data_with(
+    file: &str,
+    reader: impl BufRead,
+    membership: Membership,
+    input: &TableInput,
 ) -> Result<DataTable, ReadError> {
     let column = |heading: &str| {
         Column::from_name(heading).ok_or_else(|| {
@@ -347,7 +383,7 @@ pub fn read_data(
         repeat_rule: duplicate_rule(),
         rows: "data points",
     };
-    let mut rows = Table::open(file, reader, &columns)?;
+    let mut rows = Table::open(file, reader, &columns, input)?;
     for f in [Field::X, Field::Y, Field::Truth] {
         rows.require(
             Column::Field(f),

@@ -84,6 +84,8 @@ pub struct UnsupportedFormat {
     pub path: String,
     /// The extension, without its dot (`None`: the name has no extension).
     pub extension: Option<String>,
+    /// What the reader accepts, for [`Display`](fmt::Display) (`None`: [`Format::ACCEPTED`]).
+    pub accepted: Option<&'static str>,
 }
 
 impl UnsupportedFormat {
@@ -97,13 +99,39 @@ impl UnsupportedFormat {
             extension: path
                 .extension()
                 .map(|e| e.to_string_lossy().to_ascii_lowercase()),
+            accepted: None,
         }
+    }
+
+    /// The same, displayed with `accepted` as the list of what is accepted.
+    pub fn accepting(mut self, accepted: &'static str) -> UnsupportedFormat {
+        self.accepted = Some(accepted);
+        self
+    }
+
+    /// Whether the extension is a spreadsheet's (`.xlsx`, `.xlsm`, `.xls`, `.ods`).
+    pub fn is_spreadsheet(&self) -> bool {
+        matches!(
+            self.extension.as_deref(),
+            Some("xlsx" | "xlsm" | "xls" | "ods")
+        )
     }
 
     /// The message with `accepted` as the list of what is accepted: a front end that accepts
     /// more (standard input, say) says so. [`Display`](fmt::Display) uses
     /// [`Format::ACCEPTED`].
+    /// A spreadsheet gets one message, the same from every reader and command: how to save
+    /// it as CSV.
     pub fn describe(&self, accepted: &str) -> String {
+        if self.is_spreadsheet() {
+            let ext = self.extension.as_deref().unwrap_or_default();
+            return format!(
+                "{}: a spreadsheet (.{ext}) is not read: save its sheet as CSV (File > Save As > \
+                 CSV); a CSV saved with semicolons and decimal commas is read with \
+                 --decimal-comma",
+                self.path
+            );
+        }
         match &self.extension {
             Some(ext) => format!(
                 "{}: unsupported file extension `.{ext}` (accepted: {accepted})",
@@ -119,7 +147,7 @@ impl UnsupportedFormat {
 
 impl fmt::Display for UnsupportedFormat {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.describe(Format::ACCEPTED))
+        f.write_str(&self.describe(self.accepted.unwrap_or(Format::ACCEPTED)))
     }
 }
 
@@ -254,6 +282,7 @@ mod tests {
         let e = ReadError::from(UnsupportedFormat {
             path: "a.txt".into(),
             extension: Some("txt".into()),
+            accepted: None,
         });
         assert!(e.is_usage());
         assert_eq!(

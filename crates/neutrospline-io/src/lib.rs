@@ -17,6 +17,9 @@
 //! - Writing: [`to_toml_string`], [`to_json_string`], [`to_csv_string`] and [`save`], which
 //!   replaces a file atomically. Whatever is written reads back to an equal model, numbers to
 //!   the last bit.
+//! - Tables of results: [`write_table`] writes CSV and JSON with every digit, LaTeX
+//!   (booktabs) and Markdown rounded ([`format_justified`], [`format_significant`]), with the
+//!   options of [`TableOutput`] (`format`, `digits`).
 //! - For programs built on these files (the command line, the studio, the exchange crate
 //!   `neutrospline-exchange`, which reads DXF and SVG into a [`Model`] and exports models to
 //!   CAD and 3-D formats): [`AtomicFile`] and [`write_atomically`] replace any file atomically;
@@ -59,26 +62,37 @@ mod model;
 mod number;
 mod options;
 mod parsed;
+mod path_order;
 mod points;
 mod read;
 mod relation;
 mod settings;
 mod shape;
+mod table;
+mod table_input;
 mod text;
 mod tree;
 mod walker;
 mod write;
 
 pub use atomic::{write_atomically, AtomicFile};
-pub use data::{load_data, read_data, DataTable};
+pub use data::{load_data, load_data_with, read_data, read_data_with, DataTable};
 pub use error::{InputError, ReadError, UnsupportedFormat, WriteError};
 pub use format::{Format, Limits, DEFAULT_MAX_CONTROL_POINTS, DEFAULT_MAX_FILE_SIZE, MAX_INTEGER};
 pub use model::{KnotSource, Model, ModelError};
-pub use number::{format_number, push_number};
+pub use number::{format_justified, format_number, format_significant, push_number};
 pub use options::ReadOptions;
-pub use points::{load_points, read_points, PointTable};
+pub use path_order::{path_disorder, PathDisorder, JUMP as PATH_JUMP, SPREAD as PATH_SPREAD};
+pub use points::{load_points, load_points_with, read_points, read_points_with, PointTable};
 pub use read::{load, parse, read_csv, read_whole};
-pub use relation::{load_axis_set, load_pairs, read_axis_set, read_pairs, AxisTable, PairTable};
+pub use relation::{
+    load_axis_set, load_axis_set_with, load_pairs, load_pairs_with, read_axis_set,
+    read_axis_set_with, read_pairs, read_pairs_with, AxisTable, PairTable,
+};
 pub use settings::{Kind, KnotRule, KnotSpec};
 pub use shape::Shape;
+pub use table::{
+    latex_heading, write_table, Cell, TableCell, TableFormat, TableOutput, MAX_DIGITS,
+};
+pub use table_input::TableInput;
 pub use write::{save, to_csv_string, to_json_string, to_string, to_toml_string};

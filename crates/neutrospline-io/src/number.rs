@@ -87,6 +87,114 @@ pub fn push_number(out: &mut Vec<u8>, v: f64) {
     }
 }
 
+/// `v` rounded to the precision a computation at magnitude `scale` justifies, in shortest
+/// form: to 15 significant digits of `scale` (the decimal place `10^(floor(log10 scale) - 14)`),
+/// trailing zeros dropped, `-0` written `0`. A value computed in 64-bit floats from inputs of
+/// magnitude up to `scale` carries an error of a few units in the 16th or 17th digit of
+/// `scale`; those digits are noise, and rounding them away prints what the inputs said. So
+/// with `scale` 1 (degrees, which are in [0, 1]) the intuitionistic indeterminacy
+/// `1 - 0.6 - 0.3 = 0.09999999999999998` prints `0.1`, and `1 - 0.7 - 0.3 = 5.55e-17` prints
+/// `0`. A `scale` of 0 or one that is not finite is `|v|`'s own. Not finite `v`: as `Display`.
+///
+/// ```
+/// use neutrospline_io::format_justified;
+/// assert_eq!(format_justified(1.0 - 0.6 - 0.3, 1.0), "0.1");
+/// assert_eq!(format_justified(1.0 - 0.7 - 0.3, 1.0), "0");
+/// assert_eq!(format_justified(0.1 + 0.2, 1.0), "0.3");
+/// assert_eq!(format_justified(2.0 / 3.0, 1.0), "0.66666666666667");
+/// assert_eq!(format_justified(2.0 / 3.0, 1000.0), "0.66666666667");
+/// assert_eq!(format_justified(2.0 / 3.0e6, 1e-5), "0.0000006666666666667");
+/// ```
+pub fn format_justified(v: f64, scale: f64) -> String {
+    if !v.is_finite() {
+        return format!("{v}");
+    }
+    let scale = if scale.is_finite() && scale > 0.0 {
+        scale
+    } else {
+        v.abs()
+    };
+    if scale == 0.0 {
+        return "0".to_owned();
+    }
+    let decimals = 14 - decimal_exponent(scale);
+    if decimals < 0 {
+        // Beyond 1e15: 15 significant digits of v itself.
+        let rounded: f64 = format!("{v:.14e}").parse().unwrap_or(v);
+        return format_number(rounded);
+    }
+    let decimals = decimals.unsigned_abs() as usize;
+    let text = format!("{v:.decimals$}");
+    let text = if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        &text
+    };
+    if text == "-0" {
+        "0".to_owned()
+    } else {
+        text.to_owned()
+    }
+}
+
+/// `v` with `digits` significant digits (at least 1), positional (never an exponent), trailing
+/// zeros kept so that the digits show (`0.100` for 3 digits); zero is `0.00`, never `-0.00`.
+/// Correctly rounded (the decimal nearest `v`'s exact binary value; an exact tie such as
+/// 4.625 to 3 digits goes to the even digit, 4.62, as C's `printf` does).
+///
+/// ```
+/// use neutrospline_io::format_significant;
+/// assert_eq!(format_significant(0.1, 3), "0.100");
+/// assert_eq!(format_significant(-2.0 / 3.0, 4), "-0.6667");
+/// assert_eq!(format_significant(12345.0, 3), "12300");
+/// assert_eq!(format_significant(0.000123456, 2), "0.00012");
+/// assert_eq!(format_significant(-0.0, 3), "0.00");
+/// assert_eq!(format_significant(9.996, 3), "10.0");
+/// ```
+pub fn format_significant(v: f64, digits: usize) -> String {
+    if !v.is_finite() {
+        return format!("{v}");
+    }
+    let precision = digits.max(1) - 1;
+    let text = format!("{v:.precision$e}");
+    let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+    let exponent: i64 = exponent.parse().unwrap_or(0);
+    let negative = mantissa.starts_with('-');
+    let figures: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+    let mut out = String::new();
+    if negative && figures.bytes().any(|b| b != b'0') {
+        out.push('-');
+    }
+    if exponent >= 0 {
+        let whole = usize::try_from(exponent).unwrap_or(0) + 1;
+        if whole >= figures.len() {
+            out.push_str(&figures);
+            out.extend(std::iter::repeat_n('0', whole - figures.len()));
+        } else {
+            out.push_str(&figures[..whole]);
+            out.push('.');
+            out.push_str(&figures[whole..]);
+        }
+    } else {
+        out.push_str("0.");
+        out.extend(std::iter::repeat_n(
+            '0',
+            usize::try_from(-exponent - 1).unwrap_or(0),
+        ));
+        out.push_str(&figures);
+    }
+    out
+}
+
+/// The decimal exponent of a positive finite `v`: `floor(log10 v)`, exactly (read from the
+/// correctly rounded scientific form, so that 1000 is 3 and 999.9999999999999 is 2).
+fn decimal_exponent(v: f64) -> i32 {
+    let text = format!("{v:e}");
+    text.split_once('e')
+        .and_then(|(_, e)| e.parse().ok())
+        .unwrap_or(0)
+}
+
 /// The decimal exponent after Ryu's `e` (at most three digits, optionally negative).
 fn parse_exponent(text: &[u8]) -> i32 {
     let (sign, digits) = match text.split_first() {

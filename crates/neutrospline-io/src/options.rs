@@ -4,7 +4,7 @@
 use neutrospline::Membership;
 
 use crate::settings::{Key, KeyValue, Kind, KnotSpec};
-use crate::{Format, Limits, ReadError};
+use crate::{Format, Limits, ReadError, TableInput};
 
 /// How to read a model: the shape settings a file does not hold, and the limits.
 ///
@@ -46,6 +46,9 @@ pub struct ReadOptions {
     pub knots_v: Option<KnotSpec>,
     /// The size limits.
     pub limits: Limits,
+    /// How a CSV table is read: delimiter, decimal comma, columns mapped or left out
+    /// (`--delimiter`, `--decimal-comma`, `--columns`, ...).
+    pub table: TableInput,
 }
 
 impl ReadOptions {

@@ -23,8 +23,8 @@ use std::io::BufRead;
 use std::path::Path;
 
 use crate::csv::{Columns, Table};
-use crate::read::open_file;
-use crate::ReadError;
+use crate::read::{open_table, table_input_for};
+use crate::{ReadError, TableInput};
 
 /// Query points read from a CSV file, with the line each was read from.
 #[derive(Debug, Clone, PartialEq)]
@@ -106,8 +106,23 @@ impl PointTable {
 /// # Errors
 /// The file cannot be read, or is invalid: see [`read_points`].
 pub fn load_points(path: impl AsRef<Path>) -> Result<PointTable, ReadError> {
-    let (file, shown) = open_file(path.as_ref(), "a .csv file of query points")?;
-    read_points(&shown, std::io::BufReader::new(file))
+    load_points_with(path, &TableInput::default())
+}
+
+/// Reads a table of query points from a CSV file (`.csv`, `.txt`; `.tsv` tab-separated) as
+/// `input` says ([`TableInput`]).
+///
+/// # Errors
+/// Another extension ([`ReadError::Format`]), the file cannot be read, or is invalid: see
+/// [`read_points`].
+pub fn load_points_with(
+    path: impl AsRef<Path>,
+    input: &TableInput,
+) -> Result<PointTable, ReadError> {
+    let path = path.as_ref();
+    let (file, shown) = open_table(path, "a .csv file of query points")?;
+    let input = table_input_for(path, input);
+    read_points_with(&shown, std::io::BufReader::new(file), &input)
 }
 
 /// Reads a table of query points from a CSV stream, one line at a time; `file` names it in
@@ -118,6 +133,18 @@ pub fn load_points(path: impl AsRef<Path>) -> Result<PointTable, ReadError> {
 /// column, a row with the wrong number of cells, a value that is not a finite number, no
 /// points; or the stream cannot be read.
 pub fn read_points(file: &str, reader: impl BufRead) -> Result<PointTable, ReadError> {
+    read_points_with(file, reader, &TableInput::default())
+}
+
+/// [`read_points`] as `input` says ([`TableInput`]).
+///
+/// # Errors
+/// As [`read_points`]; a column that `input` maps or leaves out but the header lacks.
+pub fn read_points_with(
+    file: &str,
+    reader: impl BufRead,
+    input: &TableInput,
+) -> Result<PointTable, ReadError> {
     // A column is its index in COLUMNS.
     let column = |heading: &str| {
         COLUMNS
@@ -133,7 +160,7 @@ pub fn read_points(file: &str, reader: impl BufRead) -> Result<PointTable, ReadE
         repeat_rule: "each column may appear once",
         rows: "query points",
     };
-    let mut rows = Table::open(file, reader, &columns)?;
+    let mut rows = Table::open(file, reader, &columns, input)?;
     for (k, name) in COLUMNS[..2].iter().enumerate() {
         rows.require(k, name, "every query point needs x and y")?;
     }

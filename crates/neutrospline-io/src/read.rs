@@ -5,7 +5,7 @@ use std::path::Path;
 
 use crate::format::{too_large, too_many_points};
 use crate::parsed::Parsed;
-use crate::{csv, walker, Format, InputError, Model, ReadError, ReadOptions};
+use crate::{csv, walker, Format, InputError, Model, ReadError, ReadOptions, TableInput};
 
 /// Parses a model held in memory: the contents of `file` (the name used in messages) in
 /// `format`, for a program that has the bytes already (an upload, an editor buffer).
@@ -66,18 +66,63 @@ pub fn read_csv(
 /// content.
 pub fn load(path: impl AsRef<Path>, options: &ReadOptions) -> Result<Model, ReadError> {
     let path = path.as_ref();
-    let format = Format::from_path(path)?;
+    let format = if is_tsv(path) {
+        Format::Csv
+    } else {
+        Format::from_path(path)?
+    };
     options.check(format)?;
     if format == Format::Csv {
         let (file, shown) = open_file(path, MODEL_FILE)?;
-        return read_csv(&shown, BufReader::new(file), options);
+        let mut options = options.clone();
+        options.table = table_input_for(path, &options.table);
+        return read_csv(&shown, BufReader::new(file), &options);
     }
     let (shown, bytes) = read_whole(path, options.limits.max_file_size, MODEL_FILE)?;
     parse(&shown, format, &bytes, options)
 }
 
 /// What [`load`] reads, for the message of a directory in its place.
-const MODEL_FILE: &str = "a .csv, .toml or .json file";
+const MODEL_FILE: &str = "a .csv, .tsv, .toml or .json file";
+
+/// The extensions of a table of data or query points ([`crate::load_data`],
+/// [`crate::load_points`]), for messages.
+pub(crate) const TABLE_EXTENSIONS: &str = ".csv, .tsv, .txt";
+
+/// Whether `path` names a tab-separated table (`.tsv`, case-insensitive).
+fn is_tsv(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("tsv"))
+}
+
+/// The table options for the file at `path`: a `.tsv` file's delimiter is a tab unless one
+/// is given.
+pub(crate) fn table_input_for(path: &Path, input: &TableInput) -> TableInput {
+    let mut input = input.clone();
+    if input.delimiter.is_none() && is_tsv(path) {
+        input.delimiter = Some(b'\t');
+    }
+    input
+}
+
+/// Opens a table of data or query points: refuses an extension other than
+/// [`TABLE_EXTENSIONS`] (a spreadsheet with its own message) before opening it.
+pub(crate) fn open_table(
+    path: &Path,
+    expected: &str,
+) -> Result<(std::fs::File, String), ReadError> {
+    let known = path.extension().is_some_and(|e| {
+        ["csv", "tsv", "txt"]
+            .iter()
+            .any(|k| e.eq_ignore_ascii_case(k))
+    });
+    if !known {
+        return Err(crate::UnsupportedFormat::new(path)
+            .accepting(TABLE_EXTENSIONS)
+            .into());
+    }
+    open_file(path, expected)
+}
 
 /// Reads the file at `path` whole, at most `limit` bytes: refused before reading when its size
 /// is larger, and while reading when it grows (a FIFO, a file being written; one byte more

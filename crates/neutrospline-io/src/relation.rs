@@ -27,8 +27,8 @@ use std::path::Path;
 use neutrospline::{AxisSet, AxisSetName, Degrees, RelationError};
 
 use crate::csv::{Columns, Table};
-use crate::read::open_file;
-use crate::{InputError, ReadError};
+use crate::read::{open_table, table_input_for};
+use crate::{InputError, ReadError, TableInput};
 
 /// An axis set read from a CSV file, with the line each member was read from.
 #[derive(Debug, Clone, PartialEq)]
@@ -100,8 +100,27 @@ const DEGREE_COLUMNS: [(&str, &str); 3] =
 /// # Errors
 /// The file cannot be read, or is invalid: see [`read_axis_set`].
 pub fn load_axis_set(path: impl AsRef<Path>, name: AxisSetName) -> Result<AxisTable, ReadError> {
-    let (file, shown) = open_file(path.as_ref(), "a .csv file of an axis set")?;
-    read_axis_set(&shown, std::io::BufReader::new(file), name)
+    load_axis_set_with(path, name, &TableInput::default())
+}
+
+/// [`load_axis_set`] as `input` says ([`TableInput`]: delimiter, decimal comma, column
+/// names); a `.tsv` file is tab-separated.
+///
+/// # Errors
+/// Another extension than a table's ([`ReadError::Format`]); as [`read_axis_set_with`].
+pub fn load_axis_set_with(
+    path: impl AsRef<Path>,
+    name: AxisSetName,
+    input: &TableInput,
+) -> Result<AxisTable, ReadError> {
+    let path = path.as_ref();
+    let (file, shown) = open_table(path, "a .csv file of an axis set")?;
+    read_axis_set_with(
+        &shown,
+        std::io::BufReader::new(file),
+        name,
+        &table_input_for(path, input),
+    )
 }
 
 /// Reads the axis set `name` (M: coordinates `r`, N: `s`) from a CSV stream; `file` names it
@@ -115,6 +134,19 @@ pub fn read_axis_set(
     file: &str,
     reader: impl BufRead,
     name: AxisSetName,
+) -> Result<AxisTable, ReadError> {
+    read_axis_set_with(file, reader, name, &TableInput::default())
+}
+
+/// [`read_axis_set`] as `input` says ([`TableInput`]).
+///
+/// # Errors
+/// As [`read_axis_set`]; a column that `input` maps or leaves out but the header lacks.
+pub fn read_axis_set_with(
+    file: &str,
+    reader: impl BufRead,
+    name: AxisSetName,
+    input: &TableInput,
 ) -> Result<AxisTable, ReadError> {
     let letter = match name {
         AxisSetName::M => "r",
@@ -143,7 +175,7 @@ pub fn read_axis_set(
         repeat_rule: "each column may appear once",
         rows: &rows_name,
     };
-    let mut rows = Table::open(file, reader, &columns)?;
+    let mut rows = Table::open(file, reader, &columns, input)?;
     rows.require(
         AxisColumn::Value,
         "value",
@@ -198,8 +230,21 @@ pub fn read_axis_set(
 /// # Errors
 /// The file cannot be read, or is invalid: see [`read_pairs`].
 pub fn load_pairs(path: impl AsRef<Path>) -> Result<PairTable, ReadError> {
-    let (file, shown) = open_file(path.as_ref(), "a .csv file of pairs (r, s)")?;
-    read_pairs(&shown, std::io::BufReader::new(file))
+    load_pairs_with(path, &TableInput::default())
+}
+
+/// [`load_pairs`] as `input` says ([`TableInput`]); a `.tsv` file is tab-separated.
+///
+/// # Errors
+/// Another extension than a table's ([`ReadError::Format`]); as [`read_pairs_with`].
+pub fn load_pairs_with(path: impl AsRef<Path>, input: &TableInput) -> Result<PairTable, ReadError> {
+    let path = path.as_ref();
+    let (file, shown) = open_table(path, "a .csv file of pairs (r, s)")?;
+    read_pairs_with(
+        &shown,
+        std::io::BufReader::new(file),
+        &table_input_for(path, input),
+    )
 }
 
 /// Reads a list of pairs (columns `r`, `s`) from a CSV stream; `file` names it in errors.
@@ -209,6 +254,18 @@ pub fn load_pairs(path: impl AsRef<Path>) -> Result<PairTable, ReadError> {
 /// the wrong number of cells, a value that is not a finite number, no pairs; or the stream
 /// cannot be read.
 pub fn read_pairs(file: &str, reader: impl BufRead) -> Result<PairTable, ReadError> {
+    read_pairs_with(file, reader, &TableInput::default())
+}
+
+/// [`read_pairs`] as `input` says ([`TableInput`]).
+///
+/// # Errors
+/// As [`read_pairs`]; a column that `input` maps or leaves out but the header lacks.
+pub fn read_pairs_with(
+    file: &str,
+    reader: impl BufRead,
+    input: &TableInput,
+) -> Result<PairTable, ReadError> {
     let column = |heading: &str| {
         ["r", "s"]
             .iter()
@@ -221,7 +278,7 @@ pub fn read_pairs(file: &str, reader: impl BufRead) -> Result<PairTable, ReadErr
         repeat_rule: "each column may appear once",
         rows: "pairs",
     };
-    let mut rows = Table::open(file, reader, &columns)?;
+    let mut rows = Table::open(file, reader, &columns, input)?;
     for (k, name) in ["r", "s"].iter().enumerate() {
         rows.require(k, name, "every pair needs r and s")?;
     }

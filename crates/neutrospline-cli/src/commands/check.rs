@@ -180,7 +180,10 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
             .iter()
             .zip(shape.degree_ranges())
         {
-            writeln!(w, "{label}: {}..{}", number(range.min), number(range.max))?;
+            // Degrees are computed from values in [0, 1] (under the intuitionistic rule the
+            // indeterminacy is 1 - T - F): printed to the precision that justifies.
+            let degree = |v: f64| neutrospline_io::format_justified(v, 1.0);
+            writeln!(w, "{label}: {}..{}", degree(range.min), degree(range.max))?;
         }
         if let Some(spreads) = &spreads {
             let range = |values: &mut dyn Iterator<Item = f64>| {

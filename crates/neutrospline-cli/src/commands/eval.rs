@@ -331,6 +331,32 @@ fn row_count(args: &EvalArgs, shape: &Shape) -> u64 {
     }
 }
 
+/// A CSV table read as a Bézier curve of more control points than [`DATA_LIKE_ROWS`] is
+/// more likely measured points than a curve's control polygon.
+const DATA_LIKE_ROWS: usize = 50;
+
+/// The warning that a CSV file read as a Bézier curve of more than [`DATA_LIKE_ROWS`] control
+/// points may be data for `fit`.
+fn data_warning(file: &str, model: &neutrospline_io::Model) -> Option<String> {
+    let csv = file == "-"
+        || std::path::Path::new(file).extension().is_some_and(|e| {
+            ["csv", "tsv", "txt"]
+                .iter()
+                .any(|x| e.eq_ignore_ascii_case(x))
+        });
+    let count = model.shape().control_count();
+    let bezier = model.kind() == neutrospline_io::Kind::Curve(neutrospline::CurveKind::Bezier);
+    (csv && bezier && count > DATA_LIKE_ROWS).then(|| {
+        format!(
+            "warning: {}: its {count} rows are read as the control points of one Bézier curve of \
+             degree {}; if they are measured points, `neutrospline fit {}` fits a curve to them",
+            input::label(file),
+            count - 1,
+            input::label(file)
+        )
+    })
+}
+
 /// Evaluates and writes the table.
 ///
 /// # Errors
@@ -338,8 +364,13 @@ fn row_count(args: &EvalArgs, shape: &Shape) -> u64 {
 /// `--geometry` for a surface), an
 /// evaluation error, or a write error.
 pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
+    // The table's options are refused before the file is read.
+    args.table.table_output()?;
     let model = input::read_model(&args.file, &args.model)?;
     let file = input::label(&args.file);
+    if let Some(warning) = data_warning(&args.file, &model) {
+        eprintln!("{warning}");
+    }
     let fuzzy = if args.alpha.is_some() || args.centroid {
         if model.shape().is_surface() {
             let option = if args.alpha.is_some() {

@@ -8,7 +8,7 @@ use neutrospline::{example1, AnyCurve, ControlPolygon, Evaluate, EXAMPLE1_NAMES}
 use neutrospline_plot::{PlotModel, PlotOptions, View};
 
 use crate::commands::plot::{write_figure, FigureFormat};
-use crate::output::{self, number, rounded, Align, TableFormat};
+use crate::output::{self, number, rounded, Align};
 use crate::shape::{Extras, Param, Shape, Table};
 
 /// Arguments of `example`.
@@ -147,7 +147,7 @@ fn write_outputs(dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
     });
     let path = dir.join("example1.csv");
     output::emit(Some(&path), |w| {
-        output::write_table(w, TableFormat::Csv, &columns, rows)
+        output::write_table(w, &neutrospline_io::TableOutput::default(), &columns, rows)
     })?;
     written.push(path);
     Ok(written)

@@ -10,13 +10,13 @@ use neutrospline::fit::{
 };
 use neutrospline::options::{OptionSet, OptionValue};
 use neutrospline::DegreeKind;
-use neutrospline_io::{DataTable, Format, Model};
+use neutrospline_io::{DataTable, Format, Model, TableInput};
 use neutrospline_plot::{DataOverlay, FigureRequest, PlotModel, PlotOptions, View};
 
 use crate::commands::plot::{write_figure, FigureFormat};
 use crate::input::{read_data, UsageError};
 use crate::output::{self, number};
-use crate::request::UnionArgs;
+use crate::request::{RequestArgs, UnionArgs};
 
 /// `--report` values.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -75,6 +75,10 @@ pub struct FitArgs {
     /// The fit's options (defined by the library's `FitRequest` and `SurfaceFitRequest`)
     #[command(flatten)]
     pub request: UnionArgs<FitRequest, SurfaceFitRequest>,
+
+    /// How the data table is read (defined by neutrospline-io's `TableInput`)
+    #[command(flatten)]
+    pub table: RequestArgs<TableInput>,
 
     /// The report's format (on standard error)
     #[arg(long, value_enum, value_name = "FORMAT", default_value = "text")]
@@ -136,7 +140,11 @@ fn run_curve(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
     let request = args.request.first("with --surface")?;
     let options = request.validate().map_err(|e| UsageError(e.to_string()))?;
     let membership = request.membership;
-    let table = read_data(&args.data, membership)?;
+    let input = crate::commands::options::table_input(&args.table)?;
+    let table = read_data(&args.data, membership, &input)?;
+    if let Some(warning) = disorder_warning(&table) {
+        eprintln!("{warning}");
+    }
     request
         .check_data_weights(table.file(), table.weights().is_some())
         .map_err(|e| UsageError(e.to_string()))?;
@@ -185,7 +193,8 @@ fn run_surface(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
     let request = args.request.second("without --surface")?;
     let options = request.validate().map_err(|e| UsageError(e.to_string()))?;
     let membership = request.membership;
-    let table = read_data(&args.data, membership)?;
+    let input = crate::commands::options::table_input(&args.table)?;
+    let table = read_data(&args.data, membership, &input)?;
     request
         .weights
         .check_data(table.file(), table.weights().is_some())
@@ -333,6 +342,41 @@ fn surface_report_json(report: &SurfaceFitReport) -> String {
         "tolerance_met": report.tolerance_met,
     });
     value.to_string()
+}
+
+/// The warning for 3-D data without parameters that does not look like an ordered path
+/// ([`DataTable::path_disorder`]): a curve is fitted through the rows in their order.
+fn disorder_warning(table: &DataTable) -> Option<String> {
+    if table.dimension() != 3 || table.parameters().is_some() {
+        return None;
+    }
+    let d = table.path_disorder()?;
+    let mut found = Vec::new();
+    if d.median_step > neutrospline_io::PATH_SPREAD * d.median_nearest {
+        found.push(format!(
+            "consecutive rows are {} times as far apart as a point from its nearest neighbour \
+             (medians)",
+            output::rounded(d.median_step / d.median_nearest, 1)
+        ));
+    }
+    if d.jumps > 0 {
+        found.push(format!(
+            "{} step{} longer than {} median steps, the longest {} median steps to line {}",
+            d.jumps,
+            if d.jumps == 1 { "" } else { "s" },
+            neutrospline_io::PATH_JUMP,
+            output::rounded(d.longest_ratio, 1),
+            table.line(d.longest)
+        ));
+    }
+    Some(format!(
+        "warning: {}: the points do not look like an ordered path ({}): `fit` fits a curve \
+         through them in the order of the rows. Order the rows along the path (or give a \
+         `parameter` column); points scattered over an area are a surface: `fit --surface` \
+         fits one",
+        table.file(),
+        found.join("; ")
+    ))
 }
 
 /// The `data` view's model: the fitted curve, the data coloured by `color_by`, whiskers to

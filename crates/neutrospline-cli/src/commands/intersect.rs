@@ -5,8 +5,8 @@ use neutrospline::{DynCurve, Intersection};
 
 use crate::commands::options::{ModelArgs, TableArgs};
 use crate::input;
-use crate::output::Cell;
 use crate::shape::Shape;
+use neutrospline_io::Cell;
 
 /// Arguments of `intersect`.
 #[derive(Debug, clap::Args)]

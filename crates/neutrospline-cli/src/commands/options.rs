@@ -6,16 +6,17 @@ use neutrospline::{CurveKind, SurfaceKind};
 use std::path::PathBuf;
 
 use crate::commands::MembershipArg;
-use crate::output::{self, TableCell, TableFormat};
-use neutrospline_io::{Kind, KnotSpec, ReadOptions};
+use crate::input::UsageError;
+use crate::output;
+use crate::request::RequestArgs;
+use neutrospline_io::{Kind, KnotSpec, ReadOptions, TableCell, TableInput, TableOutput};
 
 /// Where and how a command that makes a table (`eval`, `query`, `intersect`) writes it.
 #[derive(Debug, Clone, clap::Args)]
 pub struct TableArgs {
-    /// Output format: csv (a header row, then one row per line of the table) or json (an
-    /// array of objects keyed by column name)
-    #[arg(long, value_enum, value_name = "FORMAT", default_value_t = TableFormat::Csv)]
-    pub format: TableFormat,
+    /// The table's format and digits (defined by neutrospline-io's `TableOutput`)
+    #[command(flatten)]
+    pub format: RequestArgs<TableOutput>,
 
     /// Write to OUT instead of standard output (replaced atomically: on error the old file is
     /// left untouched)
@@ -24,17 +25,29 @@ pub struct TableArgs {
 }
 
 impl TableArgs {
+    /// The format and digits, checked.
+    ///
+    /// # Errors
+    /// A [`UsageError`] with the library's message (`--digits` with csv or json, out of
+    /// range).
+    pub fn table_output(&self) -> Result<TableOutput, UsageError> {
+        let output = *self.format.request()?;
+        output.validate().map_err(|e| UsageError(e.to_string()))?;
+        Ok(output)
+    }
+
     /// Writes the table ([`output::write_table`]) to OUT, atomically, or to standard output.
     ///
     /// # Errors
-    /// The first error of `rows`, or a write error.
+    /// The options' usage error, the first error of `rows`, or a write error.
     pub fn write<C: TableCell>(
         &self,
         columns: &[String],
         rows: impl IntoIterator<Item = anyhow::Result<Vec<C>>>,
     ) -> anyhow::Result<()> {
+        let table_output = self.table_output()?;
         output::emit(self.output.as_deref(), |w| {
-            output::write_table(w, self.format, columns, rows)
+            output::write_table(w, &table_output, columns, rows)
         })
     }
 }
@@ -124,9 +137,21 @@ pub struct ModelArgs {
     /// Knots along v of a bspline or nurbs surface: clamped-uniform (default) or K0,K1,...
     #[arg(long, value_name = "RULE|K0,K1,...", value_parser = parse_knots, allow_hyphen_values = true)]
     pub knots_v: Option<KnotSpec>,
+
+    /// How CSV tables are read (defined by neutrospline-io's `TableInput`)
+    #[command(flatten)]
+    pub table: RequestArgs<TableInput>,
 }
 
 impl ModelArgs {
+    /// How CSV tables are read ([`table_input`]).
+    ///
+    /// # Errors
+    /// As [`table_input`].
+    pub fn table_input(&self) -> Result<TableInput, UsageError> {
+        table_input(&self.table)
+    }
+
     /// The options as the readers take them (with the default limits; see
     /// [`crate::input::read_options`]).
     pub fn read_options(&self) -> ReadOptions {
@@ -144,4 +169,15 @@ impl ModelArgs {
         options.knots_v = self.knots_v.clone();
         options
     }
+}
+
+/// The table options of `args`, checked.
+///
+/// # Errors
+/// A [`UsageError`] with the library's message (a delimiter that is not one character, a
+/// decimal comma with the delimiter `,`).
+pub fn table_input(args: &RequestArgs<TableInput>) -> Result<TableInput, UsageError> {
+    let input = args.request()?.clone();
+    input.validate().map_err(|e| UsageError(e.to_string()))?;
+    Ok(input)
 }

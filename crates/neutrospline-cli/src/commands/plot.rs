@@ -133,7 +133,7 @@ pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
     let view = request.view(args.data.is_some());
     match (&args.data, view) {
         (Some(file), View::Data) => {
-            let table = read_data(file, membership)?;
+            let table = read_data(file, membership, &args.model.table_input()?)?;
             if table.dimension() != shape.dimension() {
                 return Err(anyhow::anyhow!(
                     "{}: the data is {}-D but the model is {}-D (give z for a 3-D curve, or \

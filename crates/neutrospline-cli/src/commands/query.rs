@@ -52,8 +52,8 @@ const BATCH: usize = 1 << 14;
 pub fn run(args: &QueryArgs) -> anyhow::Result<()> {
     let shape = input::read_model(&args.model_file, &args.model)?.into_shape();
     let model_file = input::label(&args.model_file);
-    let table = neutrospline_io::load_points(&args.points)
-        .map_err(|e| anyhow::Error::msg(e.to_string()))?;
+    let table = neutrospline_io::load_points_with(&args.points, &args.model.table_input()?)
+        .map_err(input::table_error)?;
     let dimension = shape.dimension();
     if table.dimension() != dimension {
         let what = if shape.is_surface() {

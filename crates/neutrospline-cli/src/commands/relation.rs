@@ -8,7 +8,7 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use neutrospline::{AxisSetName, ControlPolygon, PointRelation, RelationError};
-use neutrospline_io::{AxisTable, Format};
+use neutrospline_io::{AxisTable, Format, TableInput};
 
 use crate::commands::options::ModelArgs;
 use crate::input::{self, UsageError};
@@ -68,8 +68,9 @@ pub struct RelationArgs {
 /// A located error in an axis set, the pairs or the model; a pair outside the sets; a
 /// violation of Def. 4 (`--check`); options that do not make a model; a write error.
 pub fn run(args: &RelationArgs) -> anyhow::Result<()> {
-    let m = read_axis(&args.m, AxisSetName::M)?;
-    let n = read_axis(&args.n, AxisSetName::N)?;
+    let table_input = args.model.table_input()?;
+    let m = read_axis(&args.m, AxisSetName::M, &table_input)?;
+    let n = read_axis(&args.n, AxisSetName::N, &table_input)?;
     if let Some(model_file) = &args.check {
         return check(model_file, &args.model, &m, &n);
     }
@@ -111,9 +112,11 @@ pub fn run(args: &RelationArgs) -> anyhow::Result<()> {
         table.push('\n');
     }
     let source = format!("the relation of {} and {}", m.file(), n.file());
-    let model =
-        neutrospline_io::read_csv(&source, table.as_bytes(), &input::read_options(&args.model))
-            .map_err(|e| anyhow::Error::msg(e.to_string()))?;
+    // The table above is plain CSV, whatever the axis files' delimiter or decimal mark.
+    let mut options = input::read_options(&args.model)?;
+    options.table = TableInput::default();
+    let model = neutrospline_io::read_csv(&source, table.as_bytes(), &options)
+        .map_err(|e| anyhow::Error::msg(e.to_string()))?;
     if model.shape().curve().is_none() {
         return Err(UsageError(format!(
             "--kind {}: a relation makes the control points of a plane curve (bezier, bspline \
@@ -136,8 +139,12 @@ pub fn run(args: &RelationArgs) -> anyhow::Result<()> {
 }
 
 /// Reads an axis set, with its file's located errors.
-fn read_axis(path: &std::path::Path, name: AxisSetName) -> anyhow::Result<AxisTable> {
-    neutrospline_io::load_axis_set(path, name).map_err(|e| anyhow::Error::msg(e.to_string()))
+fn read_axis(
+    path: &std::path::Path,
+    name: AxisSetName,
+    table_input: &TableInput,
+) -> anyhow::Result<AxisTable> {
+    neutrospline_io::load_axis_set_with(path, name, table_input).map_err(input::table_error)
 }
 
 /// Checks that the control points of the plane curve in `model_file` form a relation of `m`

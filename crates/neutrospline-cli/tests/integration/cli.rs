@@ -221,7 +221,7 @@ fn eval_reads_csv_from_stdin() {
         (out.code, out.stderr.as_str()),
         (
             1,
-            "error: <stdin>:1: missing column `indeterminacy` (neutrosophic rule requires it)\n"
+            "error: <stdin>:1: missing column `indeterminacy` (neutrosophic rule requires it; truth and falsity alone are an intuitionistic table (--membership intuitionistic, indeterminacy 1 - T - F), truth alone a fuzzy one (--membership fuzzy))\n"
         )
     );
 }
@@ -259,7 +259,7 @@ fn eval_membership_rules_on_csv() {
         (out.code, out.stderr.as_str()),
         (
             1,
-            "error: ifs.csv:1: missing column `indeterminacy` (neutrosophic rule requires it)\n"
+            "error: ifs.csv:1: missing column `indeterminacy` (neutrosophic rule requires it; truth and falsity alone are an intuitionistic table (--membership intuitionistic, indeterminacy 1 - T - F), truth alone a fuzzy one (--membership fuzzy))\n"
         )
     );
 }
@@ -455,7 +455,7 @@ fn eval_unsupported_extension_exits_2() {
         (out.code, out.stderr.as_str()),
         (
             2,
-            "error: curve.txt: unsupported file extension `.txt` (accepted: .csv, .toml, .json; `-` reads CSV from standard input)\n"
+            "error: curve.txt: unsupported file extension `.txt` (accepted: .csv, .tsv, .toml, .json; `-` reads CSV from standard input)\n"
         )
     );
 }

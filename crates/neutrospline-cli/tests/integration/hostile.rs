@@ -525,7 +525,7 @@ fn hostile_directory_and_unreadable_paths() {
             (
                 Some(1),
                 format!(
-                    "error: {name}: cannot read: it is a directory (give a .csv, .toml or .json \
+                    "error: {name}: cannot read: it is a directory (give a .csv, .tsv, .toml or .json \
                      file)\n"
                 )
                 .as_str()
@@ -933,7 +933,7 @@ fn hostile_usage_errors_exit_2() {
         ),
         (
             &["eval", "m.csv", "--format", "xml"][..],
-            "invalid value 'xml'",
+            "format = xml: expected one of csv, json, latex, markdown",
         ),
         (
             &["eval", "m.csv", "--max-samples", "10", "--samples", "11"][..],

@@ -808,14 +808,14 @@ fn weight_errors_name_the_control_point_and_rule() {
         csv,
         &["eval", "w.csv", "--kind", "bspline", "--degree", "2"],
         1,
-        "error: w.csv:1: column `weight` does not apply to kind `bspline` (weights only apply to NURBS: --kind nurbs or --kind nurbs-surface)",
+        "error: w.csv:1: column `weight` does not apply to kind `bspline` (weights only apply to NURBS: --kind nurbs or --kind nurbs-surface); a table of measured points (with a parameter or weight per point) is fitted by `neutrospline fit FILE`, not evaluated",
     );
     assert_error(
         "w.csv",
         csv,
         &["eval", "w.csv"],
         1,
-        "error: w.csv:1: column `weight` does not apply to kind `bezier` (weights only apply to NURBS: --kind nurbs or --kind nurbs-surface)",
+        "error: w.csv:1: column `weight` does not apply to kind `bezier` (weights only apply to NURBS: --kind nurbs or --kind nurbs-surface); a table of measured points (with a parameter or weight per point) is fitted by `neutrospline fit FILE`, not evaluated",
     );
 }
 

@@ -4,6 +4,7 @@
 mod bench;
 mod cli;
 mod derivatives;
+mod dialects;
 mod export;
 mod faults;
 mod fit;
@@ -19,4 +20,6 @@ mod query;
 mod readers;
 mod relation;
 mod studio;
+mod tables;
 mod util;
+mod warnings;

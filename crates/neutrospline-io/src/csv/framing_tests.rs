@@ -7,7 +7,7 @@ use crate::format::MAX_CSV_LINE;
 
 /// The rows of `text` as (line, cells), or the error message.
 fn rows(text: &[u8]) -> Result<Vec<(usize, Vec<String>)>, String> {
-    let mut records = Records::new(text);
+    let mut records = Records::new(text, Some(b','));
     let mut out = Vec::new();
     while let Some((line, cells)) = records.next_cells("t.csv").map_err(|e| e.to_string())? {
         out.push((line, cells.iter().map(str::to_owned).collect()));
@@ -206,7 +206,10 @@ fn reading_stops_at_the_error_without_reading_further() {
     let mut text = b"a,b\n1,2\n3,4,5\n".to_vec();
     let end = text.len();
     text.extend(b"never read\n");
-    let mut records = Records::new(std::io::BufReader::with_capacity(1, Trickle(text, 0)));
+    let mut records = Records::new(
+        std::io::BufReader::with_capacity(1, Trickle(text, 0)),
+        Some(b','),
+    );
     assert_eq!(records.next_cells("t.csv").unwrap().unwrap().0, 1);
     assert_eq!(records.next_cells("t.csv").unwrap().unwrap().0, 2);
     let (line, cells) = records.next_cells("t.csv").unwrap().unwrap();

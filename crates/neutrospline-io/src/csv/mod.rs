@@ -52,8 +52,8 @@ pub(crate) fn parse_reader(
         repeat_rule: duplicate_rule(),
         rows: "control points",
     };
-    let mut table =
-        Table::open(file, reader, &columns)?.with_max_rows(options.limits.max_control_points);
+    let mut table = Table::open(file, reader, &columns, &options.table)?
+        .with_max_rows(options.limits.max_control_points);
     let has = |f: Field| table.has(Column::Field(f));
     for f in [Field::X, Field::Y] {
         table.require(Column::Field(f), f.name(), "every file needs x and y")?;
@@ -78,12 +78,13 @@ pub(crate) fn parse_reader(
     if !kind.is_rational() && has(Field::Weight) {
         return Err(table.header_error(format!(
             "column `weight` does not apply to kind `{kind}` (weights only apply to NURBS: \
-             --kind nurbs or --kind nurbs-surface)"
+             --kind nurbs or --kind nurbs-surface){}",
+            FIT_HINT
         )));
     }
     let dimension = if has(Field::Z) { 3 } else { 2 };
     let mut spread_columns: [Option<&str>; 9] = [None; 9];
-    for (column, heading) in table.columns().iter().zip(table.headings().iter()) {
+    for (column, heading) in table.named_columns() {
         if let Column::Spread(key) = column {
             spread_columns[key.index()] = Some(heading);
         }
@@ -112,7 +113,7 @@ pub(crate) fn parse_reader(
                 name = (!cell.text.is_empty()).then(|| cell.text.to_owned());
                 continue;
             }
-            let value = match (field, cell.text.parse::<f64>()) {
+            let value = match (field, row.number_text(&cell)?.parse::<f64>()) {
                 // Any number, NaN and infinities included: the core's NURBS weight rule judges it.
                 (Field::Weight, Ok(w)) => w,
                 _ => row.number(&cell)?,
@@ -197,6 +198,11 @@ fn structure(kind: Kind, options: &ReadOptions) -> Structure {
     }
 }
 
+/// Said of a control-point table with a column of fitting data (`parameter`, or `weight` for
+/// a kind without weights): the file may be measured points, which `fit` reads.
+const FIT_HINT: &str = "; a table of measured points (with a parameter or weight per point) \
+                        is fitted by `neutrospline fit FILE`, not evaluated";
+
 /// What a header cell names: a field of the control point, or a spread.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Column {
@@ -210,8 +216,13 @@ fn column(heading: &str) -> Result<Column, String> {
         .map(Column::Field)
         .or_else(|| SpreadKey::from_name(heading, true).map(Column::Spread))
         .ok_or_else(|| {
+            let fit = if heading.eq_ignore_ascii_case("parameter") {
+                FIT_HINT
+            } else {
+                ""
+            };
             format!(
-                "unknown column `{heading}` (known columns: {}){}",
+                "unknown column `{heading}` (known columns: {}){}{fit}",
                 Field::known_list(),
                 spread_hint(heading)
             )

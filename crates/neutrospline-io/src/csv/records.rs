@@ -18,16 +18,55 @@ use crate::InputError;
 /// included), a row's line being the one it starts on.
 pub(crate) struct Records<R> {
     pub(super) reader: ::csv::Reader<Input<R>>,
+    /// The byte between cells.
+    delimiter: u8,
     row: ::csv::StringRecord,
     done: bool,
     /// The number of cells of the first row (the header), once read.
     header_cells: Option<usize>,
 }
 
+/// The delimiter of the header row, found in what `reader` has buffered (without consuming
+/// it): the first line that is not empty or a comment, outside quotes, holds a comma (`,`),
+/// else a tab, else a semicolon (as spreadsheets save CSV in locales with a decimal comma);
+/// a comma when it holds none of them or the buffer cannot be read.
+pub(crate) fn detect_delimiter(reader: &mut impl BufRead) -> u8 {
+    let Ok(buffer) = reader.fill_buf() else {
+        return b',';
+    };
+    let buffer = buffer.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(buffer);
+    let header = buffer
+        .split(|&b| b == b'\n' || b == b'\r')
+        .find(|line| {
+            let line = line.trim_ascii_start();
+            !line.is_empty() && !line.starts_with(b"#")
+        })
+        .unwrap_or_default();
+    let mut quoted = false;
+    let mut found = [false; 3];
+    for &b in header {
+        match b {
+            b'"' => quoted = !quoted,
+            b',' if !quoted => found[0] = true,
+            b'\t' if !quoted => found[1] = true,
+            b';' if !quoted => found[2] = true,
+            _ => {}
+        }
+    }
+    [b',', b'\t', b';']
+        .into_iter()
+        .zip(found)
+        .find_map(|(d, f)| f.then_some(d))
+        .unwrap_or(b',')
+}
+
 impl<R: BufRead> Records<R> {
-    /// Records from the start of `reader`.
-    pub(crate) fn new(reader: R) -> Records<R> {
+    /// Records from the start of `reader`, cells separated by `delimiter` (by the one
+    /// [`detect_delimiter`] finds when `None`).
+    pub(crate) fn new(mut reader: R, delimiter: Option<u8>) -> Records<R> {
+        let delimiter = delimiter.unwrap_or_else(|| detect_delimiter(&mut reader));
         let reader = ::csv::ReaderBuilder::new()
+            .delimiter(delimiter)
             .has_headers(false)
             .flexible(true)
             .trim(::csv::Trim::None)
@@ -36,10 +75,16 @@ impl<R: BufRead> Records<R> {
             .from_reader(Input::new(reader));
         Records {
             reader,
+            delimiter,
             row: ::csv::StringRecord::new(),
             done: false,
             header_cells: None,
         }
+    }
+
+    /// The byte between cells.
+    pub(crate) fn delimiter(&self) -> u8 {
+        self.delimiter
     }
 
     /// Refuses a comment read since the last row that holds a full row after the header: as
@@ -65,7 +110,10 @@ impl<R: BufRead> Records<R> {
             if count < 3 || body.contains('"') {
                 continue;
             }
-            let cells: Vec<&str> = body.split(',').map(str::trim).collect();
+            let cells: Vec<&str> = body
+                .split(char::from(self.delimiter))
+                .map(str::trim)
+                .collect();
             let numbers = cells[1..]
                 .iter()
                 .all(|c| !c.is_empty() && c.parse::<f64>().is_ok());

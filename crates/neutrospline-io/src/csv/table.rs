@@ -9,7 +9,7 @@ use neutrospline::{DegreeError, Degrees, Membership};
 use super::Records;
 use crate::format::too_many_points;
 use crate::parsed::{missing_degree, parse_number, Field};
-use crate::InputError;
+use crate::{InputError, TableInput};
 
 /// A CSV table being read: its header read, its rows read one at a time by
 /// [`Table::next_row`]. `C` is what a column holds (each reader has its own columns).
@@ -18,7 +18,10 @@ pub(crate) struct Table<'f, R, C> {
     records: Records<R>,
     header: ::csv::StringRecord,
     header_line: usize,
-    columns: Vec<C>,
+    /// One per cell of the header; `None` for a column left out.
+    columns: Vec<Option<C>>,
+    /// Numbers have a decimal comma.
+    decimal_comma: bool,
     /// At most this many rows are read; the next one is refused.
     max_rows: Option<u64>,
     /// The rows read so far.
@@ -45,13 +48,16 @@ impl<'f, R: BufRead, C: Copy + PartialEq> Table<'f, R, C> {
     ///
     /// # Errors
     /// An empty file (no header row), a heading that names no column, a column named twice
-    /// (`column 4 `T` repeats column 3 `truth``), and every error of [`Records`].
+    /// (`column 4 `T` repeats column 3 `truth``), a column that `input` maps or leaves out
+    /// but the header does not have, and every error of [`Records`]. `input` gives the
+    /// delimiter, the decimal comma, and which columns are read as which or left out.
     pub(crate) fn open(
         file: &'f str,
         reader: R,
         columns: &Columns<'_, C>,
+        input: &TableInput,
     ) -> Result<Table<'f, R, C>, InputError> {
-        let mut records = Records::new(reader);
+        let mut records = Records::new(reader, input.delimiter);
         let Some((header_line, header)) = records.next_cells(file)? else {
             return Err(InputError::new(
                 file,
@@ -69,13 +75,45 @@ impl<'f, R: BufRead, C: Copy + PartialEq> Table<'f, R, C> {
             header: ::csv::StringRecord::new(),
             header_line,
             columns: Vec::with_capacity(header.len()),
+            decimal_comma: input.decimal_comma,
             max_rows: None,
             rows: 0,
             rows_name: columns.rows.to_owned(),
         };
+        if input.decimal_comma && table.records.delimiter() == b',' {
+            return Err(table.header_error(
+                "the cells are separated by commas, so numbers cannot have a decimal comma \
+                 (--decimal-comma): save the file with another delimiter, such as ;"
+                    .to_owned(),
+            ));
+        }
+        let has = |name: &str| header.iter().any(|h| h.eq_ignore_ascii_case(name));
+        for (ours, theirs) in &input.columns {
+            if !has(theirs) {
+                return Err(table.header_error(format!(
+                    "--columns {ours}={theirs}: the header has no column `{theirs}`"
+                )));
+            }
+        }
+        if let Some(name) = input.ignore_columns.iter().find(|name| !has(name)) {
+            return Err(table.header_error(format!(
+                "--ignore-columns {name}: the header has no column `{name}`"
+            )));
+        }
         for (i, heading) in header.iter().enumerate() {
-            let column = (columns.column)(heading).map_err(|m| table.header_error(m))?;
-            if let Some(j) = table.columns.iter().position(|&c| c == column) {
+            if input.ignores(heading) {
+                table.columns.push(None);
+                continue;
+            }
+            let column = match (columns.column)(input.ours(heading).unwrap_or(heading)) {
+                Ok(column) => column,
+                Err(_) if input.ignore_unknown_columns => {
+                    table.columns.push(None);
+                    continue;
+                }
+                Err(m) => return Err(table.header_error(unknown_hint(m, heading))),
+            };
+            if let Some(j) = table.columns.iter().position(|&c| c == Some(column)) {
                 return Err(table.header_error(format!(
                     "column {} `{heading}` repeats column {} `{}` ({})",
                     i + 1,
@@ -84,7 +122,7 @@ impl<'f, R: BufRead, C: Copy + PartialEq> Table<'f, R, C> {
                     columns.repeat_rule
                 )));
             }
-            table.columns.push(column);
+            table.columns.push(Some(column));
         }
         table.header = header;
         Ok(table)
@@ -96,19 +134,17 @@ impl<'f, R: BufRead, C: Copy + PartialEq> Table<'f, R, C> {
         self
     }
 
-    /// The columns, one per cell of the header, in its order.
-    pub(crate) fn columns(&self) -> &[C] {
-        &self.columns
-    }
-
-    /// The header's cells (trimmed), one per column.
-    pub(crate) fn headings(&self) -> &::csv::StringRecord {
-        &self.header
+    /// The columns read (not left out), each with its heading, in the header's order.
+    pub(crate) fn named_columns(&self) -> impl Iterator<Item = (C, &str)> {
+        self.columns
+            .iter()
+            .zip(self.header.iter())
+            .filter_map(|(c, h)| c.map(|c| (c, h)))
     }
 
     /// Whether the header names `column`.
     pub(crate) fn has(&self, column: C) -> bool {
-        self.columns.contains(&column)
+        self.columns.contains(&Some(column))
     }
 
     /// An error at the header's line.
@@ -150,6 +186,7 @@ impl<'f, R: BufRead, C: Copy + PartialEq> Table<'f, R, C> {
             line,
             columns: &self.columns,
             headings: &self.header,
+            decimal_comma: self.decimal_comma,
             cells,
         };
         if let Some(max) = self.max_rows.filter(|&max| self.rows >= max) {
@@ -175,8 +212,9 @@ impl<'f, R: BufRead, C: Copy + PartialEq> Table<'f, R, C> {
 pub(crate) struct Row<'t, C> {
     file: &'t str,
     line: usize,
-    columns: &'t [C],
+    columns: &'t [Option<C>],
     headings: &'t ::csv::StringRecord,
+    decimal_comma: bool,
     cells: ::csv::StringRecord,
 }
 
@@ -186,17 +224,45 @@ impl<C: Copy> Row<'_, C> {
         self.line
     }
 
-    /// Each cell (trimmed) with its column and the column's heading, in the header's order.
+    /// Each cell (trimmed) of a column read, with its column and the column's heading, in
+    /// the header's order.
     pub(crate) fn cells(&self) -> impl Iterator<Item = Cell<'_, C>> {
         self.columns
             .iter()
             .zip(self.cells.iter())
             .zip(self.headings.iter())
-            .map(|((&column, text), heading)| Cell {
-                column,
-                text,
-                heading,
+            .filter_map(|((&column, text), heading)| {
+                column.map(|column| Cell {
+                    column,
+                    text,
+                    heading,
+                })
             })
+    }
+
+    /// The text of a number in `cell` with a decimal point: with a decimal comma, the comma
+    /// becomes a point (a cell with a point then is refused: no thousands separators).
+    ///
+    /// # Errors
+    /// With a decimal comma, a cell that holds a point.
+    pub(crate) fn number_text<'c>(
+        &self,
+        cell: &Cell<'c, C>,
+    ) -> Result<std::borrow::Cow<'c, str>, InputError> {
+        if !self.decimal_comma {
+            return Ok(cell.text.into());
+        }
+        if cell.text.contains('.') {
+            return Err(self.cell_error(
+                cell,
+                format!(
+                    "value `{}` has a point, but --decimal-comma reads numbers with a decimal \
+                     comma (and no thousands separators)",
+                    cell.text
+                ),
+            ));
+        }
+        Ok(cell.text.replace(',', ".").into())
     }
 
     /// An error at the row's line, in `field` when given.
@@ -214,7 +280,18 @@ impl<C: Copy> Row<'_, C> {
     /// # Errors
     /// A cell that is not a finite number, located at its column.
     pub(crate) fn number(&self, cell: &Cell<'_, C>) -> Result<f64, InputError> {
-        parse_number(cell.text).map_err(|m| self.cell_error(cell, m))
+        let text = self.number_text(cell)?;
+        parse_number(&text).map_err(|m| {
+            let comma = !self.decimal_comma
+                && text.contains(',')
+                && text.replace(',', ".").parse::<f64>().is_ok();
+            let hint = if comma {
+                " (a decimal comma? give --decimal-comma)"
+            } else {
+                ""
+            };
+            self.cell_error(cell, format!("{m}{hint}"))
+        })
     }
 }
 
@@ -228,6 +305,16 @@ pub(crate) struct Cell<'r, C> {
     pub(crate) heading: &'r str,
 }
 
+/// The message for an unknown heading, with a hint when the header looks like one cell of
+/// a table with another delimiter.
+fn unknown_hint(message: String, heading: &str) -> String {
+    if heading.contains([';', '\t', ',']) {
+        format!("{message}: the header was read as one cell; give the delimiter with --delimiter")
+    } else {
+        message
+    }
+}
+
 /// Refuses a header without a degree column that the `membership` rule requires (`falsity`
 /// under the intuitionistic rule, `indeterminacy` and `falsity` under the neutrosophic one);
 /// `column` is the table's column of a field.
@@ -238,9 +325,18 @@ pub(crate) fn require_degrees<R: BufRead, C: Copy + PartialEq>(
 ) -> Result<(), InputError> {
     let has = |f: Field| table.has(column(f));
     match missing_degree(membership, has(Field::Indeterminacy), has(Field::Falsity)) {
-        Some(DegreeError::Missing { kind, membership }) => Err(table.header_error(format!(
-            "missing column `{kind}` ({membership} rule requires it)"
-        ))),
+        Some(DegreeError::Missing { kind, membership }) => {
+            let hint = if membership == Membership::Neutrosophic && !has(Field::Indeterminacy) {
+                "; truth and falsity alone are an intuitionistic table (--membership \
+                 intuitionistic, indeterminacy 1 - T - F), truth alone a fuzzy one (--membership \
+                 fuzzy)"
+            } else {
+                ""
+            };
+            Err(table.header_error(format!(
+                "missing column `{kind}` ({membership} rule requires it{hint})"
+            )))
+        }
         _ => Ok(()),
     }
 }

@@ -94,7 +94,7 @@ fn csv_parse_errors() {
         (b"x,y,truth,indeterminacy,falsity\n", Neutrosophic, "t.csv: no control points (the header row is not followed by any data row)"),
         (b"x,truth,indeterminacy,falsity\n1,0,0,0\n", Neutrosophic, "t.csv:1: missing column `y` (every file needs x and y)"),
         (b"x,y,indeterminacy,falsity\n1,0,0,0\n", Neutrosophic, "t.csv:1: missing column `truth` (every membership rule requires it)"),
-        (b"x,y,truth,falsity\n1,0,0,0\n", Neutrosophic, "t.csv:1: missing column `indeterminacy` (neutrosophic rule requires it)"),
+        (b"x,y,truth,falsity\n1,0,0,0\n", Neutrosophic, "t.csv:1: missing column `indeterminacy` (neutrosophic rule requires it; truth and falsity alone are an intuitionistic table (--membership intuitionistic, indeterminacy 1 - T - F), truth alone a fuzzy one (--membership fuzzy))"),
         (b"x,y,truth\n1,0,0\n", Intuitionistic, "t.csv:1: missing column `falsity` (intuitionistic rule requires it)"),
         (b"x,y,truth,T,indeterminacy,falsity\n", Neutrosophic, "t.csv:1: column 4 `T` repeats column 3 `truth` (each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity)"),
         (b"x,y,x\n", Neutrosophic, "t.csv:1: column 3 `x` repeats column 1 `x` (each field may appear once; T, I and F are aliases of truth, indeterminacy and falsity)"),

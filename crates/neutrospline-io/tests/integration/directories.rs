@@ -23,7 +23,7 @@ fn every_reader_names_the_directory_and_what_it_reads() {
         assert_eq!(
             message(load(&p, &ReadOptions::default()).map(drop)),
             format!(
-                "{}: cannot read: it is a directory (give a .csv, .toml or .json file)",
+                "{}: cannot read: it is a directory (give a .csv, .tsv, .toml or .json file)",
                 shown(&p)
             )
         );

@@ -429,7 +429,7 @@ fn csv_options_name_what_csv_cannot_hold() {
     .unwrap_err();
     assert_eq!(
         e.to_string(),
-        "m.csv:1: missing column `indeterminacy` (neutrosophic rule requires it)"
+        "m.csv:1: missing column `indeterminacy` (neutrosophic rule requires it; truth and falsity alone are an intuitionistic table (--membership intuitionistic, indeterminacy 1 - T - F), truth alone a fuzzy one (--membership fuzzy))"
     );
 }
 
