@@ -3,9 +3,9 @@
 
 How to run (from the workspace root):
 
-    python3 -m venv /work/brief/venv-ref \
-      && /work/brief/venv-ref/bin/pip install numpy scipy mpmath \
-      && /work/brief/venv-ref/bin/python scripts/reference/make_accuracy_reference.py
+    python3 -m venv .venv-ref \
+      && .venv-ref/bin/pip install numpy scipy mpmath \
+      && .venv-ref/bin/python scripts/reference/make_accuracy_reference.py
 
 then `cargo test -p neutrospline --lib accuracy -- --nocapture` prints the table of the
 README's "Accuracy" section (ours compensated, ours plain, ours fast batch, scipy).

@@ -14,9 +14,9 @@ solver's within 1e-4 (the file records the largest gap); `objective` is the poli
 
 Run from the workspace root:
 
-    python3 -m venv /work/brief/venv-ref
-    /work/brief/venv-ref/bin/pip install cvxpy clarabel numpy
-    /work/brief/venv-ref/bin/python scripts/reference/make_family_projection_reference.py
+    python3 -m venv .venv-ref
+    .venv-ref/bin/pip install cvxpy clarabel numpy
+    .venv-ref/bin/python scripts/reference/make_family_projection_reference.py
 
 Deterministic up to the solver's last digits (fixed seeds).
 """

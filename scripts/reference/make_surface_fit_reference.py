@@ -22,7 +22,7 @@ membership rule is active and the bounded fit must equal the unconstrained one.
 
 Run from the workspace root (the venv of make_fit_reference.py: numpy, scipy):
 
-    /work/brief/venv-ref/bin/python scripts/reference/make_surface_fit_reference.py
+    .venv-ref/bin/python scripts/reference/make_surface_fit_reference.py
 
 Deterministic (fixed seeds); checked with scipy 1.17.1, numpy 2.4.6.
 """

@@ -12,7 +12,7 @@ From the paper's Example 1 (examples/example1.csv) and the first 12 points of th
   a comma, a semicolon and a quote (quoted by the csv module);
 - `*-plain.csv`: the same rows as the project writes them, the reference each is read against.
 
-Run: /work/brief/venv-ref/bin/python scripts/reference/make_table_dialect_fixtures.py
+Run: .venv-ref/bin/python scripts/reference/make_table_dialect_fixtures.py
 (standard library only).
 """
 

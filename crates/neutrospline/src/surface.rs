@@ -449,8 +449,8 @@ impl Surface {
         };
         let mut value = [0.0; S + 1];
         let mut rate = [0.0; S + 1];
-        curve.evaluate(t, &mut value);
-        curve.derivative().evaluate(t, &mut rate);
+        curve.evaluate_plain(t, &mut value);
+        curve.derivative().evaluate_plain(t, &mut rate);
         let (w, dw) = (value[S], rate[S]);
         let mut row = [0.0; S];
         for c in 0..S {
@@ -521,7 +521,7 @@ impl Surface {
                 weights: None,
             };
             for (b, spline) in row.derivatives(order).iter().enumerate() {
-                spline.evaluate(v, &mut columns[b][i * hs..(i + 1) * hs]);
+                spline.evaluate_plain(v, &mut columns[b][i * hs..(i + 1) * hs]);
             }
         }
         for (b, column) in columns.into_iter().enumerate() {
@@ -532,7 +532,7 @@ impl Surface {
                 weights: None,
             };
             for (a, spline) in column.derivatives(order).iter().enumerate() {
-                spline.evaluate(u, &mut homogeneous[a * n + b]);
+                spline.evaluate_plain(u, &mut homogeneous[a * n + b]);
             }
         }
         // Leibniz's rule in two variables, S^(k,l) for k + l <= order.

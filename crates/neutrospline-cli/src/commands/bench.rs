@@ -8,15 +8,16 @@
 //! bandwidth reference: the same threads writing the same five output arrays (five f64 per
 //! point) in a tight loop with no arithmetic, the most any evaluator could do. The ratio of the
 //! two is what fraction of that limit the evaluator reaches, on the same machine at the same
-//! moment.
+//! moment. With `--compensated` the evaluator is then timed again with
+//! `Accuracy::Compensated` (best of as many runs), and both speeds are reported.
 
 use std::io::Write;
 use std::time::Instant;
 
 use anyhow::Context;
 use neutrospline::{
-    batch, example1, BSpline, BatchOptions, BatchParams, Bezier, ControlPoint, CurveBatch, Degrees,
-    KnotVector, Nurbs,
+    batch, example1, Accuracy, BSpline, BatchOptions, BatchParams, Bezier, ControlPoint,
+    CurveBatch, Degrees, KnotVector, Nurbs,
 };
 
 /// Arguments of `bench`.
@@ -47,6 +48,11 @@ pub struct BenchArgs {
     /// Output format
     #[arg(long, value_enum, default_value_t = BenchFormat::Text)]
     pub format: BenchFormat,
+    /// Also time the batch evaluator with compensated accuracy (the library's
+    /// `Accuracy::Compensated`: compensated de Casteljau / de Boor per point, as the scalar
+    /// evaluation) and report its speed beside the fast kernels'
+    #[arg(long)]
+    pub compensated: bool,
 }
 
 /// Curve kinds of `bench`.
@@ -98,6 +104,10 @@ pub struct BenchResult {
     pub write_reference_mpts_per_s: f64,
     /// `mpts_per_s / write_reference_mpts_per_s`.
     pub fraction_of_write_reference: f64,
+    /// With `--compensated`: million points per second of the batch evaluator with
+    /// `Accuracy::Compensated`, best run.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub compensated_mpts_per_s: Option<f64>,
 }
 
 /// Runs the benchmark and writes its result to `out`.
@@ -146,6 +156,16 @@ evaluator at {:.0}% of it",
         r.write_reference_mpts_per_s,
         100.0 * r.fraction_of_write_reference
     )?;
+    if let Some(compensated) = r.compensated_mpts_per_s {
+        writeln!(
+            out,
+            "  compensated ({}): {:.3} Mpts/s, {:.1}x the time of the fast kernels ({})",
+            Accuracy::Compensated.name(),
+            compensated,
+            r.mpts_per_s / compensated,
+            Accuracy::Fast.name()
+        )?;
+    }
     Ok(())
 }
 
@@ -201,6 +221,22 @@ pub fn measure(args: &BenchArgs) -> anyhow::Result<BenchResult> {
         }
     };
     let (mpts, reference) = (rate(best), rate(best_reference));
+    let compensated = if args.compensated {
+        let options = options.clone().with_accuracy(Accuracy::Compensated);
+        let evaluate =
+            |buffer: &mut [f64]| batch.evaluate(BatchParams::Uniform(points), buffer, &options);
+        evaluate(&mut buffer).context("evaluating the benchmark curve")?;
+        let mut best = f64::INFINITY;
+        for _ in 0..args.runs {
+            let start = Instant::now();
+            evaluate(&mut buffer).context("evaluating the benchmark curve")?;
+            best = best.min(start.elapsed().as_secs_f64());
+            std::hint::black_box(&mut buffer);
+        }
+        Some(rate(best))
+    } else {
+        None
+    };
     let (degree, pieces) = (batch.degree(), batch.pieces());
     Ok(BenchResult {
         kind: args.kind,
@@ -215,6 +251,7 @@ pub fn measure(args: &BenchArgs) -> anyhow::Result<BenchResult> {
         instruction_set: batch::instruction_set().to_string(),
         write_reference_mpts_per_s: reference,
         fraction_of_write_reference: mpts / reference,
+        compensated_mpts_per_s: compensated,
     })
 }
 
@@ -320,6 +357,7 @@ mod tests {
             runs: 1,
             seed: 1,
             format,
+            compensated: false,
         }
     }
 
@@ -334,6 +372,27 @@ mod tests {
         assert_eq!(v["curve"], "example1");
         assert!(v["mpts_per_s"].as_f64().unwrap() > 0.0);
         assert!(v["write_reference_mpts_per_s"].as_f64().unwrap() > 0.0);
+        assert!(v.get("compensated_mpts_per_s").is_none());
+    }
+
+    #[test]
+    fn bench_compensated_reports_both_speeds() {
+        let mut a = args(1000, 7, BenchFormat::Json);
+        a.compensated = true;
+        let mut out = Vec::new();
+        run(&a, &mut out).unwrap();
+        let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+        assert!(v["mpts_per_s"].as_f64().unwrap() > 0.0);
+        assert!(v["compensated_mpts_per_s"].as_f64().unwrap() > 0.0);
+        a.format = BenchFormat::Text;
+        let mut out = Vec::new();
+        run(&a, &mut out).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        assert!(text.contains("  compensated (compensated): "), "{text}");
+        assert!(
+            text.contains("x the time of the fast kernels (fast)"),
+            "{text}"
+        );
     }
 
     #[test]
