@@ -176,14 +176,7 @@ fn render_draws_what_the_plot_crate_draws() {
     );
     assert_eq!(
         table["rows"][5],
-        json!([
-            "0.5",
-            "4.625",
-            "4",
-            "0.625",
-            "0.2",
-            "0.17500000000000002"
-        ])
+        json!(["0.5", "4.625", "4", "0.625", "0.2", "0.17500000000000002"])
     );
     let at_03 = curve.evaluate(0.3).unwrap();
     let (_, answer, _) = post(
