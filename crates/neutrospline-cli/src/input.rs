@@ -87,11 +87,13 @@ pub fn read_data(
     result.map_err(table_error)
 }
 
-/// A table reader's error as the command's: an extension that is not a table's is a usage
-/// error (exit 2), with the same message in every command.
+/// A table reader's error as the command's: an extension that is not a table's, and options
+/// that do not fit the file (`--sheet` of a CSV file), are usage errors (exit 2), with the
+/// same message in every command.
 pub fn table_error(error: ReadError) -> anyhow::Error {
     match error {
         ReadError::Format(e) => UsageError(e.to_string()).into(),
+        e if e.is_usage() => UsageError(e.to_string()).into(),
         e => anyhow::Error::msg(e.to_string()),
     }
 }

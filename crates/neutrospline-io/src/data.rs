@@ -39,7 +39,7 @@ use neutrospline::{Degrees, Membership};
 use crate::csv::{read_degrees, require_degrees, Columns, Table};
 use crate::parsed::{duplicate_rule, Field};
 use crate::path_order::{path_disorder, PathDisorder};
-use crate::read::{open_table, table_input_for};
+use crate::read::open_table;
 use crate::{InputError, PointTable, ReadError, TableInput};
 
 /// The columns of a data table: a control-point field or the point's parameter.
@@ -340,9 +340,8 @@ pub fn load_data_with(
     input: &TableInput,
 ) -> Result<DataTable, ReadError> {
     let path = path.as_ref();
-    let (file, shown) = open_table(path, "a .csv file of data points")?;
-    let input = table_input_for(path, input);
-    read_data_with(&shown, std::io::BufReader::new(file), membership, &input)
+    let source = open_table(path, "a .csv file of data points", input)?;
+    read_data_with(&source.shown, source.reader, membership, &source.input)
 }
 
 /// Reads a data table from a CSV stream, one line at a time; `file` names it in errors.

@@ -120,15 +120,15 @@ impl UnsupportedFormat {
     /// The message with `accepted` as the list of what is accepted: a front end that accepts
     /// more (standard input, say) says so. [`Display`](fmt::Display) uses
     /// [`Format::ACCEPTED`].
-    /// A spreadsheet gets one message, the same from every reader and command: how to save
-    /// it as CSV.
+    /// A spreadsheet gets one message, the same from every command that refuses it: tables
+    /// are read from spreadsheets, but nothing else is, and nothing is written to one.
     pub fn describe(&self, accepted: &str) -> String {
         if self.is_spreadsheet() {
             let ext = self.extension.as_deref().unwrap_or_default();
             return format!(
-                "{}: a spreadsheet (.{ext}) is not read: save its sheet as CSV (File > Save As > \
-                 CSV); a CSV saved with semicolons and decimal commas is read with \
-                 --decimal-comma",
+                "{}: a spreadsheet (.{ext}) is read only as a table (control points, data, \
+                 query points) and never written: give {accepted} (a .csv file opens in every \
+                 spreadsheet)",
                 self.path
             );
         }

@@ -68,6 +68,7 @@ mod read;
 mod relation;
 mod settings;
 mod shape;
+mod spreadsheet;
 mod table;
 mod table_input;
 mod text;

@@ -23,7 +23,7 @@ use std::io::BufRead;
 use std::path::Path;
 
 use crate::csv::{Columns, Table};
-use crate::read::{open_table, table_input_for};
+use crate::read::open_table;
 use crate::{ReadError, TableInput};
 
 /// Query points read from a CSV file, with the line each was read from.
@@ -120,9 +120,8 @@ pub fn load_points_with(
     input: &TableInput,
 ) -> Result<PointTable, ReadError> {
     let path = path.as_ref();
-    let (file, shown) = open_table(path, "a .csv file of query points")?;
-    let input = table_input_for(path, input);
-    read_points_with(&shown, std::io::BufReader::new(file), &input)
+    let source = open_table(path, "a .csv file of query points", input)?;
+    read_points_with(&source.shown, source.reader, &source.input)
 }
 
 /// Reads a table of query points from a CSV stream, one line at a time; `file` names it in

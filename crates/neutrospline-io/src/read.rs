@@ -5,7 +5,9 @@ use std::path::Path;
 
 use crate::format::{too_large, too_many_points};
 use crate::parsed::Parsed;
-use crate::{csv, walker, Format, InputError, Model, ReadError, ReadOptions, TableInput};
+use crate::{
+    csv, spreadsheet, walker, Format, InputError, Model, ReadError, ReadOptions, TableInput,
+};
 
 /// Parses a model held in memory: the contents of `file` (the name used in messages) in
 /// `format`, for a program that has the bytes already (an upload, an editor buffer).
@@ -66,28 +68,31 @@ pub fn read_csv(
 /// content.
 pub fn load(path: impl AsRef<Path>, options: &ReadOptions) -> Result<Model, ReadError> {
     let path = path.as_ref();
-    let format = if is_tsv(path) {
+    let format = if is_tsv(path) || spreadsheet::is_spreadsheet(path) {
         Format::Csv
     } else {
         Format::from_path(path)?
     };
     options.check(format)?;
     if format == Format::Csv {
-        let (file, shown) = open_file(path, MODEL_FILE)?;
+        let source = open_table_source(path, MODEL_FILE, &options.table)?;
         let mut options = options.clone();
-        options.table = table_input_for(path, &options.table);
-        return read_csv(&shown, BufReader::new(file), &options);
+        options.table = source.input;
+        return read_csv(&source.shown, source.reader, &options);
+    }
+    if let Some(sheet) = &options.table.sheet {
+        return Err(not_a_spreadsheet(path, sheet));
     }
     let (shown, bytes) = read_whole(path, options.limits.max_file_size, MODEL_FILE)?;
     parse(&shown, format, &bytes, options)
 }
 
 /// What [`load`] reads, for the message of a directory in its place.
-const MODEL_FILE: &str = "a .csv, .tsv, .toml or .json file";
+const MODEL_FILE: &str = "a .csv, .tsv, .toml or .json file, or a spreadsheet";
 
 /// The extensions of a table of data or query points ([`crate::load_data`],
 /// [`crate::load_points`]), for messages.
-pub(crate) const TABLE_EXTENSIONS: &str = ".csv, .tsv, .txt";
+pub(crate) const TABLE_EXTENSIONS: &str = ".csv, .tsv, .txt, .xlsx, .xlsm, .xls, .ods";
 
 /// Whether `path` names a tab-separated table (`.tsv`, case-insensitive).
 fn is_tsv(path: &Path) -> bool {
@@ -105,23 +110,69 @@ pub(crate) fn table_input_for(path: &Path, input: &TableInput) -> TableInput {
     input
 }
 
-/// Opens a table of data or query points: refuses an extension other than
-/// [`TABLE_EXTENSIONS`] (a spreadsheet with its own message) before opening it.
+/// A table opened for reading: its text, the name messages give it, and the options to read
+/// it with.
+pub(crate) struct TableSource {
+    /// The table's text: the file, or a spreadsheet's sheet written as text.
+    pub(crate) reader: Box<dyn BufRead>,
+    /// The name in messages: the path as it displays, `PATH[SHEET]` for a spreadsheet.
+    pub(crate) shown: String,
+    /// The options to read the text with ([`table_input_for`]; a sheet's are tab-separated).
+    pub(crate) input: TableInput,
+}
+
+/// Opens a table of data, query points or an axis set: refuses an extension other than
+/// [`TABLE_EXTENSIONS`] before opening it; a spreadsheet's sheet is read whole.
 pub(crate) fn open_table(
     path: &Path,
     expected: &str,
-) -> Result<(std::fs::File, String), ReadError> {
+    input: &TableInput,
+) -> Result<TableSource, ReadError> {
     let known = path.extension().is_some_and(|e| {
         ["csv", "tsv", "txt"]
             .iter()
             .any(|k| e.eq_ignore_ascii_case(k))
     });
-    if !known {
+    if !known && !spreadsheet::is_spreadsheet(path) {
         return Err(crate::UnsupportedFormat::new(path)
             .accepting(TABLE_EXTENSIONS)
             .into());
     }
-    open_file(path, expected)
+    open_table_source(path, expected, input)
+}
+
+/// Opens the CSV text or the spreadsheet at `path` as a table ([`TableSource`]).
+fn open_table_source(
+    path: &Path,
+    expected: &str,
+    input: &TableInput,
+) -> Result<TableSource, ReadError> {
+    if spreadsheet::is_spreadsheet(path) {
+        let (shown, text, input) = spreadsheet::read_sheet(path, expected, input)?;
+        return Ok(TableSource {
+            reader: Box::new(std::io::Cursor::new(text)),
+            shown,
+            input,
+        });
+    }
+    if let Some(sheet) = &input.sheet {
+        return Err(not_a_spreadsheet(path, sheet));
+    }
+    let (file, shown) = open_file(path, expected)?;
+    Ok(TableSource {
+        reader: Box::new(BufReader::new(file)),
+        shown,
+        input: table_input_for(path, input),
+    })
+}
+
+/// The refusal of `sheet` for a file that has no sheets.
+fn not_a_spreadsheet(path: &Path, sheet: &str) -> ReadError {
+    ReadError::Options(format!(
+        "{}: sheet = {sheet} applies to a spreadsheet (.xlsx, .xlsm, .xls, .ods); this file has \
+         no sheets (leave out --sheet)",
+        path.display()
+    ))
 }
 
 /// Reads the file at `path` whole, at most `limit` bytes: refused before reading when its size

@@ -27,7 +27,7 @@ use std::path::Path;
 use neutrospline::{AxisSet, AxisSetName, Degrees, RelationError};
 
 use crate::csv::{Columns, Table};
-use crate::read::{open_table, table_input_for};
+use crate::read::open_table;
 use crate::{InputError, ReadError, TableInput};
 
 /// An axis set read from a CSV file, with the line each member was read from.
@@ -114,13 +114,8 @@ pub fn load_axis_set_with(
     input: &TableInput,
 ) -> Result<AxisTable, ReadError> {
     let path = path.as_ref();
-    let (file, shown) = open_table(path, "a .csv file of an axis set")?;
-    read_axis_set_with(
-        &shown,
-        std::io::BufReader::new(file),
-        name,
-        &table_input_for(path, input),
-    )
+    let source = open_table(path, "a .csv file of an axis set", input)?;
+    read_axis_set_with(&source.shown, source.reader, name, &source.input)
 }
 
 /// Reads the axis set `name` (M: coordinates `r`, N: `s`) from a CSV stream; `file` names it
@@ -239,12 +234,8 @@ pub fn load_pairs(path: impl AsRef<Path>) -> Result<PairTable, ReadError> {
 /// Another extension than a table's ([`ReadError::Format`]); as [`read_pairs_with`].
 pub fn load_pairs_with(path: impl AsRef<Path>, input: &TableInput) -> Result<PairTable, ReadError> {
     let path = path.as_ref();
-    let (file, shown) = open_table(path, "a .csv file of pairs (r, s)")?;
-    read_pairs_with(
-        &shown,
-        std::io::BufReader::new(file),
-        &table_input_for(path, input),
-    )
+    let source = open_table(path, "a .csv file of pairs (r, s)", input)?;
+    read_pairs_with(&source.shown, source.reader, &source.input)
 }
 
 /// Reads a list of pairs (columns `r`, `s`) from a CSV stream; `file` names it in errors.

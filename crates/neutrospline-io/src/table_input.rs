@@ -1,5 +1,5 @@
 //! [`TableInput`]: how a CSV table is read (delimiter, decimal comma, which columns are which
-//! and which are left out), the options of every command that reads one (`eval`, `check`,
+//! and which are left out, the sheet of a spreadsheet), the options of every command that reads one (`eval`, `check`,
 //! `fit`, `query`, `plot --data`), defined once here for every front end.
 
 use neutrospline::options::{
@@ -38,6 +38,9 @@ pub struct TableInput {
     /// `ignore-unknown-columns`: leave out every column whose heading names no column of the
     /// table, instead of refusing the file.
     pub ignore_unknown_columns: bool,
+    /// `sheet`: the sheet of a spreadsheet (`.xlsx`, `.xlsm`, `.xls`, `.ods`) to read; `None`
+    /// reads the first. Refused for a CSV file, which has no sheets.
+    pub sheet: Option<String>,
 }
 
 impl OptionSet for TableInput {
@@ -75,6 +78,13 @@ impl OptionSet for TableInput {
             help: "Leave out every column whose heading is not a known column, instead of \
                    refusing the file",
         },
+        OptionSpec {
+            name: "sheet",
+            kind: ValueKind::Text,
+            value_name: "NAME",
+            help: "The sheet of a .xlsx, .xlsm, .xls or .ods spreadsheet to read (default: the \
+                   first)",
+        },
     ];
 
     fn set(&mut self, name: &str, value: OptionValue) -> Result<(), OptionError> {
@@ -111,6 +121,17 @@ impl OptionSet for TableInput {
                 self.ignore_columns = list(&text).map(str::to_owned).collect();
             }
             ("ignore-unknown-columns", Read::Flag(on)) => self.ignore_unknown_columns = on,
+            ("sheet", Read::Text(text)) => {
+                let name = text.trim();
+                if name.is_empty() {
+                    return Err(OptionError::OutOfRange {
+                        name: spec.name,
+                        given,
+                        rule: "a sheet's name is not empty",
+                    });
+                }
+                self.sheet = Some(name.to_owned());
+            }
             (other, read) => unreachable!("option {other} read as {read:?}"),
         }
         Ok(())
@@ -130,6 +151,7 @@ impl OptionSet for TableInput {
             ),
             "ignore-columns" => joined(self.ignore_columns.clone()),
             "ignore-unknown-columns" => Some(self.ignore_unknown_columns.to_string()),
+            "sheet" => self.sheet.clone(),
             other => unreachable!("option {other} has no value"),
         })
     }

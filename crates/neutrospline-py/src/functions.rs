@@ -3,9 +3,10 @@
 
 use std::path::PathBuf;
 
+use neutrospline::options::OptionSet;
 use neutrospline::{AxisSet, AxisSetName, Degrees, PointRelation};
 use neutrospline_exchange::{ImportReport, ImportRequest, SourceFormat};
-use neutrospline_io::{Format, Kind, KnotSpec, Model, ReadOptions};
+use neutrospline_io::{Format, Kind, KnotSpec, Model, ReadOptions, TableInput};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 
@@ -25,8 +26,11 @@ pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
     }
 }
 
-/// Loads a model file: TOML, JSON or CSV by the extension, checked as `neutrospline check`
-/// checks it. Returns a `Bezier`, `BSpline`, `Nurbs` or `Surface`; an invalid file raises
+/// Loads a model file: TOML, JSON, CSV (or TSV) or a spreadsheet's sheet (`.xlsx`, `.xlsm`,
+/// `.xls`, `.ods`) by the extension, checked as `neutrospline check` checks it. A table is
+/// read as the keyword options `sheet`, `columns` (`"truth=mu,falsity=nu"`),
+/// `ignore_columns`, `ignore_unknown_columns`, `delimiter` and `decimal_comma` say (the
+/// command line's `--sheet`, ...). Returns a `Bezier`, `BSpline`, `Nurbs` or `Surface`; an invalid file raises
 /// `ModelError` with the command line's message (file, line, field, value and rule).
 ///
 /// A drawing (`.svg`, `.dxf`) is imported as `neutrospline import` imports it: the result is
@@ -102,13 +106,25 @@ pub fn load(
         }
         return import_drawing(py, &path, source, options);
     }
-    if let Some(extra) = options.and_then(|o| o.keys().iter().next()) {
-        return Err(invalid_at(
-            extra.extract::<String>()?,
-            "is an option of a drawing (.svg, .dxf), not of a model file",
-        ));
+    // The other keyword options say how a table is read (the command line's `--sheet`,
+    // `--columns`, `--decimal-comma`, ...: neutrospline-io's `TableInput`).
+    if let Some(options) = options {
+        for key in options.keys() {
+            let name = key.extract::<String>()?;
+            let known = TableInput::OPTIONS
+                .iter()
+                .any(|spec| spec.name == name.replace('_', "-"));
+            if !known {
+                return Err(invalid_at(
+                    name,
+                    "is an option of a drawing (.svg, .dxf), not of a model file (the options \
+                     of a table are table_options())",
+                ));
+            }
+        }
     }
     let mut read = ReadOptions::default();
+    crate::options::set_from_kwargs(&mut read.table, options)?;
     if let Some(kind) = kind {
         read.kind = Some(Kind::from_name(kind).ok_or_else(|| {
             invalid_at(
@@ -197,6 +213,17 @@ fn report_dict<'py>(py: Python<'py>, report: &ImportReport) -> PyResult<Bound<'p
 #[pyfunction]
 pub fn import_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
     crate::options::table::<ImportRequest>(py)
+}
+
+/// The options of `load` for a table (CSV, TSV, a spreadsheet's sheet), from the file library
+/// that defines them (neutrospline-io's `TableInput`), as `fit_options()` lists the fit's.
+///
+/// >>> import neutrospline as ns
+/// >>> [o["name"] for o in ns.table_options()]
+/// ['delimiter', 'decimal_comma', 'columns', 'ignore_columns', 'ignore_unknown_columns', 'sheet']
+#[pyfunction]
+pub fn table_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
+    crate::options::table::<TableInput>(py)
 }
 
 /// A knot option: a rule name, or the knot values.

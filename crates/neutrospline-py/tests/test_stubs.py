@@ -61,7 +61,8 @@ def test_every_public_name_is_in_the_stub():
             if name == "fit":
                 assert_options_spelled_out(stub, runtime, neutrospline.fit_options(), name)
             elif name == "load":
-                assert_options_spelled_out(stub, runtime, neutrospline.import_options(), name)
+                options = neutrospline.import_options() + neutrospline.table_options()
+                assert_options_spelled_out(stub, runtime, options, name)
             else:
                 assert stub == runtime, name
 

@@ -23,7 +23,8 @@ fn every_reader_names_the_directory_and_what_it_reads() {
         assert_eq!(
             message(load(&p, &ReadOptions::default()).map(drop)),
             format!(
-                "{}: cannot read: it is a directory (give a .csv, .tsv, .toml or .json file)",
+                "{}: cannot read: it is a directory (give a .csv, .tsv, .toml or .json file, or a \
+                 spreadsheet)",
                 shown(&p)
             )
         );

@@ -6,4 +6,5 @@
 mod directories;
 mod roundtrip;
 mod schema;
+mod spreadsheets;
 mod write;
