@@ -526,7 +526,7 @@ fn hostile_directory_and_unreadable_paths() {
                 Some(1),
                 format!(
                     "error: {name}: cannot read: it is a directory (give a .csv, .tsv, .toml or .json \
-                     file)\n"
+                     file, or a spreadsheet)\n"
                 )
                 .as_str()
             )
