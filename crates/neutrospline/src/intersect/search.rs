@@ -8,7 +8,7 @@ use super::{
     nearest_failure, width, Contact, IntersectError, Intersection, CROWD, MAX_DEPTH, NEAR, SAME,
     SMALL, TANGENT_SINE,
 };
-use crate::curve::{Derivative, EvalError};
+use crate::curve::{Derivative, EvalError, Evaluate};
 use crate::derivative::CurveDerivative;
 use crate::nearest::NearestPoint;
 
@@ -348,6 +348,18 @@ where
                 })
                 .filter(|r| r.t - r.s > SAME * wa.max(1e-300) * 1e3)
                 .collect();
+            // A root near the diagonal that rounding cannot tell from it is no loop: at a cusp
+            // `C(1/2 - h)` and `C(1/2 + h)` agree to rounding for h up to about 1e-5, where
+            // the tangents are nearly opposite. Newton's step on `A(s) - A(t)` moves the
+            // parameters by `|J^-1| rounding`, `J = [A'(s), -A'(t)]`, `|J^-1| <= |J|_F / |det J|`;
+            // a root whose `t - s` is within that uncertainty is dropped.
+            let mut kept = Vec::with_capacity(roots.len());
+            for r in roots {
+                if r.t - r.s > NEAR * wa || self.apart_beyond_rounding(&r)? {
+                    kept.push(r);
+                }
+            }
+            roots = kept;
         }
         roots.sort_by(|p, q| p.s.total_cmp(&q.s).then(p.t.total_cmp(&q.t)));
         // Each group: its roots, and whether two of them are distinct points joined because the
@@ -412,6 +424,18 @@ where
                 .then(p.parameter_b.total_cmp(&q.parameter_b))
         });
         Ok(found)
+    }
+
+    /// Whether a self-intersection root `r` (`r.s < r.t`) is farther from the diagonal than
+    /// the rounding of its parameters: `t - s > 16 eps scale |J|_F / |det J|` with
+    /// `J = [A'(s), -A'(t)]` (see [`Search::collect`]).
+    fn apart_beyond_rounding(&self, r: &Root) -> Result<bool, EvalError> {
+        let p = self.da.evaluate(r.s)?.position;
+        let q = self.da.evaluate(r.t)?.position;
+        let det = (p[0] * q[1] - p[1] * q[0]).abs();
+        let frobenius = (p[0] * p[0] + p[1] * p[1] + q[0] * q[0] + q[1] * q[1]).sqrt();
+        let unsure = 16.0 * f64::EPSILON * self.scale * frobenius;
+        Ok(r.t - r.s > 0.0 && (r.t - r.s) * det > unsure)
     }
 
     /// Whether roots `p` and `q` (`p.s <= q.s`) are one contact (see [`Search::collect`]),

@@ -446,3 +446,32 @@ fn intersections_report_overlaps_that_do_not_align() {
         Err(IntersectError::Overlap { .. })
     ));
 }
+
+/// The cubic (0, 0), (1 + d, 1), (-d, 1), (1, 0): for d = 0 a cusp at t = 1/2 and no
+/// self-intersection (x(t) = 3t(1-t)^2 + t^3 has x' = 3(1 - 2t)^2 >= 0, so x is increasing and
+/// C(s) = C(t) only for s = t), although C(1/2 - h) and C(1/2 + h) agree to rounding for h up
+/// to about 1e-5 (8 h^3 apart); for d > 0 a loop, whose crossing has y(s) = y(t) with
+/// y = 3t(1 - t), so t = 1 - s: the same point at parameters symmetric about 1/2.
+#[test]
+fn a_cusp_is_no_self_intersection_and_a_loop_is_one() {
+    let cubic = |d: f64| {
+        let degrees = Degrees::new(0.5, 0.25, 0.125).unwrap();
+        Bezier::new(
+            [[0.0, 0.0], [1.0 + d, 1.0], [-d, 1.0], [1.0, 0.0]]
+                .into_iter()
+                .map(|p| ControlPoint::new(p, degrees))
+                .collect(),
+        )
+        .unwrap()
+    };
+    assert_eq!(self_intersections(&cubic(0.0)).unwrap(), []);
+    for d in [1e-2, 0.3] {
+        let found = self_intersections(&cubic(d)).unwrap();
+        assert_eq!(found.len(), 1, "d = {d}: {found:?}");
+        let (s, t) = (found[0].parameter_a, found[0].parameter_b);
+        // Symmetric about 1/2, the same point.
+        assert!((s + t - 1.0).abs() < 1e-12, "d = {d}: {s} {t}");
+        let (p, q) = (found[0].point_a.position, found[0].point_b.position);
+        assert!((p[0] - q[0]).abs() < 1e-12 && (p[1] - q[1]).abs() < 1e-12);
+    }
+}
