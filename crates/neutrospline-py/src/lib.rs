@@ -15,6 +15,7 @@ mod curve;
 mod errors;
 mod fitting;
 mod functions;
+mod inline;
 mod model;
 mod options;
 mod shape;
@@ -47,6 +48,7 @@ fn _neutrospline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fitting::figure_options, m)?)?;
     m.add_function(wrap_pyfunction!(functions::import_options, m)?)?;
     m.add_function(wrap_pyfunction!(functions::table_options, m)?)?;
+    m.add_function(wrap_pyfunction!(inline::inline, m)?)?;
     m.add_function(wrap_pyfunction!(cli::_run_cli, m)?)?;
     m.add("instruction_set", neutrospline::batch::instruction_set())?;
     // The workspace's version (Cargo.toml), which is also the wheel's.

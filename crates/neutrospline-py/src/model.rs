@@ -241,7 +241,7 @@ pub fn save(model: &Model, path: &Path) -> PyResult<()> {
 /// The figure asked for by `request` (the plot crate's, as `neutrospline plot` reads it):
 /// the view (`all` unless given), the options, the model's description as the caption unless
 /// one is given.
-fn prepare(model: &Model, request: &FigureRequest) -> PyResult<(PlotModel, View, PlotOptions)> {
+pub fn prepare(model: &Model, request: &FigureRequest) -> PyResult<(PlotModel, View, PlotOptions)> {
     let options = if model.shape().is_surface() {
         request.surface_plot_options()
     } else {

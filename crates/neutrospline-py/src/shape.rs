@@ -11,7 +11,7 @@ use neutrospline_io::Model;
 use neutrospline_plot::FigureRequest;
 use pyo3::exceptions::PyDeprecationWarning;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyBytes, PyDict};
 
 use crate::errors::invalid;
 use crate::model;
@@ -127,9 +127,16 @@ impl BaseShape {
         model::save_figure(py, self.model()?, &path, &figure_request(view, options)?)
     }
 
-    /// The `all` view, shown inline by Jupyter.
-    fn _repr_svg_(&self, py: Python<'_>) -> PyResult<String> {
-        model::svg(py, self.model()?, &FigureRequest::default())
+    /// The inline figure as SVG, shown by Jupyter: the `all` view at a notebook size,
+    /// responsive (`width="100%"`), as `inline()` sets it; `None` when it asks for PNG only.
+    fn _repr_svg_(&self, py: Python<'_>) -> PyResult<Option<String>> {
+        crate::inline::svg(py, self.model()?)
+    }
+
+    /// The inline figure as PNG, for the programs that show no SVG (an export to PDF);
+    /// `None` when `inline()` asks for SVG only.
+    fn _repr_png_<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyBytes>>> {
+        crate::inline::png(py, self.model()?)
     }
 
     /// Equal models (and derivative orders); never equal to anything else.
