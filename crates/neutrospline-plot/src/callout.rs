@@ -123,8 +123,8 @@ impl Keep {
                     .hits_segment(o.a, o.b)
             })
             .count() as f64;
-        rect.outside(&self.bounds) * 100.0
-            + self.avoid.iter().map(|o| o.overlap(rect)).sum::<f64>() * 100.0
+        rect.outside(&self.bounds) * OUTSIDE
+            + self.avoid.iter().map(|o| o.overlap(rect)).sum::<f64>() * OVER_LEGEND
             + hits * per_hit
     }
 }
@@ -156,7 +156,6 @@ pub(crate) fn draw_callouts(
         }
     }
     let at: Vec<(f64, f64)> = groups.iter().map(|(k, _)| at[*k]).collect();
-    let compact = at.len() > MAX_FULL_CALLOUTS;
     let contents: Vec<Content> = groups
         .iter()
         .map(|(k, members)| Content {
@@ -164,42 +163,42 @@ pub(crate) fn draw_callouts(
             deg: deg[*k],
         })
         .collect();
-    let dims = Dims::new(theme, compact, &contents);
     let r = theme.marker_r();
     let marker_boxes: Vec<Rect> = at
         .iter()
         .map(|p| Rect::new(p.0 - r, p.1 - r, 2.0 * r, 2.0 * r))
         .collect();
-    let mut placed: Vec<Rect> = Vec::new();
-    svg.begin_group("callouts");
-    for (i, (p, c)) in at.iter().zip(&contents).enumerate() {
-        let (w, h) = dims.size(c);
-        let base = r + 1.2 * theme.gap();
-        let mut best: Option<(f64, Rect, f64)> = None;
-        for dist in [1.0, 2.0, 3.5, 5.5] {
-            for k in 0..16 {
-                let a = (k as f64) * std::f64::consts::PI / 8.0 - std::f64::consts::FRAC_PI_2;
-                let dir = (a.cos(), a.sin());
-                let d = base * dist;
-                let s = support(dir, w, h);
-                let cx = p.0 + dir.0 * (d + s);
-                let cy = p.1 + dir.1 * (d + s);
-                let rect = Rect::new(cx - w / 2.0, cy - h / 2.0, w, h);
-                let mut score = keep.cost(&rect, 2.0e4);
-                score += placed.iter().map(|o| o.overlap(&rect)).sum::<f64>() * 300.0;
-                score += marker_boxes
-                    .iter()
-                    .enumerate()
-                    .filter(|(j, m)| *j != i && m.overlap(&rect) > 0.0)
-                    .count() as f64
-                    * 4.0e5;
-                score += d * 30.0 + (dir.1 + 1.0) * 20.0;
-                if best.as_ref().is_none_or(|b| score < b.0) {
-                    best = Some((score, rect, d));
-                }
-            }
+    let base = r + 1.2 * theme.gap();
+    // Full callouts (name, bars and values) where they fit clear of the legend, the markers
+    // and each other; compact ones (name and three bars) where they fit better or where
+    // there are many points.
+    let placed = |compact: bool| {
+        let dims = Dims::new(theme, compact, &contents);
+        let sizes: Vec<(f64, f64)> = contents.iter().map(|c| dims.size(c)).collect();
+        let placement = Placement {
+            at: &at,
+            sizes: &sizes,
+            marker_boxes: &marker_boxes,
+            keep,
+            base,
+        };
+        let rects = placement.place();
+        let conflicts = placement.conflicts(&rects);
+        (dims, rects, conflicts)
+    };
+    let (dims, rects, conflicts) = placed(at.len() > MAX_FULL_CALLOUTS);
+    let (dims, rects) = if conflicts > 0 && !dims.compact {
+        let compact = placed(true);
+        if compact.2 < conflicts {
+            (compact.0, compact.1)
+        } else {
+            (dims, rects)
         }
-        let Some((_, rect, d)) = best else { continue };
+    } else {
+        (dims, rects)
+    };
+    svg.begin_group("callouts");
+    for ((p, c), (rect, d)) in at.iter().zip(&contents).zip(rects) {
         if d > base * 1.01 {
             // Leader from the marker's edge to the nearest point of the box.
             let q = (
@@ -215,9 +214,147 @@ pub(crate) fn draw_callouts(
             );
         }
         draw_box(svg, theme, &dims, c, rect);
-        placed.push(rect);
     }
     svg.end_group();
+}
+
+/// The badness of a callout over another point's marker: it hides data, so it is taken only
+/// when every other place does too.
+const OVER_MARKER: f64 = 1.0e8;
+/// The badness of a callout outside its bounds (the frame: over the title, the ticks or past
+/// the canvas), per square pixel.
+const OUTSIDE: f64 = 1.0e3;
+/// The badness of a callout over the legend, per square pixel.
+const OVER_LEGEND: f64 = 1.0e4;
+/// The badness of two callouts over each other, per square pixel.
+const OVER_CALLOUT: f64 = 3.0e3;
+/// The badness of a callout crossing a segment of the curve or the control polygon.
+const OVER_SEGMENT: f64 = 2.0e4;
+/// The badness of a leader crossing a segment of the curve or the control polygon.
+const LEADER_ACROSS: f64 = 5.0e3;
+/// Rounds of improvement after the first, greedy placement.
+const ROUNDS: usize = 3;
+
+/// Where callouts go: around each point at `at` (pixels), a box of its size, clear of the
+/// other points' markers, the legend, the other boxes and the drawing.
+struct Placement<'a> {
+    at: &'a [(f64, f64)],
+    sizes: &'a [(f64, f64)],
+    marker_boxes: &'a [Rect],
+    keep: &'a Keep,
+    /// The distance of the nearest box from its point's centre.
+    base: f64,
+}
+
+impl Placement<'_> {
+    /// Each box and its distance from its point: first placed greedily in the points' order,
+    /// then each placed again, the others fixed, while that lowers its badness (a box placed
+    /// early no longer blocks a later one's only clear place).
+    fn place(&self) -> Vec<(Rect, f64)> {
+        let mut placed: Vec<(Rect, f64, f64)> = Vec::with_capacity(self.at.len());
+        for i in 0..self.at.len() {
+            let others: Vec<Rect> = placed.iter().map(|(rect, _, _)| *rect).collect();
+            placed.push(self.best(i, &others));
+        }
+        for _ in 0..ROUNDS {
+            let mut moved = false;
+            for i in 0..placed.len() {
+                let others: Vec<Rect> = placed
+                    .iter()
+                    .enumerate()
+                    .filter(|(j, _)| *j != i)
+                    .map(|(_, (rect, _, _))| *rect)
+                    .collect();
+                let now = self.cost(i, &placed[i].0, placed[i].1, &others);
+                let candidate = self.best(i, &others);
+                if candidate.2 < now - 1e-9 {
+                    placed[i] = candidate;
+                    moved = true;
+                }
+            }
+            if !moved {
+                break;
+            }
+        }
+        placed.into_iter().map(|(rect, d, _)| (rect, d)).collect()
+    }
+
+    /// How many boxes of `rects` lie over the legend, over another point's marker or over
+    /// another box.
+    fn conflicts(&self, rects: &[(Rect, f64)]) -> usize {
+        rects
+            .iter()
+            .enumerate()
+            .filter(|(i, (rect, _))| {
+                self.keep.avoid.iter().any(|a| a.overlap(rect) > 0.0)
+                    || self
+                        .marker_boxes
+                        .iter()
+                        .enumerate()
+                        .any(|(j, m)| j != *i && m.overlap(rect) > 0.0)
+                    || rects
+                        .iter()
+                        .enumerate()
+                        .any(|(j, (o, _))| j != *i && o.overlap(rect) > 0.0)
+            })
+            .count()
+    }
+
+    /// The least bad box for point `i` with `others` placed: its rectangle, distance and
+    /// badness.
+    fn best(&self, i: usize, others: &[Rect]) -> (Rect, f64, f64) {
+        let (p, (w, h)) = (self.at[i], self.sizes[i]);
+        let mut best: Option<(Rect, f64, f64)> = None;
+        for dist in [1.0, 2.0, 3.5, 5.5, 8.0, 11.0, 15.0] {
+            for k in 0..16 {
+                let a = (k as f64) * std::f64::consts::PI / 8.0 - std::f64::consts::FRAC_PI_2;
+                let dir = (a.cos(), a.sin());
+                let d = self.base * dist;
+                let s = support(dir, w, h);
+                let cx = p.0 + dir.0 * (d + s);
+                let cy = p.1 + dir.1 * (d + s);
+                let rect = Rect::new(cx - w / 2.0, cy - h / 2.0, w, h);
+                let score = self.cost(i, &rect, d, others) + (dir.1 + 1.0) * 20.0;
+                if best.as_ref().is_none_or(|b| score < b.2) {
+                    best = Some((rect, d, score));
+                }
+            }
+        }
+        best.expect("candidates are tried")
+    }
+
+    /// The badness of `rect` at distance `d` as point `i`'s box.
+    fn cost(&self, i: usize, rect: &Rect, d: f64, others: &[Rect]) -> f64 {
+        let over_markers = self
+            .marker_boxes
+            .iter()
+            .enumerate()
+            .filter(|(j, m)| *j != i && m.overlap(rect) > 0.0)
+            .count() as f64;
+        // The leader from the point to the box's nearest point, through other boxes.
+        let p = self.at[i];
+        let q = (
+            p.0.clamp(rect.x, rect.right()),
+            p.1.clamp(rect.y, rect.bottom()),
+        );
+        let leader_through = others.iter().filter(|o| o.hits_segment(p, q)).count() as f64;
+        // ... and across the curve and the polygon (the segments at the point itself aside).
+        let leader_across = if self.at.len() > 1 && d > self.base * 1.01 {
+            self.keep
+                .obstacles
+                .iter()
+                .filter(|o| o.a != p && o.b != p && segments_cross(p, q, o.a, o.b))
+                .count() as f64
+        } else {
+            0.0
+        };
+        self.keep.cost(rect, OVER_SEGMENT)
+            + others.iter().map(|o| o.overlap(rect)).sum::<f64>() * OVER_CALLOUT
+            + over_markers * OVER_MARKER
+            + leader_through * OVER_SEGMENT
+            + leader_across * LEADER_ACROSS
+            + d * 30.0
+    }
 }
 
 fn draw_box(svg: &mut Painter, theme: &Theme, dims: &Dims, c: &Content, rect: Rect) {
@@ -360,6 +497,16 @@ pub(crate) struct Obstacle {
     pub a: (f64, f64),
     pub b: (f64, f64),
     pub clearance: f64,
+}
+
+/// Whether the segments `a b` and `c d` cross (touching counts; parallel ones never do).
+fn segments_cross(a: (f64, f64), b: (f64, f64), c: (f64, f64), d: (f64, f64)) -> bool {
+    let side = |p: (f64, f64), q: (f64, f64), r: (f64, f64)| {
+        (q.0 - p.0) * (r.1 - p.1) - (q.1 - p.1) * (r.0 - p.0)
+    };
+    let (d1, d2) = (side(c, d, a), side(c, d, b));
+    let (d3, d4) = (side(a, b, c), side(a, b, d));
+    d1 * d2 <= 0.0 && d3 * d4 <= 0.0 && (d1 != d2 || d3 != d4) && !(d1 == 0.0 && d2 == 0.0)
 }
 
 /// Obstacles along a polyline.

@@ -220,3 +220,98 @@ fn plot_usage_errors_exit_2_and_keep_old_output() {
     assert_eq!(fs::read_to_string(&target).unwrap(), "old figure");
     assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 2, "stray files");
 }
+
+/// The numbers of `name="..."` attributes of an SVG element's text.
+fn svg_numbers(element: &str, names: &[&str]) -> Vec<f64> {
+    names
+        .iter()
+        .map(|name| {
+            let key = format!(" {name}=\"");
+            let at = element
+                .find(&key)
+                .unwrap_or_else(|| panic!("{name} in {element}"))
+                + key.len();
+            let end = at + element[at..].find('"').unwrap();
+            element[at..end].parse().unwrap()
+        })
+        .collect()
+}
+
+/// The elements `<TAG ...>` of `svg` whose attributes hold `marker`.
+fn svg_elements<'s>(svg: &'s str, tag: &str, marker: &str) -> Vec<&'s str> {
+    svg.match_indices(&format!("<{tag} "))
+        .map(|(at, _)| &svg[at..at + svg[at..].find('>').unwrap()])
+        .filter(|element| element.contains(marker))
+        .collect()
+}
+
+/// Issue 28: the `controls` view of examples/bspline.toml drew B6's callout under the legend
+/// and B4's over the B6 point. For every example curve, at the default size and at a notebook's
+/// (800 x 600): no callout box over the legend, over a control point's marker or over another
+/// callout.
+#[test]
+fn controls_callouts_keep_clear_of_the_legend_the_markers_and_each_other() {
+    let dir = tempfile::tempdir().unwrap();
+    let overlap = |a: &[f64], b: &[f64]| {
+        let w = (a[0] + a[2]).min(b[0] + b[2]) - a[0].max(b[0]);
+        let h = (a[1] + a[3]).min(b[1] + b[3]) - a[1].max(b[1]);
+        w > 0.5 && h > 0.5
+    };
+    let mut checked = 0;
+    for name in [
+        "example1.toml",
+        "bspline.toml",
+        "fuzzy-bspline.toml",
+        "nurbs-circle.toml",
+        "helix3d.toml",
+    ] {
+        for size in [&[][..], &["--width", "800", "--height", "600"]] {
+            let path = example(name).display().to_string();
+            let example = name;
+            let mut args = vec!["plot", path.as_str(), "--view", "controls", "-o", "c.svg"];
+            args.extend(size);
+            crate::util::ok(dir.path(), &args);
+            let svg = std::fs::read_to_string(dir.path().join("c.svg")).unwrap();
+            let boxes: Vec<Vec<f64>> = svg_elements(&svg, "rect", "class=\"callout\"")
+                .iter()
+                .map(|e| svg_numbers(e, &["x", "y", "width", "height"]))
+                .collect();
+            assert!(!boxes.is_empty(), "{example} {size:?}: no callouts");
+            let legend_at = svg.find("<g class=\"legend\">").expect("a legend");
+            let legend = svg_numbers(
+                svg_elements(&svg[legend_at..], "rect", "")[0],
+                &["x", "y", "width", "height"],
+            );
+            let markers: Vec<Vec<f64>> = svg_elements(&svg, "circle", "class=\"control-point\"")
+                .iter()
+                .map(|e| {
+                    let [cx, cy, r] = svg_numbers(e, &["cx", "cy", "r"])[..] else {
+                        unreachable!()
+                    };
+                    vec![cx - r, cy - r, 2.0 * r, 2.0 * r]
+                })
+                .collect();
+            assert!(!markers.is_empty(), "{example}: no markers");
+            for (i, b) in boxes.iter().enumerate() {
+                assert!(
+                    !overlap(b, &legend),
+                    "{example} {size:?}: callout {b:?} over the legend"
+                );
+                for m in &markers {
+                    assert!(
+                        !overlap(b, m),
+                        "{example} {size:?}: callout {b:?} over marker {m:?}"
+                    );
+                }
+                for other in &boxes[i + 1..] {
+                    assert!(
+                        !overlap(b, other),
+                        "{example} {size:?}: callouts {b:?} {other:?}"
+                    );
+                }
+            }
+            checked += boxes.len();
+        }
+    }
+    assert!(checked >= 30, "{checked}");
+}

@@ -38,31 +38,36 @@ impl Figure for Controls {
 
     fn curve_2d(&self, ctx: &Ctx) -> Drawing {
         let th = &ctx.theme;
-        ctx.figure(curve_legend(th), LegendPlace::Column, |svg, plot, _| {
-            let axes = ctx.axes2(plot, 6.0 * th.callout(), Scale::Equal);
-            axes.draw(svg, th);
-            let (curve, ctrl) = (axes.pixels(&ctx.curve), axes.pixels(ctx.controls));
-            axes.begin_clip(svg);
-            svg.polyline(
-                &curve,
-                &Style::stroke(theme::SHADOW, th.crisp_w()).with_class("curve crisp"),
-            );
-            svg.polyline(
-                &ctrl,
-                &Style::stroke(theme::CRISP, th.polygon_w())
-                    .with_dash(th.dash().0, th.dash().1)
-                    .with_class("control-polygon"),
-            );
-            for p in &ctrl {
-                svg.circle(
-                    *p,
-                    th.marker_r(),
-                    &marker_style(th, Color::WHITE).with_class("control-point"),
+        ctx.figure(
+            curve_legend(th),
+            LegendPlace::Column,
+            |svg, plot, legend| {
+                let axes = ctx.axes2(plot, 6.0 * th.callout(), Scale::Equal);
+                axes.draw(svg, th);
+                let (curve, ctrl) = (axes.pixels(&ctx.curve), axes.pixels(ctx.controls));
+                axes.begin_clip(svg);
+                svg.polyline(
+                    &curve,
+                    &Style::stroke(theme::SHADOW, th.crisp_w()).with_class("curve crisp"),
                 );
-            }
-            svg.end_group();
-            callouts(svg, ctx, &curve, &ctrl, axes.frame, None);
-        })
+                svg.polyline(
+                    &ctrl,
+                    &Style::stroke(theme::CRISP, th.polygon_w())
+                        .with_dash(th.dash().0, th.dash().1)
+                        .with_class("control-polygon"),
+                );
+                for p in &ctrl {
+                    svg.circle(
+                        *p,
+                        th.marker_r(),
+                        &marker_style(th, Color::WHITE).with_class("control-point"),
+                    );
+                }
+                svg.end_group();
+                // A box may reach past the frame into the margin, never over the legend.
+                callouts(svg, ctx, &curve, &ctrl, axes.frame, legend);
+            },
+        )
     }
 
     fn curve_3d(&self, ctx: &Ctx) -> Drawing {
