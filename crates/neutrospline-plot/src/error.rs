@@ -97,9 +97,32 @@ pub enum PlotError {
     /// The fuzzy position of the curve cannot be cut (the core's message).
     #[error("{0}")]
     Fuzzy(String),
-    /// Data points given to a surface, or the `data` view asked for of a surface.
-    #[error("the data view draws curves; surfaces have no data overlay")]
-    DataOnSurface,
+    /// Parameters of the other kind of model: curve parameters `t` for a surface, or
+    /// surface parameters `(u, v)` for a curve.
+    #[error("the data points' {given} do not fit a {model}")]
+    ParameterKind {
+        /// What was given.
+        given: &'static str,
+        /// `"curve"` or `"surface"`.
+        model: &'static str,
+    },
+    /// A data point's surface parameter outside the surface's domain.
+    #[error(
+        "data point {index}: parameter {channel} = {value} is outside the surface's domain \
+         [{start}, {end}] in {channel}"
+    )]
+    SurfaceParameterOutsideDomain {
+        /// Index of the data point (0-based).
+        index: usize,
+        /// `"u"` or `"v"`.
+        channel: &'static str,
+        /// The parameter given.
+        value: f64,
+        /// Start of the domain in that direction.
+        start: f64,
+        /// End of the domain in that direction.
+        end: f64,
+    },
     /// A data overlay without any point.
     #[error("the data overlay has no data points (give at least one)")]
     EmptyData,

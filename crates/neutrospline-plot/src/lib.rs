@@ -106,7 +106,7 @@
 //! curves in the 3-D box with the curve's shadow on the floor. The control points are not
 //! drawn, nor are the points named: past 200 points the markers shrink, so that thousands
 //! stay readable. Its default title is "{label} fitted to data". It is an error for a model
-//! without data ([`PlotError::NoData`]) and for a surface ([`PlotError::DataOnSurface`]);
+//! without data ([`PlotError::NoData`]); for a surface it draws the fitted mesh with the data over it;
 //! the other views ignore the data.
 //!
 //! ```

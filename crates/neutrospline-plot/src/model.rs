@@ -562,12 +562,11 @@ impl PlotModel {
     /// infinite, [`PlotError::DataDegreeRange`] for a degree outside \[0, 1\], and
     /// [`PlotError::ParameterOutsideDomain`] for a parameter outside the curve's domain.
     pub fn with_data(mut self, data: DataOverlay) -> Result<PlotModel, PlotError> {
-        let domain = match &self.curve {
-            Geometry::Surface(_) => return Err(PlotError::DataOnSurface),
-            Geometry::Samples(_) => SAMPLES_DOMAIN,
-            Geometry::Curve(c) => c.domain(),
-        };
-        self.data = Some(data.checked(self.dimension, domain)?);
+        self.data = Some(match &self.curve {
+            Geometry::Surface(s) => data.checked_on_surface(s.domain())?,
+            Geometry::Samples(_) => data.checked(self.dimension, SAMPLES_DOMAIN)?,
+            Geometry::Curve(c) => data.checked(self.dimension, c.domain())?,
+        });
         Ok(self)
     }
 
@@ -579,7 +578,8 @@ impl PlotModel {
     /// The data points and, for each, the curve point it was fitted to: the curve at its
     /// parameter, else the curve's global nearest point to it (the core's `NearestPoint`; for a
     /// model given as samples, the nearest point of the polyline).
-    /// `None` without data or for a surface.
+    /// For a surface: the surface at each point's `(u, v)`, else its global nearest point
+    /// (the core's `SurfaceProjector`). `None` without data.
     pub(crate) fn residuals(&self) -> Result<Option<Residuals>, PlotError> {
         let Some(data) = &self.data else {
             return Ok(None);
@@ -591,7 +591,9 @@ impl PlotModel {
             .map(|(&pos, &deg)| Pt { pos, deg })
             .collect();
         let feet = match (&self.curve, &data.parameters) {
-            (Geometry::Surface(_), _) => return Ok(None),
+            (Geometry::Surface(s), _) => {
+                surface_feet(s, &points, data.surface_parameters.as_deref())?
+            }
             (Geometry::Curve(c), Some(ts)) => ts
                 .iter()
                 .enumerate()
@@ -734,6 +736,34 @@ impl<const D: usize> From<&Bezier<D>> for PlotModel {
             label: BEZIER_LABEL.to_string(),
             data: None,
             band: None,
+        }
+    }
+}
+
+/// The feet of data `points` on surface `s`: the surface at `uv[k]` when given, else the
+/// surface's point nearest to point `k`.
+fn surface_feet(s: &Surface, points: &[Pt], uv: Option<&[[f64; 2]]>) -> Result<Vec<Pt>, PlotError> {
+    let foot = |p: neutrospline::CurvePoint<3>| Pt {
+        pos: p.position,
+        deg: p.degrees.to_array(),
+    };
+    match uv {
+        Some(uv) => uv
+            .iter()
+            .map(|&[u, v]| Ok(foot(s.evaluate(u, v)?)))
+            .collect(),
+        None => {
+            let projector = neutrospline::SurfaceProjector::new(s);
+            points
+                .iter()
+                .enumerate()
+                .map(|(index, p)| {
+                    projector
+                        .nearest(p.pos)
+                        .map(|n| foot(n.point))
+                        .map_err(|source| PlotError::Nearest { index, source })
+                })
+                .collect()
         }
     }
 }

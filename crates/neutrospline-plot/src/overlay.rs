@@ -52,14 +52,17 @@ pub struct DataOverlay {
     pub degrees: Vec<[f64; 3]>,
     /// The curve parameter of each point, when known (from the fit).
     pub parameters: Option<Vec<f64>>,
+    /// The surface parameters `(u, v)` of each point, when known (from a surface fit).
+    pub surface_parameters: Option<Vec<[f64; 2]>>,
     /// The degree that colours the markers.
     pub color_by: DegreeKind,
 }
 
 impl DataOverlay {
     /// The data points of a data file ([`neutrospline_io::DataTable`]) for the `data` view,
-    /// coloured by `color_by`, with whiskers at the table's `parameter` column when it has one
-    /// (else to the nearest point of the curve): what `neutrospline plot --data` and the
+    /// coloured by `color_by`, with whiskers at the table's `parameter` column (or its `u`,
+    /// `v` columns, for a surface) when it has one (else to the nearest point of the curve or
+    /// surface): what `neutrospline plot --data` and the
     /// studio draw.
     pub fn from_table(table: &neutrospline_io::DataTable, color_by: DegreeKind) -> DataOverlay {
         let overlay = DataOverlay::new(
@@ -67,8 +70,12 @@ impl DataOverlay {
             table.degrees().iter().map(|d| d.to_array()).collect(),
         )
         .with_color_by(color_by);
-        match table.parameters() {
+        let overlay = match table.parameters() {
             Some(parameters) => overlay.with_parameters(parameters.to_vec()),
+            None => overlay,
+        };
+        match table.surface_parameters() {
+            Some(uv) => overlay.with_surface_parameters(uv.to_vec()),
             None => overlay,
         }
     }
@@ -80,6 +87,7 @@ impl DataOverlay {
             positions,
             degrees,
             parameters: None,
+            surface_parameters: None,
             color_by: DegreeKind::Truth,
         }
     }
@@ -91,10 +99,67 @@ impl DataOverlay {
         self
     }
 
+    /// Sets each point's surface parameters `(u, v)` (for a surface: the whisker of point `k`
+    /// goes to the surface at `parameters[k]`).
+    pub fn with_surface_parameters(mut self, parameters: Vec<[f64; 2]>) -> Self {
+        self.surface_parameters = Some(parameters);
+        self
+    }
+
     /// The degree whose value colours the markers.
     pub fn with_color_by(mut self, kind: DegreeKind) -> Self {
         self.color_by = kind;
         self
+    }
+
+    /// The overlay checked for a surface over `domain` (`[u range, v range]`): as for a 3-D
+    /// curve, and the surface parameters one per point, finite and inside the domain.
+    pub(crate) fn checked_on_surface(
+        mut self,
+        domain: [Range<f64>; 2],
+    ) -> Result<DataOverlay, PlotError> {
+        if self.parameters.is_some() {
+            return Err(PlotError::ParameterKind {
+                given: "curve parameters t",
+                model: "surface",
+            });
+        }
+        let uv = self.surface_parameters.take();
+        let mut checked = self.checked(3, 0.0..1.0)?;
+        if let Some(uv) = &uv {
+            let points = checked.positions.len();
+            if uv.len() != points {
+                return Err(PlotError::DataCount {
+                    what: "(u, v) parameters",
+                    count: uv.len(),
+                    points,
+                });
+            }
+            for (index, pair) in uv.iter().enumerate() {
+                for (k, (&value, range)) in pair.iter().zip(&domain).enumerate() {
+                    let channel = ["u", "v"][k];
+                    if !value.is_finite() {
+                        return Err(PlotError::NotFinite {
+                            what: "data point",
+                            index,
+                            channel,
+                            value,
+                        });
+                    }
+                    if value < range.start || value > range.end {
+                        return Err(PlotError::SurfaceParameterOutsideDomain {
+                            index,
+                            channel,
+                            value,
+                            start: range.start,
+                            end: range.end,
+                        });
+                    }
+                }
+            }
+        }
+        checked.surface_parameters = uv;
+        Ok(checked)
     }
 
     /// The overlay checked for a curve of `dimension` (2 or 3) over `domain`, with z set to
@@ -107,6 +172,12 @@ impl DataOverlay {
         let points = self.positions.len();
         if points == 0 {
             return Err(PlotError::EmptyData);
+        }
+        if self.surface_parameters.is_some() {
+            return Err(PlotError::ParameterKind {
+                given: "surface parameters (u, v)",
+                model: "curve",
+            });
         }
         if self.degrees.len() != points {
             return Err(PlotError::DataCount {

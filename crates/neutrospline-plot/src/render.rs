@@ -43,8 +43,7 @@ pub fn render_svg(
 /// for an HTML canvas.
 ///
 /// # Errors
-/// The `data` view of a surface ([`PlotError::DataOnSurface`]) or of a model without data
-/// ([`PlotError::NoData`]), invalid options ([`PlotOptions::validate`]; for a surface
+/// The `data` view of a model without data ([`PlotError::NoData`]), invalid options ([`PlotOptions::validate`]; for a surface
 /// [`PlotOptions::validate_surface`], which caps the samples per direction), a curve or
 /// surface that cannot be sampled
 /// ([`PlotError::Evaluate`], [`PlotError::NotFinite`]), or coordinates whose range overflows
@@ -66,13 +65,8 @@ pub fn render_drawing(
     options: &PlotOptions,
 ) -> Result<Drawing, PlotError> {
     let figure = views::figure(view);
-    if figure.draws_data() {
-        if model.is_surface() {
-            return Err(PlotError::DataOnSurface);
-        }
-        if model.data().is_none() {
-            return Err(PlotError::NoData);
-        }
+    if figure.draws_data() && model.data().is_none() {
+        return Err(PlotError::NoData);
     }
     if view == View::Band && model.is_surface() {
         return Err(PlotError::BandOnSurface);
@@ -96,7 +90,7 @@ pub fn render_drawing(
             points,
             feet,
             color_by: overlay.color_by,
-            at_parameters: overlay.parameters.is_some(),
+            at_parameters: overlay.parameters.is_some() || overlay.surface_parameters.is_some(),
         };
         (Some(data), &[][..], &[][..])
     } else {

@@ -84,7 +84,7 @@ pub struct FitArgs {
     #[arg(long, value_enum, value_name = "FORMAT", default_value = "text")]
     pub report: ReportFormat,
 
-    /// Also draw the data over the fitted curve (the `data` view): FIG.svg or FIG.png
+    /// Also draw the data over the fitted curve or surface (the `data` view): FIG.svg or FIG.png
     #[arg(long, value_name = "FIG")]
     pub plot: Option<PathBuf>,
 
@@ -182,14 +182,11 @@ fn run_curve(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
 }
 /// The surface fit: the same data file, model and report channels as a curve's.
 fn run_surface(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
-    if args.plot.is_some() {
-        return Err(UsageError(
-            "--plot draws the data view of a fitted curve; the data view of a surface fit is \
-             not available yet (plot the model with `neutrospline plot`)"
-                .into(),
-        )
-        .into());
-    }
+    let figure_format = args
+        .plot
+        .as_deref()
+        .map(FigureFormat::from_path)
+        .transpose()?;
     let request = args.request.second("without --surface")?;
     let options = request.validate().map_err(|e| UsageError(e.to_string()))?;
     let membership = request.membership;
@@ -216,6 +213,19 @@ fn run_surface(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
         model = model.with_name(name.clone());
     }
     let text = neutrospline_io::to_string(&model, model_format)?;
+    if let (Some(path), Some(format)) = (&args.plot, figure_format) {
+        // The data view: the fitted surface, the data coloured by --color-by, whiskers to the
+        // surface at each point's fitted (u, v).
+        let overlay = DataOverlay::new(
+            table.positions().to_vec(),
+            table.degrees().iter().map(|d| d.to_array()).collect(),
+        )
+        .with_surface_parameters(fitted.parameters.clone())
+        .with_color_by(args.color_by);
+        let plot = PlotModel::from_surface(&fitted.surface)?.with_data(overlay)?;
+        let options = PlotOptions::new().with_caption(format!("Data: {}", table.file()));
+        write_figure(&plot, View::Data, &options, path, format)?;
+    }
     output::emit(args.output.as_deref(), |w| {
         w.write_all(text.as_bytes())?;
         Ok(())

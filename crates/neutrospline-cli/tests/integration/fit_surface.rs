@@ -194,3 +194,68 @@ fn refusals_name_the_rule_and_write_nothing() {
         assert!(!dir.path().join("m.toml").exists(), "{args:?}");
     }
 }
+
+/// `fit --surface --plot`: the data view of the fitted surface, one marker and one whisker per
+/// data point (the hill's 120), coloured by --color-by; and `plot --data` of the same model
+/// draws the same counts (whiskers to the nearest points, the file having no u, v). A figure
+/// format that is not one is refused before anything is written.
+#[test]
+fn the_data_view_of_a_surface_fit() {
+    let dir = tempfile::tempdir().unwrap();
+    let hill = crate::util::example("data/hill_grid.csv")
+        .display()
+        .to_string();
+    let args = [
+        "fit",
+        &hill,
+        "--surface",
+        "--grid",
+        "12x10",
+        "--control-points",
+        "6,5",
+        "-o",
+        "hill.toml",
+        "--plot",
+        "hill.svg",
+        "--color-by",
+        "indeterminacy",
+    ];
+    let (code, _, stderr) = run(dir.path(), &args);
+    assert_eq!(code, 0, "{stderr}");
+    let svg = fs::read_to_string(dir.path().join("hill.svg")).unwrap();
+    assert_eq!(svg.matches("class=\"data-point\"").count(), 120);
+    assert_eq!(svg.matches("class=\"residual\"").count(), 120);
+    assert!(svg.contains("indeterminacy (data and surface)"));
+    assert!(svg.contains("fitted to data</title>"));
+    let plot = [
+        "plot",
+        "hill.toml",
+        "--view",
+        "data",
+        "--data",
+        &hill,
+        "-o",
+        "again.svg",
+    ];
+    let (code, _, stderr) = run(dir.path(), &plot);
+    assert_eq!(code, 0, "{stderr}");
+    let again = fs::read_to_string(dir.path().join("again.svg")).unwrap();
+    assert_eq!(again.matches("class=\"residual\"").count(), 120);
+    assert!(again.contains("nearest point of the"));
+
+    let bad = [
+        "fit",
+        &hill,
+        "--surface",
+        "--grid",
+        "12x10",
+        "-o",
+        "bad.toml",
+        "--plot",
+        "bad.gif",
+    ];
+    let (code, stdout, _) = run(dir.path(), &bad);
+    assert_eq!((code, stdout.as_str()), (2, ""));
+    assert!(!dir.path().join("bad.toml").exists());
+    assert!(!dir.path().join("bad.gif").exists());
+}

@@ -4,9 +4,11 @@
 //!   whisker from each data point to the curve point it was fitted to, and each data point as
 //!   a marker filled with the viridis colour of one degree, with a colour bar of that degree.
 //! - 3-D curve: the same in the 3-D box, with the curve's shadow on the floor.
-//! - Surface: none: [`render_svg`](crate::render_svg) refuses the data view of a surface
-//!   ([`PlotError::DataOnSurface`](crate::PlotError::DataOnSurface)) before drawing, so
-//!   [`Figure::surface`] draws only the frame.
+//! - Surface: the fitted surface's shaded mesh in the 3-D box, coloured by the same degree
+//!   as the points (one colour bar for both), then the whiskers (to the surface at each
+//!   point's `(u, v)`, else to its nearest point) and the points over it, farthest first: no
+//!   point is hidden behind the surface, and a whisker shows on which side of it its point
+//!   lies.
 //!
 //! Markers carry no callouts, and shrink past [`CROWD`] points, so that thousands of points
 //! stay readable.
@@ -18,6 +20,7 @@ use crate::ctx::{Ctx, DataCtx};
 use crate::curve3d::shadowed_box;
 use crate::drawing::Drawing;
 use crate::layout::{ColorBar, Entry, Legend, LegendPlace, Swatch};
+use crate::mesh::{draw_mesh, Paint};
 use crate::model::Mesh;
 use crate::scene::{Shape, CHUNK, DATA, OVER};
 use crate::style::{Color, Style};
@@ -47,7 +50,7 @@ impl Figure for Data {
             return ctx.figure(Legend::default(), LegendPlace::Column, |_, _, _| {});
         };
         let look = Look::new(th, data.points.len());
-        let legend = legend(th, data, false);
+        let legend = legend(th, data, Fitted::PlaneCurve);
         ctx.figure(legend, LegendPlace::Column, |svg, plot, _| {
             let axes = ctx.axes2(plot, 2.0 * look.r, Scale::Filling);
             axes.draw(svg, th);
@@ -77,7 +80,7 @@ impl Figure for Data {
             return ctx.figure(Legend::default(), LegendPlace::Corner, |_, _, _| {});
         };
         let look = Look::new(th, data.points.len());
-        let legend = legend(th, data, true);
+        let legend = legend(th, data, Fitted::SpaceCurve);
         ctx.figure(legend, LegendPlace::Corner, |svg, plot, avoid| {
             let (axes, mut scene) = shadowed_box(svg, ctx, plot, avoid);
             for (p, foot) in data.points.iter().zip(&data.feet) {
@@ -123,9 +126,44 @@ impl Figure for Data {
         })
     }
 
-    fn surface(&self, ctx: &Ctx, _mesh: &Mesh, _grid: (usize, usize)) -> Drawing {
-        // Unreachable through `render_svg`, which refuses a surface first.
-        ctx.figure(Legend::default(), LegendPlace::Corner, |_, _, _| {})
+    fn surface(&self, ctx: &Ctx, mesh: &Mesh, _grid: (usize, usize)) -> Drawing {
+        let th = &ctx.theme;
+        let Some(data) = &ctx.data else {
+            return ctx.figure(Legend::default(), LegendPlace::Corner, |_, _, _| {});
+        };
+        let look = Look::new(th, data.points.len());
+        let legend = legend(th, data, Fitted::Surface);
+        ctx.figure(legend, LegendPlace::Corner, |svg, plot, avoid| {
+            let axes = ctx.draw_box(svg, plot, avoid);
+            draw_mesh(svg, th, &axes, mesh, Paint::By(data.color_by.into()));
+            let mut order: Vec<(f64, usize)> = data
+                .points
+                .iter()
+                .zip(&data.feet)
+                .enumerate()
+                .map(|(k, (p, f))| ((axes.screen(p.pos).2 + axes.screen(f.pos).2) / 2.0, k))
+                .collect();
+            order.sort_by(|a, b| b.0.total_cmp(&a.0));
+            svg.begin_group("residuals");
+            for &(_, k) in &order {
+                let (a, b) = (
+                    axes.screen(data.points[k].pos),
+                    axes.screen(data.feet[k].pos),
+                );
+                svg.line((a.0, a.1), (b.0, b.1), &look.whisker);
+            }
+            svg.end_group();
+            svg.begin_group("data-points");
+            for &(_, k) in &order {
+                let (p, a) = (&data.points[k], axes.screen(data.points[k].pos));
+                svg.circle(
+                    (a.0, a.1),
+                    look.r,
+                    &look.marker(p.deg[data.color_by.index()]),
+                );
+            }
+            svg.end_group();
+        })
     }
 }
 
@@ -181,14 +219,24 @@ impl Look {
     }
 }
 
-/// The legend: the curve, a data point, a residual (and the shadow, in 3-D), what the
-/// whiskers show, and the colour bar of the degree that colours the points.
-fn legend(th: &Theme, data: &DataCtx, shadow: bool) -> Legend {
+/// What the data was fitted with.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Fitted {
+    PlaneCurve,
+    SpaceCurve,
+    Surface,
+}
+
+/// The legend: the curve or surface, a data point, a residual (and the shadow, for a space
+/// curve), what the whiskers show, and the colour bar of the degree that colours the points
+/// (and the surface).
+fn legend(th: &Theme, data: &DataCtx, fitted: Fitted) -> Legend {
     let kind: DegreeKind = data.color_by;
-    let to = if data.at_parameters {
-        "the curve at each point's parameter"
-    } else {
-        "the nearest point of the curve"
+    let to = match (fitted, data.at_parameters) {
+        (Fitted::Surface, true) => "the surface at each point's (u, v)",
+        (Fitted::Surface, false) => "the nearest point of the surface",
+        (_, true) => "the curve at each point's parameter",
+        (_, false) => "the nearest point of the curve",
     };
     let n = data.points.len();
     let count = if n == 1 {
@@ -196,8 +244,18 @@ fn legend(th: &Theme, data: &DataCtx, shadow: bool) -> Legend {
     } else {
         format!("{n} data points")
     };
+    let fitted_entry = if fitted == Fitted::Surface {
+        Entry {
+            swatch: Swatch::Patch {
+                color: theme::colormap(0.5),
+            },
+            label: "fitted surface".to_string(),
+        }
+    } else {
+        Entry::line(theme::CRISP, th.crisp_w(), None, "fitted curve")
+    };
     let mut entries = vec![
-        Entry::line(theme::CRISP, th.crisp_w(), None, "fitted curve"),
+        fitted_entry,
         Entry {
             swatch: Swatch::Marker {
                 shape: Marker::Circle,
@@ -207,7 +265,7 @@ fn legend(th: &Theme, data: &DataCtx, shadow: bool) -> Legend {
         },
         Entry::line(theme::RESIDUAL, 1.25 * th.thin_w(), None, "residual"),
     ];
-    if shadow {
+    if fitted == Fitted::SpaceCurve {
         entries.push(Entry::line(
             theme::SHADOW,
             th.crisp_w(),
@@ -219,7 +277,11 @@ fn legend(th: &Theme, data: &DataCtx, shadow: bool) -> Legend {
         entries,
         notes: vec![format!("{count}. Residuals run to {to}.")],
         colorbar: Some(ColorBar {
-            label: format!("{} of the data", kind.name()),
+            label: if fitted == Fitted::Surface {
+                format!("{} (data and surface)", kind.name())
+            } else {
+                format!("{} of the data", kind.name())
+            },
             length: 0.62,
         }),
     }

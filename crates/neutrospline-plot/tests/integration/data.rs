@@ -357,21 +357,34 @@ fn data_errors_and_messages() {
         "the data view needs data points (neutrospline plot MODEL --data DATA.csv, or neutrospline fit --plot)"
     );
 
-    // Surfaces have no overlay, and no data view.
+    // A surface takes (u, v) parameters, inside its domain; a curve takes t.
     let d = Degrees::new(0.5, 0.5, 0.5).unwrap();
     let grid = (0..4)
         .map(|k| ControlPoint::new([f64::from(k / 2), f64::from(k % 2), 0.0], d))
         .collect();
     let surface = PlotModel::from_surface(&Surface::bezier(2, 2, grid).unwrap()).unwrap();
-    let e = surface.clone().with_data(good()).unwrap_err();
-    assert_eq!(e, PlotError::DataOnSurface);
-    assert_eq!(
-        message(e),
-        "the data view draws curves; surfaces have no data overlay"
-    );
     assert_eq!(
         render_svg(&surface, View::Data, &options()).unwrap_err(),
-        PlotError::DataOnSurface
+        PlotError::NoData
+    );
+    let on_surface = |data: DataOverlay| surface.clone().with_data(data).unwrap_err();
+    assert_eq!(
+        message(on_surface(good().with_parameters(vec![0.0, 1.0]))),
+        "the data points' curve parameters t do not fit a surface"
+    );
+    assert_eq!(
+        message(on_surface(
+            good().with_surface_parameters(vec![[0.0, 0.5], [0.5, 1.5]])
+        )),
+        "data point 1: parameter v = 1.5 is outside the surface's domain [0, 1] in v"
+    );
+    assert_eq!(
+        message(on_surface(good().with_surface_parameters(vec![[0.0, 0.5]]))),
+        "1 (u, v) parameters given for 2 data points"
+    );
+    assert_eq!(
+        message(err(good().with_surface_parameters(vec![[0.0, 0.5]; 2]))),
+        "the data points' surface parameters (u, v) do not fit a curve"
     );
 
     assert_eq!(
@@ -460,4 +473,75 @@ fn data_overlay_accessors() {
     assert_eq!(data.parameters.as_ref().map(Vec::len), Some(10));
     assert!(PlotModel::from_any(&sine_curve()).unwrap().data().is_none());
     assert!(format!("{model:?}").ends_with("with 10 data points"));
+}
+
+/// The data view of a surface: the plane z = x + y/2 (a bilinear Bezier patch over the unit
+/// square, degrees varying) with points above and below it; each whisker runs from the point
+/// to the surface at its (u, v), here straight down or up (the patch is S(u, v) = (u, v,
+/// u + v / 2)), so its ends have the same x and y on screen only through the camera: checked
+/// in the model's coordinates by the whisker count and the points' colours.
+#[test]
+fn the_data_view_of_a_surface_draws_the_mesh_points_and_whiskers() {
+    let corners = [
+        [0.0, 0.0, 0.0],
+        [0.0, 1.0, 0.5],
+        [1.0, 0.0, 1.0],
+        [1.0, 1.0, 1.5],
+    ];
+    let grid = corners
+        .iter()
+        .enumerate()
+        .map(|(k, &p)| {
+            let truth = 0.2 + 0.2 * k as f64;
+            ControlPoint::new(p, Degrees::new(truth, 0.1, 0.1).unwrap())
+        })
+        .collect();
+    let surface = Surface::bezier(2, 2, grid).unwrap();
+    let model = PlotModel::from_surface(&surface).unwrap();
+    let (mut positions, mut degrees, mut uv) = (Vec::new(), Vec::new(), Vec::new());
+    for k in 0..25 {
+        let (u, v) = (f64::from(k / 5) / 4.0, f64::from(k % 5) / 4.0);
+        let lift = if k % 2 == 0 { 0.1 } else { -0.1 };
+        positions.push([u, v, u + v / 2.0 + lift]);
+        degrees.push([u, 0.1, 0.1]);
+        uv.push([u, v]);
+    }
+    let data = DataOverlay::new(positions, degrees).with_surface_parameters(uv.clone());
+    let with_data = model.clone().with_data(data).unwrap();
+    let options = PlotOptions::default().with_size(800, 600);
+    let svg = render_svg(&with_data, View::Data, &options).unwrap();
+    assert_eq!(svg.matches("class=\"data-point\"").count(), 25);
+    assert_eq!(svg.matches("class=\"residual\"").count(), 25);
+    assert!(
+        svg.contains("fitted surface"),
+        "the legend names the surface"
+    );
+    // The legend's note, its wrapped lines joined.
+    let words: Vec<&str> = svg
+        .split("</text>")
+        .filter_map(|chunk| chunk.rsplit_once('>').map(|(_, text)| text))
+        .collect();
+    let note = words.join(" ").replace("&apos;", "'");
+    assert!(
+        note.contains("25 data points. Residuals run to the surface at each point's (u, v)."),
+        "{note}"
+    );
+    assert!(svg.contains("truth (data and surface)"));
+    // Without parameters the whiskers run to the nearest points: for a plane, the feet of the
+    // perpendiculars, which differ from the points at the same (u, v).
+    let nearest = model
+        .with_data(DataOverlay::new(
+            (0..25)
+                .map(|k| {
+                    let (u, v) = (f64::from(k / 5) / 4.0, f64::from(k % 5) / 4.0);
+                    [u, v, u + v / 2.0 + 0.1]
+                })
+                .collect(),
+            vec![[0.5, 0.1, 0.1]; 25],
+        ))
+        .unwrap();
+    let svg = render_svg(&nearest, View::Data, &options).unwrap();
+    assert_eq!(svg.matches("class=\"residual\"").count(), 25);
+    assert!(svg.contains("nearest point of the"));
+    assert!(render_png(&with_data, View::Data, &options).is_ok());
 }
