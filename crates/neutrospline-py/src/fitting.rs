@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use neutrospline::fit::{
     channel_names, fit_rows, DataWeights, DynFit, FitError, FitOptions, FitReport, FitRequest,
+    SurfaceFitData, SurfaceFitRequest,
 };
 use neutrospline::options::{OptionSet, OptionValue};
 use neutrospline::{Degrees, Membership};
@@ -11,7 +12,7 @@ use neutrospline_io::{load_data, DataTable, Model};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 
-use crate::arrays::{float_array, vector};
+use crate::arrays::{float_array, new_array, vector};
 use crate::curve;
 use crate::errors::{invalid, invalid_at};
 use crate::model::PointArrays;
@@ -291,4 +292,190 @@ pub fn fit_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
 #[pyfunction]
 pub fn figure_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
     options::table::<neutrospline_plot::FigureRequest>(py)
+}
+
+/// Fits a tensor-product B-spline surface to data points, as `neutrospline fit --surface`
+/// does, and returns `(surface, report)`.
+///
+/// `data` is an array of positions of shape (rows, cols, 3) (a grid: rows along u, with
+/// `degrees` of shape (rows, cols, 3)) or (n, 3) (scattered points, or a grid row by row with
+/// `grid=(rows, cols)`), or the path of a CSV data file (columns `x, y, z, truth,
+/// indeterminacy, falsity[, u, v, weight]`, errors named by line). `parameters` gives each
+/// point's `(u, v)` (shape (n, 2)); `weights` is None, `"score"`, `"column"` (the file's weight
+/// column) or one weight per point. The report is the dictionary of `neutrospline fit --surface
+/// --report json` with the points' fitted `parameters` (n, 2) added.
+///
+/// The options are keyword arguments named as the command line's flags, with the library's
+/// defaults and messages (`fit_surface_options()` lists them): `degree` (3 or `(p, q)`),
+/// `control_points` (`(m, n)`), `tolerance`, `interpolate`, `grid` (`(rows, cols)` or
+/// `"ROWSxCOLS"`), `scattered`, `smoothing`, `parametrization`, `projection`, `membership`.
+///
+/// >>> import numpy as np, neutrospline as ns
+/// >>> u, v = np.meshgrid(np.linspace(0, 1, 6), np.linspace(0, 1, 5), indexing="ij")
+/// >>> points = np.stack([u, v, u * v], axis=-1)
+/// >>> degrees = np.stack([0.2 + 0.5 * u, 0.1 + 0 * u, 0.6 - 0.5 * v], axis=-1)
+/// >>> surface, report = ns.fit_surface(points, degrees, interpolate=True)
+/// >>> report["control_points"], bool(abs(surface.evaluate(0.4, 0.5)[2] - 0.2) < 1e-12)
+/// ([6, 5], True)
+#[pyfunction]
+#[pyo3(signature = (data, degrees = None, *, parameters = None, weights = None, name = None, **options))]
+pub fn fit_surface<'py>(
+    py: Python<'py>,
+    data: &Bound<'py, PyAny>,
+    degrees: Option<&Bound<'py, PyAny>>,
+    parameters: Option<&Bound<'py, PyAny>>,
+    weights: Option<&Bound<'py, PyAny>>,
+    name: Option<String>,
+    options: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let mut request = SurfaceFitRequest::default();
+    // A grid given as a pair (rows, cols) is the command line's `ROWSxCOLS`.
+    if let Some(options) = options {
+        if let Some(grid) = options.get_item("grid")? {
+            if let Ok((rows, cols)) = grid.extract::<(usize, usize)>() {
+                options.set_item("grid", format!("{rows}x{cols}"))?;
+            }
+        }
+    }
+    options::set_from_kwargs(&mut request, options)?;
+    let array_weights = match weights {
+        Some(rule) if rule.is_instance_of::<PyString>() => {
+            request
+                .set("weights", OptionValue::Text(rule.extract()?))
+                .map_err(invalid)?;
+            None
+        }
+        Some(array) => {
+            request
+                .set("weights", OptionValue::Text("column".into()))
+                .map_err(invalid)?;
+            Some(float_array(array, "weights")?.values()?.to_vec())
+        }
+        None => None,
+    };
+    let membership = request.membership;
+    let fit_options = request.validate().map_err(invalid)?;
+    let uv = parameters
+        .map(|p| {
+            let array = float_array(p, "parameters")?;
+            match array.shape() {
+                [_, 2] => Ok(array
+                    .values()?
+                    .chunks_exact(2)
+                    .map(|c| [c[0], c[1]])
+                    .collect::<Vec<[f64; 2]>>()),
+                shape => Err(invalid_at(
+                    "parameters",
+                    format!("expected an array of shape (n, 2) (u, v of each point), got shape {shape:?}"),
+                )),
+            }
+        })
+        .transpose()?;
+    let is_path = data.is_instance_of::<PyString>() || data.hasattr("__fspath__").unwrap_or(false);
+    let (fitted, description) = if is_path {
+        for (given, what) in [(degrees.is_some(), "degrees"), (uv.is_some(), "parameters")] {
+            if given {
+                return Err(invalid_at(
+                    what,
+                    "the data file gives it (its columns): give arrays or a file, not both",
+                ));
+            }
+        }
+        if array_weights.is_some() {
+            return Err(invalid_at(
+                "weights",
+                "the data file's weight column gives the weights (weights=\"column\")",
+            ));
+        }
+        let path: PathBuf = data.extract()?;
+        let table = load_data(&path, membership).map_err(invalid)?;
+        request
+            .weights
+            .check_data(table.file(), table.weights().is_some())
+            .map_err(invalid)?;
+        let fitted = py
+            .detach(|| table.fit_surface(request.grid, &fit_options))
+            .map_err(invalid)?;
+        let description = format!(
+            "Fitted to {} ({} points) by neutrospline.fit_surface",
+            table.file(),
+            table.len()
+        );
+        (fitted, description)
+    } else {
+        let degrees = degrees.ok_or_else(|| {
+            invalid_at(
+                "degrees",
+                "missing: give the degrees of the data points (or a data file instead of arrays)",
+            )
+        })?;
+        let shape = float_array(data, "data")?.shape().to_vec();
+        let arrays = PointArrays::read(data, "data", degrees, membership, shape.len() == 3)?;
+        if arrays.dimension != 3 {
+            return Err(invalid_at(
+                "data",
+                format!(
+                    "a surface is fitted to points in 3-D: expected shape (n, 3) or (rows, cols, 3), got shape {shape:?}"
+                ),
+            ));
+        }
+        if request.weights == DataWeights::Given && array_weights.is_none() {
+            return Err(invalid_at(
+                "weights",
+                "\"column\" reads a data file's weight column; with arrays, give the weights",
+            ));
+        }
+        let positions: Vec<[f64; 3]> = arrays
+            .positions
+            .chunks_exact(3)
+            .map(|c| [c[0], c[1], c[2]])
+            .collect();
+        let count = positions.len();
+        let grid = arrays.grid.map(|(r, c)| [r, c]).or(request.grid);
+        let mut fit_data = match grid {
+            Some([rows, cols]) => SurfaceFitData::grid(rows, cols, positions, arrays.degrees),
+            None => SurfaceFitData::scattered(positions, arrays.degrees),
+        }
+        .map_err(invalid)?;
+        if let Some(uv) = uv {
+            fit_data = fit_data.with_parameters(uv).map_err(invalid)?;
+        }
+        if let Some(w) = array_weights {
+            fit_data = fit_data.with_weights(w).map_err(invalid)?;
+        }
+        let fitted = py
+            .detach(|| neutrospline::fit::fit_surface(&fit_data, &fit_options))
+            .map_err(invalid)?;
+        (
+            fitted,
+            format!("Fitted to {count} points by neutrospline.fit_surface"),
+        )
+    };
+    let report = py.import("json")?.call_method1(
+        "loads",
+        (neutrospline_io::surface_fit_report_json(&fitted.report),),
+    )?;
+    let flat: Vec<f64> = fitted.parameters.iter().flatten().copied().collect();
+    let rows = fitted.parameters.len();
+    report.set_item("parameters", new_array(py, flat, &[rows, 2])?)?;
+    let mut model = Model::new(fitted.surface)
+        .with_membership(membership)
+        .map_err(invalid)?
+        .with_description(description);
+    if let Some(name) = name {
+        model = model.with_name(name);
+    }
+    let surface = crate::surface::model_into_py(py, model)?;
+    PyTuple::new(py, [surface, report.unbind()])
+}
+
+/// The options of `fit_surface`, from the library that defines them (`SurfaceFitRequest`),
+/// as `fit_options()` lists the curve fit's.
+///
+/// >>> import neutrospline as ns
+/// >>> [o["default"] for o in ns.fit_surface_options() if o["name"] == "smoothing"]
+/// [0.0]
+#[pyfunction]
+pub fn fit_surface_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
+    options::table::<SurfaceFitRequest>(py)
 }

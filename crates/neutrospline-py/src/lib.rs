@@ -49,6 +49,8 @@ fn _neutrospline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(functions::import_options, m)?)?;
     m.add_function(wrap_pyfunction!(functions::table_options, m)?)?;
     m.add_function(wrap_pyfunction!(inline::inline, m)?)?;
+    m.add_function(wrap_pyfunction!(fitting::fit_surface, m)?)?;
+    m.add_function(wrap_pyfunction!(fitting::fit_surface_options, m)?)?;
     m.add_function(wrap_pyfunction!(cli::_run_cli, m)?)?;
     m.add("instruction_set", neutrospline::batch::instruction_set())?;
     // The workspace's version (Cargo.toml), which is also the wheel's.

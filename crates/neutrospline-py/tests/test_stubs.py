@@ -60,6 +60,8 @@ def test_every_public_name_is_in_the_stub():
             stub, runtime = parameter_names(functions[name]), runtime_parameters(obj)
             if name == "fit":
                 assert_options_spelled_out(stub, runtime, neutrospline.fit_options(), name)
+            elif name == "fit_surface":
+                assert_options_spelled_out(stub, runtime, neutrospline.fit_surface_options(), name)
             elif name == "inline":
                 assert_options_spelled_out(stub, runtime, neutrospline.figure_options(), name)
             elif name == "load":

@@ -234,7 +234,9 @@ fn run_surface(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
     let mut err = std::io::stderr().lock();
     match args.report {
         ReportFormat::Text => write!(err, "{}", surface_report_text(report, &table))?,
-        ReportFormat::Json => writeln!(err, "{}", surface_report_json(report))?,
+        ReportFormat::Json => {
+            writeln!(err, "{}", neutrospline_io::surface_fit_report_json(report))?
+        }
     }
     Ok(())
 }
@@ -317,41 +319,6 @@ fn surface_report_text(report: &SurfaceFitReport, table: &DataTable) -> String {
         line("at bound", list.join(", "));
     }
     out
-}
-
-/// A surface fit's report as one JSON object (the curve report's keys, with pairs where a
-/// surface has two directions).
-fn surface_report_json(report: &SurfaceFitReport) -> String {
-    let channels = |values: &[(&'static str, f64)]| {
-        serde_json::Value::Object(
-            values
-                .iter()
-                .map(|(name, v)| ((*name).to_owned(), json_number(*v)))
-                .collect(),
-        )
-    };
-    let n = report.control_points[1];
-    let value = serde_json::json!({
-        "control_points": report.control_points,
-        "degrees": report.degrees,
-        "max_error": channels(&report.max_error),
-        "rms_error": channels(&report.rms_error),
-        "worst_index": report.worst_index,
-        "worst_parameters": report.worst_parameters.map(json_number),
-        "worst_distance": json_number(report.worst_distance),
-        "data_in_every_support": report.data_in_every_support,
-        "two_pass": report.two_pass,
-        "condition_estimate": json_number(report.condition_estimate),
-        "at_bound": report.at_bound.iter().map(|a| serde_json::json!({
-            "row": a.index / n,
-            "col": a.index % n,
-            "channel": a.channel,
-            "bound": a.bound,
-        })).collect::<Vec<_>>(),
-        "tolerance": report.tolerance.map(json_number),
-        "tolerance_met": report.tolerance_met,
-    });
-    value.to_string()
 }
 
 /// The warning for 3-D data without parameters that does not look like an ordered path

@@ -336,5 +336,24 @@ def fit(
     membership: Membership = "neutrosophic",
 ) -> Tuple[Union[Bezier, BSpline], dict[str, Any]]: ...
 def fit_options() -> list[dict[str, Any]]: ...
+def fit_surface(
+    data: Union[ArrayLike, PathLike],
+    degrees: Optional[ArrayLike] = None,
+    *,
+    parameters: Optional[ArrayLike] = None,
+    weights: Union[None, Literal["none", "score", "column"], ArrayLike] = None,
+    name: Optional[str] = None,
+    degree: Union[int, Tuple[int, int]] = 3,
+    interpolate: bool = False,
+    control_points: Union[None, int, Tuple[int, int]] = None,
+    tolerance: Optional[float] = None,
+    grid: Union[None, str, Tuple[int, int]] = None,
+    scattered: bool = False,
+    parametrization: Literal["uniform", "chord-length", "centripetal"] = "chord-length",
+    projection: Literal["plane", "xy"] = "plane",
+    smoothing: float = 0.0,
+    membership: Membership = "neutrosophic",
+) -> Tuple[Surface, dict[str, Any]]: ...
+def fit_surface_options() -> list[dict[str, Any]]: ...
 def figure_options() -> list[dict[str, Any]]: ...
 def _restore(text: str, order: int) -> Model: ...
