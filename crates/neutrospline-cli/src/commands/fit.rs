@@ -241,6 +241,9 @@ fn run_surface(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// Control values on a bound listed one by one in the text report; more are counted.
+const AT_BOUND_LISTED: usize = 12;
+
 /// A surface fit's report as aligned text lines.
 fn surface_report_text(report: &SurfaceFitReport, table: &DataTable) -> String {
     let mut out = String::new();
@@ -285,7 +288,7 @@ fn surface_report_text(report: &SurfaceFitReport, table: &DataTable) -> String {
     for ((name, max), (_, rms)) in report.max_error.iter().zip(&report.rms_error) {
         line(
             &format!("  {name}"),
-            format!("{:<23}{}", number(*max), number(*rms)),
+            format!("{:<22} {}", number(*max), number(*rms)),
         );
     }
     line(
@@ -302,6 +305,26 @@ fn surface_report_text(report: &SurfaceFitReport, table: &DataTable) -> String {
     );
     if report.at_bound.is_empty() {
         line("at bound", "none".to_owned());
+    } else if report.at_bound.len() > AT_BOUND_LISTED {
+        // Many: counted by channel and bound (the JSON report lists each).
+        let mut counts: Vec<(String, usize)> = Vec::new();
+        for a in &report.at_bound {
+            let key = format!("{} = {}", a.channel, a.bound);
+            match counts.iter_mut().find(|(k, _)| *k == key) {
+                Some((_, c)) => *c += 1,
+                None => counts.push((key, 1)),
+            }
+        }
+        counts.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
+        let counted: Vec<String> = counts.iter().map(|(k, c)| format!("{k}: {c}")).collect();
+        line(
+            "at bound",
+            format!(
+                "{} control values ({}; --report json lists them)",
+                report.at_bound.len(),
+                counted.join(", ")
+            ),
+        );
     } else {
         let list: Vec<String> = report
             .at_bound
@@ -406,7 +429,7 @@ fn report_text(report: &FitReport, table: &DataTable) -> String {
     for ((name, max), (_, rms)) in report.max_error.iter().zip(&report.rms_error) {
         line(
             &format!("  {name}"),
-            format!("{:<23}{}", number(*max), number(*rms)),
+            format!("{:<22} {}", number(*max), number(*rms)),
         );
     }
     line(

@@ -273,12 +273,16 @@ fn legend(th: &Theme, data: &DataCtx, fitted: Fitted) -> Legend {
             "shadow on the floor",
         ));
     }
+    let mut notes = vec![format!("{count}. Residuals run to {to}.")];
+    if fitted == Fitted::Surface {
+        notes.push(format!("Points and surface coloured by {}.", kind.name()));
+    }
     Legend {
         entries,
-        notes: vec![format!("{count}. Residuals run to {to}.")],
+        notes,
         colorbar: Some(ColorBar {
             label: if fitted == Fitted::Surface {
-                format!("{} (data and surface)", kind.name())
+                kind.name().to_string()
             } else {
                 format!("{} of the data", kind.name())
             },

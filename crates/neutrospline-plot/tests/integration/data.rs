@@ -526,7 +526,10 @@ fn the_data_view_of_a_surface_draws_the_mesh_points_and_whiskers() {
         note.contains("25 data points. Residuals run to the surface at each point's (u, v)."),
         "{note}"
     );
-    assert!(svg.contains("truth (data and surface)"));
+    assert!(
+        note.contains("Points and surface coloured by truth."),
+        "{note}"
+    );
     // Without parameters the whiskers run to the nearest points: for a plane, the feet of the
     // perpendiculars, which differ from the points at the same (u, v).
     let nearest = model
