@@ -44,3 +44,24 @@ pub fn surface_fit_report_json(report: &SurfaceFitReport) -> String {
     });
     value.to_string()
 }
+
+/// A surface fit whose condition estimate exceeds this is warned of: about 1e-6 of double
+/// precision is left to its control values.
+pub const ILL_CONDITIONED: f64 = 1e10;
+
+/// The warning of a surface fit to `data` (the name shown) whose least-squares system is
+/// nearly singular (condition estimate above [`ILL_CONDITIONED`]): where the data barely reach,
+/// control points are set by rounding. `None` for a well-conditioned fit. The command line
+/// prints it after `warning: `; Python raises it as a `RuntimeWarning`.
+pub fn surface_fit_warning(data: &str, report: &SurfaceFitReport) -> Option<String> {
+    (report.condition_estimate > ILL_CONDITIONED).then(|| {
+        format!(
+            "{data}: the least-squares system is nearly singular (condition estimate {:.1e}): \
+             parts of the parameter domain have too little data to determine their control \
+             points, which are then set by rounding. Give smoothing (--smoothing LAMBDA: the \
+             thin-plate energy then determines them), fewer control points, or data that \
+             covers the domain",
+            report.condition_estimate
+        )
+    })
+}

@@ -80,7 +80,7 @@ mod write;
 pub use atomic::{write_atomically, AtomicFile};
 pub use data::{load_data, load_data_with, read_data, read_data_with, DataTable};
 pub use error::{InputError, ReadError, UnsupportedFormat, WriteError};
-pub use fit_report::surface_fit_report_json;
+pub use fit_report::{surface_fit_report_json, surface_fit_warning, ILL_CONDITIONED};
 pub use format::{Format, Limits, DEFAULT_MAX_CONTROL_POINTS, DEFAULT_MAX_FILE_SIZE, MAX_INTEGER};
 pub use model::{KnotSource, Model, ModelError};
 pub use number::{format_justified, format_number, format_significant, push_number};

@@ -372,7 +372,7 @@ pub fn fit_surface<'py>(
         })
         .transpose()?;
     let is_path = data.is_instance_of::<PyString>() || data.hasattr("__fspath__").unwrap_or(false);
-    let (fitted, description) = if is_path {
+    let (fitted, description, data_name) = if is_path {
         for (given, what) in [(degrees.is_some(), "degrees"), (uv.is_some(), "parameters")] {
             if given {
                 return Err(invalid_at(
@@ -401,7 +401,7 @@ pub fn fit_surface<'py>(
             table.file(),
             table.len()
         );
-        (fitted, description)
+        (fitted, description, table.file().to_owned())
     } else {
         let degrees = degrees.ok_or_else(|| {
             invalid_at(
@@ -449,8 +449,13 @@ pub fn fit_surface<'py>(
         (
             fitted,
             format!("Fitted to {count} points by neutrospline.fit_surface"),
+            "data".to_owned(),
         )
     };
+    if let Some(warning) = neutrospline_io::surface_fit_warning(&data_name, &fitted.report) {
+        let category = py.get_type::<pyo3::exceptions::PyRuntimeWarning>();
+        PyErr::warn(py, &category, &std::ffi::CString::new(warning)?, 1)?;
+    }
     let report = py.import("json")?.call_method1(
         "loads",
         (neutrospline_io::surface_fit_report_json(&fitted.report),),

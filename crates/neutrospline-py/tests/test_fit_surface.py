@@ -103,3 +103,22 @@ def test_bad_input_is_refused_with_the_rule():
         ns.fit_surface(points, degrees, parameters=np.zeros((25, 3)))
     with pytest.raises(ns.ModelError, match=r"interpolate"):
         ns.fit_surface(points, degrees, interpolate=True, control_points=(4, 4))
+
+
+def test_data_that_leaves_the_domain_empty_warns_and_smoothing_settles_it():
+    rng = np.random.default_rng(9)
+    cluster = 0.3 * rng.random((200, 2))
+    uv = np.vstack([cluster, [[1, 1], [1, 0], [0, 1]]])
+    points = np.column_stack([uv, uv.sum(axis=1)])
+    degrees = np.tile([0.5, 0.2, 0.1], (len(uv), 1))
+    with pytest.warns(RuntimeWarning, match=r"data: the least-squares system is nearly singular"):
+        _, report = ns.fit_surface(points, degrees, projection="xy", control_points=(10, 10))
+    assert report["condition_estimate"] > 1e10
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        _, report = ns.fit_surface(
+            points, degrees, projection="xy", control_points=(10, 10), smoothing=1e-6
+        )
+    assert report["condition_estimate"] < 1e10

@@ -199,6 +199,9 @@ fn run_surface(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
     let fitted = table
         .fit_surface(request.grid, &options)
         .map_err(|e| anyhow::Error::msg(e.to_string()))?;
+    if let Some(warning) = neutrospline_io::surface_fit_warning(table.file(), &fitted.report) {
+        eprintln!("warning: {warning}");
+    }
     let shape = match request.grid {
         Some([rows, cols]) => format!("a grid of {rows} x {cols} points"),
         None => format!("{} scattered points", table.len()),

@@ -225,7 +225,10 @@ fn the_data_view_of_a_surface_fit() {
     let svg = fs::read_to_string(dir.path().join("hill.svg")).unwrap();
     assert_eq!(svg.matches("class=\"data-point\"").count(), 120);
     assert_eq!(svg.matches("class=\"residual\"").count(), 120);
-    assert!(svg.contains(">indeterminacy</text>"), "the colour bar names the degree");
+    assert!(
+        svg.contains(">indeterminacy</text>"),
+        "the colour bar names the degree"
+    );
     assert!(svg.contains("fitted to data</title>"));
     let plot = [
         "plot",
@@ -309,4 +312,136 @@ fn the_topobathy_example_fits_and_checks() {
         assert_eq!(code, 0, "{file}: {stderr}");
         assert!(stdout.contains("m.toml: valid"), "{stdout}");
     }
+}
+
+/// The issue's bad input, one located error each and nothing written: too few points for the
+/// degree, NaN, grid rows that coincide (repeated points with chord-length parameters); and
+/// data that leaves most of the domain empty, without smoothing: fitted, with a warning that
+/// names the file and says what to give, and no warning once smoothing is given.
+#[test]
+fn bad_surface_data_is_refused_or_warned_of() {
+    let dir = tempfile::tempdir().unwrap();
+    let header = "x,y,z,truth,indeterminacy,falsity\n";
+    let grid = |n: usize, row_of: &dyn Fn(usize) -> usize, z: &dyn Fn(usize, usize) -> String| {
+        let mut csv = header.to_owned();
+        for i in 0..n {
+            for j in 0..n {
+                let r = row_of(i);
+                csv.push_str(&format!("{r},{j},{},0.5,0.2,0.1\n", z(r, j)));
+            }
+        }
+        csv
+    };
+    fs::write(
+        dir.path().join("few.csv"),
+        grid(3, &|i| i, &|i, j| (i * j).to_string()),
+    )
+    .unwrap();
+    let nan = |i: usize, j: usize| {
+        if (i, j) == (2, 1) {
+            "NaN".to_owned()
+        } else {
+            (i * j).to_string()
+        }
+    };
+    fs::write(dir.path().join("nan.csv"), grid(5, &|i| i, &nan)).unwrap();
+    let repeated = |i: usize| if i == 2 { 1 } else { i };
+    fs::write(
+        dir.path().join("rep.csv"),
+        grid(5, &repeated, &|i, j| (i * j).to_string()),
+    )
+    .unwrap();
+    let cases: [(&[&str], &str); 3] = [
+        (
+            &[
+                "fit",
+                "few.csv",
+                "--surface",
+                "--grid",
+                "3x3",
+                "--interpolate",
+                "-o",
+                "m.toml",
+            ],
+            "error: few.csv: 9 points are too few: interpolation with degree 3 needs at least 4 \
+             rows (3 here)\n",
+        ),
+        (
+            &[
+                "fit",
+                "nan.csv",
+                "--surface",
+                "--grid",
+                "5x5",
+                "-o",
+                "m.toml",
+            ],
+            "error: nan.csv:13: column `z`: value `NaN` is not a finite number (NaN and \
+             infinities are not allowed)\n",
+        ),
+        (
+            &[
+                "fit",
+                "rep.csv",
+                "--surface",
+                "--grid",
+                "5x5",
+                "--interpolate",
+                "-o",
+                "m.toml",
+            ],
+            "error: rep.csv: grid rows 1 and 2 have one parameter (0.25): interpolation needs \
+             distinct ones (the rows coincide; remove one, or give parameters)\n",
+        ),
+    ];
+    for (args, want) in cases {
+        let (code, stdout, stderr) = run(dir.path(), args);
+        assert_eq!(
+            (code, stdout.as_str(), stderr.as_str()),
+            (1, "", want),
+            "{args:?}"
+        );
+        assert!(!dir.path().join("m.toml").exists(), "{args:?}");
+    }
+    // 200 points in the corner [0, 0.3]^2 and three at the other corners: the knots follow the
+    // data, so every cell has data, but the cells between the cluster and the corners barely.
+    let mut csv = header.to_owned();
+    let mut seed = 1u64;
+    let mut next = || {
+        seed = seed
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for _ in 0..200 {
+        let (x, y) = (0.3 * next(), 0.3 * next());
+        csv.push_str(&format!("{x},{y},{},0.5,0.2,0.1\n", x + y));
+    }
+    csv.push_str("1,1,2,0.5,0.2,0.1\n1,0,1,0.5,0.2,0.1\n0,1,1,0.5,0.2,0.1\n");
+    fs::write(dir.path().join("corner.csv"), csv).unwrap();
+    let fit = [
+        "fit",
+        "corner.csv",
+        "--surface",
+        "--projection",
+        "xy",
+        "--control-points",
+        "10,10",
+    ];
+    let (code, _, stderr) = run(dir.path(), &[&fit[..], &["-o", "c.toml"]].concat());
+    assert_eq!(code, 0, "{stderr}");
+    assert!(
+        stderr.starts_with("warning: corner.csv: the least-squares system is nearly singular"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("Give smoothing (--smoothing LAMBDA"),
+        "{stderr}"
+    );
+    let (code, _, stderr) = run(
+        dir.path(),
+        &[&fit[..], &["--smoothing", "1e-6", "-o", "s.toml"]].concat(),
+    );
+    assert_eq!(code, 0, "{stderr}");
+    assert!(!stderr.contains("warning"), "{stderr}");
 }
