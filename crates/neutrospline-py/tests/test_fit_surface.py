@@ -108,7 +108,7 @@ def test_bad_input_is_refused_with_the_rule():
 def test_data_that_leaves_the_domain_empty_warns_and_smoothing_settles_it():
     rng = np.random.default_rng(9)
     cluster = 0.3 * rng.random((200, 2))
-    uv = np.vstack([cluster, [[1, 1], [1, 0], [0, 1]]])
+    uv = np.vstack([cluster, [[0, 0], [1, 1], [1, 0], [0, 1]]])
     points = np.column_stack([uv, uv.sum(axis=1)])
     degrees = np.tile([0.5, 0.2, 0.1], (len(uv), 1))
     with pytest.warns(RuntimeWarning, match=r"data: the least-squares system is nearly singular"):
