@@ -534,10 +534,10 @@ impl PlotModel {
     }
 
     /// Attaches measured data points, drawn by the [`data`](crate::View::Data) view next to
-    /// this curve (the curve fitted to them): the curve as a line, each point as a marker
-    /// coloured by its [`color_by`](DataOverlay::color_by) degree, and a residual whisker
-    /// from each point to the curve at its parameter (or, without parameters, to the nearest
-    /// point of the curve). Other views ignore the data. For a 2-D model the points' z is
+    /// this curve or surface (the one fitted to them): the curve as a line (a surface as its
+    /// mesh), each point as a marker coloured by its [`color_by`](DataOverlay::color_by)
+    /// degree, and a residual whisker from each point to the curve at its parameter (the
+    /// surface at its `(u, v)`) or, without parameters, to the nearest point. Other views ignore the data. For a 2-D model the points' z is
     /// ignored (set to 0). A model given as samples ([`PlotModel::from_samples`]) has the
     /// parameter domain \[0, 1\]: its samples at evenly spaced parameters, joined by
     /// straight lines.
@@ -556,11 +556,13 @@ impl PlotModel {
     /// ```
     ///
     /// # Errors
-    /// [`PlotError::DataOnSurface`] for a surface, [`PlotError::EmptyData`] without points,
-    /// [`PlotError::DataCount`] when the degrees or parameters are not one per point,
-    /// [`PlotError::NotFinite`] for a coordinate, degree or parameter that is NaN or
-    /// infinite, [`PlotError::DataDegreeRange`] for a degree outside \[0, 1\], and
-    /// [`PlotError::ParameterOutsideDomain`] for a parameter outside the curve's domain.
+    /// [`PlotError::EmptyData`] without points, [`PlotError::DataCount`] when the degrees or
+    /// parameters are not one per point, [`PlotError::ParameterKind`] for curve parameters
+    /// given to a surface or surface parameters to a curve, [`PlotError::NotFinite`] for a
+    /// coordinate, degree or parameter that is NaN or infinite, [`PlotError::DataDegreeRange`]
+    /// for a degree outside \[0, 1\], [`PlotError::ParameterOutsideDomain`] for a parameter
+    /// outside the curve's domain and [`PlotError::SurfaceParameterOutsideDomain`] for a
+    /// `(u, v)` outside the surface's.
     pub fn with_data(mut self, data: DataOverlay) -> Result<PlotModel, PlotError> {
         self.data = Some(match &self.curve {
             Geometry::Surface(s) => data.checked_on_surface(s.domain())?,
