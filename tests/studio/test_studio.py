@@ -465,6 +465,25 @@ def test_points_rules_files_data_and_camera(start_studio, page, binary, out_dir,
     assert after["azimuth"] != before["azimuth"] and after["elevation"] > before["elevation"]
     shot(page, out_dir, "12-turned")
 
+    # 3-D data fitted as a surface, with `fit --surface`'s options (issue 25).
+    page.set_input_files("#data-file", str(ROOT / "examples" / "data" / "hill_grid.csv"))
+    idle(page)
+    page.check("#fit-surface")
+    page.fill("#fit-grid", "12x10")
+    page.select_option("#fit-target", "control-points")
+    page.fill("#fit-value", "8,6")
+    with page.expect_request("**/api/fit") as fit_request:
+        page.click("#fit")
+    body = fit_request.value.post_data_json
+    assert body["surface"] is True and body["options"]["grid"] == "12x10", body
+    assert body["options"]["control-points"] == [8, 6], body
+    page.wait_for_function("window.studio.model().kind === 'bspline-surface'")
+    idle(page)
+    assert page.locator("[role=status]").inner_text() == "fitted 8 x 6 control points to hill_grid.csv"
+    assert "control points 8 x 6 (degrees 3, 3)" in page.locator("#fit-report").inner_text()
+    page.wait_for_function("document.querySelectorAll('[data-view=data] .residual').length === 120")
+    shot(page, out_dir, "13-surface-fitted")
+
 
 def drop_file(page, selector, name, text):
     transfer = page.evaluate_handle(

@@ -13,11 +13,13 @@
 //! | `POST /api/convert` | `{model, format: toml\|json}` | `{text, filename}` (a download) |
 //! | `POST /api/save` | `{model}` | `{saved}`: written atomically to the file the studio was started with |
 //! | `POST /api/data` | `{name, text, membership}` | `{points, dimension}` |
-//! | `POST /api/fit` | `{data: {name, text}, options}` | `{model, report}` |
+//! | `POST /api/fit` | `{data: {name, text}, options, surface}` | `{model, report}` |
 //!
 //! `figure` holds the figure's options by the names of the plot crate's `FigureRequest` (view,
 //! width, height, title, caption, azimuth, elevation, samples, alpha, color-by), `options` the
-//! fit's by those of `neutrospline::fit::FitRequest` (the membership rule among them): the
+//! fit's by those of `neutrospline::fit::FitRequest` (with `surface: true`, those of
+//! `neutrospline::fit::SurfaceFitRequest`: `neutrospline fit --surface`), the membership rule
+//! among them: the
 //! command line's flags, read by the libraries, so a wrong type, an unknown name or a value out
 //! of range is a 400 with the command line's message.
 //! A refused model is answered 422 with `{"error": {"message", "field", "line"}}`.
@@ -27,7 +29,7 @@ use std::str::FromStr;
 use std::sync::Mutex;
 use std::time::Instant;
 
-use neutrospline::fit::FitRequest;
+use neutrospline::fit::{FitRequest, SurfaceFitRequest};
 use neutrospline::{
     uniform_parameter, AnyCurve, ControlPolygon, DegreeKind, DynCurve, EvaluateSurface, Membership,
 };
@@ -346,12 +348,6 @@ fn prepare(
     let Some(table) = table else {
         return Ok((plot, None));
     };
-    if model.shape().is_surface() {
-        return Ok((
-            plot,
-            Some("data points are drawn over curves only".to_owned()),
-        ));
-    }
     if table.dimension() != model.shape().dimension() {
         let message = format!(
             "{}: the data is {}-D but the model is {}-D (give z for a 3-D curve, or none for a \
@@ -697,6 +693,9 @@ fn fit_request(body: &Value) -> Result<FitRequest, Response> {
 }
 
 fn fit_data(body: &Value) -> Result<Response, Response> {
+    if body.get("surface").and_then(Value::as_bool) == Some(true) {
+        return fit_surface_data(body);
+    }
     let request = fit_request(body)?;
     let options = request
         .validate()
@@ -738,6 +737,61 @@ fn fit_data(body: &Value) -> Result<Response, Response> {
         "tolerance": report.tolerance,
         "tolerance_met": report.tolerance_met,
     });
+    Ok(with_model(
+        &neutrospline_io::to_json_string(&model),
+        json!({ "report": report }),
+        200,
+    ))
+}
+
+/// `POST /api/fit` with `surface: true`: `neutrospline fit --surface`. `options` holds the
+/// options of [`SurfaceFitRequest`](neutrospline::fit::SurfaceFitRequest) by their canonical
+/// names (`degree` "P,Q", `control-points` "M,N", `grid` "ROWSxCOLS", `smoothing`, ...); the
+/// answer's `report` is the command line's `--report json` object, with `warning` when the
+/// system is nearly singular.
+fn fit_surface_data(body: &Value) -> Result<Response, Response> {
+    if body.get("membership").is_some() {
+        return Err(Response::error(
+            400,
+            "membership is a fit option: give it in `options`",
+        ));
+    }
+    let request: SurfaceFitRequest = match body.get("options") {
+        None | Some(Value::Null) => SurfaceFitRequest::default(),
+        Some(options) => neutrospline::options::deserialize(options.clone())
+            .map_err(|e: serde_json::Error| Response::error(400, &e.to_string()))?,
+    };
+    let options = request
+        .validate()
+        .map_err(|e| Response::error(400, &e.to_string()))?;
+    let membership = request.membership;
+    let table = data_table(&body["data"], membership)?
+        .ok_or_else(|| Response::error(400, "no data given"))?;
+    request
+        .weights
+        .check_data(table.file(), table.weights().is_some())
+        .map_err(|e| Response::error(422, &e.to_string()))?;
+    let fitted = table
+        .fit_surface(request.grid, &options)
+        .map_err(|e| Response::error(422, &e.to_string()))?;
+    let shape = match request.grid {
+        Some([rows, cols]) => format!("a grid of {rows} x {cols} points"),
+        None => format!("{} scattered points", table.len()),
+    };
+    let model = Model::new(fitted.surface)
+        .with_membership(membership)
+        .map_err(|e| Response::error(422, &e.to_string()))?
+        .with_description(format!(
+            "Fitted to {} ({shape}) by neutrospline fit --surface",
+            table.file()
+        ));
+    let mut report: Value =
+        serde_json::from_str(&neutrospline_io::surface_fit_report_json(&fitted.report))
+            .map_err(|e| Response::error(500, &e.to_string()))?;
+    report["warning"] = json!(neutrospline_io::surface_fit_warning(
+        table.file(),
+        &fitted.report
+    ));
     Ok(with_model(
         &neutrospline_io::to_json_string(&model),
         json!({ "report": report }),

@@ -561,6 +561,69 @@ fn data_and_fit_use_the_readers_and_the_fit() {
     );
 }
 
+/// Issue 25: a dropped CSV of 3-D data fitted as a surface, with `neutrospline fit --surface`'s
+/// options and report (the command line's JSON report object), drawn in the data view.
+#[test]
+fn fit_fits_a_surface_with_the_command_lines_options() {
+    let port = example_server();
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/data/hill_grid.csv"),
+    )
+    .unwrap();
+    let data = json!({ "name": "hill_grid.csv", "text": text });
+    let options = json!({ "grid": "12x10", "control-points": [8, 6], "degree": [3] });
+    let (status, answer, _) = post(
+        port,
+        "/api/fit",
+        &json!({ "data": data, "options": options, "surface": true }),
+    );
+    assert_eq!(status, 200, "{answer}");
+    let report = &answer["report"];
+    assert_eq!(report["control_points"], json!([8, 6]));
+    assert_eq!(report["degrees"], json!([3, 3]));
+    assert_eq!(report["two_pass"], true);
+    assert_eq!(report["warning"], Value::Null);
+    // The z residuals of docs/fitting.md's hill report.
+    let max_z = report["max_error"]["z"].as_f64().unwrap();
+    assert!((max_z - 0.0650216358887433).abs() < 1e-12, "{max_z}");
+    assert_eq!(answer["model"]["kind"], "bspline-surface");
+    assert_eq!(
+        answer["model"]["description"],
+        "Fitted to hill_grid.csv (a grid of 12 x 10 points) by neutrospline fit --surface"
+    );
+    let (status, drawn, _) = post(
+        port,
+        "/api/render",
+        &json!({ "model": answer["model"].to_string(), "views": ["data"], "data": data }),
+    );
+    assert_eq!(status, 200, "{drawn}");
+    let svg = drawn["figures"]["data"].as_str().unwrap();
+    assert_eq!(svg.matches("class=\"residual\"").count(), 120);
+    // Refusals carry the library's messages: a curve's option, a grid that does not hold
+    // the points.
+    for (options, status, message) in [
+        (
+            json!({ "closed": true }),
+            400,
+            "unknown option \"closed\" (the options are degree, interpolate, control-points",
+        ),
+        (
+            json!({ "grid": "5x5" }),
+            422,
+            "hill_grid.csv: a grid of 5 x 5 points does not hold 120 points",
+        ),
+    ] {
+        let (got, answer, _) = post(
+            port,
+            "/api/fit",
+            &json!({ "data": data, "options": options, "surface": true }),
+        );
+        assert_eq!(got, status, "{answer}");
+        let text = answer["error"]["message"].as_str().unwrap();
+        assert!(text.contains(message), "{text}");
+    }
+}
+
 const STUDIO_CSS: &str = include_str!("../src/assets/studio.css");
 
 /// Reads one answer of a kept-alive connection: (head, body), by its `Content-Length`
