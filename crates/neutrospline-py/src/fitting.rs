@@ -299,7 +299,9 @@ pub fn figure_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
 ///
 /// `data` is an array of positions of shape (rows, cols, 3) (a grid: rows along u, with
 /// `degrees` of shape (rows, cols, 3)) or (n, 3) (scattered points, or a grid row by row with
-/// `grid=(rows, cols)`), or the path of a CSV data file (columns `x, y, z, truth,
+/// `grid=(rows, cols)`), a pandas DataFrame (columns by name, in any order and case: `x`, `y`,
+/// `z`, `truth` / `T`, `indeterminacy` / `I`, `falsity` / `F`, optionally `u`, `v`, `weight`;
+/// others left out), or the path of a CSV data file (columns `x, y, z, truth,
 /// indeterminacy, falsity[, u, v, weight]`, errors named by line). `parameters` gives each
 /// point's `(u, v)` (shape (n, 2)); `weights` is None, `"score"`, `"column"` (the file's weight
 /// column) or one weight per point. The report is the dictionary of `neutrospline fit --surface
@@ -371,6 +373,37 @@ pub fn fit_surface<'py>(
             }
         })
         .transpose()?;
+    // A table with named columns (a pandas DataFrame): its columns by name.
+    let frame = dataframe_columns(data)?;
+    let (data, degrees, uv, array_weights) = match &frame {
+        Some(frame) => {
+            for (given, what) in [(degrees.is_some(), "degrees"), (uv.is_some(), "parameters")] {
+                if given {
+                    return Err(invalid_at(
+                        what,
+                        "the DataFrame's columns give it: give a DataFrame or arrays, not both",
+                    ));
+                }
+            }
+            let weights = match (&frame.weights, array_weights) {
+                (Some(_), Some(_)) => {
+                    return Err(invalid_at(
+                        "weights",
+                        "the DataFrame's weight column gives the weights (weights=\"column\")",
+                    ))
+                }
+                (Some(w), None) if request.weights == DataWeights::Given => Some(w.clone()),
+                (_, given) => given,
+            };
+            (
+                frame.points.bind(py),
+                Some(frame.degrees.bind(py)),
+                frame.uv.clone(),
+                weights,
+            )
+        }
+        None => (data, degrees, uv, array_weights),
+    };
     let is_path = data.is_instance_of::<PyString>() || data.hasattr("__fspath__").unwrap_or(false);
     let (fitted, description, data_name) = if is_path {
         for (given, what) in [(degrees.is_some(), "degrees"), (uv.is_some(), "parameters")] {
@@ -483,4 +516,101 @@ pub fn fit_surface<'py>(
 #[pyfunction]
 pub fn fit_surface_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
     options::table::<SurfaceFitRequest>(py)
+}
+
+/// The columns of a table with named columns (a pandas DataFrame, or anything with `columns`
+/// and columns that have `to_numpy`), for `fit_surface`.
+struct FrameColumns {
+    /// `x, y, z`, shape (n, 3).
+    points: Py<PyAny>,
+    /// `truth, indeterminacy, falsity` (those present, in that order), shape (n, k).
+    degrees: Py<PyAny>,
+    /// `u, v`, when both are columns.
+    uv: Option<Vec<[f64; 2]>>,
+    /// `weight`, when it is a column.
+    weights: Option<Vec<f64>>,
+}
+
+/// Reads `data`'s columns by name (case-insensitive; `T`, `I`, `F` for the degrees), or `None`
+/// when it has no `columns`.
+///
+/// # Errors
+/// `ModelError` naming a missing column (x, y, z and truth are needed) or a column that is not
+/// numeric.
+fn dataframe_columns(data: &Bound<'_, PyAny>) -> PyResult<Option<FrameColumns>> {
+    if !data.hasattr("columns")? || data.is_instance_of::<PyString>() {
+        return Ok(None);
+    }
+    let py = data.py();
+    let names: Vec<String> = data
+        .getattr("columns")?
+        .try_iter()?
+        .map(|c| c?.str().map(|s| s.to_string()))
+        .collect::<PyResult<_>>()?;
+    let find = |wanted: &[&str]| {
+        names
+            .iter()
+            .find(|n| wanted.iter().any(|w| n.eq_ignore_ascii_case(w)))
+            .cloned()
+    };
+    let column = |name: &str| -> PyResult<Vec<f64>> {
+        let values = data
+            .get_item(name)?
+            .call_method1("to_numpy", ("float64",))
+            .map_err(|e| invalid_at(name, format!("is not a column of numbers ({e})")))?;
+        Ok(float_array(&values, name)?.values()?.to_vec())
+    };
+    let mut points = Vec::new();
+    for axis in ["x", "y", "z"] {
+        let name = find(&[axis]).ok_or_else(|| {
+            invalid_at(
+                "data",
+                format!(
+                    "the DataFrame has no column `{axis}` (its columns: {}; a surface needs x, y, z)",
+                    names.join(", ")
+                ),
+            )
+        })?;
+        points.push(column(&name)?);
+    }
+    let mut degrees = Vec::new();
+    for aliases in [
+        &["truth", "T"][..],
+        &["indeterminacy", "I"],
+        &["falsity", "F"],
+    ] {
+        if let Some(name) = find(aliases) {
+            degrees.push(column(&name)?);
+        }
+    }
+    if degrees.is_empty() {
+        return Err(invalid_at(
+            "data",
+            format!(
+                "the DataFrame has no column `truth` (its columns: {}; the degrees are truth, \
+                 indeterminacy, falsity)",
+                names.join(", ")
+            ),
+        ));
+    }
+    let rows = points[0].len();
+    let by_rows = |columns: &[Vec<f64>]| -> Vec<f64> {
+        (0..rows)
+            .flat_map(|r| columns.iter().map(move |c| c[r]))
+            .collect()
+    };
+    let uv = match (find(&["u"]), find(&["v"])) {
+        (Some(u), Some(v)) => {
+            let (u, v) = (column(&u)?, column(&v)?);
+            Some(u.into_iter().zip(v).map(|(a, b)| [a, b]).collect())
+        }
+        _ => None,
+    };
+    let weights = find(&["weight"]).map(|w| column(&w)).transpose()?;
+    Ok(Some(FrameColumns {
+        points: new_array(py, by_rows(&points), &[rows, 3])?.unbind(),
+        degrees: new_array(py, by_rows(&degrees), &[rows, degrees.len()])?.unbind(),
+        uv,
+        weights,
+    }))
 }

@@ -122,3 +122,21 @@ def test_data_that_leaves_the_domain_empty_warns_and_smoothing_settles_it():
             points, degrees, projection="xy", control_points=(10, 10), smoothing=1e-6
         )
     assert report["condition_estimate"] < 1e10
+
+
+def test_a_dataframe_is_read_by_its_column_names(root):
+    pandas = pytest.importorskip("pandas")
+    hill = root / "examples/data/hill_grid.csv"
+    frame = pandas.read_csv(hill, comment="#")
+    # Columns in another order, an extra one, names in capitals: read by name.
+    frame = frame[["falsity", "Z" if "Z" in frame else "z", "truth", "x", "y", "indeterminacy"]]
+    frame = frame.rename(columns={"z": "Z"}).assign(note="survey 2026")
+    surface, report = ns.fit_surface(frame, grid=(12, 10), control_points=(8, 6))
+    from_file, file_report = ns.fit_surface(hill, grid=(12, 10), control_points=(8, 6))
+    assert surface.positions.tolist() == from_file.positions.tolist()
+    assert surface.membership_degrees.tolist() == from_file.membership_degrees.tolist()
+    assert report["max_error"] == file_report["max_error"]
+    with pytest.raises(ns.ModelError, match=r"the DataFrame has no column `z`"):
+        ns.fit_surface(frame.drop(columns=["Z"]))
+    with pytest.raises(ns.ModelError, match=r"degrees"):
+        ns.fit_surface(frame, np.zeros((120, 3)))
