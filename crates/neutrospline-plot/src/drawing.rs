@@ -9,6 +9,7 @@
 //! Both walk the primitives through `encode::Encoder` and write numbers with at most two
 //! decimals ([`num`](crate::style::num)), so they place every primitive on the same pixel.
 
+use crate::page::Length;
 use crate::style::{Color, Style, TextStyle};
 
 /// One recorded drawing call.
@@ -47,6 +48,8 @@ pub(crate) enum Element {
 pub struct Drawing {
     pub(crate) width: u32,
     pub(crate) height: u32,
+    /// The print size, when the canvas is one in points (the SVG states it).
+    pub(crate) print: Option<(Length, Length)>,
     pub(crate) title: String,
     pub(crate) elements: Vec<Element>,
 }
@@ -101,6 +104,7 @@ impl Painter {
             drawing: Drawing {
                 width,
                 height,
+                print: None,
                 title: title.to_string(),
                 elements: Vec::with_capacity(512),
             },

@@ -10,6 +10,48 @@ pub enum PlotError {
         /// The name given.
         name: String,
     },
+    /// A figure file whose extension names no figure format.
+    #[error("{path}: unsupported figure extension (accepted: .svg, .png, .pdf)")]
+    FigureExtension {
+        /// The file.
+        path: String,
+    },
+    /// A print size whose canvas (in points) is outside the supported range.
+    #[error("figure size {size} is not supported (each side must be between {min} and {max} points, 2.26 cm to 5.78 m)")]
+    InvalidPrintSize {
+        /// The size as given.
+        size: String,
+        /// Smallest side, in points.
+        min: u32,
+        /// Largest side, in points.
+        max: u32,
+    },
+    /// A print size whose PNG at the resolution would have too many or too few pixels.
+    #[error("a PNG of {size} at {dpi} dpi would be {width}x{height} pixels (each side must be between {min} and {max}; change --dpi or give the size in pixels)")]
+    InvalidRaster {
+        /// The size as given.
+        size: String,
+        /// The resolution.
+        dpi: f64,
+        /// The PNG's width.
+        width: u32,
+        /// The PNG's height.
+        height: u32,
+        /// Smallest side, in pixels.
+        min: u32,
+        /// Largest side, in pixels.
+        max: u32,
+    },
+    /// A resolution outside the supported range.
+    #[error("dpi = {dpi} is not supported (must be between {min} and {max})")]
+    InvalidDpi {
+        /// The resolution given.
+        dpi: f64,
+        /// Smallest accepted.
+        min: f64,
+        /// Largest accepted.
+        max: f64,
+    },
     /// Image width or height outside the supported range.
     #[error("image size {width}x{height} is not supported (each side must be between {min} and {max} pixels)")]
     InvalidSize {

@@ -46,6 +46,24 @@ pub(crate) fn text_width(text: &str, size: f64, bold: bool) -> f64 {
     text.chars().map(|c| m.advance(c)).sum::<f64>() * size
 }
 
+/// The metrics (and font file) of the regular or bold face.
+pub(crate) fn metrics(bold: bool) -> &'static Metrics {
+    if bold {
+        bold_metrics()
+    } else {
+        regular_metrics()
+    }
+}
+
+/// The PostScript name of the regular or bold face (as a PDF names the embedded font).
+pub(crate) fn postscript_name(bold: bool) -> &'static str {
+    if bold {
+        "DejaVuSans-Bold"
+    } else {
+        "DejaVuSans"
+    }
+}
+
 fn regular_metrics() -> &'static Metrics {
     static M: OnceLock<Metrics> = OnceLock::new();
     M.get_or_init(|| Metrics::parse(REGULAR).unwrap_or_else(Metrics::fallback))
@@ -58,20 +76,20 @@ fn bold_metrics() -> &'static Metrics {
 
 /// Advance widths (in em) of the Basic Multilingual Plane, read from `cmap` (format 4),
 /// `hmtx`, `hhea` and `head`.
-struct Metrics {
-    data: &'static [u8],
-    units_per_em: f64,
+pub(crate) struct Metrics {
+    pub(crate) data: &'static [u8],
+    pub(crate) units_per_em: f64,
     /// Advance width per glyph id (the last one repeats, as `hmtx` specifies).
     advances: Vec<u16>,
     /// Offset of the format 4 `cmap` subtable, if the font has one.
     cmap4: Option<usize>,
 }
 
-fn u16_at(data: &[u8], at: usize) -> Option<u16> {
+pub(crate) fn u16_at(data: &[u8], at: usize) -> Option<u16> {
     Some(u16::from_be_bytes([*data.get(at)?, *data.get(at + 1)?]))
 }
 
-fn u32_at(data: &[u8], at: usize) -> Option<u32> {
+pub(crate) fn u32_at(data: &[u8], at: usize) -> Option<u32> {
     Some(u32::from_be_bytes([
         *data.get(at)?,
         *data.get(at + 1)?,
@@ -91,7 +109,8 @@ impl Metrics {
         }
     }
 
-    fn table(data: &[u8], tag: &[u8; 4]) -> Option<usize> {
+    /// The offset of table `tag` in the font file.
+    pub(crate) fn table(data: &[u8], tag: &[u8; 4]) -> Option<usize> {
         let count = usize::from(u16_at(data, 4)?);
         (0..count).find_map(|i| {
             let rec = 12 + 16 * i;
@@ -129,8 +148,18 @@ impl Metrics {
         })
     }
 
-    fn glyph(&self, c: char) -> u16 {
+    /// The glyph of `c` (0, the missing glyph, when the font has none).
+    pub(crate) fn glyph(&self, c: char) -> u16 {
         self.glyph_checked(c).unwrap_or(0)
+    }
+
+    /// The advance width of glyph `g`, in font units.
+    pub(crate) fn glyph_advance(&self, g: u16) -> u16 {
+        self.advances
+            .get(usize::from(g))
+            .or(self.advances.last())
+            .copied()
+            .unwrap_or(0)
     }
 
     fn glyph_checked(&self, c: char) -> Option<u16> {
@@ -163,14 +192,7 @@ impl Metrics {
     }
 
     fn advance(&self, c: char) -> f64 {
-        let g = usize::from(self.glyph(c));
-        let adv = self
-            .advances
-            .get(g)
-            .or(self.advances.last())
-            .copied()
-            .unwrap_or(0);
-        f64::from(adv) / self.units_per_em
+        f64::from(self.glyph_advance(self.glyph(c))) / self.units_per_em
     }
 }
 

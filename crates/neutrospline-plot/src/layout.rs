@@ -353,6 +353,105 @@ impl Legend {
         (w + 2.0 * m.pad, h + m.pad)
     }
 
+    /// The entries laid out in rows no wider than `max_w` (legend boxes under a narrow
+    /// plot): per row, each entry's index and its left edge from the box's inner left edge.
+    fn rows(&self, theme: &Theme, max_w: f64) -> Vec<Vec<(usize, f64)>> {
+        // A grid: as many columns of the widest entry as fit, filled row by row.
+        let m = Self::metrics(theme);
+        let spacing = 1.2 * theme.legend();
+        let widest = self
+            .entries
+            .iter()
+            .map(|e| m.swatch_w + theme.gap() + text_width(&e.label, theme.legend(), false))
+            .fold(0.0, f64::max);
+        let columns = (((max_w + spacing) / (widest + spacing)).floor() as usize).max(1);
+        let pitch = if columns > 1 {
+            (max_w - widest) / (columns - 1) as f64
+        } else {
+            0.0
+        };
+        (0..self.entries.len())
+            .collect::<Vec<_>>()
+            .chunks(columns)
+            .map(|row| {
+                row.iter()
+                    .enumerate()
+                    .map(|(k, &i)| (i, k as f64 * pitch.min(widest + 2.0 * spacing)))
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// Whether the legend can be laid out in rows: entries and notes, no colour bar.
+    pub(crate) fn fits_rows(&self) -> bool {
+        self.colorbar.is_none() && !self.is_empty()
+    }
+
+    /// The height of the legend in rows `width` wide (entries in rows, notes wrapped to
+    /// the width), box included.
+    pub(crate) fn rows_height(&self, theme: &Theme, width: f64) -> f64 {
+        let m = Self::metrics(theme);
+        let inner = width - 2.0 * m.pad;
+        let notes: Vec<String> = self
+            .notes
+            .iter()
+            .flat_map(|n| wrap(n, theme.note(), inner, false))
+            .collect();
+        let mut h = m.pad + self.rows(theme, inner).len() as f64 * m.row_h;
+        if !notes.is_empty() {
+            h += 0.3 * m.row_h + notes.len() as f64 * m.note_row;
+        }
+        h + m.pad
+    }
+
+    /// Draws the legend in rows in a box `width` wide with its top-left corner at `(x, y)`.
+    pub(crate) fn draw_rows(&self, svg: &mut Painter, theme: &Theme, x: f64, y: f64, width: f64) {
+        let m = Self::metrics(theme);
+        let h = self.rows_height(theme, width);
+        svg.begin_group("legend");
+        svg.rect(
+            x,
+            y,
+            width,
+            h,
+            &Style::stroke(theme::PANE_EDGE, theme.grid_w())
+                .with_fill(Color::WHITE)
+                .square(),
+        );
+        let fs = theme.legend();
+        let inner = width - 2.0 * m.pad;
+        let mut cy = y + m.pad + m.row_h / 2.0;
+        for row in self.rows(theme, inner) {
+            for (i, dx) in row {
+                let e = &self.entries[i];
+                let sx = x + m.pad + dx;
+                draw_swatch(svg, theme, &e.swatch, sx, cy, m.swatch_w);
+                svg.text(
+                    sx + m.swatch_w + theme.gap(),
+                    cy + BASELINE_FROM_CENTRE * fs,
+                    &e.label,
+                    &TextStyle::new(fs, theme::INK).with_class("legend-label"),
+                );
+            }
+            cy += m.row_h;
+        }
+        let mut top = cy - m.row_h / 2.0 + 0.3 * m.row_h;
+        for n in self
+            .notes
+            .iter()
+            .flat_map(|n| wrap(n, theme.note(), inner, false))
+        {
+            svg.text(
+                x + m.pad,
+                top + 0.5 * m.note_row + BASELINE_FROM_CENTRE * theme.note(),
+                &n,
+                &TextStyle::new(theme.note(), theme::INK_SOFT),
+            );
+            top += m.note_row;
+        }
+        svg.end_group();
+    }
+
     /// Draws the legend with its top-left corner at `(x, y)`.
     pub(crate) fn draw(&self, svg: &mut Painter, theme: &Theme, x: f64, y: f64) {
         if self.is_empty() {
@@ -531,9 +630,16 @@ pub(crate) struct Frame {
     caption: Vec<String>,
     legend: Legend,
     legend_pos: (f64, f64),
+    /// The width of the legend when it is laid out in rows under the plot (a column would
+    /// take more than [`Frame::MAX_COLUMN_SHARE`] of the figure's width).
+    rows_width: Option<f64>,
 }
 
 impl Frame {
+    /// The largest share of the figure's width a legend column or corner box may take;
+    /// past it the legend goes under the plot, in rows.
+    pub(crate) const MAX_COLUMN_SHARE: f64 = 0.3;
+
     pub(crate) fn new(
         width: u32,
         height: u32,
@@ -557,6 +663,20 @@ impl Frame {
             bottom -= caption_lines.len() as f64 * 1.35 * theme.caption() + 0.5 * theme.caption();
         }
         let (lw, _) = legend.size(theme);
+        if place != LegendPlace::Manual && lw > Frame::MAX_COLUMN_SHARE * w && legend.fits_rows() {
+            let lh = legend.rows_height(theme, inner_w);
+            let legend_top = bottom - lh;
+            return Frame {
+                width: w,
+                height: h,
+                plot: Rect::new(m, top, inner_w, legend_top - m - top),
+                title: title_lines,
+                caption: caption_lines,
+                legend_pos: (m, legend_top),
+                rows_width: Some(inner_w),
+                legend,
+            };
+        }
         let right = if lw > 0.0 && place == LegendPlace::Column {
             w - m - lw - m
         } else {
@@ -570,13 +690,17 @@ impl Frame {
             title: title_lines,
             caption: caption_lines,
             legend_pos: (w - m - lw, top),
+            rows_width: None,
             legend,
         }
     }
 
     /// The rectangle the legend occupies.
     pub(crate) fn legend_rect(&self, theme: &Theme) -> Option<Rect> {
-        let (w, h) = self.legend.size(theme);
+        let (w, h) = match self.rows_width {
+            Some(w) => (w, self.legend.rows_height(theme, w)),
+            None => self.legend.size(theme),
+        };
         (w > 0.0).then(|| Rect::new(self.legend_pos.0, self.legend_pos.1, w, h))
     }
 
@@ -619,8 +743,11 @@ impl Frame {
             }
             svg.end_group();
         }
-        self.legend
-            .draw(svg, theme, self.legend_pos.0, self.legend_pos.1);
+        let (x, y) = self.legend_pos;
+        match self.rows_width {
+            Some(width) => self.legend.draw_rows(svg, theme, x, y, width),
+            None => self.legend.draw(svg, theme, x, y),
+        }
     }
 }
 

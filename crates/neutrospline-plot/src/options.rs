@@ -1,6 +1,7 @@
 //! Figure options.
 
 use crate::error::PlotError;
+use crate::page::{FigureSize, FigureStyle, Length};
 
 /// How to draw a figure: size, texts, camera and sampling.
 ///
@@ -27,8 +28,10 @@ use crate::error::PlotError;
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlotOptions {
-    width: u32,
-    height: u32,
+    /// `None`: the style's size.
+    size: Option<FigureSize>,
+    style: FigureStyle,
+    dpi: Option<f64>,
     title: Option<String>,
     caption: Option<String>,
     azimuth: f64,
@@ -42,8 +45,9 @@ pub struct PlotOptions {
 impl Default for PlotOptions {
     fn default() -> PlotOptions {
         PlotOptions {
-            width: PlotOptions::DEFAULT_WIDTH,
-            height: PlotOptions::DEFAULT_HEIGHT,
+            size: None,
+            style: FigureStyle::Default,
+            dpi: None,
             title: None,
             caption: None,
             azimuth: PlotOptions::DEFAULT_AZIMUTH,
@@ -78,6 +82,16 @@ impl PlotOptions {
     pub const DEFAULT_WIDTH: u32 = 1600;
     /// Default image height in pixels.
     pub const DEFAULT_HEIGHT: u32 = 1200;
+    /// The resolution of a PNG of a print size, unless one is set.
+    pub const DEFAULT_PRINT_DPI: f64 = 300.0;
+    /// Pixels per inch of a screen (CSS): the PDF page of a size in pixels, unless a
+    /// resolution is set.
+    pub const SCREEN_DPI: f64 = 96.0;
+    /// Resolutions accepted, in dots per inch.
+    pub const DPI_RANGE: std::ops::RangeInclusive<f64> = 10.0..=10_000.0;
+    /// The smallest text size on paper, in points: the tick labels; the other texts keep
+    /// their proportions to it (axis names 10 points, the title 12.75).
+    pub const PRINT_TICK_POINTS: f64 = 8.5;
     /// Smallest image side accepted, in pixels.
     pub const MIN_SIDE: u32 = 64;
     /// Largest image side accepted, in pixels.
@@ -105,21 +119,131 @@ impl PlotOptions {
 
     /// Sets width and height in pixels (default 1600 x 1200).
     pub fn with_size(mut self, width: u32, height: u32) -> PlotOptions {
-        self.width = width;
-        self.height = height;
+        self.size = Some(FigureSize::Pixels(width, height));
         self
     }
 
     /// Sets the width in pixels (default 1600).
-    pub fn with_width(mut self, width: u32) -> PlotOptions {
-        self.width = width;
-        self
+    pub fn with_width(self, width: u32) -> PlotOptions {
+        let height = self.height();
+        self.with_size(width, height)
     }
 
     /// Sets the height in pixels (default 1200).
-    pub fn with_height(mut self, height: u32) -> PlotOptions {
-        self.height = height;
+    pub fn with_height(self, height: u32) -> PlotOptions {
+        let width = self.width();
+        self.with_size(width, height)
+    }
+
+    /// Sets the size in pixels or on paper ([`FigureSize`]).
+    pub fn with_figure_size(mut self, size: FigureSize) -> PlotOptions {
+        self.size = Some(size);
         self
+    }
+
+    /// Sets a print size: the canvas is the size in PostScript points (1/72 inch), rounded to
+    /// whole points; the SVG states the size in the units given, a PDF page is exactly this
+    /// size, a PNG has `size x dpi` pixels ([`PlotOptions::DEFAULT_PRINT_DPI`] unless
+    /// [`PlotOptions::with_dpi`]). Text is never smaller than [`PlotOptions::PRINT_TICK_POINTS`]
+    /// (the tick labels) on paper.
+    ///
+    /// ```
+    /// use neutrospline_plot::{Length, LengthUnit, PlotOptions};
+    /// let cm = |v| Length::new(v, LengthUnit::Cm);
+    /// let options = PlotOptions::default().with_print_size(cm(8.5), cm(6.0));
+    /// assert_eq!((options.width(), options.height()), (241, 170));
+    /// assert_eq!(options.png_size(), (1004, 709));
+    /// ```
+    pub fn with_print_size(self, width: Length, height: Length) -> PlotOptions {
+        self.with_figure_size(FigureSize::Print(width, height))
+    }
+
+    /// Sets the resolution in dots per inch: the pixels of a PNG of a print size, and the
+    /// resolution written into every PNG (its `pHYs` chunk). Without it, a print size is
+    /// rasterized at [`PlotOptions::DEFAULT_PRINT_DPI`] and a size in pixels writes none.
+    pub fn with_dpi(mut self, dpi: f64) -> PlotOptions {
+        self.dpi = Some(dpi);
+        self
+    }
+
+    /// Sets the style ([`FigureStyle::Paper`]: no title or caption unless given, one column
+    /// wide unless a size is given, text of 8.5 to 10 points).
+    pub fn with_style(mut self, style: FigureStyle) -> PlotOptions {
+        self.style = style;
+        self
+    }
+
+    /// The size as set: pixels, a print size, or the style's own.
+    pub fn figure_size(&self) -> FigureSize {
+        match (self.size, self.style) {
+            (Some(size), _) => size,
+            (None, FigureStyle::Default) => {
+                FigureSize::Pixels(PlotOptions::DEFAULT_WIDTH, PlotOptions::DEFAULT_HEIGHT)
+            }
+            (None, FigureStyle::Paper) => {
+                FigureSize::Print(FigureStyle::PAPER_WIDTH, FigureStyle::PAPER_HEIGHT)
+            }
+        }
+    }
+
+    /// The print size, when the figure has one (set, or the paper style's).
+    pub fn print_size(&self) -> Option<(Length, Length)> {
+        match self.figure_size() {
+            FigureSize::Print(w, h) => Some((w, h)),
+            FigureSize::Pixels(..) => None,
+        }
+    }
+
+    /// The style.
+    pub fn style(&self) -> FigureStyle {
+        self.style
+    }
+
+    /// The resolution set, if any.
+    pub fn dpi(&self) -> Option<f64> {
+        self.dpi
+    }
+
+    /// The pixels of a PNG of the figure: the size in pixels, or a print size times the
+    /// resolution (rounded).
+    pub fn png_size(&self) -> (u32, u32) {
+        match self.figure_size() {
+            FigureSize::Pixels(w, h) => (w, h),
+            FigureSize::Print(w, h) => {
+                let dpi = self.dpi.unwrap_or(PlotOptions::DEFAULT_PRINT_DPI);
+                let px = |l: Length| {
+                    let v = (l.inches() * dpi).round();
+                    if v.is_finite() && v >= 0.0 && v <= f64::from(u32::MAX) {
+                        v as u32
+                    } else {
+                        u32::MAX
+                    }
+                };
+                (px(w), px(h))
+            }
+        }
+    }
+
+    /// The size of a PDF page of the figure, in points: a print size exactly, a size in
+    /// pixels at the resolution set (else [`PlotOptions::SCREEN_DPI`] pixels per inch).
+    pub fn page_points(&self) -> (f64, f64) {
+        match self.figure_size() {
+            FigureSize::Print(w, h) => (w.points(), h.points()),
+            FigureSize::Pixels(w, h) => {
+                let dpi = self.dpi.unwrap_or(PlotOptions::SCREEN_DPI);
+                (f64::from(w) * 72.0 / dpi, f64::from(h) * 72.0 / dpi)
+            }
+        }
+    }
+
+    /// The resolution a PNG records: the one set, else [`PlotOptions::DEFAULT_PRINT_DPI`]
+    /// for a print size; `None` for a size in pixels without one.
+    pub fn png_dpi(&self) -> Option<f64> {
+        match (self.dpi, self.figure_size()) {
+            (Some(dpi), _) => Some(dpi),
+            (None, FigureSize::Print(..)) => Some(PlotOptions::DEFAULT_PRINT_DPI),
+            (None, FigureSize::Pixels(..)) => None,
+        }
     }
 
     /// Sets the title; an empty title draws none. Without one, each view has its own title
@@ -162,24 +286,49 @@ impl PlotOptions {
         self
     }
 
-    /// Image width in pixels.
+    /// The canvas width: pixels, or whole points for a print size.
     pub fn width(&self) -> u32 {
-        self.width
+        self.canvas().0
     }
 
-    /// Image height in pixels.
+    /// The canvas height: pixels, or whole points for a print size.
     pub fn height(&self) -> u32 {
-        self.height
+        self.canvas().1
     }
 
-    /// The title, if one was set (`Some("")` draws none).
+    fn canvas(&self) -> (u32, u32) {
+        match self.figure_size() {
+            FigureSize::Pixels(w, h) => (w, h),
+            FigureSize::Print(w, h) => {
+                let pt = |l: Length| {
+                    let v = l.points().round();
+                    if v.is_finite() && v >= 0.0 && v <= f64::from(u32::MAX) {
+                        v as u32
+                    } else {
+                        u32::MAX
+                    }
+                };
+                (pt(w), pt(h))
+            }
+        }
+    }
+
+    /// The title, if one was set (`Some("")` draws none; the paper style draws none unless
+    /// one is set).
     pub fn title(&self) -> Option<&str> {
-        self.title.as_deref()
+        match (&self.title, self.style) {
+            (None, FigureStyle::Paper) => Some(""),
+            (title, _) => title.as_deref(),
+        }
     }
 
-    /// The caption, if one was set.
+    /// The caption, if one was set (`Some("")` draws none; the paper style draws none unless
+    /// one is set).
     pub fn caption(&self) -> Option<&str> {
-        self.caption.as_deref()
+        match (&self.caption, self.style) {
+            (None, FigureStyle::Paper) => Some(""),
+            (caption, _) => caption.as_deref(),
+        }
     }
 
     /// Camera azimuth in degrees.
@@ -227,7 +376,33 @@ impl PlotOptions {
     /// [`PlotError::InvalidSize`], [`PlotError::InvalidSamples`] or
     /// [`PlotError::InvalidCamera`].
     pub fn validate(&self) -> Result<(), PlotError> {
-        check_size(self.width, self.height)?;
+        if let Some(dpi) = self.dpi {
+            if !PlotOptions::DPI_RANGE.contains(&dpi) {
+                return Err(PlotError::InvalidDpi {
+                    dpi,
+                    min: *PlotOptions::DPI_RANGE.start(),
+                    max: *PlotOptions::DPI_RANGE.end(),
+                });
+            }
+        }
+        if let Some((w, h)) = self.print_size() {
+            let (cw, ch) = self.canvas();
+            let ok = |s: u32| (PlotOptions::MIN_SIDE..=PlotOptions::MAX_SIDE).contains(&s);
+            if !(ok(cw) && ok(ch)) {
+                return Err(PlotError::InvalidPrintSize {
+                    size: format!("{w}x{h}"),
+                    min: PlotOptions::MIN_SIDE,
+                    max: PlotOptions::MAX_SIDE,
+                });
+            }
+            return self.validate_rest();
+        }
+        let (w, h) = self.canvas();
+        check_size(w, h)?;
+        self.validate_rest()
+    }
+
+    fn validate_rest(&self) -> Result<(), PlotError> {
         if let Some(&alpha) = self.alphas.iter().find(|a| !(0.0..=1.0).contains(*a)) {
             return Err(PlotError::InvalidAlpha { alpha });
         }

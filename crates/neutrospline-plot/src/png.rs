@@ -46,11 +46,14 @@ pub fn svg_to_png(svg: &str, width: u32, height: u32) -> Result<Vec<u8>, PlotErr
     })
 }
 
-/// Draws `view` of `model` as a PNG of `options.width()` x `options.height()` pixels:
-/// [`render_svg`] followed by [`svg_to_png`].
+/// Draws `view` of `model` as a PNG of [`PlotOptions::png_size`] pixels (the size in pixels,
+/// or a print size at the resolution), with the resolution written into the file (a `pHYs`
+/// chunk) when the figure has one ([`PlotOptions::png_dpi`]): [`render_svg`] followed by
+/// [`svg_to_png`].
 ///
 /// # Errors
-/// Those of [`render_svg`] and [`svg_to_png`].
+/// Those of [`render_svg`] and [`svg_to_png`]; [`PlotError::InvalidRaster`] when a print
+/// size at the resolution gives too many or too few pixels.
 ///
 /// # Examples
 /// ```
@@ -66,5 +69,43 @@ pub fn render_png(
     options: &PlotOptions,
 ) -> Result<Vec<u8>, PlotError> {
     let svg = render_svg(model, view, options)?;
-    svg_to_png(&svg, options.width(), options.height())
+    let (width, height) = options.png_size();
+    if let (Some((w, h)), Err(_)) = (options.print_size(), check_size(width, height)) {
+        return Err(PlotError::InvalidRaster {
+            size: format!("{w}x{h}"),
+            dpi: options.png_dpi().unwrap_or(PlotOptions::DEFAULT_PRINT_DPI),
+            width,
+            height,
+            min: PlotOptions::MIN_SIDE,
+            max: PlotOptions::MAX_SIDE,
+        });
+    }
+    let png = svg_to_png(&svg, width, height)?;
+    Ok(match options.png_dpi() {
+        Some(dpi) => with_resolution(png, dpi),
+        None => png,
+    })
+}
+
+/// The PNG with a `pHYs` chunk (pixels per metre, both axes) right after its header.
+fn with_resolution(png: Vec<u8>, dpi: f64) -> Vec<u8> {
+    // The signature (8 bytes) and the IHDR chunk (4 + 4 + 13 + 4 bytes) come first.
+    const AFTER_IHDR: usize = 8 + 25;
+    if png.len() < AFTER_IHDR || &png[12..16] != b"IHDR" {
+        return png;
+    }
+    let per_metre = (dpi / 0.0254).round() as u32;
+    let mut chunk = Vec::with_capacity(21);
+    chunk.extend_from_slice(&9u32.to_be_bytes());
+    chunk.extend_from_slice(b"pHYs");
+    chunk.extend_from_slice(&per_metre.to_be_bytes());
+    chunk.extend_from_slice(&per_metre.to_be_bytes());
+    chunk.push(1); // the unit is the metre
+    let crc = crc32fast::hash(&chunk[4..]);
+    chunk.extend_from_slice(&crc.to_be_bytes());
+    let mut out = Vec::with_capacity(png.len() + chunk.len());
+    out.extend_from_slice(&png[..AFTER_IHDR]);
+    out.extend_from_slice(&chunk);
+    out.extend_from_slice(&png[AFTER_IHDR..]);
+    out
 }

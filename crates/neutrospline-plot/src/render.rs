@@ -107,7 +107,7 @@ pub fn render_drawing(
         None
     };
     let ctx = Ctx {
-        theme: Theme::new(options.width(), options.height()),
+        theme: Theme::of(options),
         options,
         curve,
         controls,
@@ -128,10 +128,11 @@ pub fn render_drawing(
             });
         }
     }
-    let drawing = match (&mesh, model.grid()) {
+    let mut drawing = match (&mesh, model.grid()) {
         (Some(mesh), Some(grid)) => figure.surface(&ctx, mesh, grid),
         _ if model.dimension() == 2 => figure.curve_2d(&ctx),
         _ => figure.curve_3d(&ctx),
     };
+    drawing.print = options.print_size();
     Ok(drawing)
 }

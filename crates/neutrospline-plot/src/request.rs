@@ -8,6 +8,7 @@ use neutrospline::DegreeKind;
 
 use crate::error::PlotError;
 use crate::options::PlotOptions;
+use crate::page::{FigureSize, FigureStyle};
 use crate::view::View;
 
 /// The options of a figure as every front end gives them, set by name with
@@ -32,10 +33,18 @@ use crate::view::View;
 pub struct FigureRequest {
     /// `view`: which view; `None` for the default ([`FigureRequest::view`]).
     pub view: Option<View>,
-    /// `width` in pixels (the SVG's size too).
-    pub width: u32,
-    /// `height` in pixels.
-    pub height: u32,
+    /// `width` and `height` in pixels, or `size` (pixels or a print size); `None` for the
+    /// style's size.
+    pub size: Option<FigureSize>,
+    /// `dpi`: the resolution of a PNG (its pixels for a print size, and the resolution it
+    /// records); `None` for 300 on paper and none for a size in pixels.
+    pub dpi: Option<f64>,
+    /// `style`: `default` or `paper`.
+    pub style: FigureStyle,
+    /// `no-title`: draw no title.
+    pub no_title: bool,
+    /// `no-caption`: draw no caption (not even the model's description).
+    pub no_caption: bool,
     /// `title` above the figure; `None` for the view's own, `""` for none.
     pub title: Option<String>,
     /// `caption` under the figure; `None` for the model's description.
@@ -59,8 +68,11 @@ impl Default for FigureRequest {
         let plot = PlotOptions::default();
         FigureRequest {
             view: None,
-            width: plot.width(),
-            height: plot.height(),
+            size: None,
+            dpi: None,
+            style: plot.style(),
+            no_title: false,
+            no_caption: false,
             title: None,
             caption: None,
             azimuth: plot.azimuth(),
@@ -91,6 +103,39 @@ impl OptionSet for FigureRequest {
             kind: ValueKind::Whole,
             value_name: "PX",
             help: "Height in pixels",
+        },
+        OptionSpec {
+            name: "size",
+            kind: ValueKind::Text,
+            value_name: "WxH",
+            help: "Size in pixels (1600x1200) or on paper, with a unit: pt, mm, cm or in \
+                   (8.5cmx6cm; the text stays at least 8.5 points)",
+        },
+        OptionSpec {
+            name: "dpi",
+            kind: ValueKind::Number,
+            value_name: "DPI",
+            help: "Resolution of a PNG: its pixels for a size on paper (default 300), and the \
+                   resolution the file records",
+        },
+        OptionSpec {
+            name: "style",
+            kind: ValueKind::Choice(&FigureStyle::NAMES),
+            value_name: "STYLE",
+            help: "paper: no title or caption, one column wide (8.5cm x 7cm) unless --size, \
+                   text of 8.5 to 10 points",
+        },
+        OptionSpec {
+            name: "no-title",
+            kind: ValueKind::Flag,
+            value_name: "",
+            help: "Draw no title",
+        },
+        OptionSpec {
+            name: "no-caption",
+            kind: ValueKind::Flag,
+            value_name: "",
+            help: "Draw no caption (not even the model's description)",
         },
         OptionSpec {
             name: "title",
@@ -158,8 +203,32 @@ impl OptionSet for FigureRequest {
                         unreachable!("view {word} is one of View::NAMES: {e}")
                     }));
             }
-            ("width", Read::Whole(n)) => self.width = side(n)?,
-            ("height", Read::Whole(n)) => self.height = side(n)?,
+            ("width", Read::Whole(n)) => {
+                let (_, height) = self.pixels();
+                self.size = Some(FigureSize::Pixels(side(n)?, height));
+            }
+            ("height", Read::Whole(n)) => {
+                let (width, _) = self.pixels();
+                self.size = Some(FigureSize::Pixels(width, side(n)?));
+            }
+            ("size", Read::Text(text)) => {
+                let size = text
+                    .parse::<FigureSize>()
+                    .map_err(|_| OptionError::Invalid {
+                        name: spec.name,
+                        given: value.to_string(),
+                        expected: FigureSize::EXPECTED.to_owned(),
+                    })?;
+                self.size = Some(size);
+            }
+            ("dpi", Read::Number(x)) => self.dpi = Some(x),
+            ("style", Read::Choice(word)) => {
+                self.style = word
+                    .parse()
+                    .unwrap_or_else(|e| unreachable!("style {word} is a FigureStyle: {e}"));
+            }
+            ("no-title", Read::Flag(on)) => self.no_title = on,
+            ("no-caption", Read::Flag(on)) => self.no_caption = on,
             ("title", Read::Text(text)) => self.title = Some(text),
             ("caption", Read::Text(text)) => self.caption = Some(text),
             ("azimuth", Read::Number(x)) => self.azimuth = x,
@@ -180,8 +249,13 @@ impl OptionSet for FigureRequest {
         let spec = find(Self::OPTIONS, name)?;
         Ok(match spec.name {
             "view" => self.view.map(|v| v.name().to_owned()),
-            "width" => Some(self.width.to_string()),
-            "height" => Some(self.height.to_string()),
+            "width" => Some(self.pixels().0.to_string()),
+            "height" => Some(self.pixels().1.to_string()),
+            "size" => self.size.map(|s| s.to_string()),
+            "dpi" => self.dpi.map(|x| x.to_string()),
+            "style" => Some(self.style.name().to_owned()),
+            "no-title" => Some(self.no_title.to_string()),
+            "no-caption" => Some(self.no_caption.to_string()),
             "title" => self.title.clone(),
             "caption" => self.caption.clone(),
             "azimuth" => Some(self.azimuth.to_string()),
@@ -226,18 +300,39 @@ impl FigureRequest {
         self.checked(true)
     }
 
+    /// The size in pixels: the one given, else the default (a print size has none; its
+    /// canvas is in points).
+    fn pixels(&self) -> (u32, u32) {
+        match self.size {
+            Some(FigureSize::Pixels(w, h)) => (w, h),
+            _ => (PlotOptions::DEFAULT_WIDTH, PlotOptions::DEFAULT_HEIGHT),
+        }
+    }
+
     fn checked(&self, surface: bool) -> Result<PlotOptions, PlotError> {
         let mut options = PlotOptions::new()
-            .with_size(self.width, self.height)
+            .with_style(self.style)
             .with_camera(self.azimuth, self.elevation)
             .with_alphas(self.alpha.iter().copied());
+        if let Some(size) = self.size {
+            options = options.with_figure_size(size);
+        }
+        if let Some(dpi) = self.dpi {
+            options = options.with_dpi(dpi);
+        }
+        if self.no_title {
+            options = options.with_title("");
+        }
+        if self.no_caption {
+            options = options.with_caption("");
+        }
         if let Some(n) = self.samples {
             options = options.with_samples(n);
         }
-        if let Some(title) = &self.title {
+        if let (Some(title), false) = (&self.title, self.no_title) {
             options = options.with_title(title.clone());
         }
-        if let Some(caption) = &self.caption {
+        if let (Some(caption), false) = (&self.caption, self.no_caption) {
             options = options.with_caption(caption.clone());
         }
         options.validate()?;
@@ -265,6 +360,11 @@ mod tests {
             ("view", "band"),
             ("width", "800"),
             ("height", "600"),
+            ("size", "8.5cmx6cm"),
+            ("dpi", "600"),
+            ("style", "paper"),
+            ("no-title", "true"),
+            ("no-caption", "true"),
             ("title", "T"),
             ("caption", "C"),
             ("azimuth", "-30.5"),

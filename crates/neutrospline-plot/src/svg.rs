@@ -11,6 +11,7 @@ use neutrospline::uniform_parameter;
 use crate::drawing::Drawing;
 use crate::encode::Encoder;
 use crate::font::FONT_FAMILY_CSS;
+use crate::page::Length;
 use crate::style::{num, write_points, Anchor, Color, Style, TextStyle};
 
 /// Escapes text for XML content and attribute values.
@@ -76,7 +77,7 @@ impl Drawing {
             out: String::with_capacity(64 * 1024),
             depth: 1,
         };
-        w.header(self.width, self.height, &self.title);
+        w.header(self.width, self.height, self.print, &self.title);
         self.encode(&mut w);
         w.out.push_str("</svg>\n");
         w.out
@@ -90,13 +91,18 @@ struct SvgText {
 }
 
 impl SvgText {
-    fn header(&mut self, width: u32, height: u32, title: &str) {
+    fn header(&mut self, width: u32, height: u32, print: Option<(Length, Length)>, title: &str) {
         let out = &mut self.out;
         out.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+        // A print size is stated in its units; the canvas (in points) is the view box.
+        let (w, h) = match print {
+            Some((w, h)) => (w.to_string(), h.to_string()),
+            None => (width.to_string(), height.to_string()),
+        };
         let _ = writeln!(
             out,
-            "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{width}\" \
-             height=\"{height}\" viewBox=\"0 0 {width} {height}\" font-family=\"{FONT_FAMILY_CSS}\">"
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{w}\" \
+             height=\"{h}\" viewBox=\"0 0 {width} {height}\" font-family=\"{FONT_FAMILY_CSS}\">"
         );
         if !title.is_empty() {
             let _ = writeln!(out, "<title>{}</title>", escape(title));

@@ -2,6 +2,7 @@
 
 use neutrospline::DegreeKind;
 
+use crate::options::PlotOptions;
 use crate::style::{Color, Style};
 
 /// Text colour.
@@ -111,44 +112,64 @@ pub(crate) fn marker_style(theme: &Theme, fill: Color) -> Style {
     Style::stroke(CRISP, theme.s * 1.8).with_fill(fill)
 }
 
-/// Sizes of one figure: every length is a size at 1600 x 1200 times the figure's scale.
+/// Sizes of one figure: every length is a size at 1600 x 1200 times the figure's scale `s`,
+/// and every text size one times the text scale `t`: `s` too, except on paper, where text
+/// does not shrink below [`PlotOptions::PRINT_TICK_POINTS`] for the tick labels.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Theme {
     pub s: f64,
+    pub t: f64,
 }
+
+/// The tick labels' size at scale 1: the reference of the print text scale.
+const TICK: f64 = 36.0;
 
 impl Theme {
     pub(crate) fn new(width: u32, height: u32) -> Theme {
         let s = (f64::from(width) / 1600.0).min(f64::from(height) / 1200.0);
-        Theme { s }
+        Theme { s, t: s }
+    }
+
+    /// The theme of a figure with these options: on paper (a print size, whose canvas unit is
+    /// the point) the text scale is at least the one that sets the tick labels at
+    /// [`PlotOptions::PRINT_TICK_POINTS`].
+    pub(crate) fn of(options: &PlotOptions) -> Theme {
+        let theme = Theme::new(options.width(), options.height());
+        match options.print_size() {
+            Some(_) => Theme {
+                t: theme.s.max(PlotOptions::PRINT_TICK_POINTS / TICK),
+                ..theme
+            },
+            None => theme,
+        }
     }
 
     pub(crate) fn title(&self) -> f64 {
-        54.0 * self.s
+        54.0 * self.t
     }
     pub(crate) fn subtitle(&self) -> f64 {
-        40.0 * self.s
+        40.0 * self.t
     }
     pub(crate) fn tick(&self) -> f64 {
-        36.0 * self.s
+        TICK * self.t
     }
     pub(crate) fn label(&self) -> f64 {
-        42.0 * self.s
+        42.0 * self.t
     }
     pub(crate) fn legend(&self) -> f64 {
-        35.0 * self.s
+        35.0 * self.t
     }
     pub(crate) fn note(&self) -> f64 {
-        31.0 * self.s
+        31.0 * self.t
     }
     pub(crate) fn caption(&self) -> f64 {
-        31.0 * self.s
+        31.0 * self.t
     }
     pub(crate) fn name(&self) -> f64 {
-        34.0 * self.s
+        34.0 * self.t
     }
     pub(crate) fn callout(&self) -> f64 {
-        29.0 * self.s
+        29.0 * self.t
     }
     pub(crate) fn margin(&self) -> f64 {
         32.0 * self.s

@@ -7,7 +7,9 @@ use std::str::FromStr;
 
 use neutrospline::{ControlPoint, Degrees, Membership};
 use neutrospline_io::{write_atomically, Format, Model, ReadOptions, Shape};
-use neutrospline_plot::{render_png, render_svg, FigureRequest, PlotModel, PlotOptions, View};
+use neutrospline_plot::{
+    render_figure, render_svg, FigureFormat, FigureRequest, PlotModel, PlotOptions, View,
+};
 use pyo3::exceptions::PyOSError;
 use pyo3::prelude::*;
 
@@ -248,7 +250,7 @@ pub fn prepare(model: &Model, request: &FigureRequest) -> PyResult<(PlotModel, V
         request.plot_options()
     }
     .map_err(invalid)?;
-    let options = match (&request.caption, model.description()) {
+    let options = match (options.caption(), model.description()) {
         (None, Some(description)) => options.with_caption(description),
         _ => options,
     };
@@ -263,36 +265,18 @@ pub fn svg(py: Python<'_>, model: &Model, request: &FigureRequest) -> PyResult<S
         .map_err(invalid)
 }
 
-/// Writes a figure of `model` to `path` (`.svg` or `.png`), atomically.
+/// Writes a figure of `model` to `path` (`.svg`, `.png` or `.pdf`, by the extension),
+/// atomically.
 pub fn save_figure(
     py: Python<'_>,
     model: &Model,
     path: &Path,
     request: &FigureRequest,
 ) -> PyResult<()> {
-    let extension = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    let png = match extension.as_deref() {
-        Some("svg") => false,
-        Some("png") => true,
-        _ => {
-            return Err(invalid_at(
-                path.display(),
-                "unsupported figure extension (give .svg or .png)",
-            ))
-        }
-    };
+    let format = FigureFormat::from_path(path).map_err(invalid)?;
     let (figure, view, options) = prepare(model, request)?;
     let bytes = py
-        .detach(|| {
-            if png {
-                render_png(&figure, view, &options)
-            } else {
-                render_svg(&figure, view, &options).map(String::into_bytes)
-            }
-        })
+        .detach(|| render_figure(&figure, view, &options, format))
         .map_err(invalid)?;
     let failed =
         |e: std::io::Error| PyOSError::new_err(format!("{}: cannot write: {e}", path.display()));

@@ -5,10 +5,12 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 use neutrospline::{example1, AnyCurve, ControlPolygon, Evaluate, EXAMPLE1_NAMES};
-use neutrospline_plot::{PlotModel, PlotOptions, View};
+use neutrospline_plot::{FigureFormat, FigureRequest, PlotModel, PlotOptions, View};
 
-use crate::commands::plot::{write_figure, FigureFormat};
+use crate::commands::plot::write_figure;
+use crate::input::UsageError;
 use crate::output::{self, number, rounded, Align};
+use crate::request::RequestArgs;
 use crate::shape::{Extras, Param, Shape, Table};
 
 /// Arguments of `example`.
@@ -18,6 +20,16 @@ pub struct ExampleArgs {
     /// the curve table (example1.csv) into DIR, created if needed
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
+
+    /// The formats of the figures written by --out, comma-separated
+    #[arg(long, value_name = "FORMATS", value_delimiter = ',', default_value = "svg,png",
+          value_parser = clap::builder::PossibleValuesParser::new(FigureFormat::NAMES))]
+    pub formats: Vec<String>,
+
+    /// The figures' options (defined by the plot crate's `FigureRequest`; each figure has its
+    /// own view): for a paper, `--style paper` or `--size 8.5cmx6cm --no-title --no-caption`
+    #[command(flatten)]
+    pub figure: RequestArgs<FigureRequest>,
 }
 
 /// The paper's figures: file stem and view (Fig. 1 control points; Fig. 2, 3, 4 the truth,
@@ -52,7 +64,7 @@ which defines the example, gives 0.4; this output follows Table 1.";
 pub fn run(args: &ExampleArgs) -> anyhow::Result<()> {
     let curve = example1();
     let written = match &args.out {
-        Some(dir) => write_outputs(dir)?,
+        Some(dir) => write_outputs(dir, &args.formats, args.figure.request()?)?,
         None => Vec::new(),
     };
     let header = ["t", "x", "y", "truth", "indeterminacy", "falsity"];
@@ -118,20 +130,49 @@ pub fn run(args: &ExampleArgs) -> anyhow::Result<()> {
     })
 }
 
-/// Writes the five figures as SVG and PNG and the curve table into `dir`; returns the paths.
+/// The options of the example's figures: the request's, with [`CAPTION`] unless a caption
+/// (or none) was asked for.
+///
+/// # Errors
+/// A usage error for `--view` (each figure has its view) or an option out of range.
+fn figure_options(request: &FigureRequest) -> Result<PlotOptions, UsageError> {
+    if let Some(view) = request.view {
+        return Err(UsageError(format!(
+            "--view {view}: example draws the paper's five views (figure1 to figure5); draw \
+             one view with `neutrospline plot`"
+        )));
+    }
+    let options = request
+        .plot_options()
+        .map_err(|e| UsageError(e.to_string()))?;
+    Ok(match options.caption() {
+        None => options.with_caption(CAPTION),
+        Some(_) => options,
+    })
+}
+
+/// Writes the five figures in `formats` and the curve table into `dir`; returns the paths.
 ///
 /// # Errors
 /// The directory cannot be created, or a file cannot be rendered or written.
-fn write_outputs(dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
+fn write_outputs(
+    dir: &Path,
+    formats: &[String],
+    request: &FigureRequest,
+) -> anyhow::Result<Vec<PathBuf>> {
+    let options = figure_options(request)?;
     fs::create_dir_all(dir)
         .with_context(|| format!("{}: cannot create directory", dir.display()))?;
     let curve = example1();
     let model = PlotModel::from_bezier(&curve)?.with_names(EXAMPLE1_NAMES)?;
-    let options = PlotOptions::new().with_caption(CAPTION);
+    let formats: Vec<FigureFormat> = FigureFormat::ALL
+        .into_iter()
+        .filter(|f| formats.iter().any(|name| name == f.name()))
+        .collect();
     let mut written = Vec::new();
     for (stem, view) in FIGURES {
-        for (ext, format) in [("svg", FigureFormat::Svg), ("png", FigureFormat::Png)] {
-            let path = dir.join(format!("{stem}.{ext}"));
+        for &format in &formats {
+            let path = dir.join(format!("{stem}.{}", format.name()));
             write_figure(&model, view, &options, &path, format)?;
             written.push(path);
         }

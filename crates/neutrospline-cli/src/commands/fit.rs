@@ -13,7 +13,7 @@ use neutrospline::DegreeKind;
 use neutrospline_io::{DataTable, Format, Model, TableInput};
 use neutrospline_plot::{DataOverlay, FigureRequest, PlotModel, PlotOptions, View};
 
-use crate::commands::plot::{write_figure, FigureFormat};
+use crate::commands::plot::{figure_format, write_figure};
 use crate::input::{read_data, UsageError};
 use crate::output::{self, number};
 use crate::request::{RequestArgs, UnionArgs};
@@ -132,11 +132,7 @@ fn model_format(args: &FitArgs) -> anyhow::Result<Format> {
 
 /// The curve fit.
 fn run_curve(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
-    let figure_format = args
-        .plot
-        .as_deref()
-        .map(FigureFormat::from_path)
-        .transpose()?;
+    let figure_format = args.plot.as_deref().map(figure_format).transpose()?;
     let request = args.request.first("with --surface")?;
     let options = request.validate().map_err(|e| UsageError(e.to_string()))?;
     let membership = request.membership;
@@ -182,11 +178,7 @@ fn run_curve(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
 }
 /// The surface fit: the same data file, model and report channels as a curve's.
 fn run_surface(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
-    let figure_format = args
-        .plot
-        .as_deref()
-        .map(FigureFormat::from_path)
-        .transpose()?;
+    let figure_format = args.plot.as_deref().map(figure_format).transpose()?;
     let request = args.request.second("without --surface")?;
     let options = request.validate().map_err(|e| UsageError(e.to_string()))?;
     let membership = request.membership;

@@ -3,7 +3,7 @@
 use std::path::{Path, PathBuf};
 
 use neutrospline_plot::{
-    render_png, render_svg, DataOverlay, FigureRequest, PlotModel, PlotOptions, View,
+    render_figure, DataOverlay, FigureFormat, FigureRequest, PlotModel, PlotOptions, View,
 };
 
 use crate::commands::options::ModelArgs;
@@ -12,34 +12,12 @@ use crate::input::{self, UsageError};
 use crate::output;
 use crate::request::RequestArgs;
 
-/// The figure formats, chosen by the output file's extension.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum FigureFormat {
-    /// Scalable vector graphics (text stays text).
-    Svg,
-    /// A raster image, rendered with the bundled fonts.
-    Png,
-}
-
-impl FigureFormat {
-    /// The format of `path`, from its extension (case-insensitive).
-    ///
-    /// # Errors
-    /// A usage error naming the accepted extensions.
-    pub fn from_path(path: &Path) -> Result<FigureFormat, UsageError> {
-        let ext = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase);
-        match ext.as_deref() {
-            Some("svg") => Ok(FigureFormat::Svg),
-            Some("png") => Ok(FigureFormat::Png),
-            _ => Err(UsageError(format!(
-                "{}: unsupported figure extension (accepted: .svg, .png)",
-                path.display()
-            ))),
-        }
-    }
+/// The format of figure file `path`, from its extension.
+///
+/// # Errors
+/// A usage error naming the file and the accepted extensions.
+pub fn figure_format(path: &Path) -> Result<FigureFormat, UsageError> {
+    FigureFormat::from_path(path).map_err(|e| UsageError(e.to_string()))
 }
 
 /// Arguments of `plot`.
@@ -61,13 +39,15 @@ whiskers (curves only)\n  \
 band           the fuzzy position (control point spreads): the regions swept by the\n                 \
 alpha-cuts at alpha = 0, 0.5, 1 (or --alpha), lighter for lower alpha, the crisp curve\n                 \
 on top, the centroid curve dashed (curves only; 3-D: the tube's silhouette)\n\
-The format follows the extension of OUT: .svg or .png.")]
+The format follows the extension of OUT: .svg, .png or .pdf (vector, the font embedded:\n\
+for LaTeX). For a paper: --style paper (no title or caption, 8.5cm wide, text of 8.5 to 10\n\
+points), or --size 8.5cmx6cm with --no-title / --no-caption; --dpi sets a PNG's resolution.")]
 pub struct PlotArgs {
     /// The model file: .csv, .toml or .json; `-` reads CSV from standard input
     #[arg(value_name = "FILE")]
     pub file: String,
 
-    /// The figure to write: OUT.svg or OUT.png (replaced atomically)
+    /// The figure to write: OUT.svg, OUT.png or OUT.pdf (replaced atomically)
     #[arg(short = 'o', long = "output", value_name = "OUT")]
     pub output: PathBuf,
 
@@ -96,10 +76,7 @@ pub fn write_figure(
     path: &Path,
     format: FigureFormat,
 ) -> anyhow::Result<()> {
-    let bytes = match format {
-        FigureFormat::Svg => render_svg(model, view, options)?.into_bytes(),
-        FigureFormat::Png => render_png(model, view, options)?,
-    };
+    let bytes = render_figure(model, view, options, format)?;
     output::emit(Some(path), |w| {
         w.write_all(&bytes)?;
         Ok(())
@@ -112,7 +89,7 @@ pub fn write_figure(
 /// An invalid file, an unsupported output extension or option (usage errors), a rendering
 /// error or a write error.
 pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
-    let format = FigureFormat::from_path(&args.output)?;
+    let format = figure_format(&args.output)?;
     let request = args.figure.request()?;
     let mut options = request
         .plot_options()
@@ -127,7 +104,7 @@ pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
             .validate_surface()
             .map_err(|e| UsageError(e.to_string()))?;
     }
-    if let (None, Some(description)) = (&request.caption, description) {
+    if let (None, Some(description)) = (options.caption(), description) {
         options = options.with_caption(description);
     }
     let view = request.view(args.data.is_some());

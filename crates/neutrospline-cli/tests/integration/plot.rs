@@ -181,17 +181,17 @@ fn plot_usage_errors_exit_2_and_keep_old_output() {
         "error: view = side: expected one of controls, truth, indeterminacy, falsity, all, plane, \
          score, data, band\n"
     );
-    let pdf = dir.path().join("fig.pdf");
-    let out = run(&["plot", file.to_str().unwrap(), "-o", pdf.to_str().unwrap()]);
+    let eps = dir.path().join("fig.eps");
+    let out = run(&["plot", file.to_str().unwrap(), "-o", eps.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
         String::from_utf8_lossy(&out.stderr).trim_end(),
         format!(
-            "error: {}: unsupported figure extension (accepted: .svg, .png)",
-            pdf.display()
+            "error: {}: unsupported figure extension (accepted: .svg, .png, .pdf)",
+            eps.display()
         )
     );
-    assert!(!pdf.exists());
+    assert!(!eps.exists());
     let out = run(&[
         "plot",
         file.to_str().unwrap(),
