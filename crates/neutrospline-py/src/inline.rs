@@ -13,7 +13,7 @@ use std::sync::Mutex;
 
 use neutrospline::options::{OptionSet, OptionValue};
 use neutrospline_io::Model;
-use neutrospline_plot::{render_png, FigureRequest};
+use neutrospline_plot::{render_png, FigureRequest, FigureSize};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict};
 
@@ -61,8 +61,7 @@ impl Default for Inline {
     fn default() -> Self {
         Inline {
             request: FigureRequest {
-                width: NOTEBOOK_SIZE.0,
-                height: NOTEBOOK_SIZE.1,
+                size: Some(FigureSize::Pixels(NOTEBOOK_SIZE.0, NOTEBOOK_SIZE.1)),
                 ..FigureRequest::default()
             },
             format: Format::Both,
@@ -190,8 +189,14 @@ fn responsive(svg: &str) -> String {
     if !root.contains(" viewBox=\"") || h0 != w1 {
         return svg.to_owned();
     }
+    // A size in pixels is a bare number; a print size keeps its unit (`8.5cm`), which CSS reads.
+    let unit = if width.bytes().all(|b| b.is_ascii_digit() || b == b'.') {
+        "px"
+    } else {
+        ""
+    };
     let new_root = format!(
-        "{} width=\"100%\" style=\"max-width: {width}px; height: auto\"{}",
+        "{} width=\"100%\" style=\"max-width: {width}{unit}; height: auto\"{}",
         &root[..w0],
         &root[h1..]
     );

@@ -315,3 +315,182 @@ fn controls_callouts_keep_clear_of_the_legend_the_markers_and_each_other() {
     }
     assert!(checked >= 30, "{checked}");
 }
+
+/// `example --formats pdf --style paper`: the five figures as one-column PDF pages (8.5 cm x
+/// 7 cm) without the title or the erratum caption; `--view` is refused (each figure has its
+/// own), and so is an unknown format.
+#[test]
+fn example_writes_paper_pdfs() {
+    let dir = tempfile::tempdir().unwrap();
+    let out_dir = dir.path().join("paper");
+    let out = run(&[
+        "example",
+        "--out",
+        out_dir.to_str().unwrap(),
+        "--formats",
+        "pdf",
+        "--style",
+        "paper",
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for k in 1..=5 {
+        let pdf = fs::read(out_dir.join(format!("figure{k}.pdf"))).unwrap();
+        assert!(pdf.starts_with(b"%PDF-1.7"));
+        let text = String::from_utf8_lossy(&pdf);
+        // 8.5 cm x 7 cm in points.
+        assert!(text.contains("/MediaBox [0 0 240.944882 198.425197]"));
+        assert!(text.contains("/FontFile2"));
+        assert!(!out_dir.join(format!("figure{k}.png")).exists());
+    }
+    let out = run(&[
+        "example",
+        "--out",
+        out_dir.to_str().unwrap(),
+        "--view",
+        "truth",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&out.stderr),
+        "error: --view truth: example draws the paper's five views (figure1 to figure5); draw \
+         one view with `neutrospline plot`\n"
+    );
+    let out = run(&[
+        "example",
+        "--out",
+        out_dir.to_str().unwrap(),
+        "--formats",
+        "eps",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("invalid value 'eps' for '--formats"));
+}
+
+/// `plot -o fig.pdf --size 8.5cmx6cm --no-title`: a PDF a LaTeX paper takes. Compiled with
+/// pdflatex when it is installed (NEUTROSPLINE_REQUIRE_LATEX=1 makes it required): the
+/// paper's PDF holds the figure's text in the embedded DejaVu Sans. Bad sizes and resolutions
+/// get the plot crate's messages and write nothing.
+#[test]
+fn plot_pdf_goes_into_a_latex_paper() {
+    let dir = tempfile::tempdir().unwrap();
+    let model = example("example1.toml");
+    let model = model.to_str().unwrap();
+    let fig = dir.path().join("fig.pdf");
+    let out = run(&[
+        "plot",
+        model,
+        "-o",
+        fig.to_str().unwrap(),
+        "--view",
+        "all",
+        "--size",
+        "8.5cmx6cm",
+        "--no-title",
+        "--no-caption",
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&fs::read(&fig).unwrap()).into_owned();
+    assert!(text.contains("/MediaBox [0 0 240.944882 170.07874]"));
+    let png = dir.path().join("fig.png");
+    let out = run(&[
+        "plot",
+        model,
+        "-o",
+        png.to_str().unwrap(),
+        "--size",
+        "8.5cmx6cm",
+        "--dpi",
+        "600",
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(png_size(&fs::read(&png).unwrap()), (2008, 1417));
+
+    for (args, message) in [
+        (
+            vec!["--size", "8.5cm"],
+            "error: size = 8.5cm: expected WIDTHxHEIGHT in pixels or with a unit (px, pt, mm, \
+             cm, in), for example 1600x1200 or 8.5cmx6cm\n",
+        ),
+        (
+            vec!["--size", "1cmx6cm"],
+            "error: figure size 1cmx6cm is not supported (each side must be between 64 and \
+             16384 points, 2.26 cm to 5.78 m)\n",
+        ),
+        (
+            vec!["--dpi", "5"],
+            "error: dpi = 5 is not supported (must be between 10 and 10000)\n",
+        ),
+    ] {
+        let bad = dir.path().join("bad.pdf");
+        let mut argv = vec!["plot", model, "-o", bad.to_str().unwrap()];
+        argv.extend(args);
+        let out = run(&argv);
+        assert_eq!(out.status.code(), Some(2));
+        assert_eq!(String::from_utf8_lossy(&out.stderr), message);
+        assert!(!bad.exists());
+    }
+
+    let required = std::env::var("NEUTROSPLINE_REQUIRE_LATEX").is_ok_and(|v| v == "1");
+    let have = |tool: &str| Command::new(tool).arg("-v").output().is_ok();
+    if !(have("pdflatex") && have("pdffonts") && have("pdftotext")) {
+        assert!(
+            !required,
+            "NEUTROSPLINE_REQUIRE_LATEX=1 but pdflatex or poppler-utils is missing"
+        );
+        eprintln!("plot_pdf_goes_into_a_latex_paper: LaTeX part skipped");
+        return;
+    }
+    fs::write(
+        dir.path().join("paper.tex"),
+        "\\documentclass{article}\n\\usepackage{graphicx}\n\\begin{document}\n\
+         \\begin{figure}\\centering\\includegraphics{fig.pdf}\\caption{Example 1.}\\end{figure}\n\
+         \\end{document}\n",
+    )
+    .unwrap();
+    let latex = Command::new("pdflatex")
+        .args(["-interaction=nonstopmode", "-halt-on-error", "paper.tex"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(
+        latex.status.success(),
+        "{}",
+        String::from_utf8_lossy(&latex.stdout)
+    );
+    let fonts = Command::new("pdffonts")
+        .arg("paper.pdf")
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let fonts = String::from_utf8_lossy(&fonts.stdout);
+    assert!(fonts.contains("+DejaVuSans "), "{fonts}");
+    let text = Command::new("pdftotext")
+        .args(["paper.pdf", "-"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&text.stdout);
+    for expected in [
+        "truth curve",
+        "crisp control polygon",
+        "degree",
+        "Example 1.",
+    ] {
+        assert!(text.contains(expected), "{expected:?} not in {text}");
+    }
+}
