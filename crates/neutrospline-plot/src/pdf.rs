@@ -437,7 +437,8 @@ impl PdfWriter {
         for id in 1..=last {
             match self.offsets.get(&id) {
                 Some(offset) => {
-                    let _ = write!(table, "{offset:010} 00000 n \n");
+                    // Each entry is exactly 20 bytes: the space before the newline belongs to it.
+                    let _ = writeln!(table, "{offset:010} 00000 n ");
                 }
                 None => table.push_str("0000000000 65535 f \n"),
             }

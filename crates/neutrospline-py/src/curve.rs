@@ -195,6 +195,38 @@ impl Curve {
     }
 }
 
+impl Curve {
+    /// The points of [`Curve::sample`].
+    fn sample_points(
+        &self,
+        py: Python<'_>,
+        count: usize,
+        out: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Py<PyAny>> {
+        let domain = self.domain_range();
+        let columns = self.state.dimension() + 3;
+        let output = Output::new(py, out, count, columns)?;
+        let mut writer = output.write()?;
+        if let (State::Model { curve, .. }, Some(columns), true) =
+            (&self.state, writer.columns()?, count > 0)
+        {
+            let options = BatchOptions::default();
+            let result = on_dimension!(curve, c => py.detach(|| {
+                c.batch.evaluate(BatchParams::Uniform(count), columns, &options)
+            }));
+            drop(writer);
+            result.map_err(invalid)?;
+            return output.finish(false);
+        }
+        drop(writer);
+        let ts: Vec<f64> = (0..count)
+            .map(|k| neutrospline::uniform_parameter(k, count, domain.clone()))
+            .collect();
+        let t = vector(py, ts);
+        self.evaluate_impl(py, t.as_any(), Some(output.array().as_any()))
+    }
+}
+
 #[pymethods]
 impl Curve {
     /// Evaluates at `t` (a float or 0-d array, or a 1-D array or sequence of any layout and
@@ -235,39 +267,36 @@ impl Curve {
 
     /// Evaluates at `count` evenly spaced parameters over the domain, both ends included
     /// (`t_k = a + k (b - a) / (count - 1)`, exactly `a` and `b` at the ends); `out` as for
-    /// `evaluate`.
+    /// `evaluate`. With `parameters=True` the result is the pair `(t, points)`, the
+    /// parameters (shape (count,)) with the points.
     ///
     /// >>> import neutrospline as ns
     /// >>> ns.example1().sample(3)[:, 0].tolist()
     /// [1.0, 4.625, 9.0]
-    #[pyo3(signature = (count, out = None))]
+    /// >>> t, points = ns.example1().sample(3, parameters=True)
+    /// >>> t.tolist(), points[:, 0].tolist()
+    /// ([0.0, 0.5, 1.0], [1.0, 4.625, 9.0])
+    #[pyo3(signature = (count, out = None, *, parameters = false))]
     fn sample(
         &self,
         py: Python<'_>,
         count: usize,
         out: Option<&Bound<'_, PyAny>>,
+        parameters: bool,
     ) -> PyResult<Py<PyAny>> {
-        let domain = self.domain_range();
-        let columns = self.state.dimension() + 3;
-        let output = Output::new(py, out, count, columns)?;
-        let mut writer = output.write()?;
-        if let (State::Model { curve, .. }, Some(columns), true) =
-            (&self.state, writer.columns()?, count > 0)
-        {
-            let options = BatchOptions::default();
-            let result = on_dimension!(curve, c => py.detach(|| {
-                c.batch.evaluate(BatchParams::Uniform(count), columns, &options)
-            }));
-            drop(writer);
-            result.map_err(invalid)?;
-            return output.finish(false);
+        let points = self.sample_points(py, count, out)?;
+        if !parameters {
+            return Ok(points);
         }
-        drop(writer);
+        let domain = self.domain_range();
         let ts: Vec<f64> = (0..count)
             .map(|k| neutrospline::uniform_parameter(k, count, domain.clone()))
             .collect();
-        let t = vector(py, ts);
-        self.evaluate_impl(py, t.as_any(), Some(output.array().as_any()))
+        Ok(
+            PyTuple::new(py, [vector(py, ts).into_any().unbind(), points])?
+                .into_any()
+                .unbind(),
+        )
     }
 
     /// The derivative of order `order` (default 1) as a curve of the same class: evaluable

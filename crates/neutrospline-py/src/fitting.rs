@@ -8,38 +8,40 @@ use neutrospline::fit::{
 };
 use neutrospline::options::{OptionSet, OptionValue};
 use neutrospline::{Degrees, Membership};
-use neutrospline_io::{load_data, DataTable, Model};
+use neutrospline_io::{load_data_with, read_data_with, DataTable, Model, TableInput};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 
 use crate::arrays::{float_array, new_array, vector};
 use crate::curve;
 use crate::errors::{invalid, invalid_at};
+use crate::frame::{self, Frame};
 use crate::model::PointArrays;
 use crate::options;
 
-/// Where the data comes from: arrays, or a CSV data file (its errors located by line).
+/// Where the data comes from: arrays, or a table: a CSV data file (its errors located by
+/// line) or a DataFrame read as one (its errors located by row).
 enum Source {
     Arrays {
         positions: Vec<f64>,
         dimension: usize,
         degrees: Vec<Degrees>,
     },
-    File(DataTable),
+    File(DataTable, Option<Box<Frame>>),
 }
 
 impl Source {
     fn dimension(&self) -> usize {
         match self {
             Source::Arrays { dimension, .. } => *dimension,
-            Source::File(table) => table.dimension(),
+            Source::File(table, _) => table.dimension(),
         }
     }
 
     fn len(&self) -> usize {
         match self {
             Source::Arrays { degrees, .. } => degrees.len(),
-            Source::File(table) => table.len(),
+            Source::File(table, _) => table.len(),
         }
     }
 
@@ -63,7 +65,7 @@ impl Source {
                 weights,
                 options,
             ),
-            Source::File(table) => {
+            Source::File(table, _) => {
                 let d = table.dimension();
                 let rows: Vec<f64> = table
                     .positions()
@@ -83,10 +85,11 @@ impl Source {
     }
 
     /// The message of a fitting error: located in the file, or as the core says it.
-    fn message(&self, error: &FitError) -> String {
+    fn message(&self, py: Python<'_>, error: &FitError) -> String {
         match self {
             Source::Arrays { .. } => error.to_string(),
-            Source::File(table) => table.locate(error).to_string(),
+            Source::File(table, None) => table.locate(error).to_string(),
+            Source::File(table, Some(frame)) => frame.message(py, &table.locate(error)),
         }
     }
 }
@@ -134,9 +137,16 @@ fn report_dict<'py>(
 /// Fits a curve to data points, as `neutrospline fit` does, and returns `(curve, report)`.
 ///
 /// `data` is an array of positions of shape (m, 2) or (m, 3) with `degrees` of shape (m, 3)
-/// (or as the membership rule allows, see `Bezier`), or the path of a CSV data file (columns
+/// (or as the membership rule allows, see `Bezier`), the path of a CSV data file (columns
 /// `x, y[, z], truth, indeterminacy, falsity[, parameter, weight, name]`, errors named by
-/// line). The target is one of `control_points=N` (least squares), `tolerance=E` (least
+/// line), or a pandas DataFrame with those columns (read as that file would be: names in any
+/// case and order, `T`, `I`, `F` for the degrees, other columns left out; errors named by
+/// row). A table's columns are read as the command line's `--columns`, `--ignore-columns` and
+/// `--ignore-unknown-columns` say: `columns={"truth": "mu", "parameter": "t"}` (or
+/// `"truth=mu,parameter=t"`) reads the table's column `mu` as truth and `t` as the
+/// parameters, `ignore_columns=["note"]` leaves a column out, `ignore_unknown_columns` leaves
+/// out every column that names nothing (default: True for a DataFrame, False for a file).
+/// The target is one of `control_points=N` (least squares), `tolerance=E` (least
 /// squares refined until every position residual is at most E) and `interpolate=True`;
 /// without one, a tolerance of 1e-3 of the data's bounding-box diagonal. `weights` is None,
 /// `"score"` (each point by its score), `"column"` (the file's weight column) or one weight
@@ -155,7 +165,8 @@ fn report_dict<'py>(
 /// >>> type(curve).__name__, report["control_points"], report["max_error"]["y"] < 1e-14
 /// ('BSpline', 4, True)
 #[pyfunction]
-#[pyo3(signature = (data, degrees = None, *, parameters = None, weights = None, name = None, **options))]
+#[pyo3(signature = (data, degrees = None, *, parameters = None, weights = None, name = None, columns = None, ignore_columns = None, ignore_unknown_columns = None, **options))]
+#[allow(clippy::too_many_arguments)]
 pub fn fit<'py>(
     py: Python<'py>,
     data: &Bound<'py, PyAny>,
@@ -163,8 +174,13 @@ pub fn fit<'py>(
     parameters: Option<&Bound<'py, PyAny>>,
     weights: Option<&Bound<'py, PyAny>>,
     name: Option<String>,
+    columns: Option<&Bound<'py, PyAny>>,
+    ignore_columns: Option<&Bound<'py, PyAny>>,
+    ignore_unknown_columns: Option<bool>,
     options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyTuple>> {
+    let table = frame::column_options(py, columns, ignore_columns, ignore_unknown_columns)?;
+    let input = frame::table_input(Some(&table), frame::is_frame(data))?;
     let mut request = FitRequest::default();
     options::set_from_kwargs(&mut request, options)?;
     if let Some(rule) = weights.filter(|w| w.is_instance_of::<PyString>()) {
@@ -173,11 +189,15 @@ pub fn fit<'py>(
             .map_err(invalid)?;
     }
     let membership_rule = request.membership;
-    let source = read_source(data, degrees, membership_rule)?;
+    let source = read_source(data, degrees, membership_rule, input)?;
     let description = match &source {
-        Source::File(table) => format!(
+        Source::File(table, None) => format!(
             "Fitted to {} ({} points) by neutrospline fit",
             table.file(),
+            table.len()
+        ),
+        Source::File(table, Some(_)) => format!(
+            "Fitted to a DataFrame ({} points) by neutrospline.fit",
             table.len()
         ),
         Source::Arrays { .. } => format!("Fitted to {} points by neutrospline.fit", source.len()),
@@ -186,14 +206,14 @@ pub fn fit<'py>(
         .map(|p| float_array(p, "parameters")?.values().map(<[f64]>::to_vec))
         .transpose()?
         .or_else(|| match &source {
-            Source::File(table) => table.parameters().map(<[f64]>::to_vec),
+            Source::File(table, _) => table.parameters().map(<[f64]>::to_vec),
             Source::Arrays { .. } => None,
         });
     let weight_values = read_weights(weights, &mut request, &source)?;
     let options = request.validate().map_err(invalid)?;
     let fitted = py
         .detach(|| source.fit(parameters, weight_values, &options))
-        .map_err(|e| invalid(source.message(&e)))?;
+        .map_err(|e| invalid(source.message(py, &e)))?;
     let report = report_dict(py, &fitted.report, source.dimension(), &fitted.parameters)?;
     let model = Model::new(fitted.curve);
     let mut model = model
@@ -207,12 +227,27 @@ pub fn fit<'py>(
     PyTuple::new(py, [curve, report.into_any().unbind()])
 }
 
-/// Reads the data: a path (str or os.PathLike) to a CSV data file, or arrays.
+/// Reads the data: a path (str or os.PathLike) to a CSV data file or a DataFrame, read as
+/// `input` says, or arrays.
 fn read_source(
     data: &Bound<'_, PyAny>,
     degrees: Option<&Bound<'_, PyAny>>,
     membership: Membership,
+    input: TableInput,
 ) -> PyResult<Source> {
+    if frame::is_frame(data) {
+        if degrees.is_some() {
+            return Err(invalid_at(
+                "degrees",
+                "the DataFrame's columns give the degrees (truth, indeterminacy, falsity): give \
+                 a DataFrame or arrays, not both",
+            ));
+        }
+        let frame = Frame::read(data, input)?;
+        let table = read_data_with(frame::LABEL, frame.text(), membership, frame.input())
+            .map_err(|e| frame.read_error(data.py(), e))?;
+        return Ok(Source::File(table, Some(Box::new(frame))));
+    }
     let is_path = data.is_instance_of::<pyo3::types::PyString>()
         || data.hasattr("__fspath__").unwrap_or(false);
     if is_path {
@@ -223,9 +258,10 @@ fn read_source(
             ));
         }
         let path: PathBuf = data.extract()?;
-        let table = load_data(&path, membership).map_err(invalid)?;
-        return Ok(Source::File(table));
+        let table = load_data_with(&path, membership, &input).map_err(invalid)?;
+        return Ok(Source::File(table, None));
     }
+    refuse_table_options(&input)?;
     let degrees = degrees.ok_or_else(|| {
         invalid_at(
             "degrees",
@@ -254,7 +290,7 @@ fn read_weights(
         return Ok(Some(float_array(array, "weights")?.values()?.to_vec()));
     }
     match source {
-        Source::File(table) => {
+        Source::File(table, _) => {
             request
                 .check_data_weights(table.file(), table.weights().is_some())
                 .map_err(invalid)?;
@@ -299,10 +335,12 @@ pub fn figure_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
 ///
 /// `data` is an array of positions of shape (rows, cols, 3) (a grid: rows along u, with
 /// `degrees` of shape (rows, cols, 3)) or (n, 3) (scattered points, or a grid row by row with
-/// `grid=(rows, cols)`), a pandas DataFrame (columns by name, in any order and case: `x`, `y`,
-/// `z`, `truth` / `T`, `indeterminacy` / `I`, `falsity` / `F`, optionally `u`, `v`, `weight`;
-/// others left out), or the path of a CSV data file (columns `x, y, z, truth,
-/// indeterminacy, falsity[, u, v, weight]`, errors named by line). `parameters` gives each
+/// `grid=(rows, cols)`), a pandas DataFrame (read as the data file with its columns would be:
+/// names in any order and case, `x`, `y`, `z`, `truth` / `T`, `indeterminacy` / `I`,
+/// `falsity` / `F`, optionally `u`, `v`, `weight`, `name`; others left out; errors named by
+/// row), or the path of a CSV data file (columns `x, y, z, truth, indeterminacy, falsity[, u,
+/// v, weight]`, errors named by line). `columns`, `ignore_columns` and
+/// `ignore_unknown_columns` say how a table's columns are read, as for `fit`. `parameters` gives each
 /// point's `(u, v)` (shape (n, 2)); `weights` is None, `"score"`, `"column"` (the file's weight
 /// column) or one weight per point. The report is the dictionary of `neutrospline fit --surface
 /// --report json` with the points' fitted `parameters` (n, 2) added.
@@ -320,7 +358,8 @@ pub fn figure_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
 /// >>> report["control_points"], bool(abs(surface.evaluate(0.4, 0.5)[2] - 0.2) < 1e-12)
 /// ([6, 5], True)
 #[pyfunction]
-#[pyo3(signature = (data, degrees = None, *, parameters = None, weights = None, name = None, **options))]
+#[pyo3(signature = (data, degrees = None, *, parameters = None, weights = None, name = None, columns = None, ignore_columns = None, ignore_unknown_columns = None, **options))]
+#[allow(clippy::too_many_arguments)]
 pub fn fit_surface<'py>(
     py: Python<'py>,
     data: &Bound<'py, PyAny>,
@@ -328,6 +367,9 @@ pub fn fit_surface<'py>(
     parameters: Option<&Bound<'py, PyAny>>,
     weights: Option<&Bound<'py, PyAny>>,
     name: Option<String>,
+    columns: Option<&Bound<'py, PyAny>>,
+    ignore_columns: Option<&Bound<'py, PyAny>>,
+    ignore_unknown_columns: Option<bool>,
     options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyTuple>> {
     let mut request = SurfaceFitRequest::default();
@@ -339,6 +381,9 @@ pub fn fit_surface<'py>(
             }
         }
     }
+    let is_frame = frame::is_frame(data);
+    let table = frame::column_options(py, columns, ignore_columns, ignore_unknown_columns)?;
+    let input = frame::table_input(Some(&table), is_frame)?;
     options::set_from_kwargs(&mut request, options)?;
     let array_weights = match weights {
         Some(rule) if rule.is_instance_of::<PyString>() => {
@@ -373,39 +418,49 @@ pub fn fit_surface<'py>(
             }
         })
         .transpose()?;
-    // A table with named columns (a pandas DataFrame): its columns by name.
-    let frame = dataframe_columns(data)?;
-    let (data, degrees, uv, array_weights) = match &frame {
-        Some(frame) => {
-            for (given, what) in [(degrees.is_some(), "degrees"), (uv.is_some(), "parameters")] {
-                if given {
-                    return Err(invalid_at(
-                        what,
-                        "the DataFrame's columns give it: give a DataFrame or arrays, not both",
-                    ));
-                }
-            }
-            let weights = match (&frame.weights, array_weights) {
-                (Some(_), Some(_)) => {
-                    return Err(invalid_at(
-                        "weights",
-                        "the DataFrame's weight column gives the weights (weights=\"column\")",
-                    ))
-                }
-                (Some(w), None) if request.weights == DataWeights::Given => Some(w.clone()),
-                (_, given) => given,
-            };
-            (
-                frame.points.bind(py),
-                Some(frame.degrees.bind(py)),
-                frame.uv.clone(),
-                weights,
-            )
-        }
-        None => (data, degrees, uv, array_weights),
-    };
     let is_path = data.is_instance_of::<PyString>() || data.hasattr("__fspath__").unwrap_or(false);
-    let (fitted, description, data_name) = if is_path {
+    let (fitted, description, data_name) = if is_frame {
+        // A table with named columns (a pandas DataFrame), read as a data file is.
+        for (given, what) in [(degrees.is_some(), "degrees"), (uv.is_some(), "parameters")] {
+            if given {
+                return Err(invalid_at(
+                    what,
+                    "the DataFrame's columns give it: give a DataFrame or arrays, not both",
+                ));
+            }
+        }
+        if array_weights.is_some() {
+            return Err(invalid_at(
+                "weights",
+                "the DataFrame's `weight` column gives the weights (weights=\"column\"), not an \
+                 array",
+            ));
+        }
+        let frame = Frame::read(data, input)?;
+        let table = read_data_with(frame::LABEL, frame.text(), membership, frame.input())
+            .map_err(|e| frame.read_error(py, e))?;
+        if table.dimension() != 3 {
+            return Err(invalid_at(
+                "data",
+                format!(
+                    "the DataFrame has no column `z` (its columns: {}; a surface needs x, y, z)",
+                    frame.columns_text()
+                ),
+            ));
+        }
+        request
+            .weights
+            .check_data(table.file(), table.weights().is_some())
+            .map_err(invalid)?;
+        let fitted = py
+            .detach(|| table.fit_surface(request.grid, &fit_options))
+            .map_err(|e| invalid(frame.message(py, &e)))?;
+        let description = format!(
+            "Fitted to a DataFrame ({} points) by neutrospline.fit_surface",
+            table.len()
+        );
+        (fitted, description, frame::LABEL.to_owned())
+    } else if is_path {
         for (given, what) in [(degrees.is_some(), "degrees"), (uv.is_some(), "parameters")] {
             if given {
                 return Err(invalid_at(
@@ -421,7 +476,7 @@ pub fn fit_surface<'py>(
             ));
         }
         let path: PathBuf = data.extract()?;
-        let table = load_data(&path, membership).map_err(invalid)?;
+        let table = load_data_with(&path, membership, &input).map_err(invalid)?;
         request
             .weights
             .check_data(table.file(), table.weights().is_some())
@@ -436,6 +491,7 @@ pub fn fit_surface<'py>(
         );
         (fitted, description, table.file().to_owned())
     } else {
+        refuse_table_options(&input)?;
         let degrees = degrees.ok_or_else(|| {
             invalid_at(
                 "degrees",
@@ -518,99 +574,23 @@ pub fn fit_surface_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
     options::table::<SurfaceFitRequest>(py)
 }
 
-/// The columns of a table with named columns (a pandas DataFrame, or anything with `columns`
-/// and columns that have `to_numpy`), for `fit_surface`.
-struct FrameColumns {
-    /// `x, y, z`, shape (n, 3).
-    points: Py<PyAny>,
-    /// `truth, indeterminacy, falsity` (those present, in that order), shape (n, k).
-    degrees: Py<PyAny>,
-    /// `u, v`, when both are columns.
-    uv: Option<Vec<[f64; 2]>>,
-    /// `weight`, when it is a column.
-    weights: Option<Vec<f64>>,
-}
-
-/// Reads `data`'s columns by name (case-insensitive; `T`, `I`, `F` for the degrees), or `None`
-/// when it has no `columns`.
-///
-/// # Errors
-/// `ModelError` naming a missing column (x, y, z and truth are needed) or a column that is not
-/// numeric.
-fn dataframe_columns(data: &Bound<'_, PyAny>) -> PyResult<Option<FrameColumns>> {
-    if !data.hasattr("columns")? || data.is_instance_of::<PyString>() {
-        return Ok(None);
+/// Refuses the table options (`columns`, ...) for arrays, which have no named columns.
+fn refuse_table_options(input: &TableInput) -> PyResult<()> {
+    if *input == TableInput::default() {
+        return Ok(());
     }
-    let py = data.py();
-    let names: Vec<String> = data
-        .getattr("columns")?
-        .try_iter()?
-        .map(|c| c?.str().map(|s| s.to_string()))
-        .collect::<PyResult<_>>()?;
-    let find = |wanted: &[&str]| {
-        names
+    let name =
+        TableInput::OPTIONS
             .iter()
-            .find(|n| wanted.iter().any(|w| n.eq_ignore_ascii_case(w)))
-            .cloned()
-    };
-    let column = |name: &str| -> PyResult<Vec<f64>> {
-        let values = data
-            .get_item(name)?
-            .call_method1("to_numpy", ("float64",))
-            .map_err(|e| invalid_at(name, format!("is not a column of numbers ({e})")))?;
-        Ok(float_array(&values, name)?.values()?.to_vec())
-    };
-    let mut points = Vec::new();
-    for axis in ["x", "y", "z"] {
-        let name = find(&[axis]).ok_or_else(|| {
-            invalid_at(
-                "data",
-                format!(
-                    "the DataFrame has no column `{axis}` (its columns: {}; a surface needs x, y, z)",
-                    names.join(", ")
-                ),
-            )
-        })?;
-        points.push(column(&name)?);
-    }
-    let mut degrees = Vec::new();
-    for aliases in [
-        &["truth", "T"][..],
-        &["indeterminacy", "I"],
-        &["falsity", "F"],
-    ] {
-        if let Some(name) = find(aliases) {
-            degrees.push(column(&name)?);
-        }
-    }
-    if degrees.is_empty() {
-        return Err(invalid_at(
-            "data",
-            format!(
-                "the DataFrame has no column `truth` (its columns: {}; the degrees are truth, \
-                 indeterminacy, falsity)",
-                names.join(", ")
-            ),
-        ));
-    }
-    let rows = points[0].len();
-    let by_rows = |columns: &[Vec<f64>]| -> Vec<f64> {
-        (0..rows)
-            .flat_map(|r| columns.iter().map(move |c| c[r]))
-            .collect()
-    };
-    let uv = match (find(&["u"]), find(&["v"])) {
-        (Some(u), Some(v)) => {
-            let (u, v) = (column(&u)?, column(&v)?);
-            Some(u.into_iter().zip(v).map(|(a, b)| [a, b]).collect())
-        }
-        _ => None,
-    };
-    let weights = find(&["weight"]).map(|w| column(&w)).transpose()?;
-    Ok(Some(FrameColumns {
-        points: new_array(py, by_rows(&points), &[rows, 3])?.unbind(),
-        degrees: new_array(py, by_rows(&degrees), &[rows, degrees.len()])?.unbind(),
-        uv,
-        weights,
-    }))
+            .map(|spec| spec.name)
+            .find(|name| {
+                input.value_text(name).ok().flatten().is_some_and(|v| {
+                    Some(v) != TableInput::default().value_text(name).ok().flatten()
+                })
+            })
+            .unwrap_or("columns");
+    Err(invalid_at(
+        name.replace('-', "_"),
+        "is an option of a table (a DataFrame or a data file), not of arrays",
+    ))
 }

@@ -13,6 +13,7 @@ use pyo3::types::{PyDict, PyList, PyTuple};
 use crate::arrays::{float_array, new_array};
 use crate::curve;
 use crate::errors::{invalid, invalid_at};
+use crate::frame::{self, Frame};
 use crate::model;
 use crate::surface;
 
@@ -27,7 +28,7 @@ pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
 }
 
 /// Loads a model file: TOML, JSON, CSV (or TSV) or a spreadsheet's sheet (`.xlsx`, `.xlsm`,
-/// `.xls`, `.ods`) by the extension, checked as `neutrospline check` checks it. A table is
+/// `.xls`, `.ods`) by the extension, or a pandas DataFrame of control points, checked as `neutrospline check` checks it. A table is
 /// read as the keyword options `sheet`, `columns` (`"truth=mu,falsity=nu"`),
 /// `ignore_columns`, `ignore_unknown_columns`, `delimiter` and `decimal_comma` say (the
 /// command line's `--sheet`, ...). Returns a `Bezier`, `BSpline`, `Nurbs` or `Surface`; an invalid file raises
@@ -43,6 +44,12 @@ pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
 /// own), `entities` (the kinds to import, `"SPLINE,LWPOLYLINE"` or `"path,rect"`) and `strict`
 /// (raise `ModelError` when a drawn shape is left out).
 ///
+/// A pandas DataFrame is read as the CSV table with its columns would be (`x, y[, z], truth,
+/// indeterminacy, falsity[, weight, name]`, names in any case and order, `T`, `I`, `F` for the
+/// degrees; other columns are left out unless `ignore_unknown_columns=False`; `columns` may be
+/// a mapping `{"truth": "mu"}`), its errors naming the row (`DataFrame row 2: ...`) or the
+/// missing column and the columns it has.
+///
 /// The keyword options are the command line's `--kind`, `--degree`, `--knots`, `--membership`,
 /// `--rows`, `--cols`, `--degree-u`, `--degree-v`, `--knots-u`, `--knots-v`: a CSV table holds
 /// only the control points, so these say what it is (`knots` a rule name such as
@@ -55,6 +62,11 @@ pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
 /// >>> spline = ns.load("examples/bspline.csv", kind="bspline", degree=3, knots=knots)
 /// >>> spline.kind, spline.knots.tolist() == knots
 /// ('bspline', True)
+/// >>> import pandas as pd
+/// >>> frame = pd.DataFrame({"x": [1, 3, 6, 9], "y": [3, 6, 2, 5], "mu": [0.3, 0.8, 0.7, 0.2],
+/// ...                       "I": [0.6, 0.1, 0.1, 0.4], "F": [0.1, 0.1, 0.2, 0.4]})
+/// >>> ns.load(frame, columns={"truth": "mu"}).positions.tolist() == ns.example1().positions.tolist()
+/// True
 /// >>> curves, report = ns.load("examples/drawing.svg", truth=0.8, indeterminacy=0.1)
 /// >>> len(curves), report["imported"], report["skipped"][0]
 /// (2, {'<path>': 1, '<rect>': 1}, {'kind': '<text>', 'reason': 'not-a-curve', 'count': 1})
@@ -63,7 +75,7 @@ pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
 #[allow(clippy::too_many_arguments)]
 pub fn load(
     py: Python<'_>,
-    path: PathBuf,
+    path: &Bound<'_, PyAny>,
     kind: Option<&str>,
     degree: Option<usize>,
     knots: Option<&Bound<'_, PyAny>>,
@@ -76,12 +88,19 @@ pub fn load(
     knots_v: Option<&Bound<'_, PyAny>>,
     options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Py<PyAny>> {
+    let data = path.clone();
+    let frame_given = frame::is_frame(&data);
+    let path: PathBuf = if frame_given {
+        PathBuf::from(frame::LABEL)
+    } else {
+        path.extract()?
+    };
     let extension = path
         .extension()
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
     let source = match extension.as_deref() {
-        Some("svg") => Some(SourceFormat::Svg),
-        Some("dxf") => Some(SourceFormat::Dxf),
+        Some("svg") if !frame_given => Some(SourceFormat::Svg),
+        Some("dxf") if !frame_given => Some(SourceFormat::Dxf),
         _ => None,
     };
     if let Some(source) = source {
@@ -124,7 +143,7 @@ pub fn load(
         }
     }
     let mut read = ReadOptions::default();
-    crate::options::set_from_kwargs(&mut read.table, options)?;
+    read.table = frame::table_input(options, frame_given)?;
     if let Some(kind) = kind {
         read.kind = Some(Kind::from_name(kind).ok_or_else(|| {
             invalid_at(
@@ -142,9 +161,16 @@ pub fn load(
     read.knots = knots.map(|k| knot_spec(k, "knots")).transpose()?;
     read.knots_u = knots_u.map(|k| knot_spec(k, "knots_u")).transpose()?;
     read.knots_v = knots_v.map(|k| knot_spec(k, "knots_v")).transpose()?;
-    let model = py
-        .detach(|| neutrospline_io::load(&path, &read))
-        .map_err(invalid)?;
+    let model = if frame_given {
+        // A DataFrame: the rows of a CSV model table, read by the same reader.
+        let frame = Frame::read(&data, read.table.clone())?;
+        read.table = frame.input().clone();
+        neutrospline_io::read_csv(frame::LABEL, frame.text(), &read)
+            .map_err(|e| frame.read_error(py, e))?
+    } else {
+        py.detach(|| neutrospline_io::load(&path, &read))
+            .map_err(invalid)?
+    };
     model_into_py(py, model)
 }
 

@@ -14,6 +14,7 @@ mod cli;
 mod curve;
 mod errors;
 mod fitting;
+mod frame;
 mod functions;
 mod inline;
 mod model;

@@ -418,16 +418,42 @@ def test_figures_are_the_command_lines(cli, root, tmp_path):
         (dict(width="800"), 'width = "800": expected a whole number'),
         (
             dict(colour="red"),
-            'unknown option "colour" (the options are view, width, height, title, caption, azimuth, '
-            "elevation, samples, alpha, color-by)",
+            'unknown option "colour" (the options are view, width, height, size, dpi, style, '
+            "no-title, no-caption, title, caption, azimuth, elevation, samples, alpha, color-by)",
         ),
     ]:
         with pytest.raises(ns.ModelError) as raised:
             curve.to_svg("truth", **options)
         assert str(raised.value) == message, options
     assert {o["name"] for o in ns.figure_options()} >= {"width", "azimuth", "color_by", "alpha"}
-    with pytest.raises(ns.ModelError, match="unsupported figure extension"):
+    with pytest.raises(ns.ModelError) as raised:
         curve.save_figure(tmp_path / "figure.gif")
+    assert str(raised.value) == f"{tmp_path / 'figure.gif'}: unsupported figure extension (accepted: .svg, .png, .pdf)"
+    # For a paper: a PDF one column wide with the font embedded, no title; the command line's
+    # bytes for the same options.
+    pdf = tmp_path / "figure.pdf"
+    curve.save_figure(pdf, view="all", style="paper")
+    data = pdf.read_bytes()
+    assert data.startswith(b"%PDF-1.7") and b"/FontFile2" in data
+    assert b"/MediaBox [0 0 240.944882 198.425197]" in data
+    cli_pdf = tmp_path / "cli.pdf"
+    done = run_cli(cli, "plot", path, "-o", cli_pdf, "--view", "all", "--style", "paper")
+    assert done.returncode == 0, done.stderr
+    assert cli_pdf.read_bytes() == data
+    sized = curve.to_svg("truth", size="8.5cmx6cm", no_title=True)
+    assert 'width="8.5cm" height="6cm" viewBox="0 0 241 170"' in sized
+    assert "<title>" not in sized and 'class="title"' not in sized
+    png = tmp_path / "print.png"
+    curve.save_figure(png, view="truth", size="3.5inx2.5in", dpi=200)
+    header = png.read_bytes()
+    assert header[16:24] == (700).to_bytes(4, "big") + (500).to_bytes(4, "big")
+    assert b"pHYs" in header[:64]
+    with pytest.raises(ns.ModelError) as raised:
+        curve.to_svg("truth", size="8.5cm")
+    assert str(raised.value) == (
+        'size = "8.5cm": expected WIDTHxHEIGHT in pixels or with a unit (px, pt, mm, cm, in), '
+        "for example 1600x1200 or 8.5cmx6cm"
+    )
     with pytest.raises(ns.ModelError, match="derivative"):
         curve.derivative().to_svg()
 

@@ -54,7 +54,7 @@ def test_the_command_line_quickstart_runs(root, cli, workdir):
         )
         assert result.returncode == 0, (line, result.stderr)
         ran += 1
-    assert ran == 7
+    assert ran == 8
     for written in ["figures/figure1.svg", "helix.png", "survey.toml", "survey.svg",
-                    "survey.dxf", "field-1.toml", "field-2.toml"]:
+                    "survey.dxf", "field-1.toml", "field-2.toml", "fig5.pdf"]:
         assert (workdir / written).stat().st_size > 0, written

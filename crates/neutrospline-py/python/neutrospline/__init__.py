@@ -77,3 +77,12 @@ __all__ = [
     "load",
     "score",
 ]
+
+# DataFrames (pandas) and matplotlib axes: methods written in Python, which import pandas and
+# matplotlib only when they are called (neither is a dependency of the package).
+from . import _matplotlib, _pandas  # noqa: E402
+
+Curve.to_dataframe = _pandas.curve_to_dataframe
+Surface.to_dataframe = _pandas.surface_to_dataframe
+Curve.plot = _matplotlib.curve_plot
+Surface.plot = _matplotlib.surface_plot

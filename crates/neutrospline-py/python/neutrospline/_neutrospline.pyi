@@ -17,7 +17,21 @@ and is left untouched.
 """
 
 import os
-from typing import Any, ClassVar, Dict, List, Literal, Optional, Sequence, Tuple, Type, Union, overload
+from typing import (
+    TYPE_CHECKING,
+    Any,
+    ClassVar,
+    Dict,
+    List,
+    Literal,
+    Mapping,
+    Optional,
+    Sequence,
+    Tuple,
+    Type,
+    Union,
+    overload,
+)
 
 import numpy as np
 import numpy.typing as npt
@@ -32,6 +46,14 @@ ViewName = Literal[
     "all", "controls", "truth", "indeterminacy", "falsity", "plane", "score", "data", "band"
 ]
 Triple = Tuple[float, float, float]
+if TYPE_CHECKING:
+    import pandas
+    from matplotlib.axes import Axes
+# A table's columns read as ours: `{"truth": "mu"}` or the command line's `"truth=mu"`.
+ColumnMap = Union[str, Mapping[str, str]]
+ColumnList = Union[str, Sequence[str]]
+CurveView = Literal["plane", "controls", "truth", "indeterminacy", "falsity", "all", "score"]
+SurfaceView = Literal["controls", "truth", "indeterminacy", "falsity", "score", "all", "plane"]
 
 instruction_set: str
 # The package's version, the workspace's (Cargo.toml).
@@ -64,6 +86,11 @@ class Shape:
         *,
         width: int = 1600,
         height: int = 1200,
+        size: Optional[str] = None,
+        dpi: Optional[float] = None,
+        style: Literal["default", "paper"] = "default",
+        no_title: bool = False,
+        no_caption: bool = False,
         title: Optional[str] = None,
         caption: Optional[str] = None,
         azimuth: float = -55.0,
@@ -79,6 +106,11 @@ class Shape:
         *,
         width: int = 1600,
         height: int = 1200,
+        size: Optional[str] = None,
+        dpi: Optional[float] = None,
+        style: Literal["default", "paper"] = "default",
+        no_title: bool = False,
+        no_caption: bool = False,
         title: Optional[str] = None,
         caption: Optional[str] = None,
         azimuth: float = -55.0,
@@ -95,7 +127,24 @@ class Shape:
 class Curve(Shape):
     def evaluate(self, t: ArrayLike, out: Optional[FloatArray] = None) -> FloatArray: ...
     def __call__(self, t: ArrayLike, out: Optional[FloatArray] = None) -> FloatArray: ...
-    def sample(self, count: int, out: Optional[FloatArray] = None) -> FloatArray: ...
+    @overload
+    def sample(
+        self, count: int, out: Optional[FloatArray] = None, *, parameters: Literal[False] = False
+    ) -> FloatArray: ...
+    @overload
+    def sample(
+        self, count: int, out: Optional[FloatArray] = None, *, parameters: Literal[True]
+    ) -> Tuple[FloatArray, FloatArray]: ...
+    def to_dataframe(self, t: Union[int, ArrayLike] = 101, *, scores: bool = False) -> "pandas.DataFrame": ...
+    def plot(
+        self,
+        ax: Optional["Axes"] = None,
+        view: CurveView = "plane",
+        *,
+        samples: int = 201,
+        legend: bool = True,
+        labels: bool = True,
+    ) -> Any: ...
     def derivative(self, order: int = 1) -> "Curve": ...
     def split(self, t: float) -> Tuple["Curve", "Curve"]: ...
     def elevate(self, times: int = 1) -> "Curve": ...
@@ -194,6 +243,17 @@ class Surface(Shape):
         self, u: ArrayLike, v: ArrayLike, out: Optional[FloatArray] = None
     ) -> FloatArray: ...
     def normal(self, u: ArrayLike, v: ArrayLike) -> FloatArray: ...
+    def to_dataframe(
+        self, u: Union[int, ArrayLike] = 101, v: Union[None, int, ArrayLike] = None, *, scores: bool = False
+    ) -> "pandas.DataFrame": ...
+    def plot(
+        self,
+        ax: Any = None,
+        view: SurfaceView = "truth",
+        *,
+        samples: int = 30,
+        legend: bool = True,
+    ) -> Any: ...
     def nearest(
         self, points: ArrayLike
     ) -> Tuple[FloatArray, Union[float, FloatArray], FloatArray]: ...
@@ -262,7 +322,7 @@ Model = Union[Bezier, BSpline, Nurbs, BezierSurface, BSplineSurface, NurbsSurfac
 KnotOption = Union[str, ArrayLike]
 
 def load(
-    path: PathLike,
+    path: Union[PathLike, "pandas.DataFrame"],
     *,
     kind: Optional[str] = None,
     degree: Optional[int] = None,
@@ -280,8 +340,8 @@ def load(
     entities: Optional[str] = None,
     strict: Optional[bool] = None,
     sheet: Optional[str] = None,
-    columns: Optional[str] = None,
-    ignore_columns: Optional[str] = None,
+    columns: Optional[ColumnMap] = None,
+    ignore_columns: Optional[ColumnList] = None,
     ignore_unknown_columns: Optional[bool] = None,
     delimiter: Optional[str] = None,
     decimal_comma: Optional[bool] = None,
@@ -295,6 +355,11 @@ def inline(
     view: Optional[ViewName] = None,
     width: Optional[int] = None,
     height: Optional[int] = None,
+    size: Optional[str] = None,
+    dpi: Optional[float] = None,
+    style: Optional[Literal["default", "paper"]] = None,
+    no_title: Optional[bool] = None,
+    no_caption: Optional[bool] = None,
     title: Optional[str] = None,
     caption: Optional[str] = None,
     azimuth: Optional[float] = None,
@@ -319,12 +384,15 @@ def check_relation(
     n: Sequence[Tuple[float, Triple]],
 ) -> None: ...
 def fit(
-    data: Union[ArrayLike, PathLike],
+    data: Union[ArrayLike, PathLike, "pandas.DataFrame"],
     degrees: Optional[ArrayLike] = None,
     *,
     parameters: Optional[ArrayLike] = None,
     weights: Union[None, Literal["none", "score", "column"], ArrayLike] = None,
     name: Optional[str] = None,
+    columns: Optional[ColumnMap] = None,
+    ignore_columns: Optional[ColumnList] = None,
+    ignore_unknown_columns: Optional[bool] = None,
     degree: int = 3,
     control_points: Optional[int] = None,
     tolerance: Optional[float] = None,
@@ -337,12 +405,15 @@ def fit(
 ) -> Tuple[Union[Bezier, BSpline], dict[str, Any]]: ...
 def fit_options() -> list[dict[str, Any]]: ...
 def fit_surface(
-    data: Union[ArrayLike, PathLike],
+    data: Union[ArrayLike, PathLike, "pandas.DataFrame"],
     degrees: Optional[ArrayLike] = None,
     *,
     parameters: Optional[ArrayLike] = None,
     weights: Union[None, Literal["none", "score", "column"], ArrayLike] = None,
     name: Optional[str] = None,
+    columns: Optional[ColumnMap] = None,
+    ignore_columns: Optional[ColumnList] = None,
+    ignore_unknown_columns: Optional[bool] = None,
     degree: Union[int, Tuple[int, int]] = 3,
     interpolate: bool = False,
     control_points: Union[None, int, Tuple[int, int]] = None,
