@@ -266,3 +266,127 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
         Ok(SplineCurve::from_spline(spline))
     }
 }
+
+/// The operations on a curve of any kind, with the kind changing where it must: a Bézier
+/// curve becomes its clamped B-spline for the operations that need knots (insertion,
+/// refinement, a domain other than \[0, 1\]); a knot removal that leaves one span gives a
+/// spline still (the kind is the user's to change).
+impl<const D: usize> crate::AnyCurve<D> {
+    /// A spline of this curve: itself, or a Bézier curve as its clamped B-spline.
+    fn as_spline(&self) -> crate::AnyCurve<D> {
+        match self {
+            crate::AnyCurve::Bezier(b) => crate::AnyCurve::BSpline(b.to_bspline()),
+            other => other.clone(),
+        }
+    }
+
+    /// The degree raised by `times` (exact; the kind kept).
+    ///
+    /// ```
+    /// use neutrospline::{AnyCurve, Evaluate};
+    /// let curve = AnyCurve::from(neutrospline::example1());
+    /// let up = curve.elevated(2);
+    /// assert_eq!(up.degree(), 5);
+    /// assert!((up.evaluate(0.3)?.position[0] - curve.evaluate(0.3)?.position[0]).abs() < 1e-14);
+    /// # Ok::<(), neutrospline::EvalError>(())
+    /// ```
+    pub fn elevated(&self, times: usize) -> Self {
+        use crate::curve::Elevate;
+        let mut curve = self.clone();
+        for _ in 0..times {
+            curve = curve.elevate();
+        }
+        curve
+    }
+
+    /// The knots `knots` inserted, each once (a value given twice is inserted twice); a
+    /// Bézier curve becomes a B-spline.
+    ///
+    /// # Errors
+    /// A value outside the domain, or a multiplicity above the degree + 1.
+    pub fn with_knots_inserted(&self, knots: &[f64]) -> Result<Self, KnotError> {
+        let mut curve = self.as_spline();
+        for &u in knots {
+            curve = match &curve {
+                crate::AnyCurve::BSpline(c) => c.insert_knot(u)?.into(),
+                crate::AnyCurve::Nurbs(c) => c.insert_knot(u)?.into(),
+                crate::AnyCurve::Bezier(_) => unreachable!("as_spline gives a spline"),
+            };
+        }
+        Ok(curve)
+    }
+
+    /// `per_span` knots inserted evenly in every span (a Bézier curve becomes a B-spline).
+    pub fn refined(&self, per_span: usize) -> Self {
+        match self.as_spline() {
+            crate::AnyCurve::BSpline(c) => c.refine(per_span).into(),
+            crate::AnyCurve::Nurbs(c) => c.refine(per_span).into(),
+            crate::AnyCurve::Bezier(_) => unreachable!("as_spline gives a spline"),
+        }
+    }
+
+    /// Tiller's removal of the knot `u` ([`SplineCurve::remove_knot`]).
+    ///
+    /// # Errors
+    /// [`KnotError::NotAnInteriorKnot`], also for a Bézier curve, which has none.
+    pub fn without_knot(
+        &self,
+        u: f64,
+        times: usize,
+        tolerance: f64,
+    ) -> Result<KnotRemoval<Self>, KnotError> {
+        match self {
+            crate::AnyCurve::Bezier(_) => Err(KnotError::NotAnInteriorKnot {
+                value: u,
+                knots: "none: a Bézier curve has no knots".to_owned(),
+            }),
+            crate::AnyCurve::BSpline(c) => c.remove_knot(u, times, tolerance).map(|r| KnotRemoval {
+                curve: r.curve.into(),
+                removed: r.removed,
+                error: r.error,
+            }),
+            crate::AnyCurve::Nurbs(c) => c.remove_knot(u, times, tolerance).map(|r| KnotRemoval {
+                curve: r.curve.into(),
+                removed: r.removed,
+                error: r.error,
+            }),
+        }
+    }
+
+    /// The Bézier pieces, one per non-empty span, each on \[0, 1\]: Bézier curves of a
+    /// Bézier curve or a B-spline, one-span NURBS curves (rational Bézier curves) of a NURBS
+    /// curve; with the parameter interval each piece covers.
+    pub fn bezier_pieces(&self) -> Vec<(core::ops::Range<f64>, Self)> {
+        match self {
+            crate::AnyCurve::Bezier(_) => vec![(0.0..1.0, self.clone())],
+            crate::AnyCurve::BSpline(c) => c
+                .to_bezier_segments()
+                .into_iter()
+                .map(|s| (s.start..s.end, s.curve.into()))
+                .collect(),
+            crate::AnyCurve::Nurbs(c) => c
+                .to_bezier_segments()
+                .into_iter()
+                .map(|s| (s.start..s.end, s.curve.into()))
+                .collect(),
+        }
+    }
+
+    /// The same curve on the domain `[start, end]` (a Bézier curve becomes a B-spline unless
+    /// the interval is \[0, 1\]).
+    ///
+    /// # Errors
+    /// [`KnotError::BadInterval`].
+    pub fn reparametrized(&self, start: f64, end: f64) -> Result<Self, KnotError> {
+        if let crate::AnyCurve::Bezier(_) = self {
+            if start == 0.0 && end == 1.0 {
+                return Ok(self.clone());
+            }
+        }
+        match self.as_spline() {
+            crate::AnyCurve::BSpline(c) => c.reparametrized(start, end).map(Into::into),
+            crate::AnyCurve::Nurbs(c) => c.reparametrized(start, end).map(Into::into),
+            crate::AnyCurve::Bezier(_) => unreachable!("as_spline gives a spline"),
+        }
+    }
+}
