@@ -26,6 +26,7 @@ use commands::{
     bench::BenchArgs, bench_fit::BenchFitArgs, check::CheckArgs, eval::EvalArgs,
     example::ExampleArgs, export::ExportArgs, fit::FitArgs, import::ImportArgs,
     intersect::IntersectArgs, plot::PlotArgs, query::QueryArgs, relation::RelationArgs,
+    transform::TransformArgs,
 };
 
 /// Evaluate and check neutrosophic curves and surfaces (Bezier, B-spline, NURBS): control
@@ -63,6 +64,9 @@ enum Command {
     Check(CheckArgs),
     /// Draw a figure of a curve or surface (SVG or PNG): the paper's views and a plane view
     Plot(PlotArgs),
+    /// One CAGD operation on a model (elevate, insert, refine or remove knots, split, a piece,
+    /// reverse, Bézier pieces, a new domain), written as a model
+    Transform(TransformArgs),
     /// Fit a curve (or with --surface a surface) to measured data points (CSV with positions
     /// and degrees): interpolation or least squares, the degrees kept within their bounds; the
     /// model to standard output or -o, the error report to standard error
@@ -104,6 +108,7 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
         Command::Check(args) => commands::check::run(args),
         Command::Plot(args) => commands::plot::run(args),
         Command::Fit(args) => commands::fit::run(args),
+        Command::Transform(args) => commands::transform::run(args),
         Command::Export(args) => commands::export::run(args),
         Command::Import(args) => commands::import::run(args),
         Command::Query(args) => commands::query::run(args),

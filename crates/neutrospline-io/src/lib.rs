@@ -73,6 +73,7 @@ mod spreadsheet;
 mod table;
 mod table_input;
 mod text;
+mod transform;
 mod tree;
 mod walker;
 mod write;
@@ -98,4 +99,5 @@ pub use table::{
     latex_heading, write_table, Cell, TableCell, TableFormat, TableOutput, MAX_DIGITS,
 };
 pub use table_input::TableInput;
+pub use transform::{transform, Operation, TransformRequest, Transformed};
 pub use write::{save, to_csv_string, to_json_string, to_string, to_toml_string};

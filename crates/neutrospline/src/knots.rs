@@ -60,6 +60,22 @@ pub enum KnotError {
         /// End of the domain.
         end: f64,
     },
+    /// A knot to remove is not an interior knot of the curve.
+    #[error("{value} is not an interior knot (the interior knots are {knots})")]
+    NotAnInteriorKnot {
+        /// The value given.
+        value: f64,
+        /// The distinct interior knots, comma-separated (`none` when there are none).
+        knots: String,
+    },
+    /// A parameter interval to map the domain onto is empty, reversed or not finite.
+    #[error("[{start}, {end}] is not a parameter interval (the start must be finite and less than the end)")]
+    BadInterval {
+        /// The start given.
+        start: f64,
+        /// The end given.
+        end: f64,
+    },
     /// The parameter domain `[knot_p, knot_{m-p}]` is a single point.
     #[error("the domain [knot {p}, knot {end}] = [{start_value}, {start_value}] is empty (the knots there must differ)", end = p_end)]
     EmptyDomain {

@@ -125,6 +125,8 @@ mod spline_curve;
 #[cfg(feature = "proptest")]
 pub mod strategies;
 mod surface;
+mod surface_transform;
+mod transform;
 
 pub use any_curve::{AnyCurve, CurveKind};
 pub use batch::{uniform_parameter, Accuracy, BatchOptions, BatchParams, CurveBatch};
@@ -164,3 +166,4 @@ pub use spline_curve::{
 pub use surface::{
     Direction, EvaluateSurface, Surface, SurfaceDerivatives, SurfaceError, SurfaceKind,
 };
+pub use transform::{KnotRemoval, DEVIATION_SAMPLES_PER_SPAN};

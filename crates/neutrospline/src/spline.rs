@@ -267,6 +267,113 @@ impl Spline {
         })
     }
 
+    /// Tiller's removal of the interior knot `u` once (The NURBS Book, algorithm A5.8 with
+    /// one removal), or `None` when it is not removable within `tolerance`.
+    ///
+    /// With `r` the last index of `u` in the knots, `s` its multiplicity, the control points
+    /// `P_{r-p} ..= P_{r-s}` are replaced by points solved from both ends,
+    /// `Q_i = (P_i - (1 - a_i) Q_{i-1}) / a_i` and `Q_j = (P_j - a_j Q_{j+1}) / (1 - a_j)`
+    /// with `a_i = (u - u_i) / (u_{i+p+1} - u_i)`, and the removal is accepted when the two
+    /// solutions meet within `tolerance` (Euclidean distance over every channel; for a
+    /// rational spline in homogeneous form `(w P, w)`). One control point and one knot fewer.
+    pub(crate) fn remove_knot_once(&self, u: f64, tolerance: f64) -> Option<Spline> {
+        let rational = self.weights.is_some();
+        let work = if rational {
+            self.homogeneous()
+        } else {
+            self.clone()
+        };
+        let p = self.degree();
+        let knots = work.knots.knots();
+        let stride = work.stride;
+        let s = self.knots.multiplicity(u);
+        let domain = self.knots.domain();
+        if s == 0 || u <= domain.start || u >= domain.end {
+            return None;
+        }
+        let r = knots.partition_point(|&x| x <= u) - 1;
+        let n = work.count() - 1;
+        let (first, last) = (r - p, r - s);
+        let off = first - 1;
+        let mut temp = vec![vec![0.0; stride]; last + 2 - off];
+        temp[0] = work.row(off).to_vec();
+        temp[last + 1 - off] = work.row(last + 1).to_vec();
+        let (mut i, mut j, mut ii, mut jj) = (first, last, 1, last - off);
+        while j > i {
+            let alfi = (u - knots[i]) / (knots[i + p + 1] - knots[i]);
+            let alfj = (u - knots[j]) / (knots[j + p + 1] - knots[j]);
+            for c in 0..stride {
+                temp[ii][c] = (work.row(i)[c] - (1.0 - alfi) * temp[ii - 1][c]) / alfi;
+                temp[jj][c] = (work.row(j)[c] - alfj * temp[jj + 1][c]) / (1.0 - alfj);
+            }
+            i += 1;
+            ii += 1;
+            j -= 1;
+            jj -= 1;
+        }
+        let distance = |a: &[f64], b: &[f64]| {
+            a.iter()
+                .zip(b)
+                .map(|(x, y)| (x - y) * (x - y))
+                .sum::<f64>()
+                .sqrt()
+        };
+        let gap = if j < i {
+            distance(&temp[ii - 1], &temp[jj + 1])
+        } else {
+            let alfi = (u - knots[i]) / (knots[i + p + 1] - knots[i]);
+            let blend: Vec<f64> = (0..stride)
+                .map(|c| alfi * temp[ii + 1][c] + (1.0 - alfi) * temp[ii - 1][c])
+                .collect();
+            distance(work.row(i), &blend)
+        };
+        if gap.is_nan() || gap > tolerance {
+            return None;
+        }
+        // The new rows: P_0 ..= P_{first-1}, then the solved points from the left up to the
+        // middle and from the right after it, then P_{last+1} ..= P_n; one row fewer.
+        let mut rows: Vec<Vec<f64>> = (0..=n).map(|k| work.row(k).to_vec()).collect();
+        let (mut i, mut j) = (first, last);
+        while j > i {
+            rows[i] = temp[i - off].clone();
+            rows[j] = temp[j - off].clone();
+            i += 1;
+            j -= 1;
+        }
+        let fout = (2 * r - s - p) / 2;
+        rows.remove(fout);
+        let mut new_knots = knots.to_vec();
+        new_knots.remove(r);
+        let data: Vec<f64> = rows.concat();
+        let spline = Spline {
+            knots: KnotVector::from_parts_unchecked(p, new_knots),
+            stride,
+            data,
+            weights: None,
+        };
+        Some(if rational { spline.euclidean() } else { spline })
+    }
+
+    /// The rational spline of a homogeneous one (rows `(w P, w)`, as [`Spline::homogeneous`]
+    /// makes): rows divided by their weight, the weights kept.
+    pub(crate) fn euclidean(&self) -> Spline {
+        let stride = self.stride - 1;
+        let mut data = Vec::with_capacity(self.count() * stride);
+        let mut weights = Vec::with_capacity(self.count());
+        for i in 0..self.count() {
+            let row = self.row(i);
+            let w = row[stride];
+            data.extend(row[..stride].iter().map(|v| v / w));
+            weights.push(w);
+        }
+        Spline {
+            knots: self.knots.clone(),
+            stride,
+            data,
+            weights: Some(weights),
+        }
+    }
+
     /// The Bézier pieces on the non-empty knot spans of the domain, by blossoming: the
     /// control point `i` of the piece on `[a, b]` is `f(a^(p-i), b^i)`.
     pub(crate) fn bezier_segments(&self) -> Vec<Segment> {

@@ -159,18 +159,18 @@ pub struct SurfaceDerivatives {
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Surface {
-    kind: SurfaceKind,
-    rows: usize,
-    cols: usize,
-    knots_u: KnotVector,
-    knots_v: KnotVector,
-    data: Vec<f64>,
-    weights: Option<Vec<f64>>,
+    pub(crate) kind: SurfaceKind,
+    pub(crate) rows: usize,
+    pub(crate) cols: usize,
+    pub(crate) knots_u: KnotVector,
+    pub(crate) knots_v: KnotVector,
+    pub(crate) data: Vec<f64>,
+    pub(crate) weights: Option<Vec<f64>>,
     /// Rows `(w P, w)` of the homogeneous form (weight 1 without weights), for derivatives.
-    homogeneous: Vec<f64>,
+    pub(crate) homogeneous: Vec<f64>,
 }
 
-const S: usize = stride(3);
+pub(crate) const S: usize = stride(3);
 
 impl Surface {
     /// A Bézier surface of degrees `rows - 1` (in u) and `cols - 1` (in v).
@@ -676,7 +676,7 @@ impl EvaluateSurface for Surface {
 }
 
 /// Rows `(w P, w)` of the homogeneous form (weight 1 for non-rational surfaces).
-fn homogeneous_rows(data: &[f64], weights: Option<&[f64]>) -> Vec<f64> {
+pub(crate) fn homogeneous_rows(data: &[f64], weights: Option<&[f64]>) -> Vec<f64> {
     let mut h = Vec::with_capacity(data.len() / S * (S + 1));
     for (k, row) in data.chunks_exact(S).enumerate() {
         let w = weights.map_or(1.0, |w| w[k]);

@@ -52,7 +52,7 @@ pub struct ImportArgs {
 }
 
 /// `MODEL-k.ext` beside `MODEL.ext`.
-fn numbered(path: &Path, k: usize) -> PathBuf {
+pub(crate) fn numbered(path: &Path, k: usize) -> PathBuf {
     let stem = path
         .file_stem()
         .map(|s| s.to_string_lossy())

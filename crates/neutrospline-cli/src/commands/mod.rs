@@ -15,6 +15,7 @@ pub mod plot;
 pub mod query;
 pub mod relation;
 pub mod studio;
+pub mod transform;
 
 use neutrospline::Membership;
 

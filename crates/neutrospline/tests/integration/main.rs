@@ -26,3 +26,5 @@ mod reference_common;
 mod spline_reference;
 mod surface_fit_reference;
 mod surface_properties;
+mod surface_transform;
+mod transform_reference;

@@ -1,0 +1,622 @@
+//! [`TransformRequest`]: the operations of `neutrospline transform` (one per call), defined
+//! once for every front end, and [`transform`], which applies one to a model: the curve or
+//! surface, its membership rule, point names and spreads.
+//!
+//! What each operation keeps (docs/cli.md, "transform"):
+//! - the membership rule always: every exact operation forms new control degrees as convex
+//!   combinations, which keep every rule; the degrees a rule derives (the intuitionistic
+//!   hesitation) are derived again from the blended ones, exactly as a reader does;
+//! - point names where the control points stay the same points (`reverse`, reversed;
+//!   `reparametrize`); the other operations make new points, and the names are dropped,
+//!   which the summary says;
+//! - spreads (fuzzy positions) through the same exact operation (they are blended by the
+//!   same basis); knot removal is not exact, so a model with spreads is refused there.
+
+use std::fmt::Write as _;
+
+use neutrospline::options::{
+    find, OptionError, OptionSet, OptionSpec, OptionValue, Read, ValueKind,
+};
+use neutrospline::{
+    on_dimension, AnyCurve, BSpline, Bezier, ControlPoint, ControlPolygon, Degrees, Direction,
+    DynCurve, Membership, Nurbs, Split as _, Spread, Surface, SurfaceKind,
+};
+
+use crate::model::Model;
+use crate::shape::Shape;
+
+/// One operation of [`transform`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum Operation {
+    /// Raise the degree by this much.
+    Elevate(usize),
+    /// Insert these knots, each once.
+    InsertKnots(Vec<f64>),
+    /// This many knots inside every span.
+    Refine(usize),
+    /// Remove the knot `value` up to `times` times (its multiplicity when `None`) while the
+    /// curve moves by at most `tolerance`.
+    RemoveKnot {
+        /// The knot.
+        value: f64,
+        /// At most this many removals.
+        times: Option<usize>,
+        /// The largest deviation allowed.
+        tolerance: f64,
+    },
+    /// Two pieces at this parameter.
+    Split(f64),
+    /// The piece between two parameters (reversed when the first is larger).
+    Subsegment(f64, f64),
+    /// The direction of travel reversed.
+    Reverse,
+    /// One Bézier piece per span.
+    ToBezier,
+    /// The domain mapped onto this interval.
+    Reparametrize(f64, f64),
+}
+
+impl Operation {
+    /// The operation's option name.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Operation::Elevate(_) => "elevate",
+            Operation::InsertKnots(_) => "insert-knot",
+            Operation::Refine(_) => "refine",
+            Operation::RemoveKnot { .. } => "remove-knot",
+            Operation::Split(_) => "split",
+            Operation::Subsegment(..) => "subsegment",
+            Operation::Reverse => "reverse",
+            Operation::ToBezier => "to-bezier",
+            Operation::Reparametrize(..) => "reparametrize",
+        }
+    }
+}
+
+/// The options of `neutrospline transform`: exactly one operation, and for a surface the
+/// direction it acts in.
+///
+/// ```
+/// use neutrospline::options::{OptionSet, OptionValue};
+/// use neutrospline_io::{Operation, TransformRequest};
+/// let mut request = TransformRequest::default();
+/// request.set("insert-knot", OptionValue::Word("0.25,0.5,0.5".into()))?;
+/// assert_eq!(request.operation().unwrap(), Operation::InsertKnots(vec![0.25, 0.5, 0.5]));
+/// request.set("reverse", OptionValue::Flag(true))?;
+/// assert_eq!(
+///     request.operation().unwrap_err(),
+///     "give one operation per call (given: insert-knot, reverse)"
+/// );
+/// # Ok::<(), neutrospline::options::OptionError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct TransformRequest {
+    /// `elevate`.
+    pub elevate: Option<usize>,
+    /// `insert-knot`.
+    pub insert_knot: Option<Vec<f64>>,
+    /// `refine`.
+    pub refine: Option<usize>,
+    /// `remove-knot`.
+    pub remove_knot: Option<f64>,
+    /// `times`: at most this many removals.
+    pub times: Option<usize>,
+    /// `tolerance`: the largest deviation a removal may cause.
+    pub tolerance: Option<f64>,
+    /// `split`.
+    pub split: Option<f64>,
+    /// `subsegment`.
+    pub subsegment: Option<(f64, f64)>,
+    /// `reverse`.
+    pub reverse: bool,
+    /// `to-bezier`.
+    pub to_bezier: bool,
+    /// `reparametrize`.
+    pub reparametrize: Option<(f64, f64)>,
+    /// `direction` of a surface.
+    pub direction: Option<Direction>,
+}
+
+/// `A:B` as two numbers.
+fn interval(text: &str) -> Option<(f64, f64)> {
+    let (a, b) = text.split_once(':')?;
+    Some((a.trim().parse().ok()?, b.trim().parse().ok()?))
+}
+
+impl OptionSet for TransformRequest {
+    const OPTIONS: &'static [OptionSpec] = &[
+        OptionSpec {
+            name: "elevate",
+            kind: ValueKind::Whole,
+            value_name: "N",
+            help: "Raise the degree by N (exact)",
+        },
+        OptionSpec {
+            name: "insert-knot",
+            kind: ValueKind::Numbers,
+            value_name: "T1,T2,...",
+            help: "Insert these knots (exact); a value given k times is inserted k times",
+        },
+        OptionSpec {
+            name: "refine",
+            kind: ValueKind::Whole,
+            value_name: "N",
+            help: "Insert N knots evenly inside every span (exact)",
+        },
+        OptionSpec {
+            name: "remove-knot",
+            kind: ValueKind::Number,
+            value_name: "T",
+            help: "Remove the interior knot T as often as --tolerance allows (Tiller's \
+                   algorithm); reports how many times and the deviation",
+        },
+        OptionSpec {
+            name: "times",
+            kind: ValueKind::Whole,
+            value_name: "N",
+            help: "With --remove-knot: at most N removals (default: the knot's multiplicity)",
+        },
+        OptionSpec {
+            name: "tolerance",
+            kind: ValueKind::Number,
+            value_name: "E",
+            help: "With --remove-knot: the largest deviation allowed, in model units (positions; \
+                   degrees on their own scale)",
+        },
+        OptionSpec {
+            name: "split",
+            kind: ValueKind::Number,
+            value_name: "T",
+            help: "Two pieces at parameter T, written to OUT-1 and OUT-2",
+        },
+        OptionSpec {
+            name: "subsegment",
+            kind: ValueKind::Text,
+            value_name: "A:B",
+            help: "The piece between parameters A and B (reversed when A > B)",
+        },
+        OptionSpec {
+            name: "reverse",
+            kind: ValueKind::Flag,
+            value_name: "",
+            help: "Reverse the direction of travel (the same points, in reverse order)",
+        },
+        OptionSpec {
+            name: "to-bezier",
+            kind: ValueKind::Flag,
+            value_name: "",
+            help: "One Bézier piece per knot span, written to OUT-1, OUT-2, ...",
+        },
+        OptionSpec {
+            name: "reparametrize",
+            kind: ValueKind::Text,
+            value_name: "A:B",
+            help: "Map the parameter domain onto [A, B] (the same curve)",
+        },
+        OptionSpec {
+            name: "direction",
+            kind: ValueKind::Choice(&["u", "v"]),
+            value_name: "DIR",
+            help: "For a surface: the parameter direction the operation acts in",
+        },
+    ];
+
+    fn set(&mut self, name: &str, value: OptionValue) -> Result<(), OptionError> {
+        let spec = find(Self::OPTIONS, name)?;
+        let read = spec.read(&value)?;
+        let invalid = |expected: &str| OptionError::Invalid {
+            name: spec.name,
+            given: value.to_string(),
+            expected: expected.to_owned(),
+        };
+        match (spec.name, read) {
+            ("elevate", Read::Whole(n)) => self.elevate = Some(n),
+            ("insert-knot", Read::Numbers(v)) => self.insert_knot = Some(v),
+            ("refine", Read::Whole(n)) => self.refine = Some(n),
+            ("remove-knot", Read::Number(x)) => self.remove_knot = Some(x),
+            ("times", Read::Whole(n)) => self.times = Some(n),
+            ("tolerance", Read::Number(x)) => {
+                if !(x.is_finite() && x >= 0.0) {
+                    return Err(invalid("expected a finite number >= 0"));
+                }
+                self.tolerance = Some(x);
+            }
+            ("split", Read::Number(x)) => self.split = Some(x),
+            ("subsegment", Read::Text(t)) => {
+                self.subsegment = Some(interval(&t).ok_or_else(|| invalid("expected A:B, two numbers"))?);
+            }
+            ("reverse", Read::Flag(on)) => self.reverse = on,
+            ("to-bezier", Read::Flag(on)) => self.to_bezier = on,
+            ("reparametrize", Read::Text(t)) => {
+                self.reparametrize =
+                    Some(interval(&t).ok_or_else(|| invalid("expected A:B, two numbers"))?);
+            }
+            ("direction", Read::Choice(word)) => {
+                self.direction = Some(if word == "u" { Direction::U } else { Direction::V });
+            }
+            (other, read) => unreachable!("option {other} read as {read:?}"),
+        }
+        Ok(())
+    }
+
+    fn value_text(&self, name: &str) -> Result<Option<String>, OptionError> {
+        let spec = find(Self::OPTIONS, name)?;
+        let join = |v: &[f64]| v.iter().map(f64::to_string).collect::<Vec<_>>().join(",");
+        Ok(match spec.name {
+            "elevate" => self.elevate.map(|n| n.to_string()),
+            "insert-knot" => self.insert_knot.as_deref().map(join),
+            "refine" => self.refine.map(|n| n.to_string()),
+            "remove-knot" => self.remove_knot.map(|x| x.to_string()),
+            "times" => self.times.map(|n| n.to_string()),
+            "tolerance" => self.tolerance.map(|x| x.to_string()),
+            "split" => self.split.map(|x| x.to_string()),
+            "subsegment" => self.subsegment.map(|(a, b)| format!("{a}:{b}")),
+            "reverse" => Some(self.reverse.to_string()),
+            "to-bezier" => Some(self.to_bezier.to_string()),
+            "reparametrize" => self.reparametrize.map(|(a, b)| format!("{a}:{b}")),
+            "direction" => self.direction.map(|d| d.to_string()),
+            other => unreachable!("option {other} has no value"),
+        })
+    }
+}
+
+impl TransformRequest {
+    /// The one operation asked for.
+    ///
+    /// # Errors
+    /// No operation or more than one; `--times` or `--tolerance` without `--remove-knot`;
+    /// `--remove-knot` without `--tolerance`.
+    pub fn operation(&self) -> Result<Operation, String> {
+        let mut given = Vec::new();
+        if let Some(n) = self.elevate {
+            given.push(Operation::Elevate(n));
+        }
+        if let Some(k) = &self.insert_knot {
+            given.push(Operation::InsertKnots(k.clone()));
+        }
+        if let Some(n) = self.refine {
+            given.push(Operation::Refine(n));
+        }
+        if let Some(value) = self.remove_knot {
+            let tolerance = self.tolerance.ok_or(
+                "--remove-knot needs --tolerance E: the largest deviation the removal may cause",
+            )?;
+            given.push(Operation::RemoveKnot {
+                value,
+                times: self.times,
+                tolerance,
+            });
+        } else if self.times.is_some() || self.tolerance.is_some() {
+            return Err("--times and --tolerance go with --remove-knot".to_owned());
+        }
+        if let Some(t) = self.split {
+            given.push(Operation::Split(t));
+        }
+        if let Some((a, b)) = self.subsegment {
+            given.push(Operation::Subsegment(a, b));
+        }
+        if self.reverse {
+            given.push(Operation::Reverse);
+        }
+        if self.to_bezier {
+            given.push(Operation::ToBezier);
+        }
+        if let Some((a, b)) = self.reparametrize {
+            given.push(Operation::Reparametrize(a, b));
+        }
+        match given.len() {
+            1 => Ok(given.remove(0)),
+            0 => Err(format!(
+                "give one operation: {}",
+                ["elevate", "insert-knot", "refine", "remove-knot", "split", "subsegment",
+                 "reverse", "to-bezier", "reparametrize"]
+                    .map(|n| format!("--{n}"))
+                    .join(", ")
+            )),
+            _ => Err(format!(
+                "give one operation per call (given: {})",
+                given.iter().map(Operation::name).collect::<Vec<_>>().join(", ")
+            )),
+        }
+    }
+}
+
+/// The models an operation made, and what it did.
+#[derive(Debug, Clone)]
+pub struct Transformed {
+    /// One model, or the pieces of `split` and `to-bezier` in order.
+    pub models: Vec<Model>,
+    /// One line on what was done (for example how many removals, the deviation, what was
+    /// dropped).
+    pub summary: String,
+}
+
+/// Values within this of the degree box are rounding.
+const ROUNDING: f64 = 1e-12;
+
+/// The degrees as the membership rule's reader makes them from the blended channels: the
+/// intuitionistic hesitation derived from truth and falsity again (a sum of rounding-free
+/// terms differs from the blended one by an ulp), a truth + falsity above 1 by rounding
+/// brought back to 1.
+fn conform(membership: Membership, degrees: Degrees) -> Result<Degrees, String> {
+    let [t, i, f] = degrees.to_array();
+    let made = match membership {
+        Membership::Neutrosophic => return Ok(degrees),
+        Membership::Intuitionistic => {
+            let f = if t + f > 1.0 && t + f <= 1.0 + ROUNDING { 1.0 - t } else { f };
+            Degrees::with_membership(membership, t, None, Some(f))
+        }
+        Membership::Fuzzy => Degrees::with_membership(membership, t, None, None),
+    };
+    made.map_err(|e| format!("a new control point's degrees ({t}, {i}, {f}) break the rule: {e}"))
+}
+
+fn conform_points<const D: usize>(
+    points: Vec<ControlPoint<D>>,
+    membership: Membership,
+) -> Result<Vec<ControlPoint<D>>, String> {
+    points
+        .into_iter()
+        .map(|p| Ok(ControlPoint::new(p.position, conform(membership, p.degrees)?)))
+        .collect()
+}
+
+/// The curve with its control degrees conformed to `membership`.
+fn conform_curve<const D: usize>(curve: AnyCurve<D>, membership: Membership) -> Result<AnyCurve<D>, String> {
+    if membership == Membership::Neutrosophic {
+        return Ok(curve);
+    }
+    let points = conform_points(curve.control_points(), membership)?;
+    let rebuilt: Result<AnyCurve<D>, String> = match &curve {
+        AnyCurve::Bezier(_) => Bezier::new(points).map(Into::into).map_err(|e| e.to_string()),
+        AnyCurve::BSpline(c) => BSpline::new(points, c.knots().clone())
+            .map(Into::into)
+            .map_err(|e| e.to_string()),
+        AnyCurve::Nurbs(c) => Nurbs::new(points, c.weights().unwrap_or(&[]).to_vec(), c.knots().clone())
+            .map(Into::into)
+            .map_err(|e| e.to_string()),
+    };
+    rebuilt
+}
+
+fn conform_surface(surface: Surface, membership: Membership) -> Result<Surface, String> {
+    if membership == Membership::Neutrosophic {
+        return Ok(surface);
+    }
+    let points = conform_points(surface.control_points(), membership)?;
+    let (rows, cols) = (surface.rows(), surface.cols());
+    let (ku, kv) = (surface.knots_u().clone(), surface.knots_v().clone());
+    match surface.kind() {
+        SurfaceKind::Bezier => Surface::bezier(rows, cols, points),
+        SurfaceKind::BSpline => Surface::bspline(rows, cols, points, ku, kv),
+        SurfaceKind::Nurbs => {
+            Surface::nurbs(rows, cols, points, surface.weights().unwrap_or(&[]).to_vec(), ku, kv)
+        }
+    }
+    .map_err(|e| e.to_string())
+}
+
+/// A curve of the same kind, knots and weights whose positions are `positions` (the spreads'
+/// companion: blended by the same basis, so the same operation carries them).
+fn companion<const D: usize>(curve: &AnyCurve<D>, positions: &[[f64; 3]]) -> AnyCurve<3> {
+    let d = Degrees::new(0.0, 0.0, 0.0).unwrap_or_else(|e| unreachable!("zeros are degrees: {e}"));
+    let points: Vec<ControlPoint<3>> = positions.iter().map(|&p| ControlPoint::new(p, d)).collect();
+    let built: Result<AnyCurve<3>, String> = match curve {
+        AnyCurve::Bezier(_) => Bezier::new(points).map(Into::into).map_err(|e| e.to_string()),
+        AnyCurve::BSpline(c) => BSpline::new(points, c.knots().clone())
+            .map(Into::into)
+            .map_err(|e| e.to_string()),
+        AnyCurve::Nurbs(c) => Nurbs::new(points, c.weights().unwrap_or(&[]).to_vec(), c.knots().clone())
+            .map(Into::into)
+            .map_err(|e| e.to_string()),
+    };
+    built.unwrap_or_else(|e| unreachable!("the companion has the curve's valid layout: {e}"))
+}
+
+/// The curve operation on any kind and dimension: the pieces and a note.
+fn curve_op<const D: usize>(
+    curve: &AnyCurve<D>,
+    op: &Operation,
+) -> Result<(Vec<AnyCurve<D>>, String), String> {
+    Ok(match op {
+        Operation::Elevate(n) => (vec![curve.elevated(*n)], String::new()),
+        Operation::InsertKnots(k) => (
+            vec![curve.with_knots_inserted(k).map_err(|e| e.to_string())?],
+            String::new(),
+        ),
+        Operation::Refine(n) => (vec![curve.refined(*n)], String::new()),
+        Operation::RemoveKnot { value, times, tolerance } => {
+            let times = times.unwrap_or_else(|| curve.knots().map_or(0, |k| k.multiplicity(*value)));
+            let r = curve
+                .without_knot(*value, times, *tolerance)
+                .map_err(|e| e.to_string())?;
+            let note = format!(
+                "removed knot {value} {} of {times} times; largest deviation found {:e} (tolerance {tolerance:e})",
+                r.removed, r.error
+            );
+            (vec![r.curve], note)
+        }
+        Operation::Split(t) => {
+            let (a, b) = curve.split(*t).map_err(|e| e.to_string())?;
+            (vec![a, b], String::new())
+        }
+        Operation::Subsegment(a, b) => (
+            vec![curve.subsegment(*a, *b).map_err(|e| e.to_string())?],
+            String::new(),
+        ),
+        Operation::Reverse => (vec![curve.reversed()], String::new()),
+        Operation::ToBezier => (
+            curve.bezier_pieces().into_iter().map(|(_, c)| c).collect(),
+            String::new(),
+        ),
+        Operation::Reparametrize(a, b) => (
+            vec![curve.reparametrized(*a, *b).map_err(|e| e.to_string())?],
+            String::new(),
+        ),
+    })
+}
+
+fn surface_op(surface: &Surface, op: &Operation, direction: Option<Direction>) -> Result<(Vec<Surface>, String), String> {
+    if let Operation::ToBezier = op {
+        return Ok((surface.to_bezier_patches(), String::new()));
+    }
+    let direction = direction.ok_or_else(|| {
+        format!("--{} on a surface needs --direction u or v", op.name())
+    })?;
+    Ok(match op {
+        Operation::Elevate(n) => {
+            let mut s = surface.clone();
+            for _ in 0..*n {
+                s = s.elevate(direction);
+            }
+            (vec![s], String::new())
+        }
+        Operation::InsertKnots(k) => {
+            let mut s = surface.clone();
+            for &u in k {
+                s = s.insert_knot(direction, u, 1).map_err(|e| format!("knots_{direction}: {e}"))?;
+            }
+            (vec![s], String::new())
+        }
+        Operation::Refine(n) => (vec![surface.refine(direction, *n)], String::new()),
+        Operation::RemoveKnot { value, times, tolerance } => {
+            let knots = match direction {
+                Direction::U => surface.knots_u(),
+                Direction::V => surface.knots_v(),
+            };
+            let times = times.unwrap_or_else(|| knots.multiplicity(*value));
+            let r = surface
+                .remove_knot(direction, *value, times, *tolerance)
+                .map_err(|e| format!("knots_{direction}: {e}"))?;
+            let note = format!(
+                "removed knot {direction} = {value} {} of {times} times; largest deviation found {:e} (tolerance {tolerance:e})",
+                r.removed, r.error
+            );
+            (vec![r.curve], note)
+        }
+        Operation::Split(t) => {
+            let (a, b) = surface.split(direction, *t).map_err(|e| format!("{direction}: {e}"))?;
+            (vec![a, b], String::new())
+        }
+        Operation::Subsegment(a, b) => (
+            vec![surface.subsegment(direction, *a, *b).map_err(|e| format!("{direction}: {e}"))?],
+            String::new(),
+        ),
+        Operation::Reverse => (vec![surface.reversed(direction)], String::new()),
+        Operation::Reparametrize(a, b) => (
+            vec![surface.reparametrized(direction, *a, *b).map_err(|e| e.to_string())?],
+            String::new(),
+        ),
+        Operation::ToBezier => unreachable!("handled above"),
+    })
+}
+
+/// Applies `op` to `model` (`direction` for a surface; a curve refuses one): the new
+/// model(s), each passing `check`, and a summary.
+///
+/// # Errors
+/// The operation's own (a parameter outside the domain, a knot that is not interior, a
+/// multiplicity above the degree + 1, an empty piece), `--direction` missing for a surface
+/// or given for a curve, knot removal on a model with spreads.
+///
+/// ```
+/// use neutrospline_io::{transform, Model, Operation};
+/// let model = Model::new(neutrospline::AnyCurve::from(neutrospline::example1()));
+/// let out = transform(&model, &Operation::Split(0.5), None)?;
+/// assert_eq!(out.models.len(), 2);
+/// # Ok::<(), String>(())
+/// ```
+pub fn transform(model: &Model, op: &Operation, direction: Option<Direction>) -> Result<Transformed, String> {
+    let membership = model.membership();
+    let spreads = model.spreads();
+    let mut summary = String::new();
+    let mut models = Vec::new();
+    let keep_names = matches!(op, Operation::Reverse | Operation::Reparametrize(..));
+    match model.shape() {
+        Shape::Curve(curve) => {
+            if let Some(d) = direction {
+                return Err(format!("--direction {d} is for surfaces; this model is a curve"));
+            }
+            if spreads.is_some() && matches!(op, Operation::RemoveKnot { .. }) {
+                return Err("--remove-knot is not exact, so the spreads (fuzzy positions) of this \
+                            model cannot follow it; remove them first"
+                    .to_owned());
+            }
+            let (pieces, note, spread_pieces): (Vec<DynCurve>, String, Option<Vec<Vec<Spread<3>>>>) =
+                on_dimension!(curve, c => {
+                    let (pieces, note) = curve_op(c, op)?;
+                    let spread_pieces = match spreads {
+                        None => None,
+                        Some(s) => {
+                            let left: Vec<[f64; 3]> = s.iter().map(|x| x.left).collect();
+                            let right: Vec<[f64; 3]> = s.iter().map(|x| x.right).collect();
+                            let (lp, _) = curve_op(&companion(c, &left), op)?;
+                            let (rp, _) = curve_op(&companion(c, &right), op)?;
+                            Some(lp.iter().zip(&rp).map(|(l, r)| {
+                                l.control_points().iter().zip(r.control_points()).map(|(a, b)| {
+                                    let clean = |v: [f64; 3]| v.map(|x| if x < 0.0 && x > -ROUNDING { 0.0 } else { x });
+                                    Spread { left: clean(a.position), right: clean(b.position) }
+                                }).collect()
+                            }).collect())
+                        }
+                    };
+                    let pieces = pieces
+                        .into_iter()
+                        .map(|p| conform_curve(p, membership).map(DynCurve::from))
+                        .collect::<Result<Vec<_>, String>>()?;
+                    (pieces, note, spread_pieces)
+                });
+            summary.push_str(&note);
+            for (k, piece) in pieces.into_iter().enumerate() {
+                let mut m = Model::new(piece)
+                    .with_membership(membership)
+                    .map_err(|e| e.to_string())?;
+                if let Some(s) = &spread_pieces {
+                    m = m.with_spreads(s[k].clone()).map_err(|e| e.to_string())?;
+                }
+                models.push(m);
+            }
+        }
+        Shape::Surface(surface) => {
+            let (pieces, note) = surface_op(surface, op, direction)?;
+            summary.push_str(&note);
+            for piece in pieces {
+                let piece = conform_surface(piece, membership)?;
+                models.push(Model::new(piece).with_membership(membership).map_err(|e| e.to_string())?);
+            }
+        }
+    }
+    let names = model.point_names();
+    let named = names.iter().any(Option::is_some);
+    for m in &mut models {
+        if let Some(name) = model.name() {
+            *m = m.clone().with_name(name);
+        }
+        let what = op.name();
+        let description = match model.description() {
+            Some(d) => format!("{d} (transformed: {what})"),
+            None => format!("Transformed by neutrospline transform --{what}"),
+        };
+        *m = m.clone().with_description(description);
+        if named && keep_names {
+            let mut kept = names.to_vec();
+            if matches!(op, Operation::Reverse) && !model.shape().is_surface() {
+                kept.reverse();
+            }
+            if kept.len() == m.shape().control_count() && !model.shape().is_surface() {
+                *m = m.clone().with_point_names(kept).map_err(|e| e.to_string())?;
+            }
+        }
+    }
+    if named && !(keep_names && !model.shape().is_surface()) {
+        if !summary.is_empty() {
+            summary.push_str("; ");
+        }
+        let _ = write!(
+            summary,
+            "point names dropped (--{} makes new control points)",
+            op.name()
+        );
+    }
+    Ok(Transformed { models, summary })
+}

@@ -1,0 +1,432 @@
+//! The operations of [`crate::transform`] on surfaces, one direction at a time.
+//!
+//! A surface in direction u is a spline curve whose control "points" are the rows of its
+//! net: row `i` holds every control point `(i, j)`, `j = 0..cols` (direction v: the
+//! columns). So each operation is the curve operation on that spline, written once in the
+//! spline engine: knot insertion, refinement, removal, splitting, reversal, elevation, a new
+//! domain. A NURBS surface goes through its homogeneous form `(w P, w T, w I, w F, w)`;
+//! afterwards each point is divided by its weight, and degrees within rounding (1e-12) of
+//! \[0, 1\] are clamped onto it.
+
+use crate::curve::EvalError;
+use crate::knots::{KnotError, KnotVector};
+use crate::spline::Spline;
+use crate::surface::{homogeneous_rows, Direction, Surface, SurfaceKind, S};
+use crate::transform::{KnotRemoval, DEVIATION_SAMPLES_PER_SPAN};
+use crate::EvaluateSurface;
+
+/// Values within this of the degree box \[0, 1\] are rounding, clamped onto it.
+const ROUNDING: f64 = 1e-12;
+
+impl Surface {
+    fn count(&self, direction: Direction) -> usize {
+        match direction {
+            Direction::U => self.rows,
+            Direction::V => self.cols,
+        }
+    }
+
+    fn knots_of(&self, direction: Direction) -> &KnotVector {
+        match direction {
+            Direction::U => &self.knots_u,
+            Direction::V => &self.knots_v,
+        }
+    }
+
+    /// The surface as a spline in `direction`: one row per line of the net across it, in
+    /// homogeneous form for NURBS.
+    fn direction_spline(&self, direction: Direction) -> Spline {
+        let (point, values) = match &self.weights {
+            Some(w) => (S + 1, homogeneous_rows(&self.data, Some(w))),
+            None => (S, self.data.clone()),
+        };
+        let (n, m) = (self.count(direction), self.count(other(direction)));
+        let mut data = Vec::with_capacity(values.len());
+        for a in 0..n {
+            for b in 0..m {
+                let k = match direction {
+                    Direction::U => a * self.cols + b,
+                    Direction::V => b * self.cols + a,
+                };
+                data.extend_from_slice(&values[k * point..(k + 1) * point]);
+            }
+        }
+        Spline {
+            knots: self.knots_of(direction).clone(),
+            stride: m * point,
+            data,
+            weights: None,
+        }
+    }
+
+    /// The surface of a spline made by [`Surface::direction_spline`] and an operation on it.
+    fn with_direction_spline(&self, direction: Direction, spline: Spline) -> Surface {
+        let rational = self.weights.is_some();
+        let point = if rational { S + 1 } else { S };
+        let m = self.count(other(direction));
+        let n = spline.data.len() / (m * point);
+        let (rows, cols) = match direction {
+            Direction::U => (n, m),
+            Direction::V => (m, n),
+        };
+        let mut data = vec![0.0; rows * cols * S];
+        let mut weights = rational.then(|| vec![0.0; rows * cols]);
+        for a in 0..n {
+            for b in 0..m {
+                let k = match direction {
+                    Direction::U => a * cols + b,
+                    Direction::V => b * cols + a,
+                };
+                let src = &spline.data[(a * m + b) * point..(a * m + b + 1) * point];
+                let w = if rational { src[S] } else { 1.0 };
+                for c in 0..S {
+                    let mut v = if rational { src[c] / w } else { src[c] };
+                    if c >= 3 && (-ROUNDING..=1.0 + ROUNDING).contains(&v) {
+                        v = v.clamp(0.0, 1.0);
+                    }
+                    data[k * S + c] = v;
+                }
+                if let Some(ws) = weights.as_mut() {
+                    ws[k] = w;
+                }
+            }
+        }
+        let (knots_u, knots_v) = match direction {
+            Direction::U => (spline.knots, self.knots_v.clone()),
+            Direction::V => (self.knots_u.clone(), spline.knots),
+        };
+        let homogeneous = homogeneous_rows(&data, weights.as_deref());
+        let bezier = |k: &KnotVector| {
+            let u = k.knots();
+            u.len() == 2 * (k.degree() + 1) && u[0] == 0.0 && u[u.len() - 1] == 1.0
+        };
+        let kind = match (self.kind, rational) {
+            (SurfaceKind::Bezier, _) if bezier(&knots_u) && bezier(&knots_v) => SurfaceKind::Bezier,
+            (_, true) => SurfaceKind::Nurbs,
+            (_, false) => SurfaceKind::BSpline,
+        };
+        Surface {
+            kind,
+            rows,
+            cols,
+            knots_u,
+            knots_v,
+            data,
+            weights,
+            homogeneous,
+        }
+    }
+
+    /// A Bézier surface's piece mapped back onto \[0, 1\] in `direction` (Bézier surfaces
+    /// live on the unit square), other kinds as they are.
+    fn unit_if_bezier(&self, direction: Direction, piece: Surface) -> Surface {
+        if self.kind != SurfaceKind::Bezier {
+            return piece;
+        }
+        let spline = piece.direction_spline(direction);
+        let p = spline.degree();
+        let unit = Spline {
+            knots: crate::spline::bezier_knots(p),
+            ..spline
+        };
+        let mut out = piece.with_direction_spline(direction, unit);
+        out.kind = SurfaceKind::Bezier;
+        out
+    }
+
+    /// The same surface with knot `u` inserted `times` times in `direction` (a Bézier
+    /// surface becomes a B-spline surface).
+    ///
+    /// # Errors
+    /// `u` outside the direction's domain, or its multiplicity would exceed the degree + 1.
+    ///
+    /// ```
+    /// use neutrospline::{ControlPoint, Degrees, Direction, EvaluateSurface, Surface};
+    /// let d = Degrees::new(0.7, 0.2, 0.1)?;
+    /// let net = (0..9).map(|k| ControlPoint::new([(k / 3) as f64, (k % 3) as f64, (k % 2) as f64], d)).collect();
+    /// let s = Surface::bezier(3, 3, net)?;
+    /// let t = s.insert_knot(Direction::V, 0.5, 2)?;
+    /// assert_eq!(t.cols(), s.cols() + 2);
+    /// let (a, b) = (t.evaluate(0.3, 0.7)?, s.evaluate(0.3, 0.7)?);
+    /// assert!((a.position[2] - b.position[2]).abs() < 1e-15);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn insert_knot(
+        &self,
+        direction: Direction,
+        u: f64,
+        times: usize,
+    ) -> Result<Surface, KnotError> {
+        let mut spline = self.direction_spline(direction);
+        for _ in 0..times {
+            spline = spline.insert_knot(u)?;
+        }
+        Ok(self.with_direction_spline(direction, spline))
+    }
+
+    /// Knot refinement in `direction`: `per_span` knots inserted evenly inside every
+    /// non-empty span (as [`crate::BSpline::refine`]).
+    pub fn refine(&self, direction: Direction, per_span: usize) -> Surface {
+        let knots = self.knots_of(direction);
+        let domain = knots.domain();
+        let mut breaks = vec![domain.start];
+        breaks.extend(knots.interior_breakpoints());
+        breaks.push(domain.end);
+        let mut spline = self.direction_spline(direction);
+        for w in breaks.windows(2) {
+            for k in 1..=per_span {
+                let u = w[0] + (w[1] - w[0]) * k as f64 / (per_span + 1) as f64;
+                if u > w[0] && u < w[1] {
+                    spline = spline
+                        .insert_knot(u)
+                        .unwrap_or_else(|e| unreachable!("{u} is new inside a span: {e}"));
+                }
+            }
+        }
+        self.with_direction_spline(direction, spline)
+    }
+
+    /// Degree elevation by one in `direction`: the same surface.
+    pub fn elevate(&self, direction: Direction) -> Surface {
+        let spline = self.direction_spline(direction).elevate(0..0);
+        self.with_direction_spline(direction, spline)
+    }
+
+    /// The pieces on `[a, t]` and `[t, b]` of `direction`'s domain `[a, b]`, keeping the
+    /// parameters (a Bézier surface's pieces are Bézier surfaces on \[0, 1\]).
+    ///
+    /// # Errors
+    /// `t` not strictly inside the domain.
+    pub fn split(&self, direction: Direction, t: f64) -> Result<(Surface, Surface), EvalError> {
+        let domain = self.knots_of(direction).domain();
+        if !(t > domain.start && t < domain.end) {
+            return Err(EvalError::ParameterOutOfDomain {
+                t,
+                start: domain.start,
+                end: domain.end,
+            });
+        }
+        let (left, right) = self.direction_spline(direction).split(t);
+        Ok((
+            self.unit_if_bezier(direction, self.with_direction_spline(direction, left)),
+            self.unit_if_bezier(direction, self.with_direction_spline(direction, right)),
+        ))
+    }
+
+    /// The piece on `[t0, t1]` of `direction` (reversed when `t0 > t1`).
+    ///
+    /// # Errors
+    /// A parameter outside the domain, or `t0 == t1`.
+    pub fn subsegment(&self, direction: Direction, t0: f64, t1: f64) -> Result<Surface, EvalError> {
+        let domain = self.knots_of(direction).domain();
+        for t in [t0, t1] {
+            if !(t >= domain.start && t <= domain.end) {
+                return Err(EvalError::ParameterOutOfDomain {
+                    t,
+                    start: domain.start,
+                    end: domain.end,
+                });
+            }
+        }
+        if t0 == t1 {
+            return Err(EvalError::EmptyPiece { start: t0, end: t1 });
+        }
+        let spline = self
+            .direction_spline(direction)
+            .restricted(t0.min(t1), t0.max(t1));
+        let piece = self.unit_if_bezier(direction, self.with_direction_spline(direction, spline));
+        Ok(if t0 > t1 {
+            piece.reversed(direction)
+        } else {
+            piece
+        })
+    }
+
+    /// The same surface with `direction` traversed backwards on the same domain.
+    pub fn reversed(&self, direction: Direction) -> Surface {
+        let spline = self.direction_spline(direction).reversed();
+        self.with_direction_spline(direction, spline)
+    }
+
+    /// The same surface with `direction`'s domain mapped onto `[start, end]` (a Bézier
+    /// surface becomes a B-spline surface unless the interval is \[0, 1\]).
+    ///
+    /// # Errors
+    /// [`KnotError::BadInterval`] unless `start < end`, both finite.
+    pub fn reparametrized(
+        &self,
+        direction: Direction,
+        start: f64,
+        end: f64,
+    ) -> Result<Surface, KnotError> {
+        let bad = KnotError::BadInterval { start, end };
+        if !(start.is_finite() && end.is_finite() && start < end) {
+            return Err(bad);
+        }
+        let spline = self.direction_spline(direction);
+        let domain = spline.knots.domain();
+        let scale = (end - start) / (domain.end - domain.start);
+        let knots: Vec<f64> = spline
+            .knots
+            .knots()
+            .iter()
+            .map(|&k| {
+                if k == domain.start {
+                    start
+                } else if k == domain.end {
+                    end
+                } else {
+                    start + (k - domain.start) * scale
+                }
+            })
+            .collect();
+        if knots.iter().any(|k| !k.is_finite()) || knots.windows(2).any(|w| w[0] > w[1]) {
+            return Err(bad);
+        }
+        let p = spline.degree();
+        let spline = Spline {
+            knots: KnotVector::from_parts_unchecked(p, knots),
+            ..spline
+        };
+        Ok(self.with_direction_spline(direction, spline))
+    }
+
+    /// Removes the interior knot `u` of `direction` up to `times` times while the surface
+    /// stays within `tolerance` (Tiller's test on the lines of the net, in homogeneous form
+    /// for NURBS, and the deviation measured by [`Surface::deviation_from`]); new degrees
+    /// must stay in \[0, 1\].
+    ///
+    /// # Errors
+    /// [`KnotError::NotAnInteriorKnot`] when `u` is not a knot strictly inside the domain.
+    pub fn remove_knot(
+        &self,
+        direction: Direction,
+        u: f64,
+        times: usize,
+        tolerance: f64,
+    ) -> Result<KnotRemoval<Surface>, KnotError> {
+        let interior = self.knots_of(direction).interior_breakpoints();
+        if !interior.contains(&u) {
+            let knots = if interior.is_empty() {
+                "none".to_owned()
+            } else {
+                interior
+                    .iter()
+                    .map(f64::to_string)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            return Err(KnotError::NotAnInteriorKnot { value: u, knots });
+        }
+        let mut current = self.clone();
+        let (mut removed, mut error) = (0, 0.0);
+        while removed < times {
+            let Some(spline) = current
+                .direction_spline(direction)
+                .remove_knot_once(u, tolerance)
+            else {
+                break;
+            };
+            let candidate = current.with_direction_spline(direction, spline);
+            let in_box = candidate
+                .data
+                .chunks_exact(S)
+                .all(|row| row[3..].iter().all(|v| (0.0..=1.0).contains(v)));
+            let deviation = self.deviation_from(&candidate);
+            if !in_box || deviation.is_nan() || deviation > tolerance {
+                break;
+            }
+            current = candidate;
+            removed += 1;
+            error = deviation;
+        }
+        Ok(KnotRemoval {
+            curve: current,
+            removed,
+            error,
+        })
+    }
+
+    /// The Bézier patches of the surface: split at every interior knot of both directions,
+    /// in row-major order of the patches (u first); each patch keeps its parameters.
+    pub fn to_bezier_patches(&self) -> Vec<Surface> {
+        let mut strips = vec![self.clone()];
+        for direction in [Direction::U, Direction::V] {
+            let mut next = Vec::new();
+            for strip in strips {
+                let mut rest = strip;
+                for b in self.knots_of(direction).interior_breakpoints() {
+                    match rest.split(direction, b) {
+                        Ok((left, right)) => {
+                            next.push(left);
+                            rest = right;
+                        }
+                        Err(e) => unreachable!("{b} is an interior knot: {e}"),
+                    }
+                }
+                next.push(rest);
+            }
+            strips = next;
+        }
+        strips
+    }
+
+    /// The largest distance between this surface and `other` on this surface's domain,
+    /// sampled on the grid of every distinct knot of either and
+    /// [`DEVIATION_SAMPLES_PER_SPAN`] / 4 evenly spaced parameters per span each way: the
+    /// larger of the Euclidean distance of the positions and the largest difference of a
+    /// degree.
+    pub fn deviation_from(&self, other: &Surface) -> f64 {
+        let grid = |mine: &KnotVector, theirs: &KnotVector| {
+            let domain = mine.domain();
+            let mut breaks = vec![domain.start, domain.end];
+            breaks.extend(mine.interior_breakpoints());
+            breaks.extend(theirs.interior_breakpoints());
+            breaks.retain(|t| (domain.start..=domain.end).contains(t));
+            breaks.sort_by(f64::total_cmp);
+            breaks.dedup();
+            let per = DEVIATION_SAMPLES_PER_SPAN / 4;
+            let mut at = Vec::new();
+            for w in breaks.windows(2) {
+                for k in 0..per {
+                    at.push(w[0] + (w[1] - w[0]) * k as f64 / per as f64);
+                }
+            }
+            at.push(domain.end);
+            at
+        };
+        let us = grid(&self.knots_u, &other.knots_u);
+        let vs = grid(&self.knots_v, &other.knots_v);
+        let mut worst: f64 = 0.0;
+        for &u in &us {
+            for &v in &vs {
+                let (Ok(p), Ok(q)) = (self.evaluate(u, v), other.evaluate(u, v)) else {
+                    return f64::INFINITY;
+                };
+                let d = p
+                    .position
+                    .iter()
+                    .zip(&q.position)
+                    .map(|(a, b)| (a - b) * (a - b))
+                    .sum::<f64>()
+                    .sqrt();
+                let g = p
+                    .degrees
+                    .to_array()
+                    .iter()
+                    .zip(q.degrees.to_array())
+                    .map(|(a, b)| (a - b).abs())
+                    .fold(0.0, f64::max);
+                worst = worst.max(d).max(g);
+            }
+        }
+        worst
+    }
+}
+
+fn other(direction: Direction) -> Direction {
+    match direction {
+        Direction::U => Direction::V,
+        Direction::V => Direction::U,
+    }
+}

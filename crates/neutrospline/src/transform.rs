@@ -1,0 +1,392 @@
+//! Operations that change a spline curve's representation but not the curve (up to a stated
+//! tolerance): knots inserted several times, knot refinement, Tiller's knot removal, and
+//! the domain mapped onto another interval (docs/model.md, "Operations").
+//!
+//! Every exact operation here forms each new control point as a convex combination of old
+//! ones (for NURBS in rational form), so the degrees stay within the old control values and
+//! every membership rule keeps holding. Knot removal solves new points by extrapolation; it
+//! keeps a removal only when the curve moves by at most the tolerance and every new degree
+//! stays in \[0, 1\] (values within 1e-12 of the box, rounding, are clamped onto it).
+
+use crate::curve::Evaluate;
+use crate::knots::{KnotError, KnotVector};
+use crate::point::CurvePoint;
+use crate::spline::Spline;
+use crate::spline_curve::{SplineCurve, Weighting};
+
+/// The result of [`SplineCurve::remove_knot`]: the curve, how many times the knot was
+/// removed, and how far the curve moved.
+#[derive(Clone, Debug, PartialEq)]
+pub struct KnotRemoval<C> {
+    /// The curve with the knot removed `removed` times.
+    pub curve: C,
+    /// How many times the knot was removed (0 when not even once within the tolerance).
+    pub removed: usize,
+    /// The largest deviation from the original curve found ([`SplineCurve::deviation_from`]).
+    pub error: f64,
+}
+
+/// Values within this of the degree box \[0, 1\] are rounding, clamped onto it.
+const ROUNDING: f64 = 1e-12;
+
+/// Samples per knot span used by [`max_deviation`].
+pub const DEVIATION_SAMPLES_PER_SPAN: usize = 32;
+
+/// The largest distance between curves `a` and `b` sampled at the `breaks` (sorted) and
+/// [`DEVIATION_SAMPLES_PER_SPAN`] evenly spaced parameters between neighbours: the larger of
+/// the Euclidean distance of the positions and the largest difference of a degree.
+fn sampled_deviation<const D: usize>(
+    a: &impl Evaluate<Point = CurvePoint<D>>,
+    b: &impl Evaluate<Point = CurvePoint<D>>,
+    breaks: &[f64],
+) -> f64 {
+    let mut worst: f64 = 0.0;
+    for w in breaks.windows(2) {
+        for k in 0..=DEVIATION_SAMPLES_PER_SPAN {
+            let t = w[0] + (w[1] - w[0]) * k as f64 / DEVIATION_SAMPLES_PER_SPAN as f64;
+            let (Ok(p), Ok(q)) = (a.evaluate(t), b.evaluate(t)) else {
+                return f64::INFINITY;
+            };
+            let position = p
+                .position
+                .iter()
+                .zip(&q.position)
+                .map(|(x, y)| (x - y) * (x - y))
+                .sum::<f64>()
+                .sqrt();
+            let degrees = p
+                .degrees
+                .to_array()
+                .iter()
+                .zip(q.degrees.to_array())
+                .map(|(x, y)| (x - y).abs())
+                .fold(0.0, f64::max);
+            worst = worst.max(position).max(degrees);
+        }
+    }
+    worst
+}
+
+/// The degree channels `D..D + 3` of every row clamped onto \[0, 1\] when within rounding of
+/// it; `false` when a value lies further out.
+fn degrees_in_box<const D: usize>(spline: &mut Spline) -> bool {
+    for i in 0..spline.count() {
+        for c in D..D + 3 {
+            let v = &mut spline.data[i * spline.stride + c];
+            if *v < -ROUNDING || *v > 1.0 + ROUNDING || !v.is_finite() {
+                return false;
+            }
+            *v = v.clamp(0.0, 1.0);
+        }
+    }
+    true
+}
+
+impl<const D: usize, W: Weighting> SplineCurve<D, W> {
+    /// The largest distance between this curve and `other` on this curve's domain, sampled
+    /// at every distinct knot of either and [`DEVIATION_SAMPLES_PER_SPAN`] evenly spaced
+    /// parameters in each span between them: the larger of the Euclidean distance of the
+    /// positions and the largest difference of a degree. (A sample, not a bound: it finds
+    /// the deviation of a piece to within its variation between samples.)
+    ///
+    /// ```
+    /// let curve = neutrospline::example1().to_bspline();
+    /// let same = curve.insert_knot(0.3)?;
+    /// assert!(curve.deviation_from(&same) < 1e-14);
+    /// # Ok::<(), neutrospline::KnotError>(())
+    /// ```
+    pub fn deviation_from<V: Weighting>(&self, other: &SplineCurve<D, V>) -> f64 {
+        let domain = self.domain();
+        let mut breaks = vec![domain.start, domain.end];
+        breaks.extend(self.knots().interior_breakpoints());
+        breaks.extend(other.knots().interior_breakpoints());
+        breaks.retain(|t| (domain.start..=domain.end).contains(t));
+        breaks.sort_by(f64::total_cmp);
+        breaks.dedup();
+        sampled_deviation(self, other, &breaks)
+    }
+
+    /// The same curve with knot `u` inserted `times` times (Boehm's algorithm repeated).
+    ///
+    /// # Errors
+    /// `u` outside the domain, or its multiplicity would exceed `p + 1`.
+    ///
+    /// ```
+    /// use neutrospline::ControlPolygon;
+    /// let curve = neutrospline::example1().to_bspline();
+    /// let more = curve.insert_knot_times(0.5, 3)?;
+    /// assert_eq!(more.knots().multiplicity(0.5), 3);
+    /// assert_eq!(more.control_points().len(), 7);
+    /// # Ok::<(), neutrospline::KnotError>(())
+    /// ```
+    pub fn insert_knot_times(&self, u: f64, times: usize) -> Result<Self, KnotError> {
+        let mut curve = self.clone();
+        for _ in 0..times {
+            curve = curve.insert_knot(u)?;
+        }
+        Ok(curve)
+    }
+
+    /// Knot refinement: `per_span` knots inserted evenly inside every non-empty span of the
+    /// domain (the span `[a, b]` gets `a + k (b - a) / (per_span + 1)`, k = 1..=per_span).
+    ///
+    /// ```
+    /// let curve = neutrospline::example1().to_bspline();
+    /// let fine = curve.refine(3);
+    /// assert_eq!(fine.knots().interior_breakpoints(), [0.25, 0.5, 0.75]);
+    /// ```
+    pub fn refine(&self, per_span: usize) -> Self {
+        let domain = self.domain();
+        let mut breaks = vec![domain.start];
+        breaks.extend(self.knots().interior_breakpoints());
+        breaks.push(domain.end);
+        let mut curve = self.clone();
+        for w in breaks.windows(2) {
+            for k in 1..=per_span {
+                let u = w[0] + (w[1] - w[0]) * k as f64 / (per_span + 1) as f64;
+                if u > w[0] && u < w[1] {
+                    curve = curve
+                        .insert_knot(u)
+                        .unwrap_or_else(|e| unreachable!("{u} is new inside a span: {e}"));
+                }
+            }
+        }
+        curve
+    }
+
+    /// Removes the interior knot `u` up to `times` times while the curve stays within
+    /// `tolerance` of this one (Tiller's algorithm, The NURBS Book A5.8, one removal at a
+    /// time). Each removal must pass Tiller's test within `tolerance` (the distance of the
+    /// two solutions of the new points, over every channel, in homogeneous form for NURBS),
+    /// the curve measured by [`SplineCurve::deviation_from`] must stay within `tolerance` of this one, and
+    /// every new degree must lie in \[0, 1\]; the first removal that fails stops.
+    ///
+    /// # Errors
+    /// [`KnotError::NotAnInteriorKnot`] when `u` is not a knot strictly inside the domain.
+    ///
+    /// ```
+    /// let curve = neutrospline::example1().to_bspline();
+    /// let inserted = curve.insert_knot_times(0.4, 2)?;
+    /// let back = inserted.remove_knot(0.4, 5, 1e-12)?;
+    /// assert_eq!(back.removed, 2);
+    /// assert_eq!(back.curve.knots(), curve.knots());
+    /// assert!(back.error < 1e-14);
+    /// # Ok::<(), neutrospline::KnotError>(())
+    /// ```
+    pub fn remove_knot(
+        &self,
+        u: f64,
+        times: usize,
+        tolerance: f64,
+    ) -> Result<KnotRemoval<Self>, KnotError> {
+        let interior = self.knots().interior_breakpoints();
+        if !interior.contains(&u) {
+            let knots = if interior.is_empty() {
+                "none".to_owned()
+            } else {
+                interior
+                    .iter()
+                    .map(f64::to_string)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            return Err(KnotError::NotAnInteriorKnot { value: u, knots });
+        }
+        let mut current = self.clone();
+        let mut removed = 0;
+        let mut error = 0.0;
+        while removed < times && current.knots().multiplicity(u) > 0 {
+            let Some(mut spline) = current.spline().remove_knot_once(u, tolerance) else {
+                break;
+            };
+            if !degrees_in_box::<D>(&mut spline) {
+                break;
+            }
+            let candidate = SplineCurve::from_spline(spline);
+            let deviation = self.deviation_from(&candidate);
+            if deviation.is_nan() || deviation > tolerance {
+                break;
+            }
+            current = candidate;
+            removed += 1;
+            error = deviation;
+        }
+        Ok(KnotRemoval {
+            curve: current,
+            removed,
+            error,
+        })
+    }
+
+    /// The same curve on the domain `[start, end]`: the knots mapped by the affine map of
+    /// the domain onto it, so the point at `start + (end - start) (t - a) / (b - a)` of the
+    /// result is this curve's point at `t` (domain `[a, b]`).
+    ///
+    /// # Errors
+    /// [`KnotError::BadInterval`] unless `start < end`, both finite (and the mapped knots
+    /// finite).
+    ///
+    /// ```
+    /// use neutrospline::Evaluate;
+    /// let curve = neutrospline::example1().to_bspline();
+    /// let moved = curve.reparametrized(2.0, 4.0)?;
+    /// assert_eq!(moved.domain(), 2.0..4.0);
+    /// assert_eq!(moved.evaluate(3.0)?.position, curve.evaluate(0.5)?.position);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn reparametrized(&self, start: f64, end: f64) -> Result<Self, KnotError> {
+        let bad = KnotError::BadInterval { start, end };
+        if !(start.is_finite() && end.is_finite() && start < end) {
+            return Err(bad);
+        }
+        let domain = self.domain();
+        let scale = (end - start) / (domain.end - domain.start);
+        let knots: Vec<f64> = self
+            .knots()
+            .knots()
+            .iter()
+            .map(|&k| {
+                if k == domain.start {
+                    start
+                } else if k == domain.end {
+                    end
+                } else {
+                    start + (k - domain.start) * scale
+                }
+            })
+            .collect();
+        if knots.iter().any(|k| !k.is_finite()) || knots.windows(2).any(|w| w[0] > w[1]) {
+            return Err(bad);
+        }
+        let p = self.degree();
+        let spline = Spline {
+            knots: KnotVector::from_parts_unchecked(p, knots),
+            ..self.spline().clone()
+        };
+        Ok(SplineCurve::from_spline(spline))
+    }
+}
+
+/// The operations on a curve of any kind, with the kind changing where it must: a Bézier
+/// curve becomes its clamped B-spline for the operations that need knots (insertion,
+/// refinement, a domain other than \[0, 1\]); a knot removal that leaves one span gives a
+/// spline still (the kind is the user's to change).
+impl<const D: usize> crate::AnyCurve<D> {
+    /// A spline of this curve: itself, or a Bézier curve as its clamped B-spline.
+    fn as_spline(&self) -> crate::AnyCurve<D> {
+        match self {
+            crate::AnyCurve::Bezier(b) => crate::AnyCurve::BSpline(b.to_bspline()),
+            other => other.clone(),
+        }
+    }
+
+    /// The degree raised by `times` (exact; the kind kept).
+    ///
+    /// ```
+    /// use neutrospline::{AnyCurve, Evaluate};
+    /// let curve = AnyCurve::from(neutrospline::example1());
+    /// let up = curve.elevated(2);
+    /// assert_eq!(up.degree(), 5);
+    /// assert!((up.evaluate(0.3)?.position[0] - curve.evaluate(0.3)?.position[0]).abs() < 1e-14);
+    /// # Ok::<(), neutrospline::EvalError>(())
+    /// ```
+    pub fn elevated(&self, times: usize) -> Self {
+        use crate::curve::Elevate;
+        let mut curve = self.clone();
+        for _ in 0..times {
+            curve = curve.elevate();
+        }
+        curve
+    }
+
+    /// The knots `knots` inserted, each once (a value given twice is inserted twice); a
+    /// Bézier curve becomes a B-spline.
+    ///
+    /// # Errors
+    /// A value outside the domain, or a multiplicity above the degree + 1.
+    pub fn with_knots_inserted(&self, knots: &[f64]) -> Result<Self, KnotError> {
+        let mut curve = self.as_spline();
+        for &u in knots {
+            curve = match &curve {
+                crate::AnyCurve::BSpline(c) => c.insert_knot(u)?.into(),
+                crate::AnyCurve::Nurbs(c) => c.insert_knot(u)?.into(),
+                crate::AnyCurve::Bezier(_) => unreachable!("as_spline gives a spline"),
+            };
+        }
+        Ok(curve)
+    }
+
+    /// `per_span` knots inserted evenly in every span (a Bézier curve becomes a B-spline).
+    pub fn refined(&self, per_span: usize) -> Self {
+        match self.as_spline() {
+            crate::AnyCurve::BSpline(c) => c.refine(per_span).into(),
+            crate::AnyCurve::Nurbs(c) => c.refine(per_span).into(),
+            crate::AnyCurve::Bezier(_) => unreachable!("as_spline gives a spline"),
+        }
+    }
+
+    /// Tiller's removal of the knot `u` ([`SplineCurve::remove_knot`]).
+    ///
+    /// # Errors
+    /// [`KnotError::NotAnInteriorKnot`], also for a Bézier curve, which has none.
+    pub fn without_knot(
+        &self,
+        u: f64,
+        times: usize,
+        tolerance: f64,
+    ) -> Result<KnotRemoval<Self>, KnotError> {
+        match self {
+            crate::AnyCurve::Bezier(_) => Err(KnotError::NotAnInteriorKnot {
+                value: u,
+                knots: "none: a Bézier curve has no knots".to_owned(),
+            }),
+            crate::AnyCurve::BSpline(c) => c.remove_knot(u, times, tolerance).map(|r| KnotRemoval {
+                curve: r.curve.into(),
+                removed: r.removed,
+                error: r.error,
+            }),
+            crate::AnyCurve::Nurbs(c) => c.remove_knot(u, times, tolerance).map(|r| KnotRemoval {
+                curve: r.curve.into(),
+                removed: r.removed,
+                error: r.error,
+            }),
+        }
+    }
+
+    /// The Bézier pieces, one per non-empty span, each on \[0, 1\]: Bézier curves of a
+    /// Bézier curve or a B-spline, one-span NURBS curves (rational Bézier curves) of a NURBS
+    /// curve; with the parameter interval each piece covers.
+    pub fn bezier_pieces(&self) -> Vec<(core::ops::Range<f64>, Self)> {
+        match self {
+            crate::AnyCurve::Bezier(_) => vec![(0.0..1.0, self.clone())],
+            crate::AnyCurve::BSpline(c) => c
+                .to_bezier_segments()
+                .into_iter()
+                .map(|s| (s.start..s.end, s.curve.into()))
+                .collect(),
+            crate::AnyCurve::Nurbs(c) => c
+                .to_bezier_segments()
+                .into_iter()
+                .map(|s| (s.start..s.end, s.curve.into()))
+                .collect(),
+        }
+    }
+
+    /// The same curve on the domain `[start, end]` (a Bézier curve becomes a B-spline unless
+    /// the interval is \[0, 1\]).
+    ///
+    /// # Errors
+    /// [`KnotError::BadInterval`].
+    pub fn reparametrized(&self, start: f64, end: f64) -> Result<Self, KnotError> {
+        if let crate::AnyCurve::Bezier(_) = self {
+            if start == 0.0 && end == 1.0 {
+                return Ok(self.clone());
+            }
+        }
+        match self.as_spline() {
+            crate::AnyCurve::BSpline(c) => c.reparametrized(start, end).map(Into::into),
+            crate::AnyCurve::Nurbs(c) => c.reparametrized(start, end).map(Into::into),
+            crate::AnyCurve::Bezier(_) => unreachable!("as_spline gives a spline"),
+        }
+    }
+}

@@ -1,0 +1,377 @@
+//! The curve operations of `neutrospline transform` against geomdl 5.3.1 (NURBS-Python), an
+//! independent implementation of The NURBS Book's algorithms, on 10 random B-spline and NURBS
+//! curves (data: tests/data/transform_geomdl.json, made by
+//! scripts/reference/make_transform_reference.py): knot insertion with multiplicity, knot
+//! refinement, splitting and degree elevation, control rows `[x, y, truth, indeterminacy,
+//! falsity]` within 1e-12 of the curve's scale and knots within 1e-14. And Tiller's knot
+//! removal: every knot inserted r times comes off r times and gives the original curve back;
+//! a knot that cannot come off within the tolerance stays; a loose tolerance reports the
+//! deviation an independent dense sampling finds.
+
+use neutrospline::{
+    BSpline, ControlPoint, ControlPolygon, Degrees, Elevate, Evaluate, KnotVector, Nurbs, Split,
+};
+use serde::Deserialize;
+
+use crate::reference_common::read_data;
+
+#[derive(Deserialize)]
+struct Piece {
+    #[serde(default)]
+    knots: Vec<f64>,
+    rows: Vec<Vec<f64>>,
+    weights: Option<Vec<f64>>,
+}
+
+#[derive(Deserialize)]
+struct Case {
+    degree: usize,
+    knots: Vec<f64>,
+    rows: Vec<Vec<f64>>,
+    weights: Option<Vec<f64>>,
+    u: f64,
+    times: usize,
+    insert: Piece,
+    refine: Piece,
+    split: Vec<Piece>,
+    elevate: Vec<Piece>,
+}
+
+#[derive(Deserialize)]
+struct File {
+    cases: Vec<Case>,
+}
+
+fn cases() -> Vec<Case> {
+    let text = read_data("transform_geomdl.json", "make_transform_reference.py");
+    serde_json::from_str::<File>(&text).unwrap().cases
+}
+
+fn points(rows: &[Vec<f64>]) -> Vec<ControlPoint<2>> {
+    rows.iter()
+        .map(|r| ControlPoint::new([r[0], r[1]], Degrees::new(r[2], r[3], r[4]).unwrap()))
+        .collect()
+}
+
+/// A curve of either kind, as the operations see it.
+#[derive(Clone, Debug)]
+enum Curve {
+    B(BSpline<2>),
+    N(Nurbs<2>),
+}
+
+fn build(degree: usize, knots: &[f64], rows: &[Vec<f64>], weights: Option<&Vec<f64>>) -> Curve {
+    let knots = KnotVector::new(knots.to_vec(), degree, rows.len()).unwrap();
+    match weights {
+        None => Curve::B(BSpline::new(points(rows), knots).unwrap()),
+        Some(w) => Curve::N(Nurbs::new(points(rows), w.clone(), knots).unwrap()),
+    }
+}
+
+macro_rules! each {
+    ($curve:expr, $c:ident => $e:expr) => {
+        match $curve {
+            Curve::B($c) => $e,
+            Curve::N($c) => $e,
+        }
+    };
+}
+
+/// Rows `[x, y, T, I, F]`, weights and knots of a curve.
+fn parts(curve: &Curve) -> (Vec<Vec<f64>>, Option<Vec<f64>>, Vec<f64>) {
+    each!(curve, c => {
+        let rows = c
+            .control_points()
+            .iter()
+            .map(|p| {
+                let [t, i, f] = p.degrees.to_array();
+                vec![p.position[0], p.position[1], t, i, f]
+            })
+            .collect();
+        (rows, c.weights().map(<[f64]>::to_vec), c.knots().knots().to_vec())
+    })
+}
+
+fn assert_rows(ours: &[Vec<f64>], theirs: &[Vec<f64>], scale: f64, what: &str) {
+    assert_eq!(ours.len(), theirs.len(), "{what}: number of control points");
+    for (k, (a, b)) in ours.iter().zip(theirs).enumerate() {
+        for c in 0..5 {
+            let tol = if c < 2 { 1e-12 * scale } else { 1e-12 };
+            assert!(
+                (a[c] - b[c]).abs() <= tol,
+                "{what}: row {k} channel {c}: ours {} geomdl {}",
+                a[c],
+                b[c]
+            );
+        }
+    }
+}
+
+fn assert_close(ours: &[f64], theirs: &[f64], tol: f64, what: &str) {
+    assert_eq!(ours.len(), theirs.len(), "{what}: length");
+    for (a, b) in ours.iter().zip(theirs) {
+        assert!(
+            (a - b).abs() <= tol,
+            "{what}: ours {ours:?} geomdl {theirs:?}"
+        );
+    }
+}
+
+/// Knots mapped onto [0, 1] (geomdl normalizes the pieces of a split).
+fn unit(knots: &[f64]) -> Vec<f64> {
+    let (a, b) = (knots[0], knots[knots.len() - 1]);
+    knots.iter().map(|k| (k - a) / (b - a)).collect()
+}
+
+fn scale(rows: &[Vec<f64>]) -> f64 {
+    rows.iter()
+        .flat_map(|r| [r[0].abs(), r[1].abs()])
+        .fold(1.0, f64::max)
+}
+
+fn check_piece(ours: &Curve, theirs: &Piece, scale: f64, what: &str, normalize: bool) {
+    let (rows, weights, knots) = parts(ours);
+    assert_rows(&rows, &theirs.rows, scale, what);
+    if let (Some(a), Some(b)) = (&weights, &theirs.weights) {
+        assert_close(
+            a,
+            b,
+            1e-12 * b.iter().fold(1.0, |m, w| f64::max(m, *w)),
+            what,
+        );
+    }
+    assert_eq!(
+        weights.is_some(),
+        theirs.weights.is_some(),
+        "{what}: rational"
+    );
+    if !theirs.knots.is_empty() {
+        let (a, b) = if normalize {
+            (unit(&knots), unit(&theirs.knots))
+        } else {
+            (knots, theirs.knots.clone())
+        };
+        assert_close(&a, &b, 1e-14, what);
+    }
+}
+
+#[test]
+fn insertion_refinement_split_and_elevation_match_geomdl() {
+    let cases = cases();
+    assert_eq!(cases.len(), 10);
+    for (n, case) in cases.iter().enumerate() {
+        let curve = build(case.degree, &case.knots, &case.rows, case.weights.as_ref());
+        let s = scale(&case.rows);
+        let inserted = each!(&curve, c => {
+            let r = c.insert_knot_times(case.u, case.times).unwrap();
+            build_like(&curve, r)
+        });
+        check_piece(
+            &inserted,
+            &case.insert,
+            s,
+            &format!("case {n} insert"),
+            false,
+        );
+        let refined = each!(&curve, c => build_like(&curve, c.refine(1)));
+        check_piece(
+            &refined,
+            &case.refine,
+            s,
+            &format!("case {n} refine"),
+            false,
+        );
+        let (left, right) = each!(&curve, c => {
+            let (l, r) = c.split(case.u).unwrap();
+            (build_like(&curve, l), build_like(&curve, r))
+        });
+        check_piece(
+            &left,
+            &case.split[0],
+            s,
+            &format!("case {n} split left"),
+            true,
+        );
+        check_piece(
+            &right,
+            &case.split[1],
+            s,
+            &format!("case {n} split right"),
+            true,
+        );
+        // Elevation: the elevated curve's Bézier pieces are geomdl's pieces elevated.
+        let pieces: Vec<Curve> = each!(&curve, c => {
+            c.elevate()
+                .to_bezier_segments()
+                .into_iter()
+                .map(|seg| {
+                    let bs = seg.curve.to_bspline_like();
+                    build_like(&curve, bs)
+                })
+                .collect()
+        });
+        assert_eq!(pieces.len(), case.elevate.len(), "case {n} elevate pieces");
+        for (k, (ours, theirs)) in pieces.iter().zip(&case.elevate).enumerate() {
+            check_piece(
+                ours,
+                theirs,
+                s,
+                &format!("case {n} elevate piece {k}"),
+                false,
+            );
+        }
+    }
+}
+
+/// Wraps a result of the same kind as `like`.
+fn build_like<C: IntoCurve>(_like: &Curve, c: C) -> Curve {
+    c.into_curve()
+}
+
+trait IntoCurve {
+    fn into_curve(self) -> Curve;
+}
+impl IntoCurve for BSpline<2> {
+    fn into_curve(self) -> Curve {
+        Curve::B(self)
+    }
+}
+impl IntoCurve for Nurbs<2> {
+    fn into_curve(self) -> Curve {
+        Curve::N(self)
+    }
+}
+
+/// A Bézier piece as a one-span spline of its kind (so that `parts` reads it).
+trait OneSpan {
+    type Out: IntoCurve;
+    fn to_bspline_like(&self) -> Self::Out;
+}
+impl OneSpan for neutrospline::Bezier<2> {
+    type Out = BSpline<2>;
+    fn to_bspline_like(&self) -> BSpline<2> {
+        self.to_bspline()
+    }
+}
+impl OneSpan for Nurbs<2> {
+    type Out = Nurbs<2>;
+    fn to_bspline_like(&self) -> Nurbs<2> {
+        self.clone()
+    }
+}
+
+/// Dense independent sampling of the largest deviation (positions and degrees).
+fn dense_deviation(a: &Curve, b: &Curve) -> f64 {
+    let domain = each!(a, c => c.domain());
+    (0..=4000)
+        .map(|k| {
+            let t = domain.start + (domain.end - domain.start) * k as f64 / 4000.0;
+            let (p, q) = (
+                each!(a, c => c.evaluate(t).unwrap()),
+                each!(b, c => c.evaluate(t).unwrap()),
+            );
+            let d = ((p.position[0] - q.position[0]).powi(2)
+                + (p.position[1] - q.position[1]).powi(2))
+            .sqrt();
+            p.degrees
+                .to_array()
+                .iter()
+                .zip(q.degrees.to_array())
+                .map(|(x, y)| (x - y).abs())
+                .fold(d, f64::max)
+        })
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn knot_removal_undoes_insertion_and_reports_its_error() {
+    let mut loose_removals = 0;
+    for (n, case) in cases().iter().enumerate() {
+        let curve = build(case.degree, &case.knots, &case.rows, case.weights.as_ref());
+        let s = scale(&case.rows);
+        // Insert r times, remove: the original comes back.
+        let (back, removed, error) = each!(&curve, c => {
+            let inserted = c.insert_knot_times(case.u, case.times).unwrap();
+            let out = inserted.remove_knot(case.u, case.times + 3, 1e-9 * s).unwrap();
+            (build_like(&curve, out.curve), out.removed, out.error)
+        });
+        assert_eq!(removed, case.times, "case {n}");
+        assert!(error <= 1e-9 * s, "case {n}: error {error}");
+        let (rows, weights, knots) = parts(&back);
+        let (rows0, weights0, knots0) = parts(&curve);
+        assert_eq!(knots, knots0, "case {n}");
+        for (a, b) in rows.iter().zip(&rows0) {
+            for c in 0..5 {
+                assert!(
+                    (a[c] - b[c]).abs() <= 1e-9 * s.max(1.0),
+                    "case {n}: {a:?} vs {b:?}"
+                );
+            }
+        }
+        if let (Some(a), Some(b)) = (weights, weights0) {
+            assert_close(&a, &b, 1e-9, &format!("case {n} weights"));
+        }
+        // A knot of the random curve itself does not come off within 1e-9.
+        let knot = case.knots[case.degree + 1];
+        let kept = each!(&curve, c => c.remove_knot(knot, 1, 1e-9).unwrap().removed);
+        assert_eq!(kept, 0, "case {n}");
+        // A loose tolerance removes it and reports the deviation dense sampling finds.
+        let loose = 1e3 * s;
+        let (moved, removed, error) = each!(&curve, c => {
+            let out = c.remove_knot(knot, 1, loose).unwrap();
+            (build_like(&curve, out.curve), out.removed, out.error)
+        });
+        // With constant degrees nothing leaves [0, 1]: the knot always comes off.
+        let flat: Vec<Vec<f64>> = case
+            .rows
+            .iter()
+            .map(|r| vec![r[0], r[1], 0.5, 0.25, 0.75])
+            .collect();
+        let flat_curve = build(case.degree, &case.knots, &flat, case.weights.as_ref());
+        let (flat_moved, flat_removed, flat_error) = each!(&flat_curve, c => {
+            let out = c.remove_knot(knot, 1, loose).unwrap();
+            (build_like(&flat_curve, out.curve), out.removed, out.error)
+        });
+        assert_eq!(flat_removed, 1, "case {n}");
+        let dense = dense_deviation(&flat_curve, &flat_moved);
+        assert!(
+            (flat_error - dense).abs() <= 0.05 * dense,
+            "case {n}: reported {flat_error}, dense {dense}"
+        );
+        if removed == 1 {
+            loose_removals += 1;
+            let dense = dense_deviation(&curve, &moved);
+            assert!(error > 0.0 && error <= loose, "case {n}: {error}");
+            assert!(
+                (error - dense).abs() <= 0.05 * dense,
+                "case {n}: reported {error}, dense {dense}"
+            );
+            let (rows, _, _) = parts(&moved);
+            assert!(rows
+                .iter()
+                .all(|r| r[2..].iter().all(|v| (0.0..=1.0).contains(v))));
+        }
+    }
+    // Removal stops where a new degree would leave [0, 1]: random degrees make that common.
+    assert!(loose_removals >= 3, "{loose_removals} loose removals");
+}
+
+#[test]
+fn removal_refuses_what_is_not_an_interior_knot() {
+    let curve = neutrospline::example1()
+        .to_bspline()
+        .insert_knot(0.5)
+        .unwrap();
+    assert_eq!(
+        curve.remove_knot(0.25, 1, 1.0).unwrap_err().to_string(),
+        "0.25 is not an interior knot (the interior knots are 0.5)"
+    );
+    assert_eq!(
+        curve.remove_knot(0.0, 1, 1.0).unwrap_err().to_string(),
+        "0 is not an interior knot (the interior knots are 0.5)"
+    );
+    assert_eq!(
+        curve.reparametrized(1.0, 1.0).unwrap_err().to_string(),
+        "[1, 1] is not a parameter interval (the start must be finite and less than the end)"
+    );
+}
