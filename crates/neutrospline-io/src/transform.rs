@@ -223,7 +223,8 @@ impl OptionSet for TransformRequest {
             }
             ("split", Read::Number(x)) => self.split = Some(x),
             ("subsegment", Read::Text(t)) => {
-                self.subsegment = Some(interval(&t).ok_or_else(|| invalid("expected A:B, two numbers"))?);
+                self.subsegment =
+                    Some(interval(&t).ok_or_else(|| invalid("expected A:B, two numbers"))?);
             }
             ("reverse", Read::Flag(on)) => self.reverse = on,
             ("to-bezier", Read::Flag(on)) => self.to_bezier = on,
@@ -232,7 +233,11 @@ impl OptionSet for TransformRequest {
                     Some(interval(&t).ok_or_else(|| invalid("expected A:B, two numbers"))?);
             }
             ("direction", Read::Choice(word)) => {
-                self.direction = Some(if word == "u" { Direction::U } else { Direction::V });
+                self.direction = Some(if word == "u" {
+                    Direction::U
+                } else {
+                    Direction::V
+                });
             }
             (other, read) => unreachable!("option {other} read as {read:?}"),
         }
@@ -308,14 +313,27 @@ impl TransformRequest {
             1 => Ok(given.remove(0)),
             0 => Err(format!(
                 "give one operation: {}",
-                ["elevate", "insert-knot", "refine", "remove-knot", "split", "subsegment",
-                 "reverse", "to-bezier", "reparametrize"]
-                    .map(|n| format!("--{n}"))
-                    .join(", ")
+                [
+                    "elevate",
+                    "insert-knot",
+                    "refine",
+                    "remove-knot",
+                    "split",
+                    "subsegment",
+                    "reverse",
+                    "to-bezier",
+                    "reparametrize"
+                ]
+                .map(|n| format!("--{n}"))
+                .join(", ")
             )),
             _ => Err(format!(
                 "give one operation per call (given: {})",
-                given.iter().map(Operation::name).collect::<Vec<_>>().join(", ")
+                given
+                    .iter()
+                    .map(Operation::name)
+                    .collect::<Vec<_>>()
+                    .join(", ")
             )),
         }
     }
@@ -329,6 +347,8 @@ pub struct Transformed {
     /// One line on what was done (for example how many removals, the deviation, what was
     /// dropped).
     pub summary: String,
+    /// For a knot removal: how many removals were asked for and how many were made.
+    pub removals: Option<(usize, usize)>,
 }
 
 /// Values within this of the degree box are rounding.
@@ -343,7 +363,11 @@ fn conform(membership: Membership, degrees: Degrees) -> Result<Degrees, String> 
     let made = match membership {
         Membership::Neutrosophic => return Ok(degrees),
         Membership::Intuitionistic => {
-            let f = if t + f > 1.0 && t + f <= 1.0 + ROUNDING { 1.0 - t } else { f };
+            let f = if t + f > 1.0 && t + f <= 1.0 + ROUNDING {
+                1.0 - t
+            } else {
+                f
+            };
             Degrees::with_membership(membership, t, None, Some(f))
         }
         Membership::Fuzzy => Degrees::with_membership(membership, t, None, None),
@@ -357,24 +381,38 @@ fn conform_points<const D: usize>(
 ) -> Result<Vec<ControlPoint<D>>, String> {
     points
         .into_iter()
-        .map(|p| Ok(ControlPoint::new(p.position, conform(membership, p.degrees)?)))
+        .map(|p| {
+            Ok(ControlPoint::new(
+                p.position,
+                conform(membership, p.degrees)?,
+            ))
+        })
         .collect()
 }
 
 /// The curve with its control degrees conformed to `membership`.
-fn conform_curve<const D: usize>(curve: AnyCurve<D>, membership: Membership) -> Result<AnyCurve<D>, String> {
+fn conform_curve<const D: usize>(
+    curve: AnyCurve<D>,
+    membership: Membership,
+) -> Result<AnyCurve<D>, String> {
     if membership == Membership::Neutrosophic {
         return Ok(curve);
     }
     let points = conform_points(curve.control_points(), membership)?;
     let rebuilt: Result<AnyCurve<D>, String> = match &curve {
-        AnyCurve::Bezier(_) => Bezier::new(points).map(Into::into).map_err(|e| e.to_string()),
+        AnyCurve::Bezier(_) => Bezier::new(points)
+            .map(Into::into)
+            .map_err(|e| e.to_string()),
         AnyCurve::BSpline(c) => BSpline::new(points, c.knots().clone())
             .map(Into::into)
             .map_err(|e| e.to_string()),
-        AnyCurve::Nurbs(c) => Nurbs::new(points, c.weights().unwrap_or(&[]).to_vec(), c.knots().clone())
-            .map(Into::into)
-            .map_err(|e| e.to_string()),
+        AnyCurve::Nurbs(c) => Nurbs::new(
+            points,
+            c.weights().unwrap_or(&[]).to_vec(),
+            c.knots().clone(),
+        )
+        .map(Into::into)
+        .map_err(|e| e.to_string()),
     };
     rebuilt
 }
@@ -389,9 +427,14 @@ fn conform_surface(surface: Surface, membership: Membership) -> Result<Surface, 
     match surface.kind() {
         SurfaceKind::Bezier => Surface::bezier(rows, cols, points),
         SurfaceKind::BSpline => Surface::bspline(rows, cols, points, ku, kv),
-        SurfaceKind::Nurbs => {
-            Surface::nurbs(rows, cols, points, surface.weights().unwrap_or(&[]).to_vec(), ku, kv)
-        }
+        SurfaceKind::Nurbs => Surface::nurbs(
+            rows,
+            cols,
+            points,
+            surface.weights().unwrap_or(&[]).to_vec(),
+            ku,
+            kv,
+        ),
     }
     .map_err(|e| e.to_string())
 }
@@ -402,31 +445,46 @@ fn companion<const D: usize>(curve: &AnyCurve<D>, positions: &[[f64; 3]]) -> Any
     let d = Degrees::new(0.0, 0.0, 0.0).unwrap_or_else(|e| unreachable!("zeros are degrees: {e}"));
     let points: Vec<ControlPoint<3>> = positions.iter().map(|&p| ControlPoint::new(p, d)).collect();
     let built: Result<AnyCurve<3>, String> = match curve {
-        AnyCurve::Bezier(_) => Bezier::new(points).map(Into::into).map_err(|e| e.to_string()),
+        AnyCurve::Bezier(_) => Bezier::new(points)
+            .map(Into::into)
+            .map_err(|e| e.to_string()),
         AnyCurve::BSpline(c) => BSpline::new(points, c.knots().clone())
             .map(Into::into)
             .map_err(|e| e.to_string()),
-        AnyCurve::Nurbs(c) => Nurbs::new(points, c.weights().unwrap_or(&[]).to_vec(), c.knots().clone())
-            .map(Into::into)
-            .map_err(|e| e.to_string()),
+        AnyCurve::Nurbs(c) => Nurbs::new(
+            points,
+            c.weights().unwrap_or(&[]).to_vec(),
+            c.knots().clone(),
+        )
+        .map(Into::into)
+        .map_err(|e| e.to_string()),
     };
     built.unwrap_or_else(|e| unreachable!("the companion has the curve's valid layout: {e}"))
 }
+
+/// What an operation made: the pieces, a note, and for a knot removal the removals asked for
+/// and made.
+type Outcome<T> = (Vec<T>, String, Option<(usize, usize)>);
 
 /// The curve operation on any kind and dimension: the pieces and a note.
 fn curve_op<const D: usize>(
     curve: &AnyCurve<D>,
     op: &Operation,
-) -> Result<(Vec<AnyCurve<D>>, String), String> {
-    Ok(match op {
+) -> Result<Outcome<AnyCurve<D>>, String> {
+    let (pieces, note) = match op {
         Operation::Elevate(n) => (vec![curve.elevated(*n)], String::new()),
         Operation::InsertKnots(k) => (
             vec![curve.with_knots_inserted(k).map_err(|e| e.to_string())?],
             String::new(),
         ),
         Operation::Refine(n) => (vec![curve.refined(*n)], String::new()),
-        Operation::RemoveKnot { value, times, tolerance } => {
-            let times = times.unwrap_or_else(|| curve.knots().map_or(0, |k| k.multiplicity(*value)));
+        Operation::RemoveKnot {
+            value,
+            times,
+            tolerance,
+        } => {
+            let times =
+                times.unwrap_or_else(|| curve.knots().map_or(0, |k| k.multiplicity(*value)));
             let r = curve
                 .without_knot(*value, times, *tolerance)
                 .map_err(|e| e.to_string())?;
@@ -434,7 +492,7 @@ fn curve_op<const D: usize>(
                 "removed knot {value} {} of {times} times; largest deviation found {:e} (tolerance {tolerance:e})",
                 r.removed, r.error
             );
-            (vec![r.curve], note)
+            return Ok((vec![r.curve], note, Some((times, r.removed))));
         }
         Operation::Split(t) => {
             let (a, b) = curve.split(*t).map_err(|e| e.to_string())?;
@@ -453,17 +511,21 @@ fn curve_op<const D: usize>(
             vec![curve.reparametrized(*a, *b).map_err(|e| e.to_string())?],
             String::new(),
         ),
-    })
+    };
+    Ok((pieces, note, None))
 }
 
-fn surface_op(surface: &Surface, op: &Operation, direction: Option<Direction>) -> Result<(Vec<Surface>, String), String> {
+fn surface_op(
+    surface: &Surface,
+    op: &Operation,
+    direction: Option<Direction>,
+) -> Result<Outcome<Surface>, String> {
     if let Operation::ToBezier = op {
-        return Ok((surface.to_bezier_patches(), String::new()));
+        return Ok((surface.to_bezier_patches(), String::new(), None));
     }
-    let direction = direction.ok_or_else(|| {
-        format!("--{} on a surface needs --direction u or v", op.name())
-    })?;
-    Ok(match op {
+    let direction = direction
+        .ok_or_else(|| format!("--{} on a surface needs --direction u or v", op.name()))?;
+    let (pieces, note) = match op {
         Operation::Elevate(n) => {
             let mut s = surface.clone();
             for _ in 0..*n {
@@ -474,12 +536,18 @@ fn surface_op(surface: &Surface, op: &Operation, direction: Option<Direction>) -
         Operation::InsertKnots(k) => {
             let mut s = surface.clone();
             for &u in k {
-                s = s.insert_knot(direction, u, 1).map_err(|e| format!("knots_{direction}: {e}"))?;
+                s = s
+                    .insert_knot(direction, u, 1)
+                    .map_err(|e| format!("knots_{direction}: {e}"))?;
             }
             (vec![s], String::new())
         }
         Operation::Refine(n) => (vec![surface.refine(direction, *n)], String::new()),
-        Operation::RemoveKnot { value, times, tolerance } => {
+        Operation::RemoveKnot {
+            value,
+            times,
+            tolerance,
+        } => {
             let knots = match direction {
                 Direction::U => surface.knots_u(),
                 Direction::V => surface.knots_v(),
@@ -492,23 +560,30 @@ fn surface_op(surface: &Surface, op: &Operation, direction: Option<Direction>) -
                 "removed knot {direction} = {value} {} of {times} times; largest deviation found {:e} (tolerance {tolerance:e})",
                 r.removed, r.error
             );
-            (vec![r.curve], note)
+            return Ok((vec![r.curve], note, Some((times, r.removed))));
         }
         Operation::Split(t) => {
-            let (a, b) = surface.split(direction, *t).map_err(|e| format!("{direction}: {e}"))?;
+            let (a, b) = surface
+                .split(direction, *t)
+                .map_err(|e| format!("{direction}: {e}"))?;
             (vec![a, b], String::new())
         }
         Operation::Subsegment(a, b) => (
-            vec![surface.subsegment(direction, *a, *b).map_err(|e| format!("{direction}: {e}"))?],
+            vec![surface
+                .subsegment(direction, *a, *b)
+                .map_err(|e| format!("{direction}: {e}"))?],
             String::new(),
         ),
         Operation::Reverse => (vec![surface.reversed(direction)], String::new()),
         Operation::Reparametrize(a, b) => (
-            vec![surface.reparametrized(direction, *a, *b).map_err(|e| e.to_string())?],
+            vec![surface
+                .reparametrized(direction, *a, *b)
+                .map_err(|e| e.to_string())?],
             String::new(),
         ),
         Operation::ToBezier => unreachable!("handled above"),
-    })
+    };
+    Ok((pieces, note, None))
 }
 
 /// Applies `op` to `model` (`direction` for a surface; a curve refuses one): the new
@@ -526,46 +601,59 @@ fn surface_op(surface: &Surface, op: &Operation, direction: Option<Direction>) -
 /// assert_eq!(out.models.len(), 2);
 /// # Ok::<(), String>(())
 /// ```
-pub fn transform(model: &Model, op: &Operation, direction: Option<Direction>) -> Result<Transformed, String> {
+pub fn transform(
+    model: &Model,
+    op: &Operation,
+    direction: Option<Direction>,
+) -> Result<Transformed, String> {
     let membership = model.membership();
     let spreads = model.spreads();
     let mut summary = String::new();
     let mut models = Vec::new();
+    let removals;
     let keep_names = matches!(op, Operation::Reverse | Operation::Reparametrize(..));
     match model.shape() {
         Shape::Curve(curve) => {
             if let Some(d) = direction {
-                return Err(format!("--direction {d} is for surfaces; this model is a curve"));
+                return Err(format!(
+                    "--direction {d} is for surfaces; this model is a curve"
+                ));
             }
             if spreads.is_some() && matches!(op, Operation::RemoveKnot { .. }) {
-                return Err("--remove-knot is not exact, so the spreads (fuzzy positions) of this \
+                return Err(
+                    "--remove-knot is not exact, so the spreads (fuzzy positions) of this \
                             model cannot follow it; remove them first"
-                    .to_owned());
+                        .to_owned(),
+                );
             }
-            let (pieces, note, spread_pieces): (Vec<DynCurve>, String, Option<Vec<Vec<Spread<3>>>>) =
-                on_dimension!(curve, c => {
-                    let (pieces, note) = curve_op(c, op)?;
-                    let spread_pieces = match spreads {
-                        None => None,
-                        Some(s) => {
-                            let left: Vec<[f64; 3]> = s.iter().map(|x| x.left).collect();
-                            let right: Vec<[f64; 3]> = s.iter().map(|x| x.right).collect();
-                            let (lp, _) = curve_op(&companion(c, &left), op)?;
-                            let (rp, _) = curve_op(&companion(c, &right), op)?;
-                            Some(lp.iter().zip(&rp).map(|(l, r)| {
-                                l.control_points().iter().zip(r.control_points()).map(|(a, b)| {
-                                    let clean = |v: [f64; 3]| v.map(|x| if x < 0.0 && x > -ROUNDING { 0.0 } else { x });
-                                    Spread { left: clean(a.position), right: clean(b.position) }
-                                }).collect()
-                            }).collect())
-                        }
-                    };
-                    let pieces = pieces
-                        .into_iter()
-                        .map(|p| conform_curve(p, membership).map(DynCurve::from))
-                        .collect::<Result<Vec<_>, String>>()?;
-                    (pieces, note, spread_pieces)
-                });
+            let (pieces, note, spread_pieces): (
+                Vec<DynCurve>,
+                String,
+                Option<Vec<Vec<Spread<3>>>>,
+            ) = on_dimension!(curve, c => {
+                let (pieces, note, counts) = curve_op(c, op)?;
+                removals = counts;
+                let spread_pieces = match spreads {
+                    None => None,
+                    Some(s) => {
+                        let left: Vec<[f64; 3]> = s.iter().map(|x| x.left).collect();
+                        let right: Vec<[f64; 3]> = s.iter().map(|x| x.right).collect();
+                        let (lp, _, _) = curve_op(&companion(c, &left), op)?;
+                        let (rp, _, _) = curve_op(&companion(c, &right), op)?;
+                        Some(lp.iter().zip(&rp).map(|(l, r)| {
+                            l.control_points().iter().zip(r.control_points()).map(|(a, b)| {
+                                let clean = |v: [f64; 3]| v.map(|x| if x < 0.0 && x > -ROUNDING { 0.0 } else { x });
+                                Spread { left: clean(a.position), right: clean(b.position) }
+                            }).collect()
+                        }).collect())
+                    }
+                };
+                let pieces = pieces
+                    .into_iter()
+                    .map(|p| conform_curve(p, membership).map(DynCurve::from))
+                    .collect::<Result<Vec<_>, String>>()?;
+                (pieces, note, spread_pieces)
+            });
             summary.push_str(&note);
             for (k, piece) in pieces.into_iter().enumerate() {
                 let mut m = Model::new(piece)
@@ -578,11 +666,16 @@ pub fn transform(model: &Model, op: &Operation, direction: Option<Direction>) ->
             }
         }
         Shape::Surface(surface) => {
-            let (pieces, note) = surface_op(surface, op, direction)?;
+            let (pieces, note, counts) = surface_op(surface, op, direction)?;
+            removals = counts;
             summary.push_str(&note);
             for piece in pieces {
                 let piece = conform_surface(piece, membership)?;
-                models.push(Model::new(piece).with_membership(membership).map_err(|e| e.to_string())?);
+                models.push(
+                    Model::new(piece)
+                        .with_membership(membership)
+                        .map_err(|e| e.to_string())?,
+                );
             }
         }
     }
@@ -604,11 +697,15 @@ pub fn transform(model: &Model, op: &Operation, direction: Option<Direction>) ->
                 kept.reverse();
             }
             if kept.len() == m.shape().control_count() && !model.shape().is_surface() {
-                *m = m.clone().with_point_names(kept).map_err(|e| e.to_string())?;
+                *m = m
+                    .clone()
+                    .with_point_names(kept)
+                    .map_err(|e| e.to_string())?;
             }
         }
     }
-    if named && !(keep_names && !model.shape().is_surface()) {
+    let names_kept = keep_names && !model.shape().is_surface();
+    if named && !names_kept {
         if !summary.is_empty() {
             summary.push_str("; ");
         }
@@ -618,5 +715,9 @@ pub fn transform(model: &Model, op: &Operation, direction: Option<Direction>) ->
             op.name()
         );
     }
-    Ok(Transformed { models, summary })
+    Ok(Transformed {
+        models,
+        summary,
+        removals,
+    })
 }

@@ -252,6 +252,17 @@ pub fn table_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
     crate::options::table::<TableInput>(py)
 }
 
+/// The options of `Curve.transform` / `Surface.transform` (`neutrospline transform`'s):
+/// name, kind, default and help of each, as `fit_options()` lists its own.
+///
+/// >>> import neutrospline as ns
+/// >>> [o["name"] for o in ns.transform_options()][:3]
+/// ['elevate', 'insert_knot', 'refine']
+#[pyfunction]
+pub fn transform_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
+    crate::options::table::<neutrospline_io::TransformRequest>(py)
+}
+
 /// A knot option: a rule name, or the knot values.
 fn knot_spec(knots: &Bound<'_, PyAny>, what: &str) -> PyResult<KnotSpec> {
     if let Ok(text) = knots.extract::<String>() {

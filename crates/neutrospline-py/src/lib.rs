@@ -49,6 +49,7 @@ fn _neutrospline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fitting::figure_options, m)?)?;
     m.add_function(wrap_pyfunction!(functions::import_options, m)?)?;
     m.add_function(wrap_pyfunction!(functions::table_options, m)?)?;
+    m.add_function(wrap_pyfunction!(functions::transform_options, m)?)?;
     m.add_function(wrap_pyfunction!(inline::inline, m)?)?;
     m.add_function(wrap_pyfunction!(fitting::fit_surface, m)?)?;
     m.add_function(wrap_pyfunction!(fitting::fit_surface_options, m)?)?;

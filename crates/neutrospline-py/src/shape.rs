@@ -7,7 +7,7 @@
 use std::path::PathBuf;
 use std::sync::Arc;
 
-use neutrospline_io::Model;
+use neutrospline_io::{Model, Operation, TransformRequest};
 use neutrospline_plot::FigureRequest;
 use pyo3::exceptions::PyDeprecationWarning;
 use pyo3::prelude::*;
@@ -125,6 +125,61 @@ impl BaseShape {
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<()> {
         model::save_figure(py, self.model()?, &path, &figure_request(view, options)?)
+    }
+
+    /// One operation of `neutrospline transform`, with its options as keyword arguments
+    /// (`elevate=2`, `insert_knot=[0.5, 0.5]`, `refine=1`, `remove_knot=0.5, tolerance=1e-6,
+    /// times=2`, `split=0.3`, `subsegment="0.2:0.7"`, `reverse=True`, `to_bezier=True`,
+    /// `reparametrize="0:10"`; surfaces also `direction="u"` or `"v"`;
+    /// `transform_options()` lists them). Returns the new curve or surface, or a tuple of
+    /// the pieces for `split` and `to_bezier`. The membership rule is kept, point names only
+    /// by `reverse` and `reparametrize`, spreads by every exact operation; a knot removal
+    /// that could not remove the knot as often as asked says so in a `UserWarning`.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> spline = ns.load("examples/bspline.toml")
+    /// >>> finer = spline.transform(refine=1)
+    /// >>> len(finer.knots) - len(spline.knots)
+    /// 4
+    /// >>> back = finer.transform(remove_knot=0.1, tolerance=1e-12)
+    /// >>> 0.1 in finer.knots, 0.1 in back.knots
+    /// (True, False)
+    /// >>> left, right = spline.transform(split=0.5)
+    /// >>> right.domain
+    /// (0.5, 1.0)
+    #[pyo3(signature = (**options))]
+    fn transform(
+        &self,
+        py: Python<'_>,
+        options: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<Py<PyAny>> {
+        let mut request = TransformRequest::default();
+        set_from_kwargs(&mut request, options)?;
+        let operation = request.operation().map_err(invalid)?;
+        let model = self.model()?;
+        let out = py
+            .detach(|| neutrospline_io::transform(model, &operation, request.direction))
+            .map_err(invalid)?;
+        if let Some((asked, removed)) = out.removals {
+            if removed < asked {
+                let warning = py.get_type::<pyo3::exceptions::PyUserWarning>();
+                PyErr::warn(
+                    py,
+                    &warning,
+                    &std::ffi::CString::new(out.summary.clone())?,
+                    1,
+                )?;
+            }
+        }
+        let mut shapes = out
+            .models
+            .into_iter()
+            .map(|m| crate::functions::model_into_py(py, m))
+            .collect::<PyResult<Vec<_>>>()?;
+        if shapes.len() == 1 && !matches!(operation, Operation::Split(_) | Operation::ToBezier) {
+            return Ok(shapes.remove(0));
+        }
+        Ok(pyo3::types::PyTuple::new(py, shapes)?.into_any().unbind())
     }
 
     /// The inline figure as SVG, shown by Jupyter: the `all` view at a notebook size,

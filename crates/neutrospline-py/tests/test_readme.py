@@ -54,7 +54,8 @@ def test_the_command_line_quickstart_runs(root, cli, workdir):
         )
         assert result.returncode == 0, (line, result.stderr)
         ran += 1
-    assert ran == 8
+    assert ran == 9
     for written in ["figures/figure1.svg", "helix.png", "survey.toml", "survey.svg",
-                    "survey.dxf", "field-1.toml", "field-2.toml", "fig5.pdf"]:
+                    "survey.dxf", "field-1.toml", "field-2.toml", "fig5.pdf",
+                    "finer.toml"]:
         assert (workdir / written).stat().st_size > 0, written

@@ -340,11 +340,13 @@ impl<const D: usize> crate::AnyCurve<D> {
                 value: u,
                 knots: "none: a Bézier curve has no knots".to_owned(),
             }),
-            crate::AnyCurve::BSpline(c) => c.remove_knot(u, times, tolerance).map(|r| KnotRemoval {
-                curve: r.curve.into(),
-                removed: r.removed,
-                error: r.error,
-            }),
+            crate::AnyCurve::BSpline(c) => {
+                c.remove_knot(u, times, tolerance).map(|r| KnotRemoval {
+                    curve: r.curve.into(),
+                    removed: r.removed,
+                    error: r.error,
+                })
+            }
             crate::AnyCurve::Nurbs(c) => c.remove_knot(u, times, tolerance).map(|r| KnotRemoval {
                 curve: r.curve.into(),
                 removed: r.removed,

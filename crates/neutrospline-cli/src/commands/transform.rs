@@ -14,14 +14,16 @@ use crate::request::RequestArgs;
 
 /// Arguments of `transform`.
 #[derive(Debug, clap::Args)]
-#[command(after_help = "One operation per call. Exact operations (all but --remove-knot) leave the \
+#[command(
+    after_help = "One operation per call. Exact operations (all but --remove-knot) leave the \
 curve or surface where it was, to rounding; their new control degrees are convex combinations \
 of the old ones, so the membership rule holds. Point names are kept by --reverse (reversed) \
 and --reparametrize, and dropped by the operations that make new control points (the summary \
 says so); spreads follow every exact operation. A Bézier curve becomes its B-spline for \
 --insert-knot, --refine and --reparametrize (unless onto 0:1). Surfaces: each operation acts \
 in --direction u or v (--to-bezier splits both).\n\
---split writes OUT-1 and OUT-2, --to-bezier OUT-1, OUT-2, ... (one file per piece).")]
+--split writes OUT-1 and OUT-2, --to-bezier OUT-1, OUT-2, ... (one file per piece)."
+)]
 pub struct TransformArgs {
     /// The model file: .csv, .toml or .json; `-` reads CSV from standard input
     #[arg(value_name = "MODEL")]
@@ -64,7 +66,9 @@ pub fn run(args: &TransformArgs) -> anyhow::Result<()> {
     let paths: Vec<PathBuf> = if out.models.len() == 1 {
         vec![args.output.clone()]
     } else {
-        (1..=out.models.len()).map(|k| numbered(&args.output, k)).collect()
+        (1..=out.models.len())
+            .map(|k| numbered(&args.output, k))
+            .collect()
     };
     for (model, path) in out.models.iter().zip(&paths) {
         let text = neutrospline_io::to_string(model, format)?;
@@ -76,7 +80,13 @@ pub fn run(args: &TransformArgs) -> anyhow::Result<()> {
     let mut err = std::io::stderr().lock();
     use std::io::Write as _;
     let written: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
-    writeln!(err, "{}: --{}: wrote {}", args.file, operation.name(), written.join(", "))?;
+    writeln!(
+        err,
+        "{}: --{}: wrote {}",
+        args.file,
+        operation.name(),
+        written.join(", ")
+    )?;
     if !out.summary.is_empty() {
         writeln!(err, "{}: {}", args.file, out.summary)?;
     }

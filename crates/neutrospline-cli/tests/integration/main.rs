@@ -21,5 +21,6 @@ mod readers;
 mod relation;
 mod studio;
 mod tables;
+mod transform;
 mod util;
 mod warnings;

@@ -119,6 +119,24 @@ class Shape:
         alpha: Sequence[float] = (0.0, 0.5, 1.0),
         color_by: Literal["truth", "indeterminacy", "falsity"] = "truth",
     ) -> None: ...
+    def transform(
+        self,
+        *,
+        elevate: Optional[int] = None,
+        insert_knot: Optional[Sequence[float]] = None,
+        refine: Optional[int] = None,
+        remove_knot: Optional[float] = None,
+        times: Optional[int] = None,
+        tolerance: Optional[float] = None,
+        split: Optional[float] = None,
+        subsegment: Optional[str] = None,
+        reverse: bool = False,
+        to_bezier: bool = False,
+        reparametrize: Optional[str] = None,
+        direction: Optional[Literal["u", "v"]] = None,
+    ) -> Any:
+        """One operation of ``neutrospline transform``: the new shape, or a tuple of pieces."""
+        ...
     def _repr_svg_(self) -> Optional[str]: ...
     def _repr_png_(self) -> Optional[bytes]: ...
     def __eq__(self, value: object, /) -> bool: ...
@@ -348,6 +366,7 @@ def load(
 ) -> Union[Model, Tuple[List[Union[Bezier, BSpline, Nurbs]], Dict[str, Any]]]: ...
 def import_options() -> list[dict[str, Any]]: ...
 def table_options() -> list[dict[str, Any]]: ...
+def transform_options() -> list[dict[str, Any]]: ...
 def inline(
     *,
     reset: bool = False,

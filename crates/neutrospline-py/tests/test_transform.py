@@ -1,0 +1,77 @@
+"""`Curve.transform` / `Surface.transform`: the operations of `neutrospline transform`, with
+its options and messages, writing the same models (checked byte for byte against the command
+line), the pieces of `split` and `to_bezier` as tuples, and a warning when a knot removal
+falls short."""
+
+import subprocess
+import warnings
+
+import numpy as np
+import pytest
+
+import neutrospline as ns
+
+
+def cli_model(cli, tmp_path, path, *args):
+    out = tmp_path / "cli.toml"
+    done = subprocess.run([str(cli), "transform", str(path), "-o", str(out), *args], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    return out.read_text()
+
+
+@pytest.mark.parametrize(
+    "model, options, flags",
+    [
+        ("bspline.toml", dict(refine=2), ["--refine", "2"]),
+        ("bspline.toml", dict(insert_knot=[0.3, 0.3]), ["--insert-knot", "0.3,0.3"]),
+        ("example1.toml", dict(elevate=2), ["--elevate", "2"]),
+        ("nurbs-circle.toml", dict(reverse=True), ["--reverse"]),
+        ("fuzzy-bspline.toml", dict(reparametrize="0:4"), ["--reparametrize", "0:4"]),
+        ("surface.toml", dict(insert_knot=[0.25], direction="v"), ["--insert-knot", "0.25", "--direction", "v"]),
+    ],
+)
+def test_transform_writes_the_command_lines_model(cli, root, tmp_path, model, options, flags):
+    path = root / "examples" / model
+    shape = ns.load(path).transform(**options)
+    ours = tmp_path / "py.toml"
+    shape.save(ours)
+    assert ours.read_text() == cli_model(cli, tmp_path, path, *flags)
+
+
+def test_pieces_and_removal(root):
+    spline = ns.load(root / "examples" / "bspline.toml")
+    left, right = spline.transform(split=0.5)
+    np.testing.assert_allclose(left(0.5), right(0.5), rtol=0, atol=1e-15)
+    np.testing.assert_allclose(right(0.8), spline(0.8), rtol=0, atol=1e-14)
+    pieces = spline.transform(to_bezier=True)
+    assert [type(p).__name__ for p in pieces] == ["Bezier"] * 4
+    inserted = spline.transform(insert_knot=[0.35, 0.35])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        back = inserted.transform(remove_knot=0.35, tolerance=1e-9)
+    assert back.knots.tolist() == spline.knots.tolist()
+    with pytest.warns(UserWarning, match=r"removed knot 0.5 0 of 1 times; largest deviation found 0e0 \(tolerance 1e-9\)"):
+        same = spline.transform(remove_knot=0.5, tolerance=1e-9)
+    assert same.knots.tolist() == spline.knots.tolist()
+    assert spline.transform(reverse=True).point_names == spline.point_names[::-1]
+
+
+def test_transform_messages(root):
+    spline = ns.load(root / "examples" / "bspline.toml")
+    surface = ns.load(root / "examples" / "surface.toml")
+    for shape, options, message in [
+        (spline, dict(), "give one operation: --elevate, --insert-knot, --refine, --remove-knot, --split, "
+                         "--subsegment, --reverse, --to-bezier, --reparametrize"),
+        (spline, dict(split=0.5, reverse=True), "give one operation per call (given: split, reverse)"),
+        (spline, dict(remove_knot=0.25, tolerance=1.0), "0.25 is not an interior knot (the interior knots are 0.2, 0.5, 0.7)"),
+        (spline, dict(elevate=1, direction="u"), "--direction u is for surfaces; this model is a curve"),
+        (surface, dict(elevate=1), "--elevate on a surface needs --direction u or v"),
+        (spline, dict(subsegment="0.2"), 'subsegment = "0.2": expected A:B, two numbers'),
+    ]:
+        with pytest.raises(ns.ModelError) as raised:
+            shape.transform(**options)
+        assert str(raised.value) == message, options
+    assert [o["name"] for o in ns.transform_options()] == [
+        "elevate", "insert_knot", "refine", "remove_knot", "times", "tolerance", "split",
+        "subsegment", "reverse", "to_bezier", "reparametrize", "direction",
+    ]
