@@ -411,6 +411,46 @@ impl Curve {
         self.curve()?.arc_length(t0..t1, accuracy).map_err(invalid)
     }
 
+    /// The parameter at arc length `s` from the start of the domain (0 <= s <= length), to
+    /// `accuracy` of the length (inverse arc length: safeguarded Newton on the arc length).
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> circle = ns.load("examples/nurbs-circle.toml")
+    /// >>> import math
+    /// >>> circle.parameter_at_length(math.pi)
+    /// 0.5
+    #[pyo3(signature = (s, accuracy = neutrospline::DEFAULT_ACCURACY))]
+    fn parameter_at_length(&self, s: f64, accuracy: f64) -> PyResult<f64> {
+        let t = self
+            .curve()?
+            .parameter_at_length(s, accuracy)
+            .map_err(invalid)?;
+        Ok(t)
+    }
+
+    /// The parameters of `count` points evenly spaced along the curve by arc length (the
+    /// parameters at arc lengths k L / (count - 1), ends exact), as a 1-D array: `eval
+    /// --arc-length-samples`'s `t` column. `curve(curve.arc_length_parameters(n))` gives the
+    /// points.
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> ns.load("examples/nurbs-circle.toml").arc_length_parameters(5).tolist()
+    /// [0.0, 0.25, 0.5, 0.75, 1.0]
+    #[pyo3(signature = (count, accuracy = neutrospline::DEFAULT_ACCURACY))]
+    fn arc_length_parameters<'py>(
+        &self,
+        py: Python<'py>,
+        count: usize,
+        accuracy: f64,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let curve = self.curve()?;
+        let ts = py
+            .detach(|| curve.arc_length_parameters(count, accuracy))
+            .map_err(invalid)?;
+        let n = ts.len();
+        readonly_array(py, ts, &[n])
+    }
+
     /// The curvature at `t` (a float or a 1-D array): `|C' x C''| / |C'|^3` in the plane
     /// (signed: positive turning left), its magnitude in space; NaN where the curve stops
     /// (`C' = 0`).

@@ -356,6 +356,27 @@ impl DynCurve {
         on_dimension!(self, c => c.arc_length(range, accuracy))
     }
 
+    /// The parameter at arc length `s` from the start ([`CurveGeometry::parameter_at_length`]).
+    ///
+    /// # Errors
+    /// As [`CurveGeometry::parameter_at_length`].
+    pub fn parameter_at_length(&self, s: f64, accuracy: f64) -> Result<f64, GeometryError> {
+        on_dimension!(self, c => c.parameter_at_length(s, accuracy))
+    }
+
+    /// The parameters of `count` points evenly spaced by arc length
+    /// ([`CurveGeometry::arc_length_parameters`]).
+    ///
+    /// # Errors
+    /// As [`CurveGeometry::arc_length_parameters`].
+    pub fn arc_length_parameters(
+        &self,
+        count: usize,
+        accuracy: f64,
+    ) -> Result<Vec<f64>, GeometryError> {
+        on_dimension!(self, c => c.arc_length_parameters(count, accuracy))
+    }
+
     /// The length and the length-weighted averages of the degrees and the score
     /// ([`CurveGeometry::arc_averages`]).
     ///

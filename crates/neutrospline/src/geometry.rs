@@ -81,6 +81,14 @@ pub enum GeometryError {
         "the curve has length zero (all its control positions coincide): no arc-length averages"
     )]
     ZeroLength,
+    /// An arc length outside `[0, L]`.
+    #[error("arc length {length} is outside [0, {total}] (the curve's length)")]
+    LengthOutside {
+        /// The arc length asked for.
+        length: f64,
+        /// The curve's length.
+        total: f64,
+    },
 }
 
 /// The arc-length averages of a curve's degrees: `(1/L) ∫ q(t) |C'(t)| dt` over the domain
@@ -179,6 +187,136 @@ pub trait CurveGeometry<const D: usize>:
     /// [`GeometryError::NotConverged`] or an overflow.
     fn length(&self) -> Result<f64, GeometryError> {
         self.arc_length(self.domain(), DEFAULT_ACCURACY)
+    }
+
+    /// The parameter at arc length `s` from the start of the domain, `0 <= s <= L`: the `t`
+    /// with `∫_a^t |C'| = s`, to `accuracy` relative to the curve's length `L` (the arc length
+    /// up to the returned `t` is within `accuracy * L` of `s`). Safeguarded Newton on
+    /// `f(t) = ∫_a^t |C'| - s` with `f' = |C'(t)|`, bisecting wherever a step leaves the bracket
+    /// or the curve stands still (a cusp); at a stretch where the curve stands still the
+    /// smallest such parameter is not guaranteed, any one of them is returned.
+    ///
+    /// ```
+    /// use neutrospline::{Bezier, ControlPoint, CurveGeometry, Degrees};
+    /// let d = Degrees::new(0.5, 0.2, 0.1)?;
+    /// // A straight line traversed unevenly: x(t) = 0.2 t (1 - t) + t^2 on the x axis.
+    /// let line = Bezier::new(vec![
+    ///     ControlPoint::new([0.0, 0.0], d),
+    ///     ControlPoint::new([0.1, 0.0], d),
+    ///     ControlPoint::new([1.0, 0.0], d),
+    /// ])?;
+    /// let t = line.parameter_at_length(0.5, 1e-14)?;
+    /// // 0.8 t^2 + 0.2 t = 0.5, so t = (-0.2 + sqrt(0.04 + 1.6)) / 1.6.
+    /// assert!((t - (-0.2 + 1.64_f64.sqrt()) / 1.6).abs() < 1e-13);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`GeometryError::LengthOutside`], [`GeometryError::AccuracyNotPositive`], or the
+    /// quadrature's errors.
+    fn parameter_at_length(&self, s: f64, accuracy: f64) -> Result<f64, GeometryError> {
+        let total = self.arc_length(self.domain(), accuracy)?;
+        let mut out = self.parameters_at_lengths(&[s], total, accuracy)?;
+        Ok(out.remove(0))
+    }
+
+    /// The parameters of `count` points evenly spaced along the curve by arc length: the
+    /// parameters at `s_k = k L / (count - 1)`, `k = 0..count` (both ends exact; for
+    /// `count = 1`, the start), each to `accuracy` relative to `L` as in
+    /// [`CurveGeometry::parameter_at_length`].
+    ///
+    /// ```
+    /// use neutrospline::{CurveGeometry, Evaluate};
+    /// let curve = neutrospline::example1();
+    /// let ts = curve.arc_length_parameters(5, 1e-12)?;
+    /// assert_eq!((ts[0], ts[4]), (0.0, 1.0));
+    /// let quarter = curve.arc_length(0.0..ts[1], 1e-12)?;
+    /// assert!((quarter - curve.length()? / 4.0).abs() < 1e-10);
+    /// # Ok::<(), neutrospline::GeometryError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`GeometryError::AccuracyNotPositive`] or the quadrature's errors.
+    fn arc_length_parameters(
+        &self,
+        count: usize,
+        accuracy: f64,
+    ) -> Result<Vec<f64>, GeometryError> {
+        let domain = self.domain();
+        let total = self.arc_length(domain.clone(), accuracy)?;
+        let targets: Vec<f64> = (0..count)
+            .map(|k| crate::batch::uniform_parameter(k, count, 0.0..total))
+            .collect();
+        let mut out = self.parameters_at_lengths(&targets, total, accuracy)?;
+        if let Some(last) = out.last_mut() {
+            if count > 1 {
+                *last = domain.end;
+            }
+        }
+        if let Some(first) = out.first_mut() {
+            *first = domain.start;
+        }
+        Ok(out)
+    }
+
+    /// The parameters at the increasing arc lengths `targets` (each in `[0, total]`, `total`
+    /// the length), found in order, each bracketed from the previous one.
+    #[doc(hidden)]
+    fn parameters_at_lengths(
+        &self,
+        targets: &[f64],
+        total: f64,
+        accuracy: f64,
+    ) -> Result<Vec<f64>, GeometryError> {
+        let domain = self.domain();
+        let velocity = self.derivative();
+        let tolerance = accuracy.max(FINEST_ACCURACY) * total.max(f64::MIN_POSITIVE);
+        let mut out = Vec::with_capacity(targets.len());
+        // The last parameter found and the arc length up to it.
+        let (mut base_t, mut base_s) = (domain.start, 0.0);
+        for &s in targets {
+            if !(0.0..=total).contains(&s) {
+                return Err(GeometryError::LengthOutside { length: s, total });
+            }
+            if s <= base_s {
+                out.push(base_t);
+                continue;
+            }
+            // f(t) = base_s + ∫_{base_t}^t |C'| - s, increasing; f(lo) < 0 <= f(hi).
+            let (mut lo, mut hi) = (base_t, domain.end);
+            let guess =
+                base_t + (domain.end - base_t) * ((s - base_s) / (total - base_s)).clamp(0.0, 1.0);
+            let mut t = guess.clamp(lo, hi);
+            let mut found = None;
+            for _ in 0..200 {
+                let f = base_s + self.arc_length(base_t..t, accuracy)? - s;
+                if f.abs() <= tolerance {
+                    found = Some(t);
+                    break;
+                }
+                if f < 0.0 {
+                    lo = t;
+                } else {
+                    hi = t;
+                }
+                let v = speed(&velocity.evaluate(t)?.position);
+                let newton = t - f / v;
+                t = if v > 0.0 && newton > lo && newton < hi {
+                    newton
+                } else {
+                    0.5 * (lo + hi)
+                };
+                if hi - lo <= f64::EPSILON * hi.abs().max(lo.abs()).max(1.0) {
+                    found = Some(t);
+                    break;
+                }
+            }
+            let t = found.unwrap_or(t);
+            base_s += self.arc_length(base_t..t, accuracy)?;
+            base_t = t;
+            out.push(t);
+        }
+        Ok(out)
     }
 
     /// The curvature `|C' × C''| / |C'|^3` at `t`, `>= 0` (the reciprocal of the radius of the

@@ -5,7 +5,7 @@ use std::ops::Range;
 
 use neutrospline::{
     alpha_cut, centroid_curve, map_dimension, on_dimension, uniform_parameter, AnyCurve,
-    Dimensional, Evaluate, EvaluateSurface, Spread,
+    CurveGeometry, Dimensional, Evaluate, EvaluateSurface, Spread,
 };
 
 use crate::commands::options::{ModelArgs, TableArgs};
@@ -55,6 +55,17 @@ pub struct EvalArgs {
     )]
     pub samples: u64,
 
+    /// Curves: evaluate at N points evenly spaced along the curve by arc length: the
+    /// parameters at the arc lengths k L / (N - 1), k = 0..N-1 (L the length), each to
+    /// --accuracy of L (ends exact); the t column gives them
+    #[arg(
+        long,
+        value_name = "N",
+        value_parser = clap::value_parser!(u64).range(1..),
+        conflicts_with_all = ["at", "samples"]
+    )]
+    pub arc_length_samples: Option<u64>,
+
     /// Evaluate at these parameters, in this order: T1,T2,... for a curve, U:V,U:V,... for a
     /// surface (each inside the domain)
     #[arg(
@@ -91,17 +102,15 @@ pub struct EvalArgs {
     #[arg(long)]
     pub geometry: bool,
 
-    /// The relative accuracy of the arc length with --geometry (a positive number; values
-    /// below 1.8e-15 act as 1.8e-15)
+    /// The relative accuracy of the arc length with --geometry or --arc-length-samples (a
+    /// positive number; values below 1.8e-15 act as 1.8e-15) [default: 1e-12]
     #[arg(
         long,
         value_name = "E",
-        default_value_t = neutrospline::DEFAULT_ACCURACY,
         value_parser = parse_accuracy,
-        allow_hyphen_values = true,
-        requires = "geometry"
+        allow_hyphen_values = true
     )]
-    pub accuracy: f64,
+    pub accuracy: Option<f64>,
 
     /// Curves: add the alpha-cut of the fuzzy position at level A in [0, 1] as columns
     /// x_lo, x_hi, y_lo, y_hi[, z_lo, z_hi]: the curves of the control points' cut ends
@@ -301,9 +310,16 @@ fn sample(k: u64, n: u64, domain: Range<f64>) -> f64 {
 }
 
 /// The parameters to evaluate at, lazily.
-fn parameters<'a>(args: &'a EvalArgs, shape: &Shape) -> Box<dyn Iterator<Item = Param> + 'a> {
+fn parameters<'a>(
+    args: &'a EvalArgs,
+    shape: &Shape,
+    along: &'a [f64],
+) -> Box<dyn Iterator<Item = Param> + 'a> {
     if let Some(AtList(items)) = &args.at {
         return Box::new(items.iter().map(|(p, _)| *p));
+    }
+    if args.arc_length_samples.is_some() {
+        return Box::new(along.iter().map(|&t| Param::T(t)));
     }
     let n = args.samples;
     match shape {
@@ -324,6 +340,9 @@ fn parameters<'a>(args: &'a EvalArgs, shape: &Shape) -> Box<dyn Iterator<Item = 
 
 /// The number of rows `eval` writes (saturating: a surface's N x N may exceed `u64`).
 fn row_count(args: &EvalArgs, shape: &Shape) -> u64 {
+    if let Some(n) = args.arc_length_samples {
+        return n;
+    }
     match &args.at {
         Some(AtList(items)) => items.len() as u64,
         None if shape.is_surface() => args.samples.saturating_mul(args.samples),
@@ -412,12 +431,20 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
                 .map_err(|m| UsageError(format!("--at: {m}")))?;
         }
     }
+    if args.accuracy.is_some() && !args.geometry && args.arc_length_samples.is_none() {
+        return Err(UsageError(
+            "--accuracy goes with --geometry or --arc-length-samples (the accuracy of arc \
+             lengths)"
+                .to_owned(),
+        )
+        .into());
+    }
     let extras = Extras {
         derivative: args.derivative.unwrap_or(0),
         normal: args.normal,
         scores: args.scores,
         geometry: args.geometry,
-        accuracy: args.accuracy,
+        accuracy: args.accuracy.unwrap_or(neutrospline::DEFAULT_ACCURACY),
     };
     let mut columns = shape.columns(extras);
     if let Some(fuzzy) = &fuzzy {
@@ -441,8 +468,26 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         ))
         .into());
     }
+    // Arc-length samples: the parameters are found first (each by inverse arc length).
+    let along: Vec<f64> = match (args.arc_length_samples, shape.curve()) {
+        (None, _) => Vec::new(),
+        (Some(n), Some(curve)) => {
+            let n = usize::try_from(n).unwrap_or(usize::MAX);
+            let accuracy = args.accuracy.unwrap_or(neutrospline::DEFAULT_ACCURACY);
+            on_dimension!(curve, c => c.arc_length_parameters(n, accuracy))
+                .map_err(|e| anyhow::anyhow!("{file}: --arc-length-samples: {e}"))?
+        }
+        (Some(_), None) => {
+            return Err(UsageError(format!(
+                "--arc-length-samples applies only to curves ({file} holds a {}; evaluate a \
+                 surface at --samples or --at)",
+                shape.kind()
+            ))
+            .into())
+        }
+    };
     let mut progress = Progress::new(count, args.table.output.is_none());
-    let rows = parameters(args, &shape).map(|param| {
+    let rows = parameters(args, &shape, &along).map(|param| {
         progress.tick();
         let cannot =
             |e: &dyn std::fmt::Display| anyhow::anyhow!("{file}: cannot evaluate at {param}: {e}");

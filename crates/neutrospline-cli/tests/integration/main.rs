@@ -1,6 +1,7 @@
 //! The end-to-end tests of the `neutrospline` binary, one test binary: one module per command
 //! or topic (each runs `CARGO_BIN_EXE_neutrospline`).
 
+mod arc_length;
 mod bench;
 mod cli;
 mod derivatives;

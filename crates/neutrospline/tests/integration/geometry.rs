@@ -9,8 +9,8 @@ use core::f64::consts::{FRAC_1_SQRT_2, PI};
 
 use neutrospline::strategies;
 use neutrospline::{
-    Affine, AnyCurve, Bezier, ControlPoint, ControlPolygon, CurveGeometry, Degrees, Evaluate,
-    GeometryError, KnotVector, Nurbs, Split, DEFAULT_ACCURACY,
+    Affine, AnyCurve, Bezier, ControlPoint, ControlPolygon, CurveGeometry, Degrees, Derivative,
+    Evaluate, GeometryError, KnotVector, Nurbs, Split, DEFAULT_ACCURACY,
 };
 use proptest::prelude::*;
 
@@ -476,4 +476,73 @@ proptest! {
         let spatial_jumps = jumps(spatial.knots());
         length_checks(&AnyCurve::from(spatial), &spatial_jumps, s)?;
     }
+}
+
+/// Points evenly spaced by arc length on the unit circle (a rational curve whose parameter
+/// is far from arc length) sit at evenly spaced angles: an independent check by `atan2` of
+/// the evaluated points, to 1e-12 radians.
+#[test]
+fn arc_length_samples_of_the_circle_are_evenly_spaced_angles() {
+    let circle = unit_circle();
+    let n = 49;
+    let ts = circle.arc_length_parameters(n, 1e-14).unwrap();
+    assert_eq!(ts.len(), n);
+    let start = {
+        let p = circle.evaluate(ts[0]).unwrap().position;
+        p[1].atan2(p[0])
+    };
+    for (k, &t) in ts.iter().enumerate() {
+        let p = circle.evaluate(t).unwrap().position;
+        let mut angle = p[1].atan2(p[0]) - start;
+        if angle < -1e-9 {
+            angle += 2.0 * PI;
+        }
+        if k == n - 1 && angle < 1e-9 {
+            angle = 2.0 * PI;
+        }
+        let want = 2.0 * PI * k as f64 / (n - 1) as f64;
+        assert!(
+            (angle - want).abs() < 1e-12,
+            "k = {k}: angle {angle}, want {want}"
+        );
+    }
+}
+
+/// Through a cusp (a cubic whose speed vanishes at t = 1/2) the parameters still increase and
+/// each arc length from the start is k L / (n - 1) to 1e-12 of L; a length outside [0, L] is
+/// refused.
+#[test]
+fn arc_length_samples_cross_a_cusp() {
+    let d = degrees(0.5, 0.2, 0.1);
+    let cusp = Bezier::new(vec![
+        ControlPoint::new([0.0, 0.0], d),
+        ControlPoint::new([1.0, 1.0], d),
+        ControlPoint::new([0.0, 1.0], d),
+        ControlPoint::new([1.0, 0.0], d),
+    ])
+    .unwrap();
+    let speed = cusp.derivative().evaluate(0.5).unwrap().position;
+    assert!(
+        speed[0].hypot(speed[1]) < 1e-15,
+        "the cubic has its cusp at 1/2"
+    );
+    let total = cusp.length().unwrap();
+    let ts = cusp.arc_length_parameters(21, 1e-13).unwrap();
+    assert!(ts.windows(2).all(|w| w[0] < w[1]), "{ts:?}");
+    for (k, &t) in ts.iter().enumerate() {
+        let s = cusp.arc_length(0.0..t, 1e-13).unwrap();
+        assert!(
+            (s - total * k as f64 / 20.0).abs() <= 1e-12 * total,
+            "k = {k}"
+        );
+    }
+    assert_eq!(
+        cusp.parameter_at_length(2.0 * total, 1e-12)
+            .unwrap_err()
+            .to_string(),
+        format!(
+            "arc length {} is outside [0, {total}] (the curve's length)",
+            2.0 * total
+        )
+    );
 }
