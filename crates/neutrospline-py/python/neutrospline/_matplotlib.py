@@ -70,7 +70,7 @@ the degree, viridis from 0 to 1, with its control net; `ax` made with `projectio
 `controls` (the surface in grey with its control net), `all` (one 3-D panel per degree) or
 `plane` (the degree maps over (u, v), one 2-D panel per degree); for `all` and `plane`, `ax`
 is a sequence of three axes, and three are returned. `samples` is the mesh's samples a
-direction.
+direction; `net=False` leaves the control net out (a fitted surface's dense net hides it).
 
 >>> import matplotlib
 >>> matplotlib.use("Agg")
@@ -312,7 +312,7 @@ def curve_plot_3d(self, ax, view, rows, positions, degrees, names, legend):
     return axs
 
 
-def surface_plot(self, ax=None, view="truth", *, samples=30, legend=True):
+def surface_plot(self, ax=None, view="truth", *, samples=30, legend=True, net=True):
     check_view(view, SURFACE_VIEWS, "surface")
     (u0, u1), (v0, v1) = self.domain
     from ._pandas import uniform
@@ -320,6 +320,7 @@ def surface_plot(self, ax=None, view="truth", *, samples=30, legend=True):
     us, vs = uniform(samples, (u0, u1)), uniform(samples, (v0, v1))
     uu, vv = np.meshgrid(us, vs, indexing="ij")
     grid = self.evaluate(uu, vv)
+    show_net = net
     net = np.asarray(self.positions)
     net_degrees = np.asarray(self.membership_degrees)
     if view == "plane":
@@ -355,29 +356,27 @@ def surface_plot(self, ax=None, view="truth", *, samples=30, legend=True):
             fill = viridis(np.clip(degree_values(net_degrees, name), 0, 1).reshape(-1))
             face = viridis(0.55)
             a.set_title(name)
-        rows, cols = net.shape[:2]
-        for i in range(rows):
-            a.plot(*net[i].T, color=CONSTRUCTION, linestyle="--", linewidth=1.0, label="_nolegend_")
-        for j in range(cols):
-            a.plot(*net[:, j].T, color=CONSTRUCTION, linestyle="--", linewidth=1.0, label="_nolegend_")
-        flat = net.reshape(-1, 3)
-        a.scatter(*flat.T, c=fill if isinstance(fill, str) else fill, edgecolors=CRISP, s=30,
-                  depthshade=False)
+        if show_net:
+            rows, cols = net.shape[:2]
+            for i in range(rows):
+                a.plot(*net[i].T, color=CONSTRUCTION, linestyle="--", linewidth=1.0, label="_nolegend_")
+            for j in range(cols):
+                a.plot(*net[:, j].T, color=CONSTRUCTION, linestyle="--", linewidth=1.0, label="_nolegend_")
+            flat = net.reshape(-1, 3)
+            a.scatter(*flat.T, c=fill if isinstance(fill, str) else fill, edgecolors=CRISP, s=30,
+                      depthshade=False)
         a.set_xlabel("x")
         a.set_ylabel("y")
         a.set_zlabel("z")
         if legend:
             from matplotlib.lines import Line2D
 
-            a.legend(
-                handles=[
-                    Patch(facecolor=colors.to_hex(face), label="surface"),
-                    Line2D([], [], color=CONSTRUCTION, linestyle="--", marker="o",
-                           markerfacecolor=colors.to_hex(face), markeredgecolor=CRISP,
-                           label="control net"),
-                ],
-                loc="upper left",
-            )
+            handles = [Patch(facecolor=colors.to_hex(face), label="surface")]
+            if show_net:
+                handles.append(Line2D([], [], color=CONSTRUCTION, linestyle="--", marker="o",
+                                      markerfacecolor=colors.to_hex(face), markeredgecolor=CRISP,
+                                      label="control net"))
+            a.legend(handles=handles, loc="upper left")
         if ax is None and name != "controls" and len(panels) == 1:
             mappable = cm.ScalarMappable(norm=colors.Normalize(0.0, 1.0), cmap=viridis)
             a.figure.colorbar(mappable, ax=a, label=name, shrink=0.6)
