@@ -30,6 +30,13 @@ use crate::shape::Shape;
 pub enum Operation {
     /// Raise the degree by this much.
     Elevate(usize),
+    /// Lower the degree by `times` while the curve moves by at most `tolerance`.
+    Reduce {
+        /// How many degrees lower.
+        times: usize,
+        /// The largest deviation allowed.
+        tolerance: f64,
+    },
     /// Insert these knots, each once.
     InsertKnots(Vec<f64>),
     /// This many knots inside every span.
@@ -61,6 +68,7 @@ impl Operation {
     pub fn name(&self) -> &'static str {
         match self {
             Operation::Elevate(_) => "elevate",
+            Operation::Reduce { .. } => "reduce",
             Operation::InsertKnots(_) => "insert-knot",
             Operation::Refine(_) => "refine",
             Operation::RemoveKnot { .. } => "remove-knot",
@@ -93,6 +101,8 @@ impl Operation {
 pub struct TransformRequest {
     /// `elevate`.
     pub elevate: Option<usize>,
+    /// `reduce`.
+    pub reduce: Option<usize>,
     /// `insert-knot`.
     pub insert_knot: Option<Vec<f64>>,
     /// `refine`.
@@ -117,6 +127,9 @@ pub struct TransformRequest {
     pub direction: Option<Direction>,
 }
 
+/// The options that modify an operation rather than name one.
+const MODIFIERS: [&str; 3] = ["times", "tolerance", "direction"];
+
 /// `A:B` as two numbers.
 fn interval(text: &str) -> Option<(f64, f64)> {
     let (a, b) = text.split_once(':')?;
@@ -130,6 +143,14 @@ impl OptionSet for TransformRequest {
             kind: ValueKind::Whole,
             value_name: "N",
             help: "Raise the degree by N (exact)",
+        },
+        OptionSpec {
+            name: "reduce",
+            kind: ValueKind::Whole,
+            value_name: "N",
+            help: "Lower the degree by N within --tolerance (each Bézier piece replaced by its \
+                   nearest of lower degree, then knots removed as the tolerance allows); reports \
+                   the deviation",
         },
         OptionSpec {
             name: "insert-knot",
@@ -160,8 +181,8 @@ impl OptionSet for TransformRequest {
             name: "tolerance",
             kind: ValueKind::Number,
             value_name: "E",
-            help: "With --remove-knot: the largest deviation allowed, in model units (positions; \
-                   degrees on their own scale)",
+            help: "With --remove-knot or --reduce: the largest deviation allowed, in model units \
+                   (positions; degrees on their own scale)",
         },
         OptionSpec {
             name: "split",
@@ -211,6 +232,7 @@ impl OptionSet for TransformRequest {
         };
         match (spec.name, read) {
             ("elevate", Read::Whole(n)) => self.elevate = Some(n),
+            ("reduce", Read::Whole(n)) => self.reduce = Some(n),
             ("insert-knot", Read::Numbers(v)) => self.insert_knot = Some(v),
             ("refine", Read::Whole(n)) => self.refine = Some(n),
             ("remove-knot", Read::Number(x)) => self.remove_knot = Some(x),
@@ -249,6 +271,7 @@ impl OptionSet for TransformRequest {
         let join = |v: &[f64]| v.iter().map(f64::to_string).collect::<Vec<_>>().join(",");
         Ok(match spec.name {
             "elevate" => self.elevate.map(|n| n.to_string()),
+            "reduce" => self.reduce.map(|n| n.to_string()),
             "insert-knot" => self.insert_knot.as_deref().map(join),
             "refine" => self.refine.map(|n| n.to_string()),
             "remove-knot" => self.remove_knot.map(|x| x.to_string()),
@@ -276,6 +299,12 @@ impl TransformRequest {
         if let Some(n) = self.elevate {
             given.push(Operation::Elevate(n));
         }
+        if let Some(times) = self.reduce {
+            let tolerance = self.tolerance.ok_or(
+                "--reduce needs --tolerance E: the largest deviation the reduction may cause",
+            )?;
+            given.push(Operation::Reduce { times, tolerance });
+        }
         if let Some(k) = &self.insert_knot {
             given.push(Operation::InsertKnots(k.clone()));
         }
@@ -291,8 +320,10 @@ impl TransformRequest {
                 times: self.times,
                 tolerance,
             });
-        } else if self.times.is_some() || self.tolerance.is_some() {
-            return Err("--times and --tolerance go with --remove-knot".to_owned());
+        } else if self.times.is_some() {
+            return Err("--times goes with --remove-knot".to_owned());
+        } else if self.tolerance.is_some() && self.reduce.is_none() {
+            return Err("--tolerance goes with --remove-knot or --reduce".to_owned());
         }
         if let Some(t) = self.split {
             given.push(Operation::Split(t));
@@ -313,19 +344,13 @@ impl TransformRequest {
             1 => Ok(given.remove(0)),
             0 => Err(format!(
                 "give one operation: {}",
-                [
-                    "elevate",
-                    "insert-knot",
-                    "refine",
-                    "remove-knot",
-                    "split",
-                    "subsegment",
-                    "reverse",
-                    "to-bezier",
-                    "reparametrize"
-                ]
-                .map(|n| format!("--{n}"))
-                .join(", ")
+                Self::OPTIONS
+                    .iter()
+                    .map(|o| o.name)
+                    .filter(|n| !MODIFIERS.contains(n))
+                    .map(|n| format!("--{n}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
             )),
             _ => Err(format!(
                 "give one operation per call (given: {})",
@@ -470,9 +495,22 @@ type Outcome<T> = (Vec<T>, String, Option<(usize, usize)>);
 fn curve_op<const D: usize>(
     curve: &AnyCurve<D>,
     op: &Operation,
+    membership: Membership,
 ) -> Result<Outcome<AnyCurve<D>>, String> {
     let (pieces, note) = match op {
         Operation::Elevate(n) => (vec![curve.elevated(*n)], String::new()),
+        Operation::Reduce { times, tolerance } => {
+            let r = curve
+                .reduced(*times, *tolerance, membership)
+                .map_err(|e| e.to_string())?;
+            let note = format!(
+                "degree {} -> {}; largest deviation found {:e} (tolerance {tolerance:e})",
+                curve.degree(),
+                r.curve.degree(),
+                r.error
+            );
+            (vec![r.curve], note)
+        }
         Operation::InsertKnots(k) => (
             vec![curve.with_knots_inserted(k).map_err(|e| e.to_string())?],
             String::new(),
@@ -519,6 +557,7 @@ fn surface_op(
     surface: &Surface,
     op: &Operation,
     direction: Option<Direction>,
+    membership: Membership,
 ) -> Result<Outcome<Surface>, String> {
     if let Operation::ToBezier = op {
         return Ok((surface.to_bezier_patches(), String::new(), None));
@@ -532,6 +571,32 @@ fn surface_op(
                 s = s.elevate(direction);
             }
             (vec![s], String::new())
+        }
+        Operation::Reduce { times, tolerance } => {
+            let mut s = surface.clone();
+            for _ in 0..*times {
+                s = s
+                    .reduce_degree(direction, *tolerance, membership)
+                    .map_err(|e| format!("{direction}: {e}"))?
+                    .curve;
+            }
+            let error = surface.deviation_from(&s);
+            if error.is_nan() || error > *tolerance {
+                return Err(format!(
+                    "{direction}: {}",
+                    neutrospline::ReduceError::NotWithin {
+                        degree: degree_of(&s, direction),
+                        tolerance: *tolerance,
+                        error,
+                    }
+                ));
+            }
+            let note = format!(
+                "degree_{direction} {} -> {}; largest deviation found {error:e} (tolerance {tolerance:e})",
+                degree_of(surface, direction),
+                degree_of(&s, direction)
+            );
+            (vec![s], note)
         }
         Operation::InsertKnots(k) => {
             let mut s = surface.clone();
@@ -586,6 +651,13 @@ fn surface_op(
     Ok((pieces, note, None))
 }
 
+fn degree_of(surface: &Surface, direction: Direction) -> usize {
+    match direction {
+        Direction::U => surface.degree_u(),
+        Direction::V => surface.degree_v(),
+    }
+}
+
 /// Applies `op` to `model` (`direction` for a surface; a curve refuses one): the new
 /// model(s), each passing `check`, and a summary.
 ///
@@ -619,27 +691,29 @@ pub fn transform(
                     "--direction {d} is for surfaces; this model is a curve"
                 ));
             }
-            if spreads.is_some() && matches!(op, Operation::RemoveKnot { .. }) {
-                return Err(
-                    "--remove-knot is not exact, so the spreads (fuzzy positions) of this \
-                            model cannot follow it; remove them first"
-                        .to_owned(),
-                );
+            if spreads.is_some()
+                && matches!(op, Operation::RemoveKnot { .. } | Operation::Reduce { .. })
+            {
+                return Err(format!(
+                    "--{} is not exact, so the spreads (fuzzy positions) of this model cannot \
+                     follow it; remove them first",
+                    op.name()
+                ));
             }
             let (pieces, note, spread_pieces): (
                 Vec<DynCurve>,
                 String,
                 Option<Vec<Vec<Spread<3>>>>,
             ) = on_dimension!(curve, c => {
-                let (pieces, note, counts) = curve_op(c, op)?;
+                let (pieces, note, counts) = curve_op(c, op, membership)?;
                 removals = counts;
                 let spread_pieces = match spreads {
                     None => None,
                     Some(s) => {
                         let left: Vec<[f64; 3]> = s.iter().map(|x| x.left).collect();
                         let right: Vec<[f64; 3]> = s.iter().map(|x| x.right).collect();
-                        let (lp, _, _) = curve_op(&companion(c, &left), op)?;
-                        let (rp, _, _) = curve_op(&companion(c, &right), op)?;
+                        let (lp, _, _) = curve_op(&companion(c, &left), op, membership)?;
+                        let (rp, _, _) = curve_op(&companion(c, &right), op, membership)?;
                         Some(lp.iter().zip(&rp).map(|(l, r)| {
                             l.control_points().iter().zip(r.control_points()).map(|(a, b)| {
                                 let clean = |v: [f64; 3]| v.map(|x| if x < 0.0 && x > -ROUNDING { 0.0 } else { x });
@@ -666,7 +740,7 @@ pub fn transform(
             }
         }
         Shape::Surface(surface) => {
-            let (pieces, note, counts) = surface_op(surface, op, direction)?;
+            let (pieces, note, counts) = surface_op(surface, op, direction, membership)?;
             removals = counts;
             summary.push_str(&note);
             for piece in pieces {

@@ -257,7 +257,7 @@ pub fn table_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
 ///
 /// >>> import neutrospline as ns
 /// >>> [o["name"] for o in ns.transform_options()][:3]
-/// ['elevate', 'insert_knot', 'refine']
+/// ['elevate', 'reduce', 'insert_knot']
 #[pyfunction]
 pub fn transform_options(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
     crate::options::table::<neutrospline_io::TransformRequest>(py)

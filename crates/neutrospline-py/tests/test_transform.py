@@ -60,7 +60,7 @@ def test_transform_messages(root):
     spline = ns.load(root / "examples" / "bspline.toml")
     surface = ns.load(root / "examples" / "surface.toml")
     for shape, options, message in [
-        (spline, dict(), "give one operation: --elevate, --insert-knot, --refine, --remove-knot, --split, "
+        (spline, dict(), "give one operation: --elevate, --reduce, --insert-knot, --refine, --remove-knot, --split, "
                          "--subsegment, --reverse, --to-bezier, --reparametrize"),
         (spline, dict(split=0.5, reverse=True), "give one operation per call (given: split, reverse)"),
         (spline, dict(remove_knot=0.25, tolerance=1.0), "0.25 is not an interior knot (the interior knots are 0.2, 0.5, 0.7)"),
@@ -72,6 +72,6 @@ def test_transform_messages(root):
             shape.transform(**options)
         assert str(raised.value) == message, options
     assert [o["name"] for o in ns.transform_options()] == [
-        "elevate", "insert_knot", "refine", "remove_knot", "times", "tolerance", "split",
+        "elevate", "reduce", "insert_knot", "refine", "remove_knot", "times", "tolerance", "split",
         "subsegment", "reverse", "to_bezier", "reparametrize", "direction",
     ]

@@ -118,6 +118,7 @@ mod layout;
 mod nearest;
 pub mod options;
 mod point;
+mod reduce;
 mod relation;
 pub mod sample;
 mod spline;
@@ -166,4 +167,4 @@ pub use spline_curve::{
 pub use surface::{
     Direction, EvaluateSurface, Surface, SurfaceDerivatives, SurfaceError, SurfaceKind,
 };
-pub use transform::{KnotRemoval, DEVIATION_SAMPLES_PER_SPAN};
+pub use transform::{DegreeReduction, KnotRemoval, ReduceError, DEVIATION_SAMPLES_PER_SPAN};

@@ -430,3 +430,70 @@ fn other(direction: Direction) -> Direction {
         Direction::V => Direction::U,
     }
 }
+
+impl Surface {
+    /// The degree in `direction` lowered by one within `tolerance` of this surface (the curve
+    /// reduction, [`crate::BSpline::reduce_degree`], on the lines of the net; the degrees
+    /// projected onto `membership`'s rule; then interior knots of that direction removed as
+    /// the tolerance allows).
+    ///
+    /// # Errors
+    /// As [`crate::BSpline::reduce_degree`].
+    pub fn reduce_degree(
+        &self,
+        direction: Direction,
+        tolerance: f64,
+        membership: crate::Membership,
+    ) -> Result<crate::DegreeReduction<Surface>, crate::ReduceError> {
+        let p = self.knots_of(direction).degree();
+        if p < 2 {
+            return Err(crate::ReduceError::DegreeTooLow { degree: p });
+        }
+        let build = |work: &Spline| -> Result<Surface, crate::ReduceError> {
+            let mut s = self.with_direction_spline(direction, work.clone());
+            if s.weights
+                .as_ref()
+                .is_some_and(|w| w.iter().any(|&w| !(w > 0.0 && w.is_finite())))
+            {
+                return Err(crate::ReduceError::NonPositiveWeight);
+            }
+            crate::transform::project_degrees(&mut s.data, S, 3, membership);
+            s.homogeneous = homogeneous_rows(&s.data, s.weights.as_deref());
+            Ok(s)
+        };
+        let mut work = self
+            .direction_spline(direction)
+            .reduced_pieces()
+            .ok_or(crate::ReduceError::DegreeTooLow { degree: p })?;
+        let mut current = build(&work)?;
+        let mut error = self.deviation_from(&current);
+        if error.is_nan() || error > tolerance {
+            return Err(crate::ReduceError::NotWithin {
+                degree: p - 1,
+                tolerance,
+                error,
+            });
+        }
+        for u in work.knots.interior_breakpoints() {
+            while work.knots.multiplicity(u) > 0 {
+                let Some(next) = work.remove_knot_once(u, tolerance) else {
+                    break;
+                };
+                let Ok(candidate) = build(&next) else {
+                    break;
+                };
+                let deviation = self.deviation_from(&candidate);
+                if deviation.is_nan() || deviation > tolerance {
+                    break;
+                }
+                work = next;
+                current = candidate;
+                error = deviation;
+            }
+        }
+        Ok(crate::DegreeReduction {
+            curve: current,
+            error,
+        })
+    }
+}

@@ -392,3 +392,212 @@ impl<const D: usize> crate::AnyCurve<D> {
         }
     }
 }
+
+/// Why a degree reduction gave no curve.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ReduceError {
+    /// Degree 0 or 1 has no degree below it that keeps the ends.
+    #[error("degree {degree} cannot be reduced (the reduced curve keeps both ends, so it needs degree 1 or more)")]
+    DegreeTooLow {
+        /// The degree.
+        degree: usize,
+    },
+    /// The nearest curve of lower degree is further than the tolerance.
+    #[error("no curve of degree {degree} lies within {tolerance:e} of this one: the nearest found deviates by {error:e}")]
+    NotWithin {
+        /// The degree asked for.
+        degree: usize,
+        /// The tolerance.
+        tolerance: f64,
+        /// The deviation of the best reduction found.
+        error: f64,
+    },
+    /// A reduced rational piece would need a weight that is not positive.
+    #[error("the reduced NURBS curve would need a weight that is not positive (reduce the weights' spread first)")]
+    NonPositiveWeight,
+}
+
+/// The result of a degree reduction: the curve and how far it is from the original.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DegreeReduction<C> {
+    /// The curve of lower degree.
+    pub curve: C,
+    /// The largest deviation from the original found (as [`KnotRemoval::error`]).
+    pub error: f64,
+}
+
+/// The degrees of every row (channels `first..first + 3`, stride `stride`) projected onto
+/// `membership`'s rule: each onto \[0, 1\]; for intuitionistic degrees, truth + falsity above 1
+/// brought onto the line T + F = 1 by the nearest point, and the hesitation 1 - T - F derived;
+/// for fuzzy degrees, indeterminacy and falsity 0.
+pub(crate) fn project_degrees(
+    data: &mut [f64],
+    stride: usize,
+    first: usize,
+    membership: crate::Membership,
+) {
+    for row in data.chunks_exact_mut(stride) {
+        let d = &mut row[first..first + 3];
+        for v in d.iter_mut() {
+            *v = if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
+        }
+        match membership {
+            crate::Membership::Neutrosophic => {}
+            crate::Membership::Fuzzy => {
+                d[1] = 0.0;
+                d[2] = 0.0;
+            }
+            crate::Membership::Intuitionistic => {
+                let excess = d[0] + d[2] - 1.0;
+                if excess > 0.0 {
+                    d[0] = (d[0] - excess / 2.0).clamp(0.0, 1.0);
+                    d[2] = (1.0 - d[0]).clamp(0.0, 1.0);
+                }
+                d[1] = (1.0 - d[0] - d[2]).max(0.0);
+            }
+        }
+    }
+}
+
+impl<const D: usize, W: Weighting> SplineCurve<D, W> {
+    /// The curve of a spline in the form the reduction works in (homogeneous for NURBS).
+    fn from_work(work: &Spline, membership: crate::Membership) -> Result<Self, ReduceError> {
+        let mut spline = if W::RATIONAL {
+            let s = work.euclidean();
+            if s.weights
+                .as_ref()
+                .is_some_and(|w| w.iter().any(|&w| !(w > 0.0 && w.is_finite())))
+            {
+                return Err(ReduceError::NonPositiveWeight);
+            }
+            s
+        } else {
+            work.clone()
+        };
+        let stride = spline.stride;
+        project_degrees(&mut spline.data, stride, D, membership);
+        Ok(SplineCurve::from_spline(spline))
+    }
+
+    /// The degree lowered by one, within `tolerance` of this curve: each Bézier piece
+    /// replaced by the nearest (L2) piece of one degree less with the same end points (for
+    /// NURBS in homogeneous form), the pieces joined with C0 continuity, the degrees
+    /// projected onto `membership`'s rule (so the result is valid under it), then every
+    /// interior knot removed as often as the curve stays within `tolerance` (Tiller). The
+    /// deviation is measured as [`SplineCurve::deviation_from`].
+    ///
+    /// # Errors
+    /// [`ReduceError::DegreeTooLow`] for degree below 2, [`ReduceError::NotWithin`] with the
+    /// deviation found when the reduction is further than `tolerance`,
+    /// [`ReduceError::NonPositiveWeight`].
+    ///
+    /// ```
+    /// use neutrospline::{Elevate, Membership};
+    /// let curve = neutrospline::example1().to_bspline();
+    /// let up = curve.elevate();
+    /// let back = up.reduce_degree(1e-12, Membership::Neutrosophic)?;
+    /// assert_eq!(back.curve.degree(), 3);
+    /// assert!(back.error < 1e-13);
+    /// # Ok::<(), neutrospline::ReduceError>(())
+    /// ```
+    pub fn reduce_degree(
+        &self,
+        tolerance: f64,
+        membership: crate::Membership,
+    ) -> Result<DegreeReduction<Self>, ReduceError> {
+        let p = self.degree();
+        if p < 2 {
+            return Err(ReduceError::DegreeTooLow { degree: p });
+        }
+        let mut work = if W::RATIONAL {
+            self.spline().homogeneous()
+        } else {
+            self.spline().clone()
+        };
+        work = work
+            .reduced_pieces()
+            .ok_or(ReduceError::DegreeTooLow { degree: p })?;
+        let mut current = Self::from_work(&work, membership)?;
+        let mut error = self.deviation_from(&current);
+        if error.is_nan() || error > tolerance {
+            return Err(ReduceError::NotWithin {
+                degree: p - 1,
+                tolerance,
+                error,
+            });
+        }
+        for u in work.knots.interior_breakpoints() {
+            while work.knots.multiplicity(u) > 0 {
+                let Some(next) = work.remove_knot_once(u, tolerance) else {
+                    break;
+                };
+                let Ok(candidate) = Self::from_work(&next, membership) else {
+                    break;
+                };
+                let deviation = self.deviation_from(&candidate);
+                if deviation.is_nan() || deviation > tolerance {
+                    break;
+                }
+                work = next;
+                current = candidate;
+                error = deviation;
+            }
+        }
+        Ok(DegreeReduction {
+            curve: current,
+            error,
+        })
+    }
+}
+
+impl<const D: usize> crate::AnyCurve<D> {
+    /// The degree lowered `times` times within `tolerance` in all
+    /// ([`SplineCurve::reduce_degree`] each time, the tolerance for the whole); a Bézier curve
+    /// stays a Bézier curve when the result has one span.
+    ///
+    /// # Errors
+    /// As [`SplineCurve::reduce_degree`].
+    pub fn reduced(
+        &self,
+        times: usize,
+        tolerance: f64,
+        membership: crate::Membership,
+    ) -> Result<DegreeReduction<Self>, ReduceError> {
+        let original = self.as_spline();
+        let mut current = original.clone();
+        for _ in 0..times {
+            current = match &current {
+                crate::AnyCurve::BSpline(c) => c.reduce_degree(tolerance, membership)?.curve.into(),
+                crate::AnyCurve::Nurbs(c) => c.reduce_degree(tolerance, membership)?.curve.into(),
+                crate::AnyCurve::Bezier(_) => unreachable!("as_spline gives a spline"),
+            };
+        }
+        let error = match (&original, &current) {
+            (crate::AnyCurve::BSpline(a), crate::AnyCurve::BSpline(b)) => a.deviation_from(b),
+            (crate::AnyCurve::Nurbs(a), crate::AnyCurve::Nurbs(b)) => a.deviation_from(b),
+            _ => unreachable!("the kind is kept"),
+        };
+        if error.is_nan() || error > tolerance {
+            return Err(ReduceError::NotWithin {
+                degree: current.degree(),
+                tolerance,
+                error,
+            });
+        }
+        if let (crate::AnyCurve::Bezier(_), crate::AnyCurve::BSpline(b)) = (self, &current) {
+            if b.knots().interior_breakpoints().is_empty() {
+                let bezier = crate::Bezier::new(crate::ControlPolygon::control_points(b))
+                    .unwrap_or_else(|e| unreachable!("a valid spline's points: {e}"));
+                return Ok(DegreeReduction {
+                    curve: bezier.into(),
+                    error,
+                });
+            }
+        }
+        Ok(DegreeReduction {
+            curve: current,
+            error,
+        })
+    }
+}

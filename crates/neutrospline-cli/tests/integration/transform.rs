@@ -166,6 +166,87 @@ fn spreads_follow_exact_operations() {
 }
 
 #[test]
+fn reduction_undoes_elevation_and_reports_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for name in ["bspline.toml", "nurbs-circle.toml", "example1.toml"] {
+        let model = example(name);
+        let model = model.to_str().unwrap();
+        ok(d, &["transform", model, "-o", "up.toml", "--elevate", "2"]);
+        let out = ok(
+            d,
+            &[
+                "transform",
+                "up.toml",
+                "-o",
+                "down.toml",
+                "--reduce",
+                "2",
+                "--tolerance",
+                "1e-9",
+            ],
+        );
+        assert!(
+            out.stderr.contains("largest deviation found"),
+            "{}",
+            out.stderr
+        );
+        assert_tables(
+            &table(d, &[model, "--at", AT]),
+            &table(d, &["down.toml", "--at", AT]),
+            1,
+            name,
+        );
+        let degree = |file: &str| {
+            ok(d, &["check", file])
+                .stdout
+                .lines()
+                .find(|l| l.starts_with("degree:"))
+                .unwrap()
+                .to_owned()
+        };
+        assert_eq!(degree("down.toml"), degree(model), "{name}");
+    }
+    let surface = example("surface.toml");
+    let surface = surface.to_str().unwrap();
+    ok(
+        d,
+        &[
+            "transform",
+            surface,
+            "-o",
+            "up.json",
+            "--elevate",
+            "1",
+            "--direction",
+            "v",
+        ],
+    );
+    ok(
+        d,
+        &[
+            "transform",
+            "up.json",
+            "-o",
+            "down.json",
+            "--reduce",
+            "1",
+            "--tolerance",
+            "1e-9",
+            "--direction",
+            "v",
+        ],
+    );
+    let at = "0:0,0.2:0.7,0.5:0.5,0.9:0.1,1:1";
+    assert_tables(
+        &table(d, &[surface, "--at", at]),
+        &table(d, &["down.json", "--at", at]),
+        2,
+        "surface",
+    );
+}
+
+#[test]
 fn removal_undoes_insertion_and_reports_it() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
@@ -291,10 +372,12 @@ fn misuse_gets_its_message() {
     let model = example("bspline.toml");
     let model = model.to_str().unwrap();
     for (args, code, message) in [
-        (vec![], 2, "error: give one operation: --elevate, --insert-knot, --refine, --remove-knot, --split, --subsegment, --reverse, --to-bezier, --reparametrize\n"),
+        (vec![], 2, "error: give one operation: --elevate, --reduce, --insert-knot, --refine, --remove-knot, --split, --subsegment, --reverse, --to-bezier, --reparametrize\n"),
         (vec!["--reverse", "--split", "0.5"], 2, "error: give one operation per call (given: split, reverse)\n"),
         (vec!["--remove-knot", "0.5"], 2, "error: --remove-knot needs --tolerance E: the largest deviation the removal may cause\n"),
-        (vec!["--elevate", "1", "--tolerance", "1"], 2, "error: --times and --tolerance go with --remove-knot\n"),
+        (vec!["--elevate", "1", "--tolerance", "1"], 2, "error: --tolerance goes with --remove-knot or --reduce\n"),
+        (vec!["--reduce", "1"], 2, "error: --reduce needs --tolerance E: the largest deviation the reduction may cause\n"),
+        (vec!["--reduce", "1", "--tolerance", "1e-3"], 1, "bspline.toml: no curve of degree 2 lies within 1e-3 of this one: the nearest found deviates by 9.032067383751896e-2\n"),
         (vec!["--subsegment", "0.2"], 2, "error: subsegment = 0.2: expected A:B, two numbers\n"),
         (vec!["--elevate", "1", "--direction", "u"], 1, "bspline.toml: --direction u is for surfaces; this model is a curve\n"),
         (vec!["--remove-knot", "0.25", "--tolerance", "1"], 1, "bspline.toml: 0.25 is not an interior knot (the interior knots are 0.2, 0.5, 0.7)\n"),

@@ -123,6 +123,7 @@ class Shape:
         self,
         *,
         elevate: Optional[int] = None,
+        reduce: Optional[int] = None,
         insert_knot: Optional[Sequence[float]] = None,
         refine: Optional[int] = None,
         remove_knot: Optional[float] = None,
@@ -273,6 +274,7 @@ class Surface(Shape):
         *,
         samples: int = 30,
         legend: bool = True,
+        net: bool = True,
     ) -> Any: ...
     def nearest(
         self, points: ArrayLike

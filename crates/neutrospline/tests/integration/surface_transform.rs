@@ -186,3 +186,29 @@ fn exact_operations_keep_the_surface() {
         }
     }
 }
+
+/// An elevated surface reduces back in either direction, its knots and values the original's.
+#[test]
+fn degree_reduction_undoes_elevation_on_surfaces() {
+    for (n, s) in surfaces().iter().enumerate() {
+        for direction in [Direction::U, Direction::V] {
+            let up = s.elevate(direction);
+            let back = up
+                .reduce_degree(direction, 1e-9, neutrospline::Membership::Neutrosophic)
+                .unwrap();
+            assert!(
+                back.error <= 1e-9,
+                "surface {n} {direction}: {}",
+                back.error
+            );
+            assert_eq!(back.curve.knots_u(), s.knots_u(), "surface {n} {direction}");
+            assert_eq!(back.curve.knots_v(), s.knots_v(), "surface {n} {direction}");
+            assert_same(
+                s,
+                &back.curve,
+                |u, v| (u, v),
+                &format!("surface {n} reduce {direction}"),
+            );
+        }
+    }
+}

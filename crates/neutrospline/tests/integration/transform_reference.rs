@@ -375,3 +375,73 @@ fn removal_refuses_what_is_not_an_interior_knot() {
         "[1, 1] is not a parameter interval (the start must be finite and less than the end)"
     );
 }
+
+/// Degree reduction: an elevated curve comes back (knots and all, within 1e-9 of the scale);
+/// a genuine reduction within a loose tolerance reports the deviation dense sampling finds and
+/// keeps the degrees valid under the rule (intuitionistic here: T + F <= 1); a tolerance it
+/// cannot meet is refused with the deviation found.
+#[test]
+fn degree_reduction_undoes_elevation_and_reports_its_error() {
+    use neutrospline::{Membership, ReduceError};
+    for (n, case) in cases().iter().enumerate() {
+        let rows: Vec<Vec<f64>> = case
+            .rows
+            .iter()
+            .map(|r| vec![r[0], r[1], r[2], 0.0, r[4].min(1.0 - r[2])])
+            .map(|mut r| {
+                r[3] = 1.0 - r[2] - r[4];
+                r
+            })
+            .collect();
+        let curve = build(case.degree, &case.knots, &rows, case.weights.as_ref());
+        let s = scale(&case.rows);
+        let (back, error) = each!(&curve, c => {
+            let out = c.elevate().reduce_degree(1e-9 * s, Membership::Intuitionistic).unwrap();
+            (build_like(&curve, out.curve), out.error)
+        });
+        assert!(error <= 1e-9 * s, "case {n}: {error}");
+        let (_, _, knots) = parts(&back);
+        let (_, _, knots0) = parts(&curve);
+        assert_eq!(knots, knots0, "case {n}: the knots come back");
+        assert!(dense_deviation(&curve, &back) <= 1e-9 * s, "case {n}");
+        if case.degree >= 2 {
+            let (reduced, error) = each!(&curve, c => {
+                let out = c.reduce_degree(1e3 * s, Membership::Intuitionistic).unwrap();
+                (build_like(&curve, out.curve), out.error)
+            });
+            let dense = dense_deviation(&curve, &reduced);
+            assert!(
+                (error - dense).abs() <= 0.05 * dense + 1e-12,
+                "case {n}: {error} vs {dense}"
+            );
+            let (rows, _, _) = parts(&reduced);
+            for r in &rows {
+                assert!(
+                    r[2] + r[4] <= 1.0 + 1e-15 && r[2..].iter().all(|v| (0.0..=1.0).contains(v)),
+                    "case {n}: {r:?}"
+                );
+            }
+            let refused =
+                each!(&curve, c => c.reduce_degree(1e-12, Membership::Intuitionistic).unwrap_err());
+            match refused {
+                ReduceError::NotWithin { degree, error, .. } => {
+                    assert_eq!(degree, case.degree - 1);
+                    assert!(error > 1e-12);
+                }
+                other => panic!("case {n}: {other}"),
+            }
+        }
+    }
+    let line = neutrospline::BSpline::new(
+        vec![
+            ControlPoint::new([0.0, 0.0], Degrees::new(0.5, 0.2, 0.1).unwrap()),
+            ControlPoint::new([1.0, 1.0], Degrees::new(0.5, 0.2, 0.1).unwrap()),
+        ],
+        KnotVector::new(vec![0.0, 0.0, 1.0, 1.0], 1, 2).unwrap(),
+    )
+    .unwrap();
+    assert_eq!(
+        line.reduce_degree(1.0, Membership::Neutrosophic).unwrap_err().to_string(),
+        "degree 1 cannot be reduced (the reduced curve keeps both ends, so it needs degree 1 or more)"
+    );
+}
