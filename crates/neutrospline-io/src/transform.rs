@@ -415,6 +415,24 @@ fn conform_points<const D: usize>(
         .collect()
 }
 
+/// A curve of `curve`'s kind, knots and weights through `points` (of any dimension).
+fn with_points<const D: usize, const E: usize>(
+    curve: &AnyCurve<D>,
+    points: Vec<ControlPoint<E>>,
+) -> Result<AnyCurve<E>, String> {
+    match curve {
+        AnyCurve::Bezier(_) => Bezier::new(points).map(Into::into),
+        AnyCurve::BSpline(c) => BSpline::new(points, c.knots().clone()).map(Into::into),
+        AnyCurve::Nurbs(c) => Nurbs::new(
+            points,
+            c.weights().unwrap_or(&[]).to_vec(),
+            c.knots().clone(),
+        )
+        .map(Into::into),
+    }
+    .map_err(|e| e.to_string())
+}
+
 /// The curve with its control degrees conformed to `membership`.
 fn conform_curve<const D: usize>(
     curve: AnyCurve<D>,
@@ -423,23 +441,7 @@ fn conform_curve<const D: usize>(
     if membership == Membership::Neutrosophic {
         return Ok(curve);
     }
-    let points = conform_points(curve.control_points(), membership)?;
-    let rebuilt: Result<AnyCurve<D>, String> = match &curve {
-        AnyCurve::Bezier(_) => Bezier::new(points)
-            .map(Into::into)
-            .map_err(|e| e.to_string()),
-        AnyCurve::BSpline(c) => BSpline::new(points, c.knots().clone())
-            .map(Into::into)
-            .map_err(|e| e.to_string()),
-        AnyCurve::Nurbs(c) => Nurbs::new(
-            points,
-            c.weights().unwrap_or(&[]).to_vec(),
-            c.knots().clone(),
-        )
-        .map(Into::into)
-        .map_err(|e| e.to_string()),
-    };
-    rebuilt
+    with_points(&curve, conform_points(curve.control_points(), membership)?)
 }
 
 fn conform_surface(surface: Surface, membership: Membership) -> Result<Surface, String> {
@@ -468,23 +470,9 @@ fn conform_surface(surface: Surface, membership: Membership) -> Result<Surface, 
 /// companion: blended by the same basis, so the same operation carries them).
 fn companion<const D: usize>(curve: &AnyCurve<D>, positions: &[[f64; 3]]) -> AnyCurve<3> {
     let d = Degrees::new(0.0, 0.0, 0.0).unwrap_or_else(|e| unreachable!("zeros are degrees: {e}"));
-    let points: Vec<ControlPoint<3>> = positions.iter().map(|&p| ControlPoint::new(p, d)).collect();
-    let built: Result<AnyCurve<3>, String> = match curve {
-        AnyCurve::Bezier(_) => Bezier::new(points)
-            .map(Into::into)
-            .map_err(|e| e.to_string()),
-        AnyCurve::BSpline(c) => BSpline::new(points, c.knots().clone())
-            .map(Into::into)
-            .map_err(|e| e.to_string()),
-        AnyCurve::Nurbs(c) => Nurbs::new(
-            points,
-            c.weights().unwrap_or(&[]).to_vec(),
-            c.knots().clone(),
-        )
-        .map(Into::into)
-        .map_err(|e| e.to_string()),
-    };
-    built.unwrap_or_else(|e| unreachable!("the companion has the curve's valid layout: {e}"))
+    let points = positions.iter().map(|&p| ControlPoint::new(p, d)).collect();
+    with_points(curve, points)
+        .unwrap_or_else(|e| unreachable!("the companion has the curve's valid layout: {e}"))
 }
 
 /// What an operation made: the pieces, a note, and for a knot removal the removals asked for

@@ -418,20 +418,11 @@ impl Legend {
                 .with_fill(Color::WHITE)
                 .square(),
         );
-        let fs = theme.legend();
         let inner = width - 2.0 * m.pad;
         let mut cy = y + m.pad + m.row_h / 2.0;
         for row in self.rows(theme, inner) {
             for (i, dx) in row {
-                let e = &self.entries[i];
-                let sx = x + m.pad + dx;
-                draw_swatch(svg, theme, &e.swatch, sx, cy, m.swatch_w);
-                svg.text(
-                    sx + m.swatch_w + theme.gap(),
-                    cy + BASELINE_FROM_CENTRE * fs,
-                    &e.label,
-                    &TextStyle::new(fs, theme::INK).with_class("legend-label"),
-                );
+                draw_entry(svg, theme, &self.entries[i], x + m.pad + dx, cy);
             }
             cy += m.row_h;
         }
@@ -472,14 +463,7 @@ impl Legend {
         let fs = theme.legend();
         let mut cy = y + m.pad + m.row_h / 2.0;
         for e in &self.entries {
-            let sx = x + m.pad;
-            draw_swatch(svg, theme, &e.swatch, sx, cy, m.swatch_w);
-            svg.text(
-                sx + m.swatch_w + theme.gap(),
-                cy + BASELINE_FROM_CENTRE * fs,
-                &e.label,
-                &TextStyle::new(fs, theme::INK).with_class("legend-label"),
-            );
+            draw_entry(svg, theme, e, x + m.pad, cy);
             cy += m.row_h;
         }
         let notes = self.wrapped_notes(theme);
@@ -540,6 +524,19 @@ impl Legend {
         }
         svg.end_group();
     }
+}
+
+/// A legend entry: its swatch from `x` and its label after it, centred on `cy`.
+fn draw_entry(svg: &mut Painter, theme: &Theme, entry: &Entry, x: f64, cy: f64) {
+    let fs = theme.legend();
+    let swatch_w = Legend::metrics(theme).swatch_w;
+    draw_swatch(svg, theme, &entry.swatch, x, cy, swatch_w);
+    svg.text(
+        x + swatch_w + theme.gap(),
+        cy + BASELINE_FROM_CENTRE * fs,
+        &entry.label,
+        &TextStyle::new(fs, theme::INK).with_class("legend-label"),
+    );
 }
 
 fn draw_swatch(svg: &mut Painter, theme: &Theme, swatch: &Swatch, x: f64, cy: f64, w: f64) {

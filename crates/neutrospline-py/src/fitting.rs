@@ -421,21 +421,11 @@ pub fn fit_surface<'py>(
     let is_path = data.is_instance_of::<PyString>() || data.hasattr("__fspath__").unwrap_or(false);
     let (fitted, description, data_name) = if is_frame {
         // A table with named columns (a pandas DataFrame), read as a data file is.
-        for (given, what) in [(degrees.is_some(), "degrees"), (uv.is_some(), "parameters")] {
-            if given {
-                return Err(invalid_at(
-                    what,
-                    "the DataFrame's columns give it: give a DataFrame or arrays, not both",
-                ));
-            }
-        }
-        if array_weights.is_some() {
-            return Err(invalid_at(
-                "weights",
-                "the DataFrame's `weight` column gives the weights (weights=\"column\"), not an \
-                 array",
-            ));
-        }
+        refuse_arrays(
+            [degrees.is_some(), uv.is_some(), array_weights.is_some()],
+            "the DataFrame's columns give it: give a DataFrame or arrays, not both",
+            "the DataFrame's `weight` column gives the weights (weights=\"column\"), not an array",
+        )?;
         let frame = Frame::read(data, input)?;
         let table = read_data_with(frame::LABEL, frame.text(), membership, frame.input())
             .map_err(|e| frame.read_error(py, e))?;
@@ -461,20 +451,11 @@ pub fn fit_surface<'py>(
         );
         (fitted, description, frame::LABEL.to_owned())
     } else if is_path {
-        for (given, what) in [(degrees.is_some(), "degrees"), (uv.is_some(), "parameters")] {
-            if given {
-                return Err(invalid_at(
-                    what,
-                    "the data file gives it (its columns): give arrays or a file, not both",
-                ));
-            }
-        }
-        if array_weights.is_some() {
-            return Err(invalid_at(
-                "weights",
-                "the data file's weight column gives the weights (weights=\"column\")",
-            ));
-        }
+        refuse_arrays(
+            [degrees.is_some(), uv.is_some(), array_weights.is_some()],
+            "the data file gives it (its columns): give arrays or a file, not both",
+            "the data file's weight column gives the weights (weights=\"column\")",
+        )?;
         let path: PathBuf = data.extract()?;
         let table = load_data_with(&path, membership, &input).map_err(invalid)?;
         request
@@ -593,4 +574,18 @@ fn refuse_table_options(input: &TableInput) -> PyResult<()> {
         name.replace('-', "_"),
         "is an option of a table (a DataFrame or a data file), not of arrays",
     ))
+}
+
+/// Refuses arrays (`[degrees, parameters, weights]` given) next to a table that holds them:
+/// `columns` for degrees or parameters, `weights` for weights.
+fn refuse_arrays(given: [bool; 3], columns: &str, weights: &str) -> PyResult<()> {
+    for (given, what) in [(given[0], "degrees"), (given[1], "parameters")] {
+        if given {
+            return Err(invalid_at(what, columns));
+        }
+    }
+    if given[2] {
+        return Err(invalid_at("weights", weights));
+    }
+    Ok(())
 }

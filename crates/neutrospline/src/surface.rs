@@ -265,8 +265,24 @@ impl Surface {
                 });
             }
         }
+        Ok(Surface::from_parts(
+            kind, rows, cols, knots_u, knots_v, data, weights,
+        ))
+    }
+
+    /// A surface of checked parts (its homogeneous rows computed here).
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn from_parts(
+        kind: SurfaceKind,
+        rows: usize,
+        cols: usize,
+        knots_u: KnotVector,
+        knots_v: KnotVector,
+        data: Vec<f64>,
+        weights: Option<Vec<f64>>,
+    ) -> Surface {
         let homogeneous = homogeneous_rows(&data, weights.as_deref());
-        Ok(Surface {
+        Surface {
             kind,
             rows,
             cols,
@@ -275,7 +291,7 @@ impl Surface {
             data,
             weights,
             homogeneous,
-        })
+        }
     }
 
     /// The kind of surface.

@@ -12,7 +12,10 @@ use crate::curve::EvalError;
 use crate::knots::{KnotError, KnotVector};
 use crate::spline::Spline;
 use crate::surface::{homogeneous_rows, Direction, Surface, SurfaceKind, S};
-use crate::transform::{KnotRemoval, DEVIATION_SAMPLES_PER_SPAN};
+use crate::transform::{
+    check_interior_knot, deviation_samples, mapped_knots, point_deviation, reduce_within,
+    remove_while, KnotRemoval, DEVIATION_SAMPLES_PER_SPAN,
+};
 use crate::EvaluateSurface;
 
 /// Values within this of the degree box \[0, 1\] are rounding, clamped onto it.
@@ -95,7 +98,6 @@ impl Surface {
             Direction::U => (spline.knots, self.knots_v.clone()),
             Direction::V => (self.knots_u.clone(), spline.knots),
         };
-        let homogeneous = homogeneous_rows(&data, weights.as_deref());
         let bezier = |k: &KnotVector| {
             let u = k.knots();
             u.len() == 2 * (k.degree() + 1) && u[0] == 0.0 && u[u.len() - 1] == 1.0
@@ -105,16 +107,7 @@ impl Surface {
             (_, true) => SurfaceKind::Nurbs,
             (_, false) => SurfaceKind::BSpline,
         };
-        Surface {
-            kind,
-            rows,
-            cols,
-            knots_u,
-            knots_v,
-            data,
-            weights,
-            homogeneous,
-        }
+        Surface::from_parts(kind, rows, cols, knots_u, knots_v, data, weights)
     }
 
     /// A Bézier surface's piece mapped back onto \[0, 1\] in `direction` (Bézier surfaces
@@ -259,33 +252,9 @@ impl Surface {
         start: f64,
         end: f64,
     ) -> Result<Surface, KnotError> {
-        let bad = KnotError::BadInterval { start, end };
-        if !(start.is_finite() && end.is_finite() && start < end) {
-            return Err(bad);
-        }
         let spline = self.direction_spline(direction);
-        let domain = spline.knots.domain();
-        let scale = (end - start) / (domain.end - domain.start);
-        let knots: Vec<f64> = spline
-            .knots
-            .knots()
-            .iter()
-            .map(|&k| {
-                if k == domain.start {
-                    start
-                } else if k == domain.end {
-                    end
-                } else {
-                    start + (k - domain.start) * scale
-                }
-            })
-            .collect();
-        if knots.iter().any(|k| !k.is_finite()) || knots.windows(2).any(|w| w[0] > w[1]) {
-            return Err(bad);
-        }
-        let p = spline.degree();
         let spline = Spline {
-            knots: KnotVector::from_parts_unchecked(p, knots),
+            knots: mapped_knots(&spline.knots, start, end)?,
             ..spline
         };
         Ok(self.with_direction_spline(direction, spline))
@@ -305,41 +274,24 @@ impl Surface {
         times: usize,
         tolerance: f64,
     ) -> Result<KnotRemoval<Surface>, KnotError> {
-        let interior = self.knots_of(direction).interior_breakpoints();
-        if !interior.contains(&u) {
-            let knots = if interior.is_empty() {
-                "none".to_owned()
-            } else {
-                interior
-                    .iter()
-                    .map(f64::to_string)
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            };
-            return Err(KnotError::NotAnInteriorKnot { value: u, knots });
-        }
-        let mut current = self.clone();
-        let (mut removed, mut error) = (0, 0.0);
-        while removed < times {
-            let Some(spline) = current
-                .direction_spline(direction)
-                .remove_knot_once(u, tolerance)
-            else {
-                break;
-            };
-            let candidate = current.with_direction_spline(direction, spline);
+        check_interior_knot(self.knots_of(direction), u)?;
+        let build = |spline: &Spline| {
+            let candidate = self.with_direction_spline(direction, spline.clone());
             let in_box = candidate
                 .data
                 .chunks_exact(S)
                 .all(|row| row[3..].iter().all(|v| (0.0..=1.0).contains(v)));
-            let deviation = self.deviation_from(&candidate);
-            if !in_box || deviation.is_nan() || deviation > tolerance {
-                break;
-            }
-            current = candidate;
-            removed += 1;
-            error = deviation;
-        }
+            in_box.then_some(candidate)
+        };
+        let (_, shape, removed, error) = remove_while(
+            self.direction_spline(direction),
+            u,
+            times,
+            tolerance,
+            build,
+            |c: &Surface| self.deviation_from(c),
+        );
+        let current = shape.unwrap_or_else(|| self.clone());
         Ok(KnotRemoval {
             curve: current,
             removed,
@@ -377,47 +329,16 @@ impl Surface {
     /// larger of the Euclidean distance of the positions and the largest difference of a
     /// degree.
     pub fn deviation_from(&self, other: &Surface) -> f64 {
-        let grid = |mine: &KnotVector, theirs: &KnotVector| {
-            let domain = mine.domain();
-            let mut breaks = vec![domain.start, domain.end];
-            breaks.extend(mine.interior_breakpoints());
-            breaks.extend(theirs.interior_breakpoints());
-            breaks.retain(|t| (domain.start..=domain.end).contains(t));
-            breaks.sort_by(f64::total_cmp);
-            breaks.dedup();
-            let per = DEVIATION_SAMPLES_PER_SPAN / 4;
-            let mut at = Vec::new();
-            for w in breaks.windows(2) {
-                for k in 0..per {
-                    at.push(w[0] + (w[1] - w[0]) * k as f64 / per as f64);
-                }
-            }
-            at.push(domain.end);
-            at
-        };
-        let us = grid(&self.knots_u, &other.knots_u);
-        let vs = grid(&self.knots_v, &other.knots_v);
+        let per = DEVIATION_SAMPLES_PER_SPAN / 4;
+        let us = deviation_samples(&self.knots_u, &other.knots_u, per);
+        let vs = deviation_samples(&self.knots_v, &other.knots_v, per);
         let mut worst: f64 = 0.0;
         for &u in &us {
             for &v in &vs {
-                let (Ok(p), Ok(q)) = (self.evaluate(u, v), other.evaluate(u, v)) else {
-                    return f64::INFINITY;
-                };
-                let d = p
-                    .position
-                    .iter()
-                    .zip(&q.position)
-                    .map(|(a, b)| (a - b) * (a - b))
-                    .sum::<f64>()
-                    .sqrt();
-                let g = p
-                    .degrees
-                    .to_array()
-                    .iter()
-                    .zip(q.degrees.to_array())
-                    .map(|(a, b)| (a - b).abs())
-                    .fold(0.0, f64::max);
-                worst = worst.max(d).max(g);
+                worst = worst.max(match (self.evaluate(u, v), other.evaluate(u, v)) {
+                    (Ok(p), Ok(q)) => point_deviation(&p, &q),
+                    _ => f64::INFINITY,
+                });
             }
         }
         worst
@@ -445,10 +366,6 @@ impl Surface {
         tolerance: f64,
         membership: crate::Membership,
     ) -> Result<crate::DegreeReduction<Surface>, crate::ReduceError> {
-        let p = self.knots_of(direction).degree();
-        if p < 2 {
-            return Err(crate::ReduceError::DegreeTooLow { degree: p });
-        }
         let build = |work: &Spline| -> Result<Surface, crate::ReduceError> {
             let mut s = self.with_direction_spline(direction, work.clone());
             if s.weights
@@ -461,39 +378,11 @@ impl Surface {
             s.homogeneous = homogeneous_rows(&s.data, s.weights.as_deref());
             Ok(s)
         };
-        let mut work = self
-            .direction_spline(direction)
-            .reduced_pieces()
-            .ok_or(crate::ReduceError::DegreeTooLow { degree: p })?;
-        let mut current = build(&work)?;
-        let mut error = self.deviation_from(&current);
-        if error.is_nan() || error > tolerance {
-            return Err(crate::ReduceError::NotWithin {
-                degree: p - 1,
-                tolerance,
-                error,
-            });
-        }
-        for u in work.knots.interior_breakpoints() {
-            while work.knots.multiplicity(u) > 0 {
-                let Some(next) = work.remove_knot_once(u, tolerance) else {
-                    break;
-                };
-                let Ok(candidate) = build(&next) else {
-                    break;
-                };
-                let deviation = self.deviation_from(&candidate);
-                if deviation.is_nan() || deviation > tolerance {
-                    break;
-                }
-                work = next;
-                current = candidate;
-                error = deviation;
-            }
-        }
-        Ok(crate::DegreeReduction {
-            curve: current,
-            error,
-        })
+        reduce_within(
+            &self.direction_spline(direction),
+            tolerance,
+            build,
+            |c: &Surface| self.deviation_from(c),
+        )
     }
 }

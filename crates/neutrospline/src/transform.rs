@@ -32,39 +32,182 @@ const ROUNDING: f64 = 1e-12;
 /// Samples per knot span used by [`max_deviation`].
 pub const DEVIATION_SAMPLES_PER_SPAN: usize = 32;
 
-/// The largest distance between curves `a` and `b` sampled at the `breaks` (sorted) and
-/// [`DEVIATION_SAMPLES_PER_SPAN`] evenly spaced parameters between neighbours: the larger of
-/// the Euclidean distance of the positions and the largest difference of a degree.
-fn sampled_deviation<const D: usize>(
-    a: &impl Evaluate<Point = CurvePoint<D>>,
-    b: &impl Evaluate<Point = CurvePoint<D>>,
-    breaks: &[f64],
-) -> f64 {
-    let mut worst: f64 = 0.0;
+/// The distance of two points of a curve or surface: the larger of the Euclidean distance of
+/// the positions and the largest difference of a degree.
+pub(crate) fn point_deviation<const D: usize>(p: &CurvePoint<D>, q: &CurvePoint<D>) -> f64 {
+    let position = p
+        .position
+        .iter()
+        .zip(&q.position)
+        .map(|(x, y)| (x - y) * (x - y))
+        .sum::<f64>()
+        .sqrt();
+    p.degrees
+        .to_array()
+        .iter()
+        .zip(q.degrees.to_array())
+        .map(|(x, y)| (x - y).abs())
+        .fold(position, f64::max)
+}
+
+/// The parameters where the deviation of two splines on `mine`'s domain is sampled: the
+/// domain's ends, the interior breakpoints of both knot vectors, and `per_span` evenly spaced
+/// parameters in each span between them (the last end included), increasing.
+pub(crate) fn deviation_samples(
+    mine: &KnotVector,
+    theirs: &KnotVector,
+    per_span: usize,
+) -> Vec<f64> {
+    let domain = mine.domain();
+    let mut breaks = vec![domain.start, domain.end];
+    breaks.extend(mine.interior_breakpoints());
+    breaks.extend(theirs.interior_breakpoints());
+    breaks.retain(|t| (domain.start..=domain.end).contains(t));
+    breaks.sort_by(f64::total_cmp);
+    breaks.dedup();
+    let mut at = Vec::with_capacity(breaks.len() * per_span + 1);
     for w in breaks.windows(2) {
-        for k in 0..=DEVIATION_SAMPLES_PER_SPAN {
-            let t = w[0] + (w[1] - w[0]) * k as f64 / DEVIATION_SAMPLES_PER_SPAN as f64;
-            let (Ok(p), Ok(q)) = (a.evaluate(t), b.evaluate(t)) else {
-                return f64::INFINITY;
-            };
-            let position = p
-                .position
-                .iter()
-                .zip(&q.position)
-                .map(|(x, y)| (x - y) * (x - y))
-                .sum::<f64>()
-                .sqrt();
-            let degrees = p
-                .degrees
-                .to_array()
-                .iter()
-                .zip(q.degrees.to_array())
-                .map(|(x, y)| (x - y).abs())
-                .fold(0.0, f64::max);
-            worst = worst.max(position).max(degrees);
+        for k in 0..per_span {
+            at.push(w[0] + (w[1] - w[0]) * k as f64 / per_span as f64);
         }
     }
-    worst
+    at.push(domain.end);
+    at
+}
+
+/// [`KnotError::NotAnInteriorKnot`] unless `u` is a knot strictly inside the domain.
+pub(crate) fn check_interior_knot(knots: &KnotVector, u: f64) -> Result<(), KnotError> {
+    let interior = knots.interior_breakpoints();
+    if interior.contains(&u) {
+        return Ok(());
+    }
+    let knots = if interior.is_empty() {
+        "none".to_owned()
+    } else {
+        interior
+            .iter()
+            .map(f64::to_string)
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    Err(KnotError::NotAnInteriorKnot { value: u, knots })
+}
+
+/// The knots mapped by the affine map of their domain onto `[start, end]` (the domain's ends
+/// exactly onto `start` and `end`).
+///
+/// # Errors
+/// [`KnotError::BadInterval`] unless `start < end`, both finite, and the mapped knots finite
+/// and non-decreasing.
+pub(crate) fn mapped_knots(
+    knots: &KnotVector,
+    start: f64,
+    end: f64,
+) -> Result<KnotVector, KnotError> {
+    let bad = KnotError::BadInterval { start, end };
+    if !(start.is_finite() && end.is_finite() && start < end) {
+        return Err(bad);
+    }
+    let domain = knots.domain();
+    let scale = (end - start) / (domain.end - domain.start);
+    let mapped: Vec<f64> = knots
+        .knots()
+        .iter()
+        .map(|&k| {
+            if k == domain.start {
+                start
+            } else if k == domain.end {
+                end
+            } else {
+                start + (k - domain.start) * scale
+            }
+        })
+        .collect();
+    if mapped.iter().any(|k| !k.is_finite()) || mapped.windows(2).any(|w| w[0] > w[1]) {
+        return Err(bad);
+    }
+    Ok(KnotVector::from_parts_unchecked(knots.degree(), mapped))
+}
+
+/// Removes the interior knot `u` of the spline `work` (the form the shape is computed from:
+/// homogeneous for rational ones) up to `times` times: each removal must pass Tiller's test
+/// within `tolerance`, give a shape (`build`; `None` when its degrees leave their box) and
+/// keep the shape's deviation from the original (`deviation`) within `tolerance`. Returns the
+/// last spline, its shape (or `None` when no removal was kept), the removals and the
+/// deviation.
+pub(crate) fn remove_while<T>(
+    mut work: Spline,
+    u: f64,
+    times: usize,
+    tolerance: f64,
+    build: impl Fn(&Spline) -> Option<T>,
+    deviation: impl Fn(&T) -> f64,
+) -> (Spline, Option<T>, usize, f64) {
+    let (mut shape, mut removed, mut error) = (None, 0, 0.0);
+    while removed < times && work.knots.multiplicity(u) > 0 {
+        let Some(next) = work.remove_knot_once(u, tolerance) else {
+            break;
+        };
+        let Some(candidate) = build(&next) else {
+            break;
+        };
+        let d = deviation(&candidate);
+        if d.is_nan() || d > tolerance {
+            break;
+        }
+        work = next;
+        shape = Some(candidate);
+        removed += 1;
+        error = d;
+    }
+    (work, shape, removed, error)
+}
+
+/// The degree reduction of the spline `work` (the form the shape is computed from) within
+/// `tolerance`: its reduced pieces ([`Spline::reduced_pieces`]), then every interior knot
+/// removed as [`remove_while`] allows. `build` makes the shape of a spline (projecting its
+/// degrees), `deviation` measures it against the original.
+pub(crate) fn reduce_within<T>(
+    work: &Spline,
+    tolerance: f64,
+    build: impl Fn(&Spline) -> Result<T, ReduceError>,
+    deviation: impl Fn(&T) -> f64,
+) -> Result<DegreeReduction<T>, ReduceError> {
+    let p = work.degree();
+    if p < 2 {
+        return Err(ReduceError::DegreeTooLow { degree: p });
+    }
+    let mut work = work
+        .reduced_pieces()
+        .ok_or(ReduceError::DegreeTooLow { degree: p })?;
+    let mut current = build(&work)?;
+    let mut error = deviation(&current);
+    if error.is_nan() || error > tolerance {
+        return Err(ReduceError::NotWithin {
+            degree: p - 1,
+            tolerance,
+            error,
+        });
+    }
+    for u in work.knots.interior_breakpoints() {
+        let (next, shape, _, e) = remove_while(
+            work.clone(),
+            u,
+            usize::MAX,
+            tolerance,
+            |s| build(s).ok(),
+            &deviation,
+        );
+        if let Some(shape) = shape {
+            work = next;
+            current = shape;
+            error = e;
+        }
+    }
+    Ok(DegreeReduction {
+        curve: current,
+        error,
+    })
 }
 
 /// The degree channels `D..D + 3` of every row clamped onto \[0, 1\] when within rounding of
@@ -96,14 +239,13 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
     /// # Ok::<(), neutrospline::KnotError>(())
     /// ```
     pub fn deviation_from<V: Weighting>(&self, other: &SplineCurve<D, V>) -> f64 {
-        let domain = self.domain();
-        let mut breaks = vec![domain.start, domain.end];
-        breaks.extend(self.knots().interior_breakpoints());
-        breaks.extend(other.knots().interior_breakpoints());
-        breaks.retain(|t| (domain.start..=domain.end).contains(t));
-        breaks.sort_by(f64::total_cmp);
-        breaks.dedup();
-        sampled_deviation(self, other, &breaks)
+        deviation_samples(self.knots(), other.knots(), DEVIATION_SAMPLES_PER_SPAN)
+            .into_iter()
+            .map(|t| match (self.evaluate(t), other.evaluate(t)) {
+                (Ok(p), Ok(q)) => point_deviation(&p, &q),
+                _ => f64::INFINITY,
+            })
+            .fold(0.0, f64::max)
     }
 
     /// The same curve with knot `u` inserted `times` times (Boehm's algorithm repeated).
@@ -179,38 +321,20 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
         times: usize,
         tolerance: f64,
     ) -> Result<KnotRemoval<Self>, KnotError> {
-        let interior = self.knots().interior_breakpoints();
-        if !interior.contains(&u) {
-            let knots = if interior.is_empty() {
-                "none".to_owned()
-            } else {
-                interior
-                    .iter()
-                    .map(f64::to_string)
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            };
-            return Err(KnotError::NotAnInteriorKnot { value: u, knots });
-        }
-        let mut current = self.clone();
-        let mut removed = 0;
-        let mut error = 0.0;
-        while removed < times && current.knots().multiplicity(u) > 0 {
-            let Some(mut spline) = current.spline().remove_knot_once(u, tolerance) else {
-                break;
-            };
-            if !degrees_in_box::<D>(&mut spline) {
-                break;
-            }
-            let candidate = SplineCurve::from_spline(spline);
-            let deviation = self.deviation_from(&candidate);
-            if deviation.is_nan() || deviation > tolerance {
-                break;
-            }
-            current = candidate;
-            removed += 1;
-            error = deviation;
-        }
+        check_interior_knot(self.knots(), u)?;
+        let build = |spline: &Spline| {
+            let mut spline = spline.clone();
+            degrees_in_box::<D>(&mut spline).then(|| SplineCurve::from_spline(spline))
+        };
+        let (_, shape, removed, error) = remove_while(
+            self.spline().clone(),
+            u,
+            times,
+            tolerance,
+            build,
+            |c: &Self| self.deviation_from(c),
+        );
+        let current = shape.unwrap_or_else(|| self.clone());
         Ok(KnotRemoval {
             curve: current,
             removed,
@@ -235,32 +359,8 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn reparametrized(&self, start: f64, end: f64) -> Result<Self, KnotError> {
-        let bad = KnotError::BadInterval { start, end };
-        if !(start.is_finite() && end.is_finite() && start < end) {
-            return Err(bad);
-        }
-        let domain = self.domain();
-        let scale = (end - start) / (domain.end - domain.start);
-        let knots: Vec<f64> = self
-            .knots()
-            .knots()
-            .iter()
-            .map(|&k| {
-                if k == domain.start {
-                    start
-                } else if k == domain.end {
-                    end
-                } else {
-                    start + (k - domain.start) * scale
-                }
-            })
-            .collect();
-        if knots.iter().any(|k| !k.is_finite()) || knots.windows(2).any(|w| w[0] > w[1]) {
-            return Err(bad);
-        }
-        let p = self.degree();
         let spline = Spline {
-            knots: KnotVector::from_parts_unchecked(p, knots),
+            knots: mapped_knots(self.knots(), start, end)?,
             ..self.spline().clone()
         };
         Ok(SplineCurve::from_spline(spline))
@@ -506,48 +606,17 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
         tolerance: f64,
         membership: crate::Membership,
     ) -> Result<DegreeReduction<Self>, ReduceError> {
-        let p = self.degree();
-        if p < 2 {
-            return Err(ReduceError::DegreeTooLow { degree: p });
-        }
-        let mut work = if W::RATIONAL {
+        let work = if W::RATIONAL {
             self.spline().homogeneous()
         } else {
             self.spline().clone()
         };
-        work = work
-            .reduced_pieces()
-            .ok_or(ReduceError::DegreeTooLow { degree: p })?;
-        let mut current = Self::from_work(&work, membership)?;
-        let mut error = self.deviation_from(&current);
-        if error.is_nan() || error > tolerance {
-            return Err(ReduceError::NotWithin {
-                degree: p - 1,
-                tolerance,
-                error,
-            });
-        }
-        for u in work.knots.interior_breakpoints() {
-            while work.knots.multiplicity(u) > 0 {
-                let Some(next) = work.remove_knot_once(u, tolerance) else {
-                    break;
-                };
-                let Ok(candidate) = Self::from_work(&next, membership) else {
-                    break;
-                };
-                let deviation = self.deviation_from(&candidate);
-                if deviation.is_nan() || deviation > tolerance {
-                    break;
-                }
-                work = next;
-                current = candidate;
-                error = deviation;
-            }
-        }
-        Ok(DegreeReduction {
-            curve: current,
-            error,
-        })
+        reduce_within(
+            &work,
+            tolerance,
+            |w| Self::from_work(w, membership),
+            |c: &Self| self.deviation_from(c),
+        )
     }
 }
 

@@ -455,22 +455,12 @@ fn plot_pdf_goes_into_a_latex_paper() {
         eprintln!("plot_pdf_goes_into_a_latex_paper: LaTeX part skipped");
         return;
     }
-    fs::write(
-        dir.path().join("paper.tex"),
+    let text = crate::util::compile_latex(
+        dir.path(),
         "\\documentclass{article}\n\\usepackage{graphicx}\n\\begin{document}\n\
          \\begin{figure}\\centering\\includegraphics{fig.pdf}\\caption{Example 1.}\\end{figure}\n\
          \\end{document}\n",
-    )
-    .unwrap();
-    let latex = Command::new("pdflatex")
-        .args(["-interaction=nonstopmode", "-halt-on-error", "paper.tex"])
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
-    assert!(
-        latex.status.success(),
-        "{}",
-        String::from_utf8_lossy(&latex.stdout)
+        &[],
     );
     let fonts = Command::new("pdffonts")
         .arg("paper.pdf")
@@ -479,12 +469,6 @@ fn plot_pdf_goes_into_a_latex_paper() {
         .unwrap();
     let fonts = String::from_utf8_lossy(&fonts.stdout);
     assert!(fonts.contains("+DejaVuSans "), "{fonts}");
-    let text = Command::new("pdftotext")
-        .args(["paper.pdf", "-"])
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
-    let text = String::from_utf8_lossy(&text.stdout);
     for expected in [
         "truth curve",
         "crisp control polygon",

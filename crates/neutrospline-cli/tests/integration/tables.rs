@@ -154,28 +154,12 @@ fn latex_table_compiles() {
             "table.tex",
         ],
     );
-    std::fs::write(
-        dir.path().join("paper.tex"),
+    let text = crate::util::compile_latex(
+        dir.path(),
         "\\documentclass{article}\n\\usepackage{booktabs}\n\\begin{document}\n\
          \\input{table.tex}\n\\end{document}\n",
-    )
-    .unwrap();
-    let latex = Command::new("pdflatex")
-        .args(["-interaction=nonstopmode", "-halt-on-error", "paper.tex"])
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
-    assert!(
-        latex.status.success(),
-        "{}",
-        String::from_utf8_lossy(&latex.stdout)
+        &["-layout"],
     );
-    let text = Command::new("pdftotext")
-        .args(["-layout", "paper.pdf", "-"])
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
-    let text = String::from_utf8_lossy(&text.stdout);
     // The middle row: t, x, y, T, I, F, then the score (2 + 0.55 - 0.075 - 0.375) / 3 = 0.7.
     let row: Vec<&str> = text
         .lines()

@@ -106,3 +106,27 @@ pub fn rows(table: &str) -> Vec<Vec<f64>> {
         .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
         .collect()
 }
+
+/// Writes `source` to `paper.tex` in `dir` and compiles it with pdflatex (failing the test
+/// with pdflatex's log when it fails); returns the text of `paper.pdf` by pdftotext with
+/// `pdftotext_args` (for example `-layout`).
+pub fn compile_latex(dir: &Path, source: &str, pdftotext_args: &[&str]) -> String {
+    std::fs::write(dir.join("paper.tex"), source).unwrap();
+    let latex = Command::new("pdflatex")
+        .args(["-interaction=nonstopmode", "-halt-on-error", "paper.tex"])
+        .current_dir(dir)
+        .output()
+        .unwrap();
+    assert!(
+        latex.status.success(),
+        "{}",
+        String::from_utf8_lossy(&latex.stdout)
+    );
+    let text = Command::new("pdftotext")
+        .args(pdftotext_args)
+        .args(["paper.pdf", "-"])
+        .current_dir(dir)
+        .output()
+        .unwrap();
+    String::from_utf8_lossy(&text.stdout).into_owned()
+}
