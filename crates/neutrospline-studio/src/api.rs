@@ -16,7 +16,8 @@
 //! | `POST /api/fit` | `{data: {name, text}, options, surface}` | `{model, report}` |
 //!
 //! `figure` holds the figure's options by the names of the plot crate's `FigureRequest` (view,
-//! width, height, title, caption, azimuth, elevation, samples, alpha, color-by), `options` the
+//! width, height, size, dpi, style, no-title, no-caption, title, caption, azimuth, elevation,
+//! samples, alpha, color-by), `options` the
 //! fit's by those of `neutrospline::fit::FitRequest` (with `surface: true`, those of
 //! `neutrospline::fit::SurfaceFitRequest`: `neutrospline fit --surface`), the membership rule
 //! among them: the
@@ -258,7 +259,7 @@ fn page_model(body: &Value) -> Result<Model, Response> {
 
 /// The figure's request from the page: `figure` maps the canonical names of
 /// [`FigureRequest`]'s options (those of `neutrospline plot`: view, width, height, title,
-/// caption, azimuth, elevation, samples, alpha, color-by) to values; a wrong type, an unknown
+/// caption, azimuth, elevation, samples, alpha, color-by, and the print options) to values; a wrong type, an unknown
 /// name or a value out of range is a 400 with the library's message.
 fn figure_request(body: &Value) -> Result<FigureRequest, Response> {
     for key in [

@@ -389,8 +389,8 @@ fn figure_options_are_refused_with_the_librarys_messages() {
         ),
         (
             json!({ "model": EXAMPLE1_JSON, "figure": { "colorBy": "truth" } }),
-            "unknown option \"colorBy\" (the options are view, width, height, title, caption, \
-             azimuth, elevation, samples, alpha, color-by)"
+            "unknown option \"colorBy\" (the options are view, width, height, size, dpi, style, \
+             no-title, no-caption, title, caption, azimuth, elevation, samples, alpha, color-by)"
                 .to_owned(),
         ),
         (

@@ -29,7 +29,8 @@ pub struct KnotRemoval<C> {
 /// Values within this of the degree box \[0, 1\] are rounding, clamped onto it.
 const ROUNDING: f64 = 1e-12;
 
-/// Samples per knot span used by [`max_deviation`].
+/// Samples per knot span used by [`SplineCurve::deviation_from`] (a quarter of them per
+/// direction by `Surface::deviation_from`).
 pub const DEVIATION_SAMPLES_PER_SPAN: usize = 32;
 
 /// The distance of two points of a curve or surface: the larger of the Euclidean distance of

@@ -1,4 +1,4 @@
-//! `neutrospline plot FILE -o OUT.svg|OUT.png --view VIEW`: a figure of a curve or surface.
+//! `neutrospline plot FILE -o OUT.svg|OUT.png|OUT.pdf --view VIEW`: a figure of a curve or surface.
 
 use std::path::{Path, PathBuf};
 
