@@ -27,7 +27,8 @@ impl Parsed {
     /// # Errors
     /// The core's knot, weight and grid errors, located at the key (`degree`, `knots_u`, ...,
     /// or the command-line option that gave it), the knot's line, or the control point.
-    pub(crate) fn into_model(self) -> Result<Model, InputError> {
+    pub(crate) fn into_model(mut self) -> Result<Model, InputError> {
+        self.wrap_periodic()?;
         let shape = self.shape()?;
         let source = |setting: &Option<KnotsSetting>| match setting.as_ref().map(|k| &k.spec) {
             None => KnotSource::Default,
@@ -60,12 +61,17 @@ impl Parsed {
     /// Builds the core curve or surface.
     fn shape(&self) -> Result<Shape, InputError> {
         match &self.structure {
-            Structure::Curve { degree, knots } => {
+            Structure::Curve {
+                degree,
+                knots,
+                periodic,
+            } => {
                 let (degree, knots) = (degree.as_ref(), knots.as_ref());
+                let periodic = is_set(periodic.as_ref());
                 if self.dimension == 3 {
-                    self.curve::<3>(degree, knots).map(Shape::from)
+                    self.curve::<3>(degree, knots, periodic).map(Shape::from)
                 } else {
-                    self.curve::<2>(degree, knots).map(Shape::from)
+                    self.curve::<2>(degree, knots, periodic).map(Shape::from)
                 }
             }
             Structure::Surface {
@@ -75,12 +81,15 @@ impl Parsed {
                 degree_v,
                 knots_u,
                 knots_v,
+                periodic_u,
+                periodic_v,
             } => self
                 .surface(
                     rows,
                     cols,
                     [degree_u.as_ref(), degree_v.as_ref()],
                     [knots_u.as_ref(), knots_v.as_ref()],
+                    [is_set(periodic_u.as_ref()), is_set(periodic_v.as_ref())],
                 )
                 .map(Shape::Surface),
         }
@@ -108,10 +117,73 @@ impl Parsed {
             .collect()
     }
 
+    /// Repeats the first `degree` control points (surfaces: rows and columns) after the
+    /// listed ones along each periodic direction, so that the points are those of the
+    /// unclamped spline the periodic one is (`KnotVector::periodic`); names, weights and
+    /// spreads come along.
+    ///
+    /// # Errors
+    /// A periodic direction of degree 0, located at the `periodic` key; the grid error of a
+    /// surface whose rows and columns do not multiply to the number of points.
+    fn wrap_periodic(&mut self) -> Result<(), InputError> {
+        let check = |parsed: &Parsed,
+                     periodic: Option<&Setting<bool>>,
+                     degree: Option<&Setting<usize>>| {
+            match (is_set(periodic), degree) {
+                (true, Some(d)) if d.value == 0 => Err(parsed.error_at(
+                    &periodic.map(|p| p.origin.clone()).unwrap_or_default(),
+                    "a periodic spline needs degree >= 1 (degree 0 has nothing to join)".to_owned(),
+                )),
+                (true, Some(d)) => Ok(d.value),
+                _ => Ok(0),
+            }
+        };
+        let count = self.points.len();
+        let (rows, cols, extra_u, extra_v) = match &self.structure {
+            Structure::Curve {
+                degree, periodic, ..
+            } => (
+                count,
+                1,
+                check(self, periodic.as_ref(), degree.as_ref())?,
+                0,
+            ),
+            Structure::Surface {
+                rows,
+                cols,
+                degree_u,
+                degree_v,
+                periodic_u,
+                periodic_v,
+                ..
+            } => {
+                let extra_u = check(self, periodic_u.as_ref(), degree_u.as_ref())?;
+                let extra_v = check(self, periodic_v.as_ref(), degree_v.as_ref())?;
+                if rows.value.checked_mul(cols.value) != Some(count) {
+                    // Left for `surface` to refuse with the grid's message.
+                    return Ok(());
+                }
+                (rows.value, cols.value, extra_u, extra_v)
+            }
+        };
+        if (extra_u == 0 && extra_v == 0) || count == 0 {
+            return Ok(());
+        }
+        let mut wrapped = Vec::with_capacity((rows + extra_u) * (cols + extra_v));
+        for i in 0..rows + extra_u {
+            for j in 0..cols + extra_v {
+                wrapped.push(self.points[(i % rows) * cols + j % cols].clone());
+            }
+        }
+        self.points = wrapped;
+        Ok(())
+    }
+
     fn curve<const D: usize>(
         &self,
         degree: Option<&Setting<usize>>,
         knots: Option<&KnotsSetting>,
+        periodic: bool,
     ) -> Result<AnyCurve<D>, InputError> {
         let points = self.control_points::<D>();
         let count = points.len();
@@ -138,7 +210,7 @@ impl Parsed {
         let degree = degree.ok_or_else(|| self.missing(Key::Degree))?;
         let positions: Vec<[f64; D]> = points.iter().map(|p| p.position).collect();
         let knots = self
-            .knot_vector(degree, count, knots, Some(&positions))
+            .knot_vector(degree, count, knots, Some(&positions), periodic)
             .map_err(|e| e.located)?;
         match kind {
             CurveKind::Nurbs => Nurbs::new(points, self.weights(), knots).map(AnyCurve::Nurbs),
@@ -153,9 +225,13 @@ impl Parsed {
         cols: &Setting<usize>,
         degrees: [Option<&Setting<usize>>; 2],
         knots: [Option<&KnotsSetting>; 2],
+        periodic: [bool; 2],
     ) -> Result<Surface, InputError> {
         let count = self.points.len();
-        if rows.value.checked_mul(cols.value) != Some(count) {
+        // Periodic directions were wrapped (`wrap_periodic`): `degree` more rows or columns.
+        let extra = |k: usize| degrees[k].filter(|_| periodic[k]).map_or(0, |d| d.value);
+        let (rows_all, cols_all) = (rows.value + extra(0), cols.value + extra(1));
+        if rows_all.checked_mul(cols_all) != Some(count) {
             let grid = CurveError::GridSize {
                 points: count,
                 rows: rows.value,
@@ -187,29 +263,23 @@ impl Parsed {
                     ));
                 }
             }
-            return Surface::bezier(rows.value, cols.value, points)
-                .map_err(|e| self.surface_error(&e));
+            return Surface::bezier(rows_all, cols_all, points).map_err(|e| self.surface_error(&e));
         }
         let [knots_u, knots_v] = knots;
         let [degree_u, degree_v] = degrees;
         let degree_u = degree_u.ok_or_else(|| self.missing(Key::DegreeU))?;
         let degree_v = degree_v.ok_or_else(|| self.missing(Key::DegreeV))?;
         let knots_u = self
-            .knot_vector::<3>(degree_u, rows.value, knots_u, None)
+            .knot_vector::<3>(degree_u, rows_all, knots_u, None, periodic[0])
             .map_err(|e| self.surface_knot_error(*e, Direction::U))?;
         let knots_v = self
-            .knot_vector::<3>(degree_v, cols.value, knots_v, None)
+            .knot_vector::<3>(degree_v, cols_all, knots_v, None, periodic[1])
             .map_err(|e| self.surface_knot_error(*e, Direction::V))?;
         match kind {
-            SurfaceKind::Nurbs => Surface::nurbs(
-                rows.value,
-                cols.value,
-                points,
-                self.weights(),
-                knots_u,
-                knots_v,
-            ),
-            _ => Surface::bspline(rows.value, cols.value, points, knots_u, knots_v),
+            SurfaceKind::Nurbs => {
+                Surface::nurbs(rows_all, cols_all, points, self.weights(), knots_u, knots_v)
+            }
+            _ => Surface::bspline(rows_all, cols_all, points, knots_u, knots_v),
         }
         .map_err(|e| self.surface_error(&e))
     }
@@ -243,13 +313,15 @@ impl Parsed {
 
     /// The knots of one direction, by the core's constructor for the rule, or validated by
     /// `KnotVector::new`. `positions` is the control polygon, for the rules that need it
-    /// (curves only).
+    /// (curves only). A periodic direction (`count` counting the repeated points) takes
+    /// breakpoints: given, uniform by default, or spaced along the closed polygon.
     fn knot_vector<const D: usize>(
         &self,
         degree: &Setting<usize>,
         count: usize,
         knots: Option<&KnotsSetting>,
         positions: Option<&[[f64; D]]>,
+        periodic: bool,
     ) -> Result<KnotVector, Box<KnotFailure>> {
         let failure = |located: InputError, error: Option<KnotError>| {
             Box::new(KnotFailure {
@@ -260,6 +332,11 @@ impl Parsed {
         };
         let p = degree.value;
         let spec = knots.map(|k| &k.spec);
+        if periodic {
+            return self
+                .periodic_knots(degree, count - p, knots, positions)
+                .map_err(|(located, error)| failure(located, error));
+        }
         let result = match (spec, positions) {
             (None | Some(KnotSpec::Rule(KnotRule::ClampedUniform)), _) => {
                 KnotVector::clamped_uniform(p, count)
@@ -283,6 +360,7 @@ impl Parsed {
                 );
                 return Err(failure(located, None));
             }
+            (Some(KnotSpec::Rule(KnotRule::Uniform)), _) => KnotVector::uniform(p, count),
             (Some(KnotSpec::Explicit(values)), _) => KnotVector::new(values.clone(), p, count),
         };
         result.map_err(|e| {
@@ -304,6 +382,74 @@ impl Parsed {
                 (_, Some(k)) => self.error_at(&k.origin, message),
             };
             failure(located, Some(e))
+        })
+    }
+
+    /// The knots of a periodic direction with `distinct` control points before wrapping.
+    fn periodic_knots<const D: usize>(
+        &self,
+        degree: &Setting<usize>,
+        distinct: usize,
+        knots: Option<&KnotsSetting>,
+        positions: Option<&[[f64; D]]>,
+    ) -> Result<KnotVector, (InputError, Option<KnotError>)> {
+        let p = degree.value;
+        let origin = knots.map(|k| k.origin.clone()).unwrap_or_default();
+        let uniform = || {
+            let breakpoints: Vec<f64> =
+                (0..=distinct).map(|j| j as f64 / distinct as f64).collect();
+            KnotVector::periodic(p, &breakpoints)
+        };
+        let result =
+            match (knots.map(|k| &k.spec), positions) {
+                (None | Some(KnotSpec::Rule(KnotRule::Uniform)), _) => uniform(),
+                (
+                    Some(KnotSpec::Rule(rule @ (KnotRule::ChordLength | KnotRule::Centripetal))),
+                    Some(positions),
+                ) => KnotVector::periodic_averaged(
+                    p,
+                    &positions[..distinct],
+                    *rule == KnotRule::Centripetal,
+                ),
+                (Some(KnotSpec::Rule(rule)), _) => {
+                    let message =
+                        format!(
+                    "{} knots cannot close a periodic {} (give uniform{}, or the breakpoints: \
+                     {} values from the start of one period to its end)",
+                    rule.name(),
+                    if positions.is_some() { "curve" } else { "surface" },
+                    if positions.is_some() { ", chord-length, centripetal" } else { "" },
+                    distinct + 1
+                );
+                    return Err((self.error_at(&origin, message), None));
+                }
+                (Some(KnotSpec::Explicit(values)), _) if values.len() != distinct + 1 => {
+                    let message = format!(
+                        "a periodic spline of {distinct} control points takes {} breakpoints (the \
+                     control points + 1, from the start of one period to its end), not {}",
+                        distinct + 1,
+                        values.len()
+                    );
+                    return Err((self.error_at(&origin, message), None));
+                }
+                (Some(KnotSpec::Explicit(values)), _) => KnotVector::periodic(p, values),
+            };
+        result.map_err(|e| {
+            let message = format!("{e} (periodic breakpoints)");
+            let located = match (&e, knots) {
+                (
+                    KnotError::Decreasing { index, .. } | KnotError::NotFinite { index, .. },
+                    Some(k),
+                ) => self.error_at(
+                    &Origin {
+                        line: k.line_of_knot(*index),
+                        field: k.origin.field.clone(),
+                    },
+                    message,
+                ),
+                _ => self.error_at(&origin, message),
+            };
+            (located, Some(e))
         })
     }
 
@@ -350,4 +496,9 @@ impl Parsed {
     fn internal(&self, what: &str) -> InputError {
         self.error_at(&Origin::default(), format!("internal error: {what}"))
     }
+}
+
+/// Whether a flag is given and true.
+fn is_set(flag: Option<&Setting<bool>>) -> bool {
+    flag.is_some_and(|f| f.value)
 }

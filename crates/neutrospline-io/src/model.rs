@@ -289,6 +289,67 @@ impl Model {
         &self.knot_sources
     }
 
+    /// For each knot direction (as [`Model::knot_sources`]), the number of distinct control
+    /// points when the direction is periodic (`KnotVector::periodic_breakpoints`) and
+    /// everything a file holds of a control point (position, degrees, weight, name, spread)
+    /// repeats after them; `None` otherwise. The writers write such a model in its periodic
+    /// form: `periodic = true`, the breakpoints as knots and the distinct control points.
+    pub fn periodic_counts(&self) -> Vec<Option<usize>> {
+        let points = self.shape.point_data();
+        let same = |a: usize, b: usize| {
+            let (p, q) = (&points[a], &points[b]);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            bits(&p.position) == bits(&q.position)
+                && bits(&p.degrees.to_array()) == bits(&q.degrees.to_array())
+                && p.weight.map(f64::to_bits) == q.weight.map(f64::to_bits)
+                && self.point_names[a] == self.point_names[b]
+                && self.spreads[a] == self.spreads[b]
+        };
+        // (knots, points along the direction, lines across it, the index of (along, across))
+        type Direction<'a> = (
+            &'a neutrospline::KnotVector,
+            usize,
+            usize,
+            Box<dyn Fn(usize, usize) -> usize>,
+        );
+        let directions: Vec<Direction<'_>> = match &self.shape {
+            Shape::Curve(_) => self
+                .shape
+                .curve_knots()
+                .map(|k| -> Direction<'_> { (k, points.len(), 1, Box::new(|i, _| i)) })
+                .into_iter()
+                .collect(),
+            Shape::Surface(s) if self.kind().has_knots() => {
+                let cols = s.cols();
+                vec![
+                    (
+                        s.knots_u(),
+                        s.rows(),
+                        cols,
+                        Box::new(move |i, j| i * cols + j),
+                    ),
+                    (
+                        s.knots_v(),
+                        cols,
+                        s.rows(),
+                        Box::new(move |j, i| i * cols + j),
+                    ),
+                ]
+            }
+            Shape::Surface(_) => Vec::new(),
+        };
+        directions
+            .into_iter()
+            .map(|(knots, count, across, index)| {
+                knots.periodic_breakpoints()?;
+                let n = count - knots.degree();
+                (n..count)
+                    .all(|i| (0..across).all(|line| same(index(i, line), index(i - n, line))))
+                    .then_some(n)
+            })
+            .collect()
+    }
+
     /// The options that read [`crate::to_csv_string`]`(self)` back into this model (without its
     /// name and description, which a CSV file cannot hold): the kind, the membership rule, the
     /// degree(s), explicit knots and the grid.
@@ -298,22 +359,35 @@ impl Model {
             membership: Some(self.membership),
             ..ReadOptions::default()
         };
-        let explicit = |k: &neutrospline::KnotVector| Some(KnotSpec::Explicit(k.knots().to_vec()));
+        let periodic = self.periodic_counts();
+        let periodic = |k: usize| periodic.get(k).copied().flatten();
+        // Periodic directions as the writers write them: breakpoints, distinct points.
+        let explicit = |k: &neutrospline::KnotVector, periodic: Option<usize>| {
+            let values = match periodic {
+                Some(_) => k.periodic_breakpoints().unwrap_or_default(),
+                None => k.knots(),
+            };
+            Some(KnotSpec::Explicit(values.to_vec()))
+        };
+        let flag = |periodic: Option<usize>| periodic.map(|_| true);
         match &self.shape {
             Shape::Curve(_) => {
                 if let Some(knots) = self.shape.curve_knots() {
                     options.degree = self.shape.curve_degree();
-                    options.knots = explicit(knots);
+                    options.knots = explicit(knots, periodic(0));
+                    options.periodic = flag(periodic(0));
                 }
             }
             Shape::Surface(s) => {
-                options.rows = Some(s.rows());
-                options.cols = Some(s.cols());
+                options.rows = Some(periodic(0).unwrap_or(s.rows()));
+                options.cols = Some(periodic(1).unwrap_or(s.cols()));
                 if self.kind().has_knots() {
                     options.degree_u = Some(s.degree_u());
                     options.degree_v = Some(s.degree_v());
-                    options.knots_u = explicit(s.knots_u());
-                    options.knots_v = explicit(s.knots_v());
+                    options.knots_u = explicit(s.knots_u(), periodic(0));
+                    options.knots_v = explicit(s.knots_v(), periodic(1));
+                    options.periodic_u = flag(periodic(0));
+                    options.periodic_v = flag(periodic(1));
                 }
             }
         }

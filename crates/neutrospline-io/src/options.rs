@@ -44,6 +44,14 @@ pub struct ReadOptions {
     pub knots_u: Option<KnotSpec>,
     /// A surface's knots along v (`--knots-v`).
     pub knots_v: Option<KnotSpec>,
+    /// Whether a B-spline or NURBS curve is periodic (closed; `--periodic`): the control
+    /// points listed are the distinct ones and the knots are breakpoints
+    /// (`KnotVector::periodic`).
+    pub periodic: Option<bool>,
+    /// Whether a surface is periodic along u (`--periodic-u`).
+    pub periodic_u: Option<bool>,
+    /// Whether a surface is periodic along v (`--periodic-v`).
+    pub periodic_v: Option<bool>,
     /// The size limits.
     pub limits: Limits,
     /// How a CSV table is read: delimiter, decimal comma, columns mapped or left out
@@ -65,6 +73,9 @@ impl ReadOptions {
             Key::DegreeV => number(self.degree_v),
             Key::KnotsU => knots(&self.knots_u),
             Key::KnotsV => knots(&self.knots_v),
+            Key::Periodic => self.periodic.map(KeyValue::Flag),
+            Key::PeriodicU => self.periodic_u.map(KeyValue::Flag),
+            Key::PeriodicV => self.periodic_v.map(KeyValue::Flag),
         }
     }
 

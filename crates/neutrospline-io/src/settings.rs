@@ -97,14 +97,17 @@ pub enum KnotRule {
     ChordLength,
     /// `KnotVector::centripetal`: clamped, spaced like the square roots of the edges.
     Centripetal,
+    /// `KnotVector::uniform`: unclamped, evenly spaced, the domain \[0, 1\].
+    Uniform,
 }
 
 impl KnotRule {
     /// Every rule, in the order they are listed in messages.
-    pub const ALL: [KnotRule; 3] = [
+    pub const ALL: [KnotRule; 4] = [
         KnotRule::ClampedUniform,
         KnotRule::ChordLength,
         KnotRule::Centripetal,
+        KnotRule::Uniform,
     ];
 
     /// The name used in files and on the command line.
@@ -113,6 +116,7 @@ impl KnotRule {
             KnotRule::ClampedUniform => "clamped-uniform",
             KnotRule::ChordLength => "chord-length",
             KnotRule::Centripetal => "centripetal",
+            KnotRule::Uniform => "uniform",
         }
     }
 
@@ -121,7 +125,7 @@ impl KnotRule {
         KnotRule::ALL.into_iter().find(|k| k.name() == name)
     }
 
-    /// `clamped-uniform, chord-length, centripetal`.
+    /// `clamped-uniform, chord-length, centripetal, uniform`.
     pub fn known_list() -> String {
         join(KnotRule::ALL.iter().map(|k| k.name()))
     }
@@ -218,8 +222,10 @@ pub(crate) enum Structure {
     Curve {
         /// The polynomial degree.
         degree: Option<Setting<usize>>,
-        /// The knots.
+        /// The knots (of a periodic curve: its breakpoints).
         knots: Option<KnotsSetting>,
+        /// Whether the curve is periodic (closed).
+        periodic: Option<Setting<bool>>,
     },
     /// A surface over a `rows x cols` grid.
     Surface {
@@ -235,6 +241,10 @@ pub(crate) enum Structure {
         knots_u: Option<KnotsSetting>,
         /// Knots in v.
         knots_v: Option<KnotsSetting>,
+        /// Whether the surface is periodic (closed) along u.
+        periodic_u: Option<Setting<bool>>,
+        /// Whether the surface is periodic (closed) along v.
+        periodic_v: Option<Setting<bool>>,
     },
 }
 
@@ -257,11 +267,17 @@ pub(crate) enum Key {
     KnotsU,
     /// `knots_v` / `--knots-v`.
     KnotsV,
+    /// `periodic` / `--periodic`.
+    Periodic,
+    /// `periodic_u` / `--periodic-u`.
+    PeriodicU,
+    /// `periodic_v` / `--periodic-v`.
+    PeriodicV,
 }
 
 impl Key {
     /// Every key, in file order.
-    pub const ALL: [Key; 8] = [
+    pub const ALL: [Key; 11] = [
         Key::Degree,
         Key::Knots,
         Key::Rows,
@@ -270,6 +286,9 @@ impl Key {
         Key::DegreeV,
         Key::KnotsU,
         Key::KnotsV,
+        Key::Periodic,
+        Key::PeriodicU,
+        Key::PeriodicV,
     ];
 
     /// The key in files.
@@ -283,6 +302,9 @@ impl Key {
             Key::DegreeV => "degree_v",
             Key::KnotsU => "knots_u",
             Key::KnotsV => "knots_v",
+            Key::Periodic => "periodic",
+            Key::PeriodicU => "periodic_u",
+            Key::PeriodicV => "periodic_v",
         }
     }
 
@@ -297,6 +319,9 @@ impl Key {
             Key::DegreeV => "--degree-v",
             Key::KnotsU => "--knots-u",
             Key::KnotsV => "--knots-v",
+            Key::Periodic => "--periodic",
+            Key::PeriodicU => "--periodic-u",
+            Key::PeriodicV => "--periodic-v",
         }
     }
 
@@ -304,9 +329,11 @@ impl Key {
     pub fn applies_to(self, kind: Kind) -> bool {
         match self {
             Key::Degree => !kind.is_surface(),
-            Key::Knots => !kind.is_surface() && kind.has_knots(),
+            Key::Knots | Key::Periodic => !kind.is_surface() && kind.has_knots(),
             Key::Rows | Key::Cols | Key::DegreeU | Key::DegreeV => kind.is_surface(),
-            Key::KnotsU | Key::KnotsV => kind.is_surface() && kind.has_knots(),
+            Key::KnotsU | Key::KnotsV | Key::PeriodicU | Key::PeriodicV => {
+                kind.is_surface() && kind.has_knots()
+            }
         }
     }
 
@@ -318,7 +345,12 @@ impl Key {
             }
             Key::Rows | Key::Cols => kind.is_surface(),
             Key::DegreeU | Key::DegreeV => kind.is_surface() && kind.has_knots(),
-            Key::Knots | Key::KnotsU | Key::KnotsV => false,
+            Key::Knots
+            | Key::KnotsU
+            | Key::KnotsV
+            | Key::Periodic
+            | Key::PeriodicU
+            | Key::PeriodicV => false,
         }
     }
 
@@ -341,6 +373,7 @@ impl Key {
             Key::DegreeU => "the polynomial degree along u",
             Key::DegreeV => "the polynomial degree along v",
             Key::Knots | Key::KnotsU | Key::KnotsV => "the knots",
+            Key::Periodic | Key::PeriodicU | Key::PeriodicV => "whether the shape is closed",
         }
     }
 
@@ -353,6 +386,11 @@ impl Key {
     pub const fn is_knots(self) -> bool {
         matches!(self, Key::Knots | Key::KnotsU | Key::KnotsV)
     }
+
+    /// Whether the value is `true` or `false`.
+    pub const fn is_flag(self) -> bool {
+        matches!(self, Key::Periodic | Key::PeriodicU | Key::PeriodicV)
+    }
 }
 
 /// A value of a structure key: a number, or knots.
@@ -362,6 +400,8 @@ pub(crate) enum KeyValue {
     Number(usize),
     /// Knots.
     Knots(KnotSpec),
+    /// `true` or `false`.
+    Flag(bool),
 }
 
 impl fmt::Display for KeyValue {
@@ -369,6 +409,7 @@ impl fmt::Display for KeyValue {
         match self {
             KeyValue::Number(n) => write!(f, "{n}"),
             KeyValue::Knots(k) => write!(f, "{k}"),
+            KeyValue::Flag(b) => write!(f, "{b}"),
         }
     }
 }
@@ -434,8 +475,12 @@ mod tests {
             Ok(KnotSpec::Explicit(vec![0.0, 0.0, 0.5, 1.0, 1.0]))
         );
         assert_eq!(
-            KnotSpec::parse_option("uniform").unwrap_err(),
-            "unknown knot rule `uniform` (expected one of: clamped-uniform, chord-length, centripetal, or knot values K0,K1,...)"
+            KnotSpec::parse_option("uniform"),
+            Ok(KnotSpec::Rule(KnotRule::Uniform))
+        );
+        assert_eq!(
+            KnotSpec::parse_option("open").unwrap_err(),
+            "unknown knot rule `open` (expected one of: clamped-uniform, chord-length, centripetal, uniform, or knot values K0,K1,...)"
         );
         assert_eq!(
             KnotSpec::parse_option("0,x,1").unwrap_err(),

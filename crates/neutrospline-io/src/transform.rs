@@ -514,10 +514,7 @@ fn curve_op<const D: usize>(
             let r = curve
                 .without_knot(*value, times, *tolerance)
                 .map_err(|e| e.to_string())?;
-            let note = format!(
-                "removed knot {value} {} of {times} times; largest deviation found {:e} (tolerance {tolerance:e})",
-                r.removed, r.error
-            );
+            let note = removal_note(&value.to_string(), times, r.removed, r.error, *tolerance);
             return Ok((vec![r.curve], note, Some((times, r.removed))));
         }
         Operation::Split(t) => {
@@ -609,9 +606,12 @@ fn surface_op(
             let r = surface
                 .remove_knot(direction, *value, times, *tolerance)
                 .map_err(|e| format!("knots_{direction}: {e}"))?;
-            let note = format!(
-                "removed knot {direction} = {value} {} of {times} times; largest deviation found {:e} (tolerance {tolerance:e})",
-                r.removed, r.error
+            let note = removal_note(
+                &format!("{direction} = {value}"),
+                times,
+                r.removed,
+                r.error,
+                *tolerance,
             );
             return Ok((vec![r.curve], note, Some((times, r.removed))));
         }
@@ -782,4 +782,20 @@ pub fn transform(
         summary,
         removals,
     })
+}
+
+/// What a knot removal did: how many times of the `times` asked, and the deviation, or
+/// that the first removal already broke the tolerance.
+fn removal_note(knot: &str, times: usize, removed: usize, error: f64, tolerance: f64) -> String {
+    if removed == 0 {
+        format!(
+            "knot {knot} not removed: removing it once would move the curve by more than the \
+             tolerance {tolerance:e}"
+        )
+    } else {
+        format!(
+            "removed knot {knot} {removed} of {times} times; largest deviation found {error:e} \
+             (tolerance {tolerance:e})"
+        )
+    }
 }

@@ -57,7 +57,7 @@ use crate::tree::{found, Entry, JsonNode, Node, TomlNode, Value};
 use crate::{Format, InputError, ReadOptions};
 
 /// The keys of a model's top-level table.
-const TOP_KEYS: [&str; 13] = [
+const TOP_KEYS: [&str; 16] = [
     "kind",
     "name",
     "description",
@@ -70,6 +70,9 @@ const TOP_KEYS: [&str; 13] = [
     "degree_v",
     "knots_u",
     "knots_v",
+    "periodic",
+    "periodic_u",
+    "periodic_v",
     "control_points",
 ];
 
@@ -443,7 +446,16 @@ impl<'a> Walker<'a> {
                     value,
                     origin: d.origin,
                 }),
-                KeyValue::Knots(_) => None,
+                KeyValue::Knots(_) | KeyValue::Flag(_) => None,
+            })
+        };
+        let flag = |v: Option<Declared>| {
+            v.and_then(|d| match d.value {
+                KeyValue::Flag(value) => Some(Setting {
+                    value,
+                    origin: d.origin,
+                }),
+                KeyValue::Knots(_) | KeyValue::Number(_) => None,
             })
         };
         let knots = |v: Option<Declared>| {
@@ -453,7 +465,7 @@ impl<'a> Walker<'a> {
                     origin: d.origin,
                     lines: d.lines,
                 }),
-                KeyValue::Number(_) => None,
+                KeyValue::Number(_) | KeyValue::Flag(_) => None,
             })
         };
         if kind.is_surface() {
@@ -474,11 +486,14 @@ impl<'a> Walker<'a> {
                 degree_v: number(take(Key::DegreeV)),
                 knots_u: knots(take(Key::KnotsU)),
                 knots_v: knots(take(Key::KnotsV)),
+                periodic_u: flag(take(Key::PeriodicU)),
+                periodic_v: flag(take(Key::PeriodicV)),
             })
         } else {
             Ok(Structure::Curve {
                 degree: number(take(Key::Degree)),
                 knots: knots(take(Key::Knots)),
+                periodic: flag(take(Key::Periodic)),
             })
         }
     }
@@ -522,6 +537,12 @@ impl<'a> Walker<'a> {
                         KnotRule::known_list()
                     ),
                 )),
+            };
+        }
+        if key.is_flag() {
+            return match node.value {
+                Value::Bool(value) => Ok((KeyValue::Flag(value), Vec::new())),
+                _ => Err(self.expected(node, path, "true or false")),
             };
         }
         let (min, what) = if key.is_count() {

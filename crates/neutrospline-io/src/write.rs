@@ -27,34 +27,57 @@ enum Setting {
     Integer(usize),
     /// Knot values.
     Knots(Vec<f64>),
+    /// `true` (a periodic direction).
+    Flag,
 }
 
-/// The structure keys of a model, in the readers' order.
-fn settings(shape: &Shape) -> Vec<(&'static str, Setting)> {
-    let knots = |k: &neutrospline::KnotVector| Setting::Knots(k.knots().to_vec());
+/// What a file writes of a model's shape: the structure keys in the readers' order, and the
+/// indices of the control points it lists. A periodic direction ([`Model::periodic_counts`])
+/// is written as `periodic = true`, its breakpoints as knots and its distinct control points.
+fn layout(model: &Model) -> (Vec<(&'static str, Setting)>, Vec<usize>) {
+    let shape = model.shape();
+    let periodic = model.periodic_counts();
+    let knots = |k: &neutrospline::KnotVector, periodic: Option<usize>| match periodic {
+        Some(_) => Setting::Knots(k.periodic_breakpoints().unwrap_or_default().to_vec()),
+        None => Setting::Knots(k.knots().to_vec()),
+    };
+    let flag = |key: &'static str, periodic: Option<usize>| periodic.map(|_| (key, Setting::Flag));
     match shape {
         Shape::Surface(s) => {
+            let (pu, pv) = (
+                periodic.first().copied().flatten(),
+                periodic.get(1).copied().flatten(),
+            );
+            let (rows, cols) = (pu.unwrap_or(s.rows()), pv.unwrap_or(s.cols()));
             let mut keys = vec![
-                ("rows", Setting::Integer(s.rows())),
-                ("cols", Setting::Integer(s.cols())),
+                ("rows", Setting::Integer(rows)),
+                ("cols", Setting::Integer(cols)),
                 ("degree_u", Setting::Integer(s.degree_u())),
                 ("degree_v", Setting::Integer(s.degree_v())),
             ];
             if shape.kind().has_knots() {
-                keys.push(("knots_u", knots(s.knots_u())));
-                keys.push(("knots_v", knots(s.knots_v())));
+                keys.push(("knots_u", knots(s.knots_u(), pu)));
+                keys.push(("knots_v", knots(s.knots_v(), pv)));
+                keys.extend(flag("periodic_u", pu));
+                keys.extend(flag("periodic_v", pv));
             }
-            keys
+            let all_cols = s.cols();
+            let kept = (0..rows)
+                .flat_map(|i| (0..cols).map(move |j| i * all_cols + j))
+                .collect();
+            (keys, kept)
         }
-        _ => {
-            let mut keys = Vec::with_capacity(2);
+        Shape::Curve(_) => {
+            let p = periodic.first().copied().flatten();
+            let mut keys = Vec::with_capacity(3);
             if let Some(degree) = shape.curve_degree() {
                 keys.push(("degree", Setting::Integer(degree)));
             }
             if let Some(k) = shape.curve_knots() {
-                keys.push(("knots", knots(k)));
+                keys.push(("knots", knots(k, p)));
             }
-            keys
+            keys.extend(flag("periodic", p));
+            (keys, (0..p.unwrap_or(shape.control_count())).collect())
         }
     }
 }
@@ -142,6 +165,16 @@ fn spread_value(spread: &Spread<3>, key: usize) -> f64 {
 }
 
 /// Writes `[v0, v1, ...]`.
+fn push_setting(out: &mut String, setting: &Setting) {
+    match setting {
+        Setting::Integer(n) => {
+            let _ = write!(out, "{n}");
+        }
+        Setting::Knots(k) => push_array(out, k),
+        Setting::Flag => out.push_str("true"),
+    }
+}
+
 fn push_array(out: &mut String, values: &[f64]) {
     out.push('[');
     for (i, &v) in values.iter().enumerate() {
@@ -195,24 +228,16 @@ pub fn to_toml_string(model: &Model) -> String {
         }
     }
     let _ = writeln!(out, "membership = \"{}\"", model.membership());
-    for (key, setting) in settings(model.shape()) {
+    let (settings, kept) = layout(model);
+    for (key, setting) in settings {
         let _ = write!(out, "{key} = ");
-        match setting {
-            Setting::Integer(n) => {
-                let _ = write!(out, "{n}");
-            }
-            Setting::Knots(k) => push_array(&mut out, &k),
-        }
+        push_setting(&mut out, &setting);
         out.push('\n');
     }
     let spreads = model.spreads();
-    for (i, (point, name)) in model
-        .shape()
-        .point_data()
-        .iter()
-        .zip(model.point_names())
-        .enumerate()
-    {
+    let points = model.shape().point_data();
+    for i in kept {
+        let (point, name) = (&points[i], &model.point_names()[i]);
         out.push_str("\n[[control_points]]\n");
         if let Some(name) = name {
             out.push_str("name = ");
@@ -246,19 +271,16 @@ pub fn to_json_string(model: &Model) -> String {
         }
     }
     let _ = write!(out, ",\n  \"membership\": \"{}\"", model.membership());
-    for (key, setting) in settings(model.shape()) {
+    let (settings, kept) = layout(model);
+    for (key, setting) in settings {
         let _ = write!(out, ",\n  \"{key}\": ");
-        match setting {
-            Setting::Integer(n) => {
-                let _ = write!(out, "{n}");
-            }
-            Setting::Knots(k) => push_array(&mut out, &k),
-        }
+        push_setting(&mut out, &setting);
     }
     out.push_str(",\n  \"control_points\": [");
     let points = model.shape().point_data();
-    for (i, (point, name)) in points.iter().zip(model.point_names()).enumerate() {
-        out.push_str(if i == 0 { "\n    { " } else { ",\n    { " });
+    for (k, &i) in kept.iter().enumerate() {
+        let (point, name) = (&points[i], &model.point_names()[i]);
+        out.push_str(if k == 0 { "\n    { " } else { ",\n    { " });
         let mut first = true;
         if let Some(name) = name {
             out.push_str("\"name\": ");
@@ -330,6 +352,7 @@ pub fn to_csv_string(model: &Model) -> Result<String, WriteError> {
     let names = model.point_names();
     let named = names.iter().any(Option::is_some);
     let points = model.shape().point_data();
+    let (_, kept) = layout(model);
     let mut out = String::new();
     let mut header: Vec<&str> = Vec::new();
     if named {
@@ -345,7 +368,8 @@ pub fn to_csv_string(model: &Model) -> Result<String, WriteError> {
     out.push_str(&header.join(","));
     out.push('\n');
     let mut row = String::new();
-    for (index, (point, name)) in points.iter().zip(names).enumerate() {
+    for index in kept {
+        let (point, name) = (&points[index], &names[index]);
         row.clear();
         if named {
             if let Some(name) = name {

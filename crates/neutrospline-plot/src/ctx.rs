@@ -40,6 +40,8 @@ pub(crate) struct Ctx<'a> {
     pub curve: Vec<Pt>,
     pub controls: &'a [Pt],
     pub names: &'a [String],
+    /// How many control points, from the first, get a name or callout.
+    pub labelled: usize,
     pub title: String,
     pub caption: String,
     /// The data overlay, for the view that draws it (`None` for every other view).
@@ -110,7 +112,8 @@ impl Ctx<'_> {
             return;
         }
         let keep = Keep::new(obstacles, bounds, avoid);
-        draw_names(svg, &self.theme, at, self.names, &keep);
+        let shown = self.labelled.min(at.len()).min(self.names.len());
+        draw_names(svg, &self.theme, &at[..shown], &self.names[..shown], &keep);
     }
 
     /// A figure of one drawing with `legend` at `place`: `draw` draws into the plot area, given

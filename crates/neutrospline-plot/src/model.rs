@@ -276,6 +276,9 @@ pub struct PlotModel {
     /// Rows and columns of a surface's control net.
     grid: Option<(usize, usize)>,
     names: Vec<String>,
+    /// The control points that get a name or callout: all, or a periodic curve's distinct
+    /// ones (its last `degree` repeat its first).
+    labelled: Option<usize>,
     label: String,
     data: Option<DataOverlay>,
     /// The fuzzy position of a curve (control point spreads, SPEC section 9), for the band
@@ -350,6 +353,7 @@ impl PlotModel {
             controls: to_pts(controls, "control point")?,
             grid: None,
             names: Vec::new(),
+            labelled: None,
             label: CURVE_LABEL.to_string(),
             data: None,
             band: None,
@@ -387,7 +391,8 @@ impl PlotModel {
             CurveKind::BSpline => BSPLINE_LABEL,
             CurveKind::Nurbs => NURBS_LABEL,
         };
-        let model = PlotModel::from_curve(curve.clone(), &curve.control_points())?;
+        let mut model = PlotModel::from_curve(curve.clone(), &curve.control_points())?;
+        model.labelled = curve.periodic_count();
         Ok(model.with_label(label))
     }
 
@@ -459,6 +464,7 @@ impl PlotModel {
             controls: to_pts(&surface.control_points(), "control point")?,
             grid: Some((surface.rows(), surface.cols())),
             names: Vec::new(),
+            labelled: None,
             label: label.to_string(),
             data: None,
             band: None,
@@ -695,6 +701,12 @@ impl PlotModel {
         &self.controls
     }
 
+    /// How many control points, from the first, are named or called out (a periodic curve's
+    /// copies of its first points are not).
+    pub(crate) fn labelled(&self) -> usize {
+        self.labelled.unwrap_or(self.controls.len())
+    }
+
     /// The curve points: the given samples, or `samples` evaluations (none for a surface).
     pub(crate) fn curve_points(&self, samples: usize) -> Result<Vec<Pt>, PlotError> {
         match &self.curve {
@@ -735,6 +747,7 @@ impl<const D: usize> From<&Bezier<D>> for PlotModel {
             controls,
             grid: None,
             names: Vec::new(),
+            labelled: None,
             label: BEZIER_LABEL.to_string(),
             data: None,
             band: None,

@@ -94,7 +94,15 @@ pub fn render_drawing(
         };
         (Some(data), &[][..], &[][..])
     } else {
-        (None, model.controls(), model.names())
+        // A periodic curve's polygon closes after its distinct points: P0 .. P(n-1), P0
+        // (its other repeated points add nothing to the picture).
+        let controls = model.controls();
+        let shown = if model.labelled() < controls.len() {
+            model.labelled() + 1
+        } else {
+            controls.len()
+        };
+        (None, &controls[..shown], model.names())
     };
     let title = match options.title() {
         Some(t) => t.to_string(),
@@ -112,6 +120,7 @@ pub fn render_drawing(
         curve,
         controls,
         names,
+        labelled: model.labelled().min(controls.len()),
         title,
         caption: options.caption().unwrap_or("").to_string(),
         data,

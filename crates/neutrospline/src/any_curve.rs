@@ -66,6 +66,16 @@ impl<const D: usize> AnyCurve<D> {
         }
     }
 
+    /// `Some(n)` for a periodic B-spline or NURBS curve with `n` distinct control points
+    /// ([`crate::BSpline::periodic_count`]); `None` otherwise.
+    pub fn periodic_count(&self) -> Option<usize> {
+        match self {
+            AnyCurve::Bezier(_) => None,
+            AnyCurve::BSpline(c) => c.periodic_count(),
+            AnyCurve::Nurbs(c) => c.periodic_count(),
+        }
+    }
+
     /// The weights (NURBS curves).
     pub fn weights(&self) -> Option<&[f64]> {
         match self {

@@ -180,6 +180,141 @@ impl KnotVector {
         Ok(KnotVector { degree, knots })
     }
 
+    /// Unclamped uniform knots whose domain is \[0, 1\]: `u_i = (i - p) / (count - p)`,
+    /// `i = 0 ..= count + p`, for `count >= degree + 1` control points. The curve does not
+    /// pass through its end control points; `knots = "uniform"` in a model file.
+    ///
+    /// ```
+    /// use neutrospline::KnotVector;
+    /// let k = KnotVector::uniform(2, 4)?;
+    /// assert_eq!(k.knots(), &[-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0]);
+    /// assert_eq!(k.domain(), 0.0..1.0);
+    /// # Ok::<(), neutrospline::KnotError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`KnotError::TooFewControlPoints`] when `count <= degree`.
+    pub fn uniform(degree: usize, count: usize) -> Result<Self, KnotError> {
+        if count <= degree {
+            return Err(KnotError::TooFewControlPoints { count, degree });
+        }
+        let spans = (count - degree) as f64;
+        let knots = (0..=count + degree)
+            .map(|i| (i as f64 - degree as f64) / spans)
+            .collect();
+        KnotVector::new(knots, degree, count)
+    }
+
+    /// The knots of a periodic (closed) spline of `degree` over the breakpoints
+    /// `tau_0 <= ... <= tau_n` of one period `T = tau_n - tau_0 > 0` (docs/model.md,
+    /// "Knot vectors"): the unclamped vector of the `n + p` control points `P_0 .. P_{n-1}`,
+    /// `P_0 .. P_{p-1}` that the periodic spline is,
+    /// `u_{p+j} = tau_j` for `j = 0 ..= n`, `u_{p+j} = tau_{j-n} + T` above and
+    /// `u_{p+j} = tau_{j+n} - T` below. The domain is `[tau_0, tau_n]` and the curve joins
+    /// itself there with `C^(p-1)` continuity (less at repeated breakpoints).
+    ///
+    /// ```
+    /// use neutrospline::KnotVector;
+    /// let k = KnotVector::periodic(2, &[0.0, 0.25, 0.5, 1.0])?;
+    /// assert_eq!(k.knots(), &[-0.75, -0.5, 0.0, 0.25, 0.5, 1.0, 1.25, 1.5]);
+    /// assert_eq!(k.control_count(), 5); // 3 distinct control points, then the first 2 again
+    /// assert_eq!(k.periodic_breakpoints(), Some(&[0.0, 0.25, 0.5, 1.0][..]));
+    /// # Ok::<(), neutrospline::KnotError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`KnotError::NotFinite`], [`KnotError::Decreasing`] for the breakpoints (indexed among
+    /// them), [`KnotError::TooFewControlPoints`] for fewer than two breakpoints,
+    /// [`KnotError::EmptyDomain`] when `tau_n = tau_0`, and the checks of [`KnotVector::new`]
+    /// on the result (a breakpoint repeated more than `degree + 1` times).
+    pub fn periodic(degree: usize, breakpoints: &[f64]) -> Result<Self, KnotError> {
+        for (index, &value) in breakpoints.iter().enumerate() {
+            if !value.is_finite() {
+                return Err(KnotError::NotFinite { index, value });
+            }
+            if index > 0 && value < breakpoints[index - 1] {
+                return Err(KnotError::Decreasing {
+                    index,
+                    value,
+                    prev: breakpoints[index - 1],
+                });
+            }
+        }
+        let n = breakpoints.len().saturating_sub(1);
+        if n == 0 {
+            return Err(KnotError::TooFewControlPoints {
+                count: n,
+                degree: 0,
+            });
+        }
+        let (first, last) = (breakpoints[0], breakpoints[n]);
+        if first >= last {
+            return Err(KnotError::EmptyDomain {
+                p: degree,
+                p_end: degree + n,
+                start_value: first,
+            });
+        }
+        KnotVector::new(periodic_extension(degree, breakpoints), degree, n + degree)
+    }
+
+    /// Periodic knots ([`KnotVector::periodic`]) for the closed control polygon `positions`
+    /// (the distinct control points): the breakpoints are spaced like its edges, the closing
+    /// one from the last point back to the first included (chord length; with `centripetal`,
+    /// like their square roots), on \[0, 1\]. When an edge has length zero the breakpoints are
+    /// uniform, as for [`KnotVector::averaged`].
+    ///
+    /// ```
+    /// use neutrospline::KnotVector;
+    /// // A unit square: four edges of length 1, so the breakpoints are uniform.
+    /// let k = KnotVector::periodic_averaged(2, &[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], false)?;
+    /// assert_eq!(k.periodic_breakpoints(), Some(&[0.0, 0.25, 0.5, 0.75, 1.0][..]));
+    /// # Ok::<(), neutrospline::KnotError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`KnotError::TooFewControlPoints`] for no control points.
+    pub fn periodic_averaged<const D: usize>(
+        degree: usize,
+        positions: &[[f64; D]],
+        centripetal: bool,
+    ) -> Result<Self, KnotError> {
+        let n = positions.len();
+        if n == 0 {
+            return Err(KnotError::TooFewControlPoints { count: 0, degree });
+        }
+        let uniform: Vec<f64> = (0..=n).map(|j| j as f64 / n as f64).collect();
+        let parametrization = if centripetal {
+            crate::fit::Parametrization::Centripetal
+        } else {
+            crate::fit::Parametrization::ChordLength
+        };
+        match crate::fit::knots::parameters(positions, parametrization, true) {
+            Ok(mut breakpoints) if n > 1 => {
+                breakpoints.push(1.0);
+                KnotVector::periodic(degree, &breakpoints)
+                    .or_else(|_| KnotVector::periodic(degree, &uniform))
+            }
+            _ => KnotVector::periodic(degree, &uniform),
+        }
+    }
+
+    /// The breakpoints `tau_0 ..= tau_n` (`n = control_count - degree`) when these knots are
+    /// exactly (to the last bit) those [`KnotVector::periodic`] makes of them, else `None`.
+    /// Degree 0 is never periodic.
+    pub fn periodic_breakpoints(&self) -> Option<&[f64]> {
+        let p = self.degree;
+        if p == 0 {
+            return None;
+        }
+        let n = self.control_count() - p;
+        let breakpoints = &self.knots[p..=p + n];
+        KnotVector::periodic(p, breakpoints)
+            .ok()
+            .filter(|k| k.knots == self.knots)
+            .map(|_| breakpoints)
+    }
+
     /// Clamped knots on \[0, 1\] from parameters of the control points, by averaging
     /// (de Boor): with parameters `s_0 = 0 <= ... <= s_n = 1`, the interior knots are
     /// `u_{j+p} = (s_j + ... + s_{j+p-1}) / p` for `j = 1 ..= n - p`.
@@ -329,6 +464,24 @@ impl KnotVector {
     pub(crate) fn from_parts_unchecked(degree: usize, knots: Vec<f64>) -> Self {
         KnotVector { degree, knots }
     }
+}
+
+/// The knots of [`KnotVector::periodic`] without its checks: `breakpoints` has at least two
+/// values, the last greater than the first.
+pub(crate) fn periodic_extension(degree: usize, breakpoints: &[f64]) -> Vec<f64> {
+    let n = breakpoints.len() - 1;
+    let period = breakpoints[n] - breakpoints[0];
+    (0..=n + 2 * degree)
+        .map(|i| {
+            let j = i as isize - degree as isize;
+            if (0..=n as isize).contains(&j) {
+                breakpoints[j as usize]
+            } else {
+                let shift = j.div_euclid(n as isize);
+                breakpoints[j.rem_euclid(n as isize) as usize] + shift as f64 * period
+            }
+        })
+        .collect()
 }
 
 #[cfg(test)]

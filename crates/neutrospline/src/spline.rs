@@ -137,6 +137,20 @@ impl Spline {
         self.weights.as_ref().map_or(1.0, |w| w[i])
     }
 
+    /// `n` when the spline is periodic with `n` distinct control points: its knots are
+    /// [`KnotVector::periodic`] of their breakpoints and control point (and weight) `i >= n`
+    /// equals point `i - n` to the last bit.
+    pub(crate) fn periodic_count(&self) -> Option<usize> {
+        self.knots.periodic_breakpoints()?;
+        let n = self.count() - self.degree();
+        (n..self.count())
+            .all(|i| {
+                self.row(i) == self.row(i % n)
+                    && self.weight(i).to_bits() == self.weight(i % n).to_bits()
+            })
+            .then_some(n)
+    }
+
     /// The blossom `f(t_1, ..., t_p)` of the polynomial piece on span `k`, where level `r` of
     /// de Boor's triangle uses `param(r)`. With every `t_r = t` this is the value at `t`.
     /// Writes the row into `out` and returns its weight.
@@ -219,6 +233,9 @@ impl Spline {
                 max: p + 1,
             });
         }
+        if let Some(n) = self.periodic_count() {
+            return Ok(self.insert_periodic_knot(u, n));
+        }
         let knots = self.knots.knots();
         // Span with u_k <= u < u_{k+1}, or the last non-empty span at the domain end.
         let k = if u >= end {
@@ -265,6 +282,97 @@ impl Spline {
             data,
             weights,
         })
+    }
+
+    /// Boehm's insertion of `u` (in the domain `[tau_0, tau_n]`) into a periodic spline with
+    /// `n` distinct control points, once in every period, so that the result is periodic with
+    /// `n + 1` (docs/model.md, "Knot vectors"). With the periodic knots `u_i` (all integers
+    /// `i`), cyclic points `P_i = P_{i mod n}` and `u_k <= u < u_{k+1}`, the new points over
+    /// one period are `Q_i = a_i P_i + (1 - a_i) P_{i-1}`, `a_i = (u - u_i) / (u_{i+p} - u_i)`,
+    /// for `k - p < i <= k` and `Q_i = P_{i-1}` for `k < i <= k - p + n + 1`; the new distinct
+    /// point `j` is the `Q_i` with `i = j (mod n + 1)`.
+    fn insert_periodic_knot(&self, u: f64, n: usize) -> Spline {
+        let p = self.degree();
+        let breakpoints = self.knots.periodic_breakpoints().unwrap_or_default();
+        let u = if u >= breakpoints[n] {
+            breakpoints[0]
+        } else {
+            u
+        };
+        let period = breakpoints[n] - breakpoints[0];
+        // The periodic knot u_i for any integer i (i = p + j: breakpoint j).
+        let knot = |i: isize| {
+            let j = i - p as isize;
+            breakpoints[j.rem_euclid(n as isize) as usize]
+                + j.div_euclid(n as isize) as f64 * period
+        };
+        let row = |i: isize| self.row(i.rem_euclid(n as isize) as usize);
+        let weight = |i: isize| self.weight(i.rem_euclid(n as isize) as usize);
+        // Span k in [p, p + n - 1] with u_k <= u < u_{k+1}.
+        let k = p as isize + breakpoints[..n].partition_point(|&b| b <= u) as isize - 1;
+        let stride = self.stride;
+        let mut points: Vec<(Vec<f64>, f64)> = vec![(Vec::new(), 1.0); n + 1];
+        let mut pair = vec![0.0; 2 * stride];
+        for i in k - p as isize + 1..=k - p as isize + n as isize + 1 {
+            let (values, w) = if i <= k {
+                let a = ((u - knot(i)) / (knot(i + p as isize) - knot(i))).clamp(0.0, 1.0);
+                pair[..stride].copy_from_slice(row(i - 1));
+                pair[stride..].copy_from_slice(row(i));
+                let ws = self.weights.as_ref().map(|_| (weight(i - 1), weight(i)));
+                let w = combine(&mut pair, stride, (0, 0, 1), (1.0 - a, a), ws);
+                (pair[..stride].to_vec(), w)
+            } else {
+                (row(i - 1).to_vec(), weight(i - 1))
+            };
+            points[i.rem_euclid(n as isize + 1) as usize] = (values, w);
+        }
+        let mut new_breakpoints = breakpoints.to_vec();
+        new_breakpoints.insert(breakpoints[..n].partition_point(|&b| b <= u), u);
+        let knots = KnotVector::from_parts_unchecked(
+            p,
+            crate::knots::periodic_extension(p, &new_breakpoints),
+        );
+        let mut data = Vec::with_capacity((n + 1 + p) * stride);
+        let mut weights = self.weights.as_ref().map(|_| Vec::with_capacity(n + 1 + p));
+        for j in 0..n + 1 + p {
+            let (values, w) = &points[j % (n + 1)];
+            data.extend_from_slice(values);
+            if let Some(ws) = weights.as_mut() {
+                ws.push(*w);
+            }
+        }
+        Spline {
+            knots,
+            stride,
+            data,
+            weights,
+        }
+    }
+
+    /// This spline with its knots rebuilt exactly as [`KnotVector::periodic`] of its
+    /// breakpoints when `n` of its control points were distinct and periodic before an
+    /// operation that keeps a curve periodic but rounds its knots (reversal, a new domain):
+    /// the points must still repeat, the knots within rounding (`1e-12` of the period).
+    pub(crate) fn periodic_again(self, n: usize) -> Spline {
+        let p = self.degree();
+        if p == 0 || self.count() != n + p {
+            return self;
+        }
+        let breakpoints = &self.knots.knots()[p..=p + n];
+        let period = breakpoints[n] - breakpoints[0];
+        let rebuilt = crate::knots::periodic_extension(p, breakpoints);
+        let close = rebuilt
+            .iter()
+            .zip(self.knots.knots())
+            .all(|(a, b)| (a - b).abs() <= 1e-12 * period);
+        let repeats = (n..n + p).all(|i| {
+            self.row(i) == self.row(i - n)
+                && self.weight(i).to_bits() == self.weight(i - n).to_bits()
+        });
+        match KnotVector::new(rebuilt, p, n + p) {
+            Ok(knots) if close && repeats => Spline { knots, ..self },
+            _ => self,
+        }
     }
 
     /// Tiller's removal of the interior knot `u` once (The NURBS Book, algorithm A5.8 with

@@ -163,6 +163,39 @@ impl<const D: usize> BSpline<D> {
         BSpline::new(control_points, knots)
     }
 
+    /// The periodic (closed) curve of `degree` with the `n` distinct control points
+    /// `control_points` over the breakpoints `tau_0 <= ... <= tau_n` (`n + 1` of them): the
+    /// B-spline over [`KnotVector::periodic`] whose control points are these followed by the
+    /// first `degree` of them again (docs/model.md, "Knot vectors"). The domain is
+    /// `[tau_0, tau_n]`, and the curve, its degrees and its first `degree - 1` derivatives
+    /// agree at the two ends.
+    ///
+    /// ```
+    /// use neutrospline::{BSpline, ControlPoint, ControlPolygon, Degrees, Evaluate};
+    /// let d = Degrees::new(0.5, 0.25, 0.125)?;
+    /// let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+    ///     .map(|p| ControlPoint::new(p, d))
+    ///     .to_vec();
+    /// let curve = BSpline::periodic(square, 2, &[0.0, 0.25, 0.5, 0.75, 1.0])?;
+    /// assert_eq!(curve.control_points().len(), 6);
+    /// assert_eq!(curve.periodic_count(), Some(4));
+    /// assert_eq!(curve.evaluate(0.0)?.position, [0.5, 0.0]);
+    /// assert_eq!(curve.evaluate(1.0)?.position, [0.5, 0.0]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`KnotVector::periodic`] (as [`CurveError::Knots`]); a breakpoint count other than
+    /// the number of control points + 1; as [`BSpline::new`].
+    pub fn periodic(
+        control_points: Vec<ControlPoint<D>>,
+        degree: usize,
+        breakpoints: &[f64],
+    ) -> Result<Self, CurveError> {
+        let (points, _, knots) = periodic_parts(control_points, None, degree, breakpoints)?;
+        BSpline::new(points, knots)
+    }
+
     /// The polynomial pieces of the curve as Bézier curves, one per non-empty knot span of the
     /// domain, in order.
     pub fn to_bezier_segments(&self) -> Vec<BezierSegment<Bezier<D>>> {
@@ -182,6 +215,22 @@ impl<const D: usize> Nurbs<D> {
         knots: KnotVector,
     ) -> Result<Self, CurveError> {
         Self::build(control_points, Some(weights), knots)
+    }
+
+    /// The periodic (closed) NURBS curve of `degree` with the `n` distinct control points and
+    /// weights over the breakpoints `tau_0 <= ... <= tau_n`, as [`BSpline::periodic`].
+    ///
+    /// # Errors
+    /// As [`BSpline::periodic`] and [`Nurbs::new`].
+    pub fn periodic(
+        control_points: Vec<ControlPoint<D>>,
+        weights: Vec<f64>,
+        degree: usize,
+        breakpoints: &[f64],
+    ) -> Result<Self, CurveError> {
+        let (points, weights, knots) =
+            periodic_parts(control_points, Some(weights), degree, breakpoints)?;
+        Nurbs::new(points, weights.unwrap_or_default(), knots)
     }
 
     /// A NURBS curve with every weight 1: the same curve as `curve`.
@@ -249,6 +298,13 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
         self.spline.degree()
     }
 
+    /// `Some(n)` when the curve is periodic ([`BSpline::periodic`]): its knots are
+    /// [`KnotVector::periodic`] of their breakpoints (to the last bit) and its last `degree`
+    /// control points (and weights) repeat its first ones, `n` being the distinct ones.
+    pub fn periodic_count(&self) -> Option<usize> {
+        self.spline.periodic_count()
+    }
+
     /// The knot vector.
     pub fn knots(&self) -> &KnotVector {
         &self.spline.knots
@@ -273,7 +329,11 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
     /// this curve's point at `a + b - t` (control points and weights in reverse order, knots
     /// reflected).
     pub fn reversed(&self) -> Self {
-        SplineCurve::from_spline(self.spline.reversed())
+        let reversed = self.spline.reversed();
+        SplineCurve::from_spline(match self.periodic_count() {
+            Some(n) => reversed.periodic_again(n),
+            None => reversed,
+        })
     }
 
     /// The curve with an affine map applied to its control positions; weights and degrees
@@ -645,4 +705,37 @@ pub(crate) mod tests {
             "1 weights for 2 control points (one weight per control point)"
         );
     }
+}
+
+/// The control points (and weights) of a periodic curve, the distinct ones followed by the
+/// first `degree` again (cyclically), and its knots: [`BSpline::periodic`].
+type PeriodicParts<const D: usize> = (Vec<ControlPoint<D>>, Option<Vec<f64>>, KnotVector);
+
+fn periodic_parts<const D: usize>(
+    control_points: Vec<ControlPoint<D>>,
+    weights: Option<Vec<f64>>,
+    degree: usize,
+    breakpoints: &[f64],
+) -> Result<PeriodicParts<D>, CurveError> {
+    let n = control_points.len();
+    if n == 0 {
+        return Err(CurveError::NoControlPoints);
+    }
+    if breakpoints.len() != n + 1 {
+        return Err(CurveError::Knots(KnotError::WrongLength {
+            got: breakpoints.len(),
+            expected: n + 1,
+        }));
+    }
+    let knots = KnotVector::periodic(degree, breakpoints)?;
+    let wrap = |i: usize| i % n;
+    let points = (0..n + degree).map(|i| control_points[wrap(i)]).collect();
+    let weights = weights.map(|w| {
+        if w.len() == n {
+            (0..n + degree).map(|i| w[wrap(i)]).collect()
+        } else {
+            w
+        }
+    });
+    Ok((points, weights, knots))
 }

@@ -364,7 +364,10 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
             knots: mapped_knots(self.knots(), start, end)?,
             ..self.spline().clone()
         };
-        Ok(SplineCurve::from_spline(spline))
+        Ok(SplineCurve::from_spline(match self.periodic_count() {
+            Some(n) => spline.periodic_again(n),
+            None => spline,
+        }))
     }
 }
 

@@ -54,11 +54,15 @@ fn knots_line(knots: &KnotVector, source: Option<KnotSource>) -> String {
     } else {
         values.iter().map(|&k| number(k)).collect()
     };
+    let periodic = knots.periodic_breakpoints().is_some();
     let source = match source {
-        Some(KnotSource::Rule(rule)) => rule.name(),
-        Some(KnotSource::Explicit) if knots.is_clamped() => "given, clamped",
-        Some(KnotSource::Explicit) => "given, unclamped",
-        _ => KnotRule::ClampedUniform.name(),
+        Some(KnotSource::Rule(rule)) if periodic => format!("{}, periodic", rule.name()),
+        Some(KnotSource::Rule(rule)) => rule.name().to_owned(),
+        Some(KnotSource::Explicit) if knots.is_clamped() => "given, clamped".to_owned(),
+        Some(KnotSource::Explicit) if periodic => "given, periodic".to_owned(),
+        Some(KnotSource::Explicit) => "given, unclamped".to_owned(),
+        _ if periodic => format!("{}, periodic", KnotRule::Uniform.name()),
+        _ => KnotRule::ClampedUniform.name().to_owned(),
     };
     format!("{} ({} knots, {source})", shown.join(", "), values.len())
 }

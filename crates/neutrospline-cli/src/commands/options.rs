@@ -109,10 +109,17 @@ pub struct ModelArgs {
     pub degree: Option<u64>,
 
     /// Knots of a bspline or nurbs curve: clamped-uniform (default), chord-length,
-    /// centripetal, or the values K0,K1,... (number of control points + degree + 1 of them,
-    /// non-decreasing)
+    /// centripetal, uniform (unclamped, domain [0, 1]), or the values K0,K1,... (number of
+    /// control points + degree + 1 of them, non-decreasing; with --periodic, the breakpoints:
+    /// number of control points + 1 of them)
     #[arg(long, value_name = "RULE|K0,K1,...", value_parser = parse_knots, allow_hyphen_values = true)]
     pub knots: Option<KnotSpec>,
+
+    /// A closed (periodic) bspline or nurbs curve: the control points listed are the
+    /// distinct ones, the first `degree` of them follow again, and the knots are breakpoints
+    /// (default uniform on [0, 1])
+    #[arg(long)]
+    pub periodic: bool,
 
     /// Surfaces: control points along u (the control points are listed row by row)
     #[arg(long, value_name = "R", value_parser = clap::value_parser!(u64).range(1..=MAX))]
@@ -137,6 +144,14 @@ pub struct ModelArgs {
     /// Knots along v of a bspline or nurbs surface: clamped-uniform (default) or K0,K1,...
     #[arg(long, value_name = "RULE|K0,K1,...", value_parser = parse_knots, allow_hyphen_values = true)]
     pub knots_v: Option<KnotSpec>,
+
+    /// A bspline or nurbs surface closed (periodic) along u, as --periodic for a curve
+    #[arg(long)]
+    pub periodic_u: bool,
+
+    /// A bspline or nurbs surface closed (periodic) along v, as --periodic for a curve
+    #[arg(long)]
+    pub periodic_v: bool,
 
     /// How CSV tables are read (defined by neutrospline-io's `TableInput`)
     #[command(flatten)]
@@ -167,6 +182,10 @@ impl ModelArgs {
         options.degree_v = count(self.degree_v);
         options.knots_u = self.knots_u.clone();
         options.knots_v = self.knots_v.clone();
+        let flag = |given: bool| given.then_some(true);
+        options.periodic = flag(self.periodic);
+        options.periodic_u = flag(self.periodic_u);
+        options.periodic_v = flag(self.periodic_v);
         options
     }
 }

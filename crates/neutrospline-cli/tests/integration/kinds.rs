@@ -677,10 +677,10 @@ fn knot_errors_name_field_and_line() {
          "error: f.toml:3: knots[2]: value NaN is not a finite number (NaN and infinities are not allowed)"),
         ("[0, 0, 0.5, 0.7, 1, 1]", "[0, 0, \"a\", 0.7, 1, 1]",
          "error: f.toml:3: knots[2]: expected a number, found the string \"a\""),
-        ("[0, 0, 0.5, 0.7, 1, 1]", "\"uniform\"",
-         "error: f.toml:3: knots: unknown knot rule `uniform` (expected one of: clamped-uniform, chord-length, centripetal, or an array of knot values)"),
+        ("[0, 0, 0.5, 0.7, 1, 1]", "\"open-uniform\"",
+         "error: f.toml:3: knots: unknown knot rule `open-uniform` (expected one of: clamped-uniform, chord-length, centripetal, uniform, or an array of knot values)"),
         ("[0, 0, 0.5, 0.7, 1, 1]", "7",
-         "error: f.toml:3: knots: expected an array of knot values or one of: clamped-uniform, chord-length, centripetal, found a number"),
+         "error: f.toml:3: knots: expected an array of knot values or one of: clamped-uniform, chord-length, centripetal, uniform, found a number"),
         // A multi-line array: the line of the offending knot.
         ("[0, 0, 0.5, 0.7, 1, 1]", "[\n  0, 0,\n  0.5,\n  0.4,\n  1, 1,\n]",
          "error: f.toml:6: knots: knot 3 = 0.4 is less than knot 2 = 0.5 (knots must be non-decreasing)"),
@@ -733,13 +733,20 @@ fn knot_errors_from_the_command_line() {
     let out = run_in(
         dir.path(),
         &[
-            "eval", "c.csv", "--kind", "bspline", "--degree", "1", "--knots", "uniform",
+            "eval",
+            "c.csv",
+            "--kind",
+            "bspline",
+            "--degree",
+            "1",
+            "--knots",
+            "open-uniform",
         ],
     );
     assert_eq!(out.code, 2);
     assert_eq!(
         out.stderr.lines().next(),
-        Some("error: invalid value 'uniform' for '--knots <RULE|K0,K1,...>': unknown knot rule `uniform` (expected one of: clamped-uniform, chord-length, centripetal, or knot values K0,K1,...)")
+        Some("error: invalid value 'open-uniform' for '--knots <RULE|K0,K1,...>': unknown knot rule `open-uniform` (expected one of: clamped-uniform, chord-length, centripetal, uniform, or knot values K0,K1,...)")
     );
 }
 

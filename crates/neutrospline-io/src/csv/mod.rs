@@ -171,6 +171,15 @@ fn structure(kind: Kind, options: &ReadOptions) -> Structure {
             lines: Vec::new(),
         })
     };
+    let flag = |key: Key, value: Option<bool>| {
+        value.map(|value| Setting {
+            value,
+            origin: Origin {
+                line: None,
+                field: Some(key.option().to_owned()),
+            },
+        })
+    };
     if kind.is_surface() {
         // `ReadOptions::check` made sure that --rows and --cols are given for surface kinds.
         let count = |key: Key, value: Option<usize>| {
@@ -189,11 +198,14 @@ fn structure(kind: Kind, options: &ReadOptions) -> Structure {
             degree_v: number(Key::DegreeV, options.degree_v),
             knots_u: knots(Key::KnotsU, &options.knots_u),
             knots_v: knots(Key::KnotsV, &options.knots_v),
+            periodic_u: flag(Key::PeriodicU, options.periodic_u),
+            periodic_v: flag(Key::PeriodicV, options.periodic_v),
         }
     } else {
         Structure::Curve {
             degree: number(Key::Degree, options.degree),
             knots: knots(Key::Knots, &options.knots),
+            periodic: flag(Key::Periodic, options.periodic),
         }
     }
 }

@@ -138,7 +138,7 @@ fn model_parse_toml_errors_name_path_and_line() {
     let bad = EXAMPLE1_TOML.replace("name = \"Example 1\"", "title = \"Example 1\"");
     assert_eq!(
         toml_err(&bad),
-        "m.toml:2: unknown key `title` (known keys: kind, name, description, membership, degree, knots, rows, cols, degree_u, degree_v, knots_u, knots_v, control_points)"
+        "m.toml:2: unknown key `title` (known keys: kind, name, description, membership, degree, knots, rows, cols, degree_u, degree_v, knots_u, knots_v, periodic, periodic_u, periodic_v, control_points)"
     );
 }
 
@@ -233,7 +233,7 @@ fn model_parse_structure_keys_and_knot_lines() {
                 control_points = [{ x = 0, y = 0, T = 1, I = 0, F = 0, weight = 2 },\n\
                 { x = 1, y = 0, T = 1, I = 0, F = 0, weight = 0.5 }]\n";
     let m = parse_toml("m.toml", text.as_bytes(), &ReadOptions::default()).unwrap();
-    let Structure::Curve { degree, knots } = &m.structure else {
+    let Structure::Curve { degree, knots, .. } = &m.structure else {
         panic!("a curve")
     };
     assert_eq!(degree.as_ref().map(|d| d.value), Some(1));

@@ -4,6 +4,7 @@
 //! `main.rs`).
 
 mod directories;
+mod periodic;
 mod roundtrip;
 mod schema;
 mod spreadsheets;

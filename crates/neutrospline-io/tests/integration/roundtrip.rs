@@ -152,6 +152,93 @@ fn surface(kind: SurfaceKind, membership: Membership) -> BoxedStrategy<Shape> {
         .boxed()
 }
 
+/// The `n + 1` breakpoints of a periodic direction: uniform, or sorted arbitrary numbers.
+fn breakpoints(n: usize) -> BoxedStrategy<Vec<f64>> {
+    let uniform = (0..=n).map(|j| j as f64 / n as f64).collect::<Vec<_>>();
+    let sorted = prop::collection::vec(number(), n + 1).prop_map(|mut values| {
+        values.sort_by(f64::total_cmp);
+        values
+    });
+    prop_oneof![1 => Just(uniform), 2 => sorted].boxed()
+}
+
+/// A periodic B-spline or NURBS curve (`BSpline::periodic`): its writers write the short
+/// form, `periodic = true`, the breakpoints and the distinct control points.
+fn periodic_curve<const D: usize>(kind: CurveKind, membership: Membership) -> BoxedStrategy<Shape>
+where
+    Shape: From<AnyCurve<D>>,
+{
+    (1usize..=3, 1usize..=4)
+        .prop_flat_map(move |(degree, n)| {
+            (
+                Just(degree),
+                points::<D>(n, membership),
+                breakpoints(n),
+                prop::collection::vec(weight(), n),
+            )
+        })
+        .prop_filter_map(
+            "invalid periodic spline",
+            move |(degree, p, b, w)| match kind {
+                CurveKind::Nurbs => Nurbs::periodic(p, w, degree, &b)
+                    .ok()
+                    .map(|c| AnyCurve::Nurbs(c).into()),
+                _ => BSpline::periodic(p, degree, &b)
+                    .ok()
+                    .map(|c| AnyCurve::BSpline(c).into()),
+            },
+        )
+        .boxed()
+}
+
+/// A B-spline or NURBS surface periodic along u, and along v or not.
+fn periodic_surface(kind: SurfaceKind, membership: Membership) -> BoxedStrategy<Shape> {
+    (
+        1usize..=3,
+        1usize..=3,
+        1usize..=2,
+        0usize..=2,
+        any::<bool>(),
+    )
+        .prop_flat_map(move |(nu, nv, pu, pv, closed_v)| {
+            let cols = if closed_v { nv + pv } else { nv.max(pv + 1) };
+            (
+                Just((nu, nv, pu, pv, closed_v, cols)),
+                points::<3>(nu * cols, membership),
+                breakpoints(nu),
+                breakpoints(nv),
+                knots(pv, cols),
+                prop::collection::vec(weight(), nu * cols),
+            )
+        })
+        .prop_filter_map(
+            "invalid periodic surface",
+            move |((nu, nv, pu, pv, closed_v, cols), p, bu, bv, kv, w)| {
+                let distinct_cols = if closed_v { nv } else { cols };
+                let rows = nu + pu;
+                let at = |i: usize, j: usize| (i % nu) * cols + j % distinct_cols;
+                let grid: Vec<_> = (0..rows)
+                    .flat_map(|i| (0..cols).map(move |j| (i, j)))
+                    .collect();
+                let points = grid.iter().map(|&(i, j)| p[at(i, j)]).collect();
+                let weights = grid.iter().map(|&(i, j)| w[at(i, j)]).collect();
+                let ku = KnotVector::periodic(pu, &bu).ok()?;
+                let kv = if closed_v {
+                    KnotVector::periodic(pv, &bv).ok()?
+                } else {
+                    kv
+                };
+                match kind {
+                    SurfaceKind::Nurbs => Surface::nurbs(rows, cols, points, weights, ku, kv),
+                    _ => Surface::bspline(rows, cols, points, ku, kv),
+                }
+                .ok()
+                .map(Shape::Surface)
+            },
+        )
+        .boxed()
+}
+
 fn membership() -> impl Strategy<Value = Membership> {
     prop::sample::select(vec![
         Membership::Neutrosophic,
@@ -162,7 +249,7 @@ fn membership() -> impl Strategy<Value = Membership> {
 
 /// A shape of any kind, and the rule its degrees obey.
 fn shape() -> impl Strategy<Value = (Shape, Membership)> {
-    (0usize..9, membership()).prop_flat_map(|(kind, m)| {
+    (0usize..13, membership()).prop_flat_map(|(kind, m)| {
         let shape = match kind {
             0 => curve::<2>(CurveKind::Bezier, m),
             1 => curve::<3>(CurveKind::Bezier, m),
@@ -172,7 +259,11 @@ fn shape() -> impl Strategy<Value = (Shape, Membership)> {
             5 => curve::<3>(CurveKind::Nurbs, m),
             6 => surface(SurfaceKind::Bezier, m),
             7 => surface(SurfaceKind::BSpline, m),
-            _ => surface(SurfaceKind::Nurbs, m),
+            8 => surface(SurfaceKind::Nurbs, m),
+            9 => periodic_curve::<2>(CurveKind::BSpline, m),
+            10 => periodic_curve::<3>(CurveKind::Nurbs, m),
+            11 => periodic_surface(SurfaceKind::BSpline, m),
+            _ => periodic_surface(SurfaceKind::Nurbs, m),
         };
         (shape, Just(m))
     })
@@ -297,6 +388,22 @@ fn write_read(model: &Model, format: Format) -> Result<Model, TestCaseError> {
         .map_err(|e| TestCaseError::fail(format!("{e}\n{text}")))
 }
 
+/// The control points a file lists: all, or a periodic direction's distinct ones
+/// ([`Model::periodic_counts`]).
+fn written(model: &Model) -> Vec<usize> {
+    let periodic = model.periodic_counts();
+    let count = |k: usize, all: usize| periodic.get(k).copied().flatten().unwrap_or(all);
+    match model.shape() {
+        Shape::Curve(_) => (0..count(0, model.shape().control_count())).collect(),
+        Shape::Surface(s) => {
+            let cols = s.cols();
+            (0..count(0, s.rows()))
+                .flat_map(|i| (0..count(1, cols)).map(move |j| i * cols + j))
+                .collect()
+        }
+    }
+}
+
 proptest! {
     // The default failure persistence: the two shrunk cases of the byte order mark (see the
     // CSV writer) are replayed from tests/proptest-regressions/roundtrip.txt.
@@ -357,7 +464,9 @@ proptest! {
             Shape::Curve(c) => c.control_rows().iter().map(|row| row[..c.dimension()].to_vec()).collect(),
             Shape::Surface(s) => s.control_points().iter().map(|p| p.position.to_vec()).collect(),
         };
-        for (i, (position, degrees)) in positions.iter().zip(model.shape().control_degrees()).enumerate() {
+        let control_degrees = model.shape().control_degrees();
+        for i in written(&model) {
+            let (position, degrees) = (&positions[i], control_degrees[i]);
             let mut cells: Vec<String> = Vec::new();
             if named {
                 let name = names[i].clone().unwrap_or_default();

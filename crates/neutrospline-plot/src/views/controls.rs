@@ -130,8 +130,17 @@ fn callouts(
     let mut obstacles = obstacles_of(curve, 0.0);
     obstacles.extend(obstacles_of(ctrl, 0.0));
     let keep = Keep::new(obstacles, bounds, avoid);
-    let degs: Vec<[f64; 3]> = ctx.controls.iter().map(|p| p.deg).collect();
-    draw_callouts(svg, &ctx.theme, ctrl, &degs, &callout_names(ctx), &keep);
+    let shown = ctx.labelled.min(ctrl.len());
+    let degs: Vec<[f64; 3]> = ctx.controls[..shown].iter().map(|p| p.deg).collect();
+    let names = callout_names(ctx);
+    draw_callouts(
+        svg,
+        &ctx.theme,
+        &ctrl[..shown],
+        &degs,
+        &names[..shown.min(names.len())],
+        &keep,
+    );
 }
 
 /// Names the corners of the net (at `pts`, pixels), clear of its edges, inside `bounds` and

@@ -148,17 +148,12 @@ pub(crate) fn periodic_base(params: &[f64], p: usize, n: usize) -> Vec<f64> {
 
 /// The knot vector of the unclamped B-spline with `n + p` control points (the `n` free ones,
 /// then the first `p` again) that a periodic spline with base knots `base` (period 1) is:
-/// `u_i = tau_{(i - p) mod n} + floor((i - p) / n)`, `i = 0 ..= n + 2p`; its domain is
+/// [`crate::KnotVector::periodic`] of the breakpoints `base, base_0 + 1`; its domain is
 /// `[tau_0, tau_0 + 1]`.
 pub(crate) fn periodic_knots(base: &[f64], p: usize) -> Vec<f64> {
-    let n = base.len() as isize;
-    (0..base.len() + 2 * p + 1)
-        .map(|i| {
-            let j = i as isize - p as isize;
-            let period = j.div_euclid(n);
-            base[j.rem_euclid(n) as usize] + period as f64
-        })
-        .collect()
+    let mut breakpoints = base.to_vec();
+    breakpoints.push(base[0] + 1.0);
+    crate::knots::periodic_extension(p, &breakpoints)
 }
 
 #[cfg(test)]

@@ -36,7 +36,7 @@ mod banded;
 mod basis;
 mod bounds;
 mod choose;
-mod knots;
+pub(crate) mod knots;
 mod qp;
 mod report;
 mod request;

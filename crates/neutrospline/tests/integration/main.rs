@@ -18,6 +18,7 @@ mod fuzzy_properties;
 mod geometry;
 mod higher_derivatives;
 mod intersect;
+mod knot_kinds;
 mod nearest;
 mod nurbs_properties;
 mod properties;
