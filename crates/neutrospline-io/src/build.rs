@@ -424,13 +424,11 @@ impl Parsed {
                     return Err((self.error_at(&origin, message), None));
                 }
                 (Some(KnotSpec::Explicit(values)), _) if values.len() != distinct + 1 => {
-                    let message = format!(
-                        "a periodic spline of {distinct} control points takes {} breakpoints (the \
-                     control points + 1, from the start of one period to its end), not {}",
-                        distinct + 1,
-                        values.len()
-                    );
-                    return Err((self.error_at(&origin, message), None));
+                    let error = KnotError::BreakpointCount {
+                        got: values.len(),
+                        count: distinct,
+                    };
+                    return Err((self.error_at(&origin, error.to_string()), Some(error)));
                 }
                 (Some(KnotSpec::Explicit(values)), _) => KnotVector::periodic(p, values),
             };

@@ -686,6 +686,16 @@ impl Curve {
             .transpose()
     }
 
+    /// The number of distinct control points of a periodic (closed) curve, whose last
+    /// `degree` control points repeat its first; None for any other curve.
+    #[getter]
+    fn periodic_count(&self) -> Option<usize> {
+        match &self.state {
+            State::Model { curve, .. } => on_dimension!(curve, c => c.curve.periodic_count()),
+            State::Derivative { .. } => None,
+        }
+    }
+
     /// The knot vector, read-only; None for a Bézier curve.
     #[getter]
     fn knots<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {

@@ -71,7 +71,7 @@ pub fn model_into_py(py: Python<'_>, model: Model) -> PyResult<Py<PyAny>> {
 /// >>> len(curves), report["imported"], report["skipped"][0]
 /// (2, {'<path>': 1, '<rect>': 1}, {'kind': '<text>', 'reason': 'not-a-curve', 'count': 1})
 #[pyfunction]
-#[pyo3(signature = (path, *, kind = None, degree = None, knots = None, membership = None, rows = None, cols = None, degree_u = None, degree_v = None, knots_u = None, knots_v = None, **options))]
+#[pyo3(signature = (path, *, kind = None, degree = None, knots = None, membership = None, rows = None, cols = None, degree_u = None, degree_v = None, knots_u = None, knots_v = None, periodic = None, periodic_u = None, periodic_v = None, **options))]
 #[allow(clippy::too_many_arguments)]
 pub fn load(
     py: Python<'_>,
@@ -86,6 +86,9 @@ pub fn load(
     degree_v: Option<usize>,
     knots_u: Option<&Bound<'_, PyAny>>,
     knots_v: Option<&Bound<'_, PyAny>>,
+    periodic: Option<bool>,
+    periodic_u: Option<bool>,
+    periodic_v: Option<bool>,
     options: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Py<PyAny>> {
     let data = path.clone();
@@ -115,6 +118,9 @@ pub fn load(
             ("degree_v", degree_v.is_some()),
             ("knots_u", knots_u.is_some()),
             ("knots_v", knots_v.is_some()),
+            ("periodic", periodic.is_some()),
+            ("periodic_u", periodic_u.is_some()),
+            ("periodic_v", periodic_v.is_some()),
         ];
         if let Some((name, _)) = given.iter().find(|(_, on)| *on) {
             return Err(invalid_at(
@@ -161,6 +167,9 @@ pub fn load(
     read.knots = knots.map(|k| knot_spec(k, "knots")).transpose()?;
     read.knots_u = knots_u.map(|k| knot_spec(k, "knots_u")).transpose()?;
     read.knots_v = knots_v.map(|k| knot_spec(k, "knots_v")).transpose()?;
+    read.periodic = periodic;
+    read.periodic_u = periodic_u;
+    read.periodic_v = periodic_v;
     let model = if frame_given {
         // A DataFrame: the rows of a CSV model table, read by the same reader.
         let frame = Frame::read(&data, read.table.clone())?;

@@ -76,6 +76,14 @@ pub enum KnotError {
         /// The end given.
         end: f64,
     },
+    /// A periodic spline's breakpoints are not one more than its distinct control points.
+    #[error("a periodic spline of {count} control points takes {expected} breakpoints (the control points + 1, from the start of one period to its end), not {got}", expected = count + 1)]
+    BreakpointCount {
+        /// Breakpoints given.
+        got: usize,
+        /// Distinct control points.
+        count: usize,
+    },
     /// The parameter domain `[knot_p, knot_{m-p}]` is a single point.
     #[error("the domain [knot {p}, knot {end}] = [{start_value}, {start_value}] is empty (the knots there must differ)", end = p_end)]
     EmptyDomain {

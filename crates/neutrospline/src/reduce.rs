@@ -6,9 +6,115 @@
 //! C(m + n, j + k))`), the pieces joined with C0 continuity, and then as many knots removed as
 //! the tolerance left allows (Tiller), which restores the smoothness the curve had where the
 //! reduction kept it.
+//!
+//! The degree channels are solved under the membership rule's bounds, as fitting solves them
+//! (docs/model.md section 8): when the unconstrained piece has a control degree outside the
+//! rule, the piece's degree channels are the solution of the same least-squares problem with
+//! the rule's constraints on every free control point (`0 <= T <= 1` per channel; `T + F <= 1`
+//! for intuitionistic degrees), by the active-set method of the fit (`fit::qp`); rational
+//! pieces are reduced in homogeneous form, so the constraint on `w T` is `0 <= w T <= w` with
+//! the piece's new weight `w`, solved in `T = (w T) / w`.
 
+use crate::degrees::Membership;
+use crate::fit::banded::{Band, Normal};
+use crate::fit::qp;
 use crate::knots::KnotVector;
 use crate::spline::Spline;
+
+/// Where the degrees sit in a row of the spline being reduced, and their rule: a row is one
+/// or more control points of `point` channels each (a curve: one; a surface's net line: one per
+/// point of the line), truth, indeterminacy and falsity from `truth`, the weight at `weight`
+/// for a rational spline in homogeneous form.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct DegreeLayout {
+    pub(crate) point: usize,
+    pub(crate) truth: usize,
+    pub(crate) weight: Option<usize>,
+    pub(crate) membership: Membership,
+}
+
+/// The degree channels of the free control points `inner` of a reduced piece (the solution
+/// of `a x = b` for every channel) solved again under the rule of `layout` where they break
+/// it. `None` when the constrained problem cannot be solved (a singular system).
+fn bound_degrees(
+    a: &[Vec<f64>],
+    b: &[Vec<f64>],
+    inner: &mut [Vec<f64>],
+    layout: &DegreeLayout,
+) -> Option<()> {
+    let n = inner.len();
+    let stride = inner.first().map_or(0, Vec::len);
+    for base in (0..stride).step_by(layout.point) {
+        let weights: Vec<f64> = (0..n)
+            .map(|j| layout.weight.map_or(1.0, |w| inner[j][base + w]))
+            .collect();
+        if weights.iter().any(|w| !(*w > 0.0 && w.is_finite())) {
+            // Left to the caller, which refuses a non-positive weight.
+            continue;
+        }
+        let (t, i, f) = (
+            base + layout.truth,
+            base + layout.truth + 1,
+            base + layout.truth + 2,
+        );
+        let groups: &[&[usize]] = match layout.membership {
+            Membership::Neutrosophic => &[&[0], &[1], &[2]],
+            Membership::Fuzzy => &[&[0]],
+            Membership::Intuitionistic => &[&[0, 2]],
+        };
+        let euclidean =
+            |inner: &[Vec<f64>], j: usize, c: usize| inner[j][base + layout.truth + c] / weights[j];
+        let breaks = |inner: &[Vec<f64>], group: &[usize]| {
+            (0..n).any(|j| {
+                let values: Vec<f64> = group.iter().map(|&c| euclidean(inner, j, c)).collect();
+                values.iter().any(|v| !(0.0..=1.0).contains(v))
+                    || (group.len() == 2 && values[0] + values[1] > 1.0)
+            })
+        };
+        for &group in groups {
+            if !breaks(inner, group) {
+                continue;
+            }
+            let k = group.len();
+            // In T = (w T) / w: the matrix D A D and right-hand side D b, D = diag(w).
+            let mut band = Band::zeros(n, n.saturating_sub(1));
+            for r in 0..n {
+                for c in 0..=r {
+                    band.add(r, c, weights[r] * a[r][c] * weights[c]);
+                }
+            }
+            let mut rhs = vec![0.0; n * k];
+            let mut start = vec![0.0; n * k];
+            for j in 0..n {
+                for (slot, &c) in group.iter().enumerate() {
+                    rhs[j * k + slot] = weights[j] * b[j][base + layout.truth + c];
+                    start[j * k + slot] = euclidean(inner, j, c);
+                }
+            }
+            let solution = qp::solve(&Normal::Open(band), k, &rhs, &start)?;
+            for j in 0..n {
+                for (slot, &c) in group.iter().enumerate() {
+                    inner[j][base + layout.truth + c] = weights[j] * solution.x[j * k + slot];
+                }
+            }
+        }
+        // The channels the rule derives.
+        for (j, row) in inner.iter_mut().enumerate() {
+            let w = weights[j];
+            match layout.membership {
+                Membership::Neutrosophic => {}
+                Membership::Fuzzy => {
+                    row[i] = 0.0;
+                    row[f] = 0.0;
+                }
+                Membership::Intuitionistic => {
+                    row[i] = w * (1.0 - row[t] / w - row[f] / w).max(0.0);
+                }
+            }
+        }
+    }
+    Some(())
+}
 
 fn binomial(n: usize, k: usize) -> f64 {
     let k = k.min(n - k);
@@ -60,8 +166,9 @@ fn solve(mut a: Vec<Vec<f64>>, mut b: Vec<Vec<f64>>) -> Option<Vec<Vec<f64>>> {
     Some(x)
 }
 
-/// The degree-(p-1) Bézier rows nearest (L2) to the degree-p rows `p_rows`, ends kept.
-fn reduce_piece(p_rows: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
+/// The degree-(p-1) Bézier rows nearest (L2) to the degree-p rows `p_rows`, ends kept, the
+/// degrees within the rule of `layout` ([`bound_degrees`]; rows without degrees: `None`).
+fn reduce_piece(p_rows: &[Vec<f64>], layout: Option<&DegreeLayout>) -> Option<Vec<Vec<f64>>> {
     let p = p_rows.len() - 1;
     let m = p - 1;
     let stride = p_rows[0].len();
@@ -84,7 +191,10 @@ fn reduce_piece(p_rows: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
         })
         .collect();
     debug_assert_eq!(a.len(), unknowns);
-    let inner = solve(a, b)?;
+    let mut inner = solve(a.clone(), b.clone())?;
+    if let Some(layout) = layout {
+        bound_degrees(&a, &b, &mut inner, layout)?;
+    }
     let mut out = Vec::with_capacity(m + 1);
     out.push(first);
     out.extend(inner);
@@ -97,7 +207,7 @@ impl Spline {
     /// breakpoints of multiplicity `p - 1`), on the same domain; `None` for degree below 2 or
     /// a singular system. Non-rational splines only (a rational one goes through its
     /// homogeneous form).
-    pub(crate) fn reduced_pieces(&self) -> Option<Spline> {
+    pub(crate) fn reduced_pieces(&self, layout: &DegreeLayout) -> Option<Spline> {
         debug_assert!(self.weights.is_none());
         let p = self.degree();
         if p < 2 {
@@ -112,7 +222,7 @@ impl Spline {
         for (k, seg) in segments.iter().enumerate() {
             let data = seg.packed.data();
             let p_rows: Vec<Vec<f64>> = data.chunks_exact(stride).map(<[f64]>::to_vec).collect();
-            let q = reduce_piece(&p_rows)?;
+            let q = reduce_piece(&p_rows, Some(layout))?;
             if k == 0 {
                 rows.extend(q);
             } else {
@@ -169,7 +279,7 @@ mod tests {
             );
         }
         quartic.push(cubic[3].clone());
-        let back = reduce_piece(&quartic).unwrap();
+        let back = reduce_piece(&quartic, None).unwrap();
         for (r, s) in back.iter().zip(&cubic) {
             for (x, y) in r.iter().zip(s) {
                 assert!((x - y).abs() < 1e-13, "{back:?}");

@@ -385,6 +385,84 @@ impl Spline {
     /// solutions meet within `tolerance` (Euclidean distance over every channel; for a
     /// rational spline in homogeneous form `(w P, w)`). One control point and one knot fewer.
     pub(crate) fn remove_knot_once(&self, u: f64, tolerance: f64) -> Option<Spline> {
+        match self.periodic_count() {
+            Some(n) => self.remove_periodic_knot_once(u, tolerance, n),
+            None => self.remove_open_knot_once(u, tolerance),
+        }
+    }
+
+    /// Tiller's removal of `u` from a periodic spline with `n` distinct control points, once
+    /// in every period, so that the result is periodic with `n - 1`: the spline unrolled over
+    /// three periods (`3 n + p` points, the knots of the breakpoints of all three) loses the
+    /// copy `u + T` of the middle period by [`Spline::remove_open_knot_once`], and the new
+    /// distinct points are read from the `n - 1` points starting at the first one that
+    /// changed (the unrolled point `i` is periodic point `(i - 1) mod (n - 1)` there). The
+    /// copies are `n > p` knots apart, so Tiller's equations for one never reach another and
+    /// removing them one at a time is removing them all. `None` when the knot is not
+    /// removable within `tolerance`, or when a period holds too few control points (`n <= p`).
+    fn remove_periodic_knot_once(&self, u: f64, tolerance: f64, n: usize) -> Option<Spline> {
+        let p = self.degree();
+        if n <= p || n < 2 {
+            return None;
+        }
+        let breakpoints = self.knots.periodic_breakpoints()?;
+        let period = breakpoints[n] - breakpoints[0];
+        if !(u > breakpoints[0] && u < breakpoints[n]) || self.knots.multiplicity(u) == 0 {
+            return None;
+        }
+        let mut three = breakpoints.to_vec();
+        three.extend(breakpoints[1..].iter().map(|b| b + period));
+        three.extend(breakpoints[1..].iter().map(|b| b + 2.0 * period));
+        let shifted = u + period;
+        let mut data = Vec::with_capacity((3 * n + p) * self.stride);
+        let mut weights = self.weights.as_ref().map(|_| Vec::with_capacity(3 * n + p));
+        for i in 0..3 * n + p {
+            data.extend_from_slice(self.row(i % n));
+            if let Some(w) = weights.as_mut() {
+                w.push(self.weight(i % n));
+            }
+        }
+        let unrolled = Spline {
+            knots: KnotVector::from_parts_unchecked(p, crate::knots::periodic_extension(p, &three)),
+            stride: self.stride,
+            data,
+            weights,
+        };
+        let r = unrolled.knots.knots().partition_point(|&x| x <= shifted) - 1;
+        let removed = unrolled.remove_open_knot_once(shifted, tolerance)?;
+        let distinct = n - 1;
+        let start = r - p;
+        let mut rows: Vec<(usize, usize)> = (start..start + distinct)
+            .map(|i| ((i - 1) % distinct, i))
+            .collect();
+        rows.sort_unstable();
+        let mut new_breakpoints = breakpoints.to_vec();
+        let at = new_breakpoints.iter().position(|&b| b == u)?;
+        new_breakpoints.remove(at);
+        let knots = KnotVector::periodic(p, &new_breakpoints).ok()?;
+        let mut data = Vec::with_capacity((distinct + p) * self.stride);
+        let mut weights = removed
+            .weights
+            .as_ref()
+            .map(|_| Vec::with_capacity(distinct + p));
+        for j in 0..distinct + p {
+            let i = rows[j % distinct].1;
+            data.extend_from_slice(removed.row(i));
+            if let Some(w) = weights.as_mut() {
+                w.push(removed.weight(i));
+            }
+        }
+        Some(Spline {
+            knots,
+            stride: self.stride,
+            data,
+            weights,
+        })
+    }
+
+    /// Tiller's removal on the knot vector as it is (clamped or unclamped); see
+    /// [`Spline::remove_knot_once`].
+    fn remove_open_knot_once(&self, u: f64, tolerance: f64) -> Option<Spline> {
         let rational = self.weights.is_some();
         let work = if rational {
             self.homogeneous()

@@ -722,9 +722,9 @@ fn periodic_parts<const D: usize>(
         return Err(CurveError::NoControlPoints);
     }
     if breakpoints.len() != n + 1 {
-        return Err(CurveError::Knots(KnotError::WrongLength {
+        return Err(CurveError::Knots(KnotError::BreakpointCount {
             got: breakpoints.len(),
-            expected: n + 1,
+            count: n,
         }));
     }
     let knots = KnotVector::periodic(degree, breakpoints)?;

@@ -378,8 +378,15 @@ impl Surface {
             s.homogeneous = homogeneous_rows(&s.data, s.weights.as_deref());
             Ok(s)
         };
+        let layout = crate::reduce::DegreeLayout {
+            point: if self.weights.is_some() { S + 1 } else { S },
+            truth: 3,
+            weight: self.weights.is_some().then_some(S),
+            membership,
+        };
         reduce_within(
             &self.direction_spline(direction),
+            &layout,
             tolerance,
             build,
             |c: &Surface| self.deviation_from(c),

@@ -170,6 +170,7 @@ pub(crate) fn remove_while<T>(
 /// degrees), `deviation` measures it against the original.
 pub(crate) fn reduce_within<T>(
     work: &Spline,
+    layout: &crate::reduce::DegreeLayout,
     tolerance: f64,
     build: impl Fn(&Spline) -> Result<T, ReduceError>,
     deviation: impl Fn(&T) -> f64,
@@ -179,7 +180,7 @@ pub(crate) fn reduce_within<T>(
         return Err(ReduceError::DegreeTooLow { degree: p });
     }
     let mut work = work
-        .reduced_pieces()
+        .reduced_pieces(layout)
         .ok_or(ReduceError::DegreeTooLow { degree: p })?;
     let mut current = build(&work)?;
     let mut error = deviation(&current);
@@ -615,8 +616,15 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
         } else {
             self.spline().clone()
         };
+        let layout = crate::reduce::DegreeLayout {
+            point: work.stride,
+            truth: D,
+            weight: W::RATIONAL.then_some(D + 3),
+            membership,
+        };
         reduce_within(
             &work,
+            &layout,
             tolerance,
             |w| Self::from_work(w, membership),
             |c: &Self| self.deviation_from(c),

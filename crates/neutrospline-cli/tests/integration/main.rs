@@ -16,6 +16,7 @@ mod hostile;
 mod import;
 mod intersect;
 mod kinds;
+mod periodic;
 mod plot;
 mod query;
 mod readers;

@@ -205,6 +205,8 @@ class Curve(Shape):
     def weights(self) -> Optional[FloatArray]: ...
     @property
     def knots(self) -> Optional[FloatArray]: ...
+    @property
+    def periodic_count(self) -> Optional[int]: ...
     def __len__(self) -> int: ...
 
 class Bezier(Curve):
@@ -232,6 +234,7 @@ class BSpline(Curve):
         knots: Optional[ArrayLike] = None,
         membership: Membership = "neutrosophic",
         *,
+        periodic: bool = False,
         name: Optional[str] = None,
         description: Optional[str] = None,
         point_names: Optional[Sequence[Optional[str]]] = None,
@@ -247,6 +250,7 @@ class Nurbs(Curve):
         knots: Optional[ArrayLike] = None,
         membership: Membership = "neutrosophic",
         *,
+        periodic: bool = False,
         name: Optional[str] = None,
         description: Optional[str] = None,
         point_names: Optional[Sequence[Optional[str]]] = None,
@@ -356,6 +360,9 @@ def load(
     degree_v: Optional[int] = None,
     knots_u: Optional[KnotOption] = None,
     knots_v: Optional[KnotOption] = None,
+    periodic: Optional[bool] = None,
+    periodic_u: Optional[bool] = None,
+    periodic_v: Optional[bool] = None,
     truth: Optional[float] = None,
     indeterminacy: Optional[float] = None,
     falsity: Optional[float] = None,

@@ -19,6 +19,7 @@ struct Construction<'a, 'py> {
     weights: Option<&'a Bound<'py, PyAny>>,
     degree: Option<usize>,
     knots: Option<&'a Bound<'py, PyAny>>,
+    periodic: bool,
     membership: &'a str,
     meta: Meta,
 }
@@ -37,13 +38,14 @@ impl<'a, 'py> Construction<'a, 'py> {
             weights: None,
             degree: None,
             knots: None,
+            periodic: false,
             membership,
             meta,
         }
     }
 
     /// Builds the curve of `kind` and its model.
-    fn build(self, kind: CurveKind) -> PyResult<Curve> {
+    fn build(mut self, kind: CurveKind) -> PyResult<Curve> {
         let membership = model::membership(self.membership)?;
         let arrays =
             PointArrays::read(self.positions, "positions", self.degrees, membership, false)?;
@@ -68,7 +70,20 @@ impl<'a, 'py> Construction<'a, 'py> {
             weights,
             degree: self.degree,
             knots,
+            periodic: self.periodic,
         };
+        if self.periodic {
+            // Names are given per distinct point; the repeated ones carry them again.
+            let extra = self.degree.unwrap_or(3);
+            if let Some(names) = self.meta.point_names.as_mut() {
+                let n = names.len();
+                if n > 0 {
+                    let repeated: Vec<Option<String>> =
+                        (0..extra).map(|i| names[i % n].clone()).collect();
+                    names.extend(repeated);
+                }
+            }
+        }
         let shape: Shape = if arrays.dimension == 2 {
             settings.curve(arrays.points::<2>())?.into()
         } else {
@@ -87,10 +102,15 @@ struct Settings {
     weights: Option<Vec<f64>>,
     degree: Option<usize>,
     knots: Option<Vec<f64>>,
+    /// Periodic: the points are the distinct ones and the knots the breakpoints.
+    periodic: bool,
 }
 
 impl Settings {
     fn curve<const D: usize>(&self, points: Vec<ControlPoint<D>>) -> PyResult<AnyCurve<D>> {
+        if self.periodic {
+            return self.periodic_curve(points);
+        }
         let count = points.len();
         let knots = || -> PyResult<KnotVector> {
             let degree = self.degree.unwrap_or(3);
@@ -109,6 +129,37 @@ impl Settings {
             }
         };
         curve.map_err(invalid)
+    }
+
+    /// [`BSplineCurve::periodic`] or [`NurbsCurve::periodic`] over the breakpoints given, or
+    /// uniform ones on [0, 1].
+    fn periodic_curve<const D: usize>(
+        &self,
+        points: Vec<ControlPoint<D>>,
+    ) -> PyResult<AnyCurve<D>> {
+        let degree = self.degree.unwrap_or(3);
+        let n = points.len();
+        let breakpoints = self
+            .knots
+            .clone()
+            .unwrap_or_else(|| (0..=n).map(|j| j as f64 / n.max(1) as f64).collect());
+        if degree == 0 {
+            return Err(invalid_at(
+                "degree",
+                "a periodic spline needs degree >= 1 (degree 0 has nothing to join)",
+            ));
+        }
+        let curve: Result<AnyCurve<D>, CurveError> = match self.kind {
+            CurveKind::Nurbs => {
+                let weights = self.weights.clone().unwrap_or_default();
+                NurbsCurve::periodic(points, weights, degree, &breakpoints).map(Into::into)
+            }
+            _ => BSplineCurve::periodic(points, degree, &breakpoints).map(Into::into),
+        };
+        curve.map_err(|e| match e {
+            CurveError::Knots(k) => invalid_at("knots", k),
+            other => invalid(other),
+        })
     }
 }
 
@@ -182,8 +233,17 @@ impl Bezier {
 impl BSpline {
     /// A B-spline curve of `degree` from `positions` and `degrees` (as for `Bezier`), on
     /// `knots` (n + degree + 1 non-decreasing values) or clamped uniform knots on [0, 1].
+    /// With `periodic=True` a closed curve: the points are its distinct control points (the
+    /// first `degree` of them follow again) and `knots` its n + 1 breakpoints (default
+    /// uniform on [0, 1]).
+    ///
+    /// >>> import neutrospline as ns
+    /// >>> square = [[0, 0], [1, 0], [1, 1], [0, 1]]
+    /// >>> ring = ns.BSpline(square, [[0.5, 0.2, 0.1]] * 4, degree=2, periodic=True)
+    /// >>> len(ring), ring.periodic_count, ring(0.0).tolist() == ring(1.0).tolist()
+    /// (6, 4, True)
     #[new]
-    #[pyo3(signature = (positions, degrees, degree = 3, knots = None, membership = "neutrosophic", *, name = None, description = None, point_names = None))]
+    #[pyo3(signature = (positions, degrees, degree = 3, knots = None, membership = "neutrosophic", *, periodic = false, name = None, description = None, point_names = None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         positions: &Bound<'_, PyAny>,
@@ -191,6 +251,7 @@ impl BSpline {
         degree: usize,
         knots: Option<&Bound<'_, PyAny>>,
         membership: &str,
+        periodic: bool,
         name: Option<String>,
         description: Option<String>,
         point_names: Option<Vec<Option<String>>>,
@@ -198,6 +259,7 @@ impl BSpline {
         let curve = Construction {
             degree: Some(degree),
             knots,
+            periodic,
             ..Construction::plain(
                 positions,
                 degrees,
@@ -213,9 +275,10 @@ impl BSpline {
 #[pymethods]
 impl Nurbs {
     /// A NURBS curve of `degree` from `positions`, `degrees` (as for `Bezier`) and one
-    /// positive `weights` value per control point, on `knots` or clamped uniform knots.
+    /// positive `weights` value per control point, on `knots` or clamped uniform knots;
+    /// `periodic=True` as for `BSpline` (one weight per distinct point).
     #[new]
-    #[pyo3(signature = (positions, degrees, weights, degree = 3, knots = None, membership = "neutrosophic", *, name = None, description = None, point_names = None))]
+    #[pyo3(signature = (positions, degrees, weights, degree = 3, knots = None, membership = "neutrosophic", *, periodic = false, name = None, description = None, point_names = None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         positions: &Bound<'_, PyAny>,
@@ -224,6 +287,7 @@ impl Nurbs {
         degree: usize,
         knots: Option<&Bound<'_, PyAny>>,
         membership: &str,
+        periodic: bool,
         name: Option<String>,
         description: Option<String>,
         point_names: Option<Vec<Option<String>>>,
@@ -232,6 +296,7 @@ impl Nurbs {
             weights: Some(weights),
             degree: Some(degree),
             knots,
+            periodic,
             ..Construction::plain(
                 positions,
                 degrees,

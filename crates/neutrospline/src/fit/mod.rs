@@ -32,12 +32,12 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-mod banded;
+pub(crate) mod banded;
 mod basis;
 mod bounds;
 mod choose;
 pub(crate) mod knots;
-mod qp;
+pub(crate) mod qp;
 mod report;
 mod request;
 mod solve;

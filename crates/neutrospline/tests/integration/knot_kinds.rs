@@ -142,3 +142,115 @@ fn unclamped_and_periodic_curves_match_scipy() {
         "every knot kind, B-spline and NURBS: {kinds:?}"
     );
 }
+
+mod properties {
+    //! Periodic curves under the operations that keep them periodic, against the original:
+    //! insertion then removal gives it back, refinement and reversal keep the curve, and
+    //! every result is periodic again (to the last bit of its knots) with valid degrees.
+
+    use neutrospline::strategies::{control_point, weight};
+    use neutrospline::{AnyCurve, BSpline, ControlPolygon, Evaluate, Nurbs};
+    use proptest::prelude::*;
+
+    /// A periodic B-spline or NURBS curve of degree 1 to 4 with `p + 1` to `p + 6` distinct
+    /// control points over random breakpoints.
+    fn periodic() -> impl Strategy<Value = AnyCurve<2>> {
+        (1usize..=4, 1usize..=6, any::<bool>()).prop_flat_map(|(p, extra, rational)| {
+            let n = p + extra;
+            (
+                prop::collection::vec(control_point::<2>(), n),
+                prop::collection::vec(0.02f64..1.0, n),
+                prop::collection::vec(weight(), n),
+                Just((p, rational)),
+            )
+                .prop_map(|(points, steps, weights, (p, rational))| {
+                    let mut breakpoints = vec![0.0];
+                    for s in steps {
+                        breakpoints.push(breakpoints.last().unwrap() + s);
+                    }
+                    if rational {
+                        Nurbs::periodic(points, weights, p, &breakpoints)
+                            .unwrap()
+                            .into()
+                    } else {
+                        BSpline::periodic(points, p, &breakpoints).unwrap().into()
+                    }
+                })
+        })
+    }
+
+    /// The largest difference of `a(t)` and `b(map(t))` over 201 parameters, in every
+    /// channel, relative to the size of `a`'s control positions (at least 1).
+    fn max_gap(a: &AnyCurve<2>, b: &AnyCurve<2>, map: impl Fn(f64) -> f64) -> f64 {
+        let scale = a
+            .control_points()
+            .iter()
+            .flat_map(|p| p.position)
+            .fold(1.0f64, |m, v| m.max(v.abs()));
+        let domain = a.domain();
+        (0..=200)
+            .map(|k| {
+                let t = (domain.start + (domain.end - domain.start) * f64::from(k) / 200.0)
+                    .min(domain.end);
+                let other = b.domain();
+                let (x, y) = (
+                    a.evaluate(t).unwrap(),
+                    b.evaluate(map(t).clamp(other.start, other.end)).unwrap(),
+                );
+                let mut gap = (x.position[0] - y.position[0])
+                    .abs()
+                    .max((x.position[1] - y.position[1]).abs());
+                for (d, e) in x.degrees.to_array().iter().zip(y.degrees.to_array()) {
+                    gap = gap.max((d - e).abs());
+                }
+                gap / scale
+            })
+            .fold(0.0, f64::max)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(128))]
+
+        #[test]
+        fn insertion_then_removal_is_the_original(curve in periodic(), at in 0.01f64..0.99, times in 1usize..=2) {
+            let n = curve.periodic_count().unwrap();
+            let domain = curve.domain();
+            let u = domain.start + (domain.end - domain.start) * at;
+            let p = curve.degree();
+            let times = times.min(p.saturating_sub(curve.knots().unwrap().multiplicity(u)).max(1));
+            prop_assume!(curve.knots().unwrap().multiplicity(u) + times <= p);
+            let inserted = curve.with_knots_inserted(&vec![u; times]).unwrap();
+            prop_assert_eq!(inserted.periodic_count(), Some(n + times));
+            prop_assert!(max_gap(&curve, &inserted, |t| t) < 1e-12);
+            let removal = inserted.without_knot(u, times, 1e-9).unwrap();
+            prop_assert_eq!(removal.removed, times);
+            let back = removal.curve;
+            prop_assert_eq!(back.periodic_count(), Some(n));
+            prop_assert_eq!(back.knots(), curve.knots());
+            for (a, b) in back.control_points().iter().zip(curve.control_points()) {
+                for (x, y) in a.position.iter().zip(b.position) {
+                    prop_assert!((x - y).abs() < 1e-9, "{a:?} {b:?}");
+                }
+            }
+            prop_assert!(max_gap(&curve, &back, |t| t) < 1e-9);
+        }
+
+        #[test]
+        fn refinement_and_reversal_keep_it_periodic(curve in periodic()) {
+            let n = curve.periodic_count().unwrap();
+            let refined = curve.refined(2);
+            prop_assert!(refined.periodic_count().unwrap() >= n);
+            prop_assert!(max_gap(&curve, &refined, |t| t) < 1e-12);
+            let domain = curve.domain();
+            let reversed = curve.reversed();
+            prop_assert_eq!(reversed.periodic_count(), Some(n));
+            prop_assert!(max_gap(&curve, &reversed, |t| domain.start + domain.end - t) < 1e-12);
+            let moved = curve.reparametrized(-3.0, 5.0).unwrap();
+            prop_assert_eq!(moved.periodic_count(), Some(n));
+            // The curve closes: its start and end agree.
+            let (a, b) = (curve.evaluate(domain.start).unwrap(), curve.evaluate(domain.end).unwrap());
+            prop_assert!((a.position[0] - b.position[0]).abs() < 1e-12);
+            prop_assert!((a.degrees.truth() - b.degrees.truth()).abs() < 1e-12);
+        }
+    }
+}

@@ -445,3 +445,106 @@ fn degree_reduction_undoes_elevation_and_reports_its_error() {
         "degree 1 cannot be reduced (the reduced curve keeps both ends, so it needs degree 1 or more)"
     );
 }
+
+/// Degree reduction solves the degree channels under the rule's bounds, as fitting does: a
+/// quartic whose nearest cubic (ends kept) has a truth control value above 1 reduces to the
+/// constrained optimum, found here by brute force over the active sets of the two free values
+/// (each free, at 0 or at 1) with the Gram integrals by Simpson's rule, not to the projection
+/// of the unconstrained one.
+#[test]
+fn reduction_solves_the_degrees_under_the_bounds() {
+    use neutrospline::{AnyCurve, Bezier, Membership};
+    let truth = [0.0, 1.0, 1.0, 0.3, 0.0];
+    let points: Vec<ControlPoint<2>> = truth
+        .iter()
+        .enumerate()
+        .map(|(i, &t)| ControlPoint::new([i as f64 / 4.0, 0.0], Degrees::new(t, 0.5, 0.5).unwrap()))
+        .collect();
+    let quartic = AnyCurve::Bezier(Bezier::new(points).unwrap());
+    let reduced = quartic.reduced(1, 1.0, Membership::Neutrosophic).unwrap();
+    let got: Vec<f64> = reduced
+        .curve
+        .control_points()
+        .iter()
+        .map(|p| p.degrees.truth())
+        .collect();
+    assert_eq!(got.len(), 4);
+    // The reference: minimise the integral of (cubic - quartic)^2 over the free values.
+    let bern = |n: usize, i: usize, s: f64| {
+        let binom = (0..i).fold(1.0, |acc, k| acc * (n - k) as f64 / (k + 1) as f64);
+        binom * s.powi(i as i32) * (1.0 - s).powi((n - i) as i32)
+    };
+    let quartic_t = |s: f64| (0..5).map(|i| truth[i] * bern(4, i, s)).sum::<f64>();
+    let simpson = |f: &dyn Fn(f64) -> f64| {
+        let m = 4000;
+        let h = 1.0 / m as f64;
+        (0..=m)
+            .map(|k| {
+                let w = if k == 0 || k == m {
+                    1.0
+                } else if k % 2 == 1 {
+                    4.0
+                } else {
+                    2.0
+                };
+                w * f(k as f64 * h)
+            })
+            .sum::<f64>()
+            * h
+            / 3.0
+    };
+    let objective = |x: [f64; 2]| {
+        simpson(&|s| {
+            let cubic = x[0] * bern(3, 1, s) + x[1] * bern(3, 2, s);
+            (cubic - quartic_t(s)).powi(2)
+        })
+    };
+    let a = |j: usize, k: usize| simpson(&|s| bern(3, j, s) * bern(3, k, s));
+    let b = |j: usize| simpson(&|s| bern(3, j, s) * quartic_t(s));
+    let mut best: Option<([f64; 2], f64)> = None;
+    for state in 0..9 {
+        let fixed = [state % 3, state / 3]; // 0 free, 1 at 0, 2 at 1
+        let value = |f: usize| if f == 1 { 0.0 } else { 1.0 };
+        let mut x = [0.0; 2];
+        match fixed {
+            [0, 0] => {
+                let det = a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1);
+                x = [
+                    (b(1) * a(2, 2) - b(2) * a(1, 2)) / det,
+                    (a(1, 1) * b(2) - a(2, 1) * b(1)) / det,
+                ];
+            }
+            [0, g] => {
+                x[1] = value(g);
+                x[0] = (b(1) - a(1, 2) * x[1]) / a(1, 1);
+            }
+            [g, 0] => {
+                x[0] = value(g);
+                x[1] = (b(2) - a(2, 1) * x[0]) / a(2, 2);
+            }
+            [g, h] => x = [value(g), value(h)],
+        }
+        if x.iter().all(|v| (0.0..=1.0).contains(v)) {
+            let f = objective(x);
+            if best.is_none_or(|(_, g)| f < g) {
+                best = Some((x, f));
+            }
+        }
+    }
+    let (want, f_want) = best.unwrap();
+    // The unconstrained cubic breaks the rule, so the bound matters here.
+    let det = a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1);
+    let free0 = (b(1) * a(2, 2) - b(2) * a(1, 2)) / det;
+    assert!(
+        free0 > 1.05,
+        "the test needs an unconstrained value above 1: {free0}"
+    );
+    assert_eq!([got[0], got[3]], [0.0, 0.0]);
+    for (g, w) in got[1..3].iter().zip(want) {
+        assert!((g - w).abs() < 1e-9, "{got:?} vs {want:?}");
+    }
+    assert!((objective([got[1], got[2]]) - f_want).abs() <= 1e-12 * f_want.max(1e-12));
+    // Projecting the unconstrained solution would have been worse.
+    let free1 = (a(1, 1) * b(2) - a(2, 1) * b(1)) / det;
+    assert!(objective([1.0, free1.clamp(0.0, 1.0)]) > f_want * (1.0 + 1e-6));
+}
