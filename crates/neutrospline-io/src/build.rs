@@ -364,22 +364,11 @@ impl Parsed {
             (Some(KnotSpec::Explicit(values)), _) => KnotVector::new(values.clone(), p, count),
         };
         result.map_err(|e| {
-            let message = e.to_string();
             let located = match (&e, knots) {
                 (KnotError::TooFewControlPoints { .. }, _) | (_, None) => {
-                    self.error_at(&degree.origin, message)
+                    self.error_at(&degree.origin, e.to_string())
                 }
-                (
-                    KnotError::Decreasing { index, .. } | KnotError::NotFinite { index, .. },
-                    Some(k),
-                ) => {
-                    let origin = Origin {
-                        line: k.line_of_knot(*index),
-                        field: k.origin.field.clone(),
-                    };
-                    self.error_at(&origin, message)
-                }
-                (_, Some(k)) => self.error_at(&k.origin, message),
+                (_, Some(k)) => self.knot_error_at(&e, k, e.to_string()),
             };
             failure(located, Some(e))
         })
@@ -434,21 +423,28 @@ impl Parsed {
             };
         result.map_err(|e| {
             let message = format!("{e} (periodic breakpoints)");
-            let located = match (&e, knots) {
-                (
-                    KnotError::Decreasing { index, .. } | KnotError::NotFinite { index, .. },
-                    Some(k),
-                ) => self.error_at(
-                    &Origin {
-                        line: k.line_of_knot(*index),
-                        field: k.origin.field.clone(),
-                    },
-                    message,
-                ),
-                _ => self.error_at(&origin, message),
+            let located = match knots {
+                Some(k) => self.knot_error_at(&e, k, message),
+                None => self.error_at(&origin, message),
             };
             (located, Some(e))
         })
+    }
+
+    /// `message` about knot error `e` at the line of the knot it names (the declaration's
+    /// line for the others).
+    fn knot_error_at(&self, e: &KnotError, knots: &KnotsSetting, message: String) -> InputError {
+        match e {
+            KnotError::Decreasing { index, .. } | KnotError::NotFinite { index, .. } => self
+                .error_at(
+                    &Origin {
+                        line: knots.line_of_knot(*index),
+                        field: knots.origin.field.clone(),
+                    },
+                    message,
+                ),
+            _ => self.error_at(&knots.origin, message),
+        }
     }
 
     fn curve_error(&self, e: &CurveError) -> InputError {

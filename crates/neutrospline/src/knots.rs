@@ -131,18 +131,7 @@ impl KnotVector {
                 expected,
             });
         }
-        for (index, &value) in knots.iter().enumerate() {
-            if !value.is_finite() {
-                return Err(KnotError::NotFinite { index, value });
-            }
-            if index > 0 && value < knots[index - 1] {
-                return Err(KnotError::Decreasing {
-                    index,
-                    value,
-                    prev: knots[index - 1],
-                });
-            }
-        }
+        check_non_decreasing(&knots)?;
         let mut start = 0;
         while start < knots.len() {
             let end = start
@@ -236,18 +225,7 @@ impl KnotVector {
     /// [`KnotError::EmptyDomain`] when `tau_n = tau_0`, and the checks of [`KnotVector::new`]
     /// on the result (a breakpoint repeated more than `degree + 1` times).
     pub fn periodic(degree: usize, breakpoints: &[f64]) -> Result<Self, KnotError> {
-        for (index, &value) in breakpoints.iter().enumerate() {
-            if !value.is_finite() {
-                return Err(KnotError::NotFinite { index, value });
-            }
-            if index > 0 && value < breakpoints[index - 1] {
-                return Err(KnotError::Decreasing {
-                    index,
-                    value,
-                    prev: breakpoints[index - 1],
-                });
-            }
-        }
+        check_non_decreasing(breakpoints)?;
         let n = breakpoints.len().saturating_sub(1);
         if n == 0 {
             return Err(KnotError::TooFewControlPoints {
@@ -472,6 +450,23 @@ impl KnotVector {
     pub(crate) fn from_parts_unchecked(degree: usize, knots: Vec<f64>) -> Self {
         KnotVector { degree, knots }
     }
+}
+
+/// The first value of `values` that is not finite or less than the one before.
+fn check_non_decreasing(values: &[f64]) -> Result<(), KnotError> {
+    for (index, &value) in values.iter().enumerate() {
+        if !value.is_finite() {
+            return Err(KnotError::NotFinite { index, value });
+        }
+        if index > 0 && value < values[index - 1] {
+            return Err(KnotError::Decreasing {
+                index,
+                value,
+                prev: values[index - 1],
+            });
+        }
+    }
+    Ok(())
 }
 
 /// The knots of [`KnotVector::periodic`] without its checks: `breakpoints` has at least two

@@ -528,6 +528,39 @@ impl<const D: usize> Bezier<D> {
     }
 }
 
+/// The control points (and weights) of a periodic curve, the distinct ones followed by the
+/// first `degree` again (cyclically), and its knots: [`BSpline::periodic`].
+type PeriodicParts<const D: usize> = (Vec<ControlPoint<D>>, Option<Vec<f64>>, KnotVector);
+
+fn periodic_parts<const D: usize>(
+    control_points: Vec<ControlPoint<D>>,
+    weights: Option<Vec<f64>>,
+    degree: usize,
+    breakpoints: &[f64],
+) -> Result<PeriodicParts<D>, CurveError> {
+    let n = control_points.len();
+    if n == 0 {
+        return Err(CurveError::NoControlPoints);
+    }
+    if breakpoints.len() != n + 1 {
+        return Err(CurveError::Knots(KnotError::BreakpointCount {
+            got: breakpoints.len(),
+            count: n,
+        }));
+    }
+    let knots = KnotVector::periodic(degree, breakpoints)?;
+    let wrap = |i: usize| i % n;
+    let points = (0..n + degree).map(|i| control_points[wrap(i)]).collect();
+    let weights = weights.map(|w| {
+        if w.len() == n {
+            (0..n + degree).map(|i| w[wrap(i)]).collect()
+        } else {
+            w
+        }
+    });
+    Ok((points, weights, knots))
+}
+
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
@@ -705,37 +738,4 @@ pub(crate) mod tests {
             "1 weights for 2 control points (one weight per control point)"
         );
     }
-}
-
-/// The control points (and weights) of a periodic curve, the distinct ones followed by the
-/// first `degree` again (cyclically), and its knots: [`BSpline::periodic`].
-type PeriodicParts<const D: usize> = (Vec<ControlPoint<D>>, Option<Vec<f64>>, KnotVector);
-
-fn periodic_parts<const D: usize>(
-    control_points: Vec<ControlPoint<D>>,
-    weights: Option<Vec<f64>>,
-    degree: usize,
-    breakpoints: &[f64],
-) -> Result<PeriodicParts<D>, CurveError> {
-    let n = control_points.len();
-    if n == 0 {
-        return Err(CurveError::NoControlPoints);
-    }
-    if breakpoints.len() != n + 1 {
-        return Err(CurveError::Knots(KnotError::BreakpointCount {
-            got: breakpoints.len(),
-            count: n,
-        }));
-    }
-    let knots = KnotVector::periodic(degree, breakpoints)?;
-    let wrap = |i: usize| i % n;
-    let points = (0..n + degree).map(|i| control_points[wrap(i)]).collect();
-    let weights = weights.map(|w| {
-        if w.len() == n {
-            (0..n + degree).map(|i| w[wrap(i)]).collect()
-        } else {
-            w
-        }
-    });
-    Ok((points, weights, knots))
 }
