@@ -548,3 +548,48 @@ fn reduction_solves_the_degrees_under_the_bounds() {
     let free1 = (a(1, 1) * b(2) - a(2, 1) * b(1)) / det;
     assert!(objective([1.0, free1.clamp(0.0, 1.0)]) > f_want * (1.0 + 1e-6));
 }
+
+/// The NURBS Book, Example 5.1: the cubic on U = {0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5} with
+/// u = 5/2 inserted once (k = 5; a_3 = 5/6, a_4 = 1/2, a_5 = 1/6) gets Q_3 = 5/6 P_3 + 1/6 P_2,
+/// Q_4 = 1/2 P_4 + 1/2 P_3, Q_5 = 1/6 P_5 + 5/6 P_4 and keeps the others (shifted after);
+/// Tiller's removal takes the knot off again and gives P back.
+#[test]
+fn nurbs_book_example_5_1_insertion_and_its_removal() {
+    let knots = vec![0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 5.0, 5.0, 5.0];
+    let rows: Vec<Vec<f64>> = (0..8)
+        .map(|i| {
+            let i = f64::from(i);
+            vec![i * i - 3.0 * i, (i * 1.7).sin() * 4.0, 0.1 * i, 0.5, 0.9 - 0.1 * i]
+        })
+        .collect();
+    let curve = BSpline::new(points(&rows), KnotVector::new(knots, 3, 8).unwrap()).unwrap();
+    let inserted = curve.insert_knot(2.5).unwrap();
+    let got = inserted.control_points();
+    assert_eq!(got.len(), 9);
+    let mix = |a: usize, wa: f64, b: usize, wb: f64| -> Vec<f64> {
+        (0..5).map(|c| wa * rows[a][c] + wb * rows[b][c]).collect()
+    };
+    let mut want: Vec<Vec<f64>> = rows[..3].to_vec();
+    want.push(mix(3, 5.0 / 6.0, 2, 1.0 / 6.0));
+    want.push(mix(4, 0.5, 3, 0.5));
+    want.push(mix(5, 1.0 / 6.0, 4, 5.0 / 6.0));
+    want.extend(rows[5..].iter().cloned());
+    for (k, (g, w)) in got.iter().zip(&want).enumerate() {
+        let g = [g.position[0], g.position[1], g.degrees.truth(), g.degrees.indeterminacy(), g.degrees.falsity()];
+        for (a, b) in g.iter().zip(w) {
+            assert!((a - b).abs() < 1e-14, "Q_{k}: {g:?} vs {w:?}");
+        }
+    }
+    assert_eq!(
+        inserted.knots().knots(),
+        &[0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 2.5, 3.0, 4.0, 5.0, 5.0, 5.0, 5.0]
+    );
+    let back = inserted.remove_knot(2.5, 1, 1e-12).unwrap();
+    assert_eq!(back.removed, 1);
+    assert_eq!(back.curve.knots(), curve.knots());
+    for (a, b) in back.curve.control_points().iter().zip(curve.control_points()) {
+        for (x, y) in a.position.iter().zip(b.position) {
+            assert!((x - y).abs() < 1e-13);
+        }
+    }
+}
