@@ -11,6 +11,7 @@ mod batch_properties;
 mod bspline_properties;
 mod curve_batch_properties;
 mod degree_zero;
+mod family_blending;
 mod family_reference;
 mod fit_properties;
 mod fit_reference;

@@ -559,7 +559,13 @@ fn nurbs_book_example_5_1_insertion_and_its_removal() {
     let rows: Vec<Vec<f64>> = (0..8)
         .map(|i| {
             let i = f64::from(i);
-            vec![i * i - 3.0 * i, (i * 1.7).sin() * 4.0, 0.1 * i, 0.5, 0.9 - 0.1 * i]
+            vec![
+                i * i - 3.0 * i,
+                (i * 1.7).sin() * 4.0,
+                0.1 * i,
+                0.5,
+                0.9 - 0.1 * i,
+            ]
         })
         .collect();
     let curve = BSpline::new(points(&rows), KnotVector::new(knots, 3, 8).unwrap()).unwrap();
@@ -575,7 +581,13 @@ fn nurbs_book_example_5_1_insertion_and_its_removal() {
     want.push(mix(5, 1.0 / 6.0, 4, 5.0 / 6.0));
     want.extend(rows[5..].iter().cloned());
     for (k, (g, w)) in got.iter().zip(&want).enumerate() {
-        let g = [g.position[0], g.position[1], g.degrees.truth(), g.degrees.indeterminacy(), g.degrees.falsity()];
+        let g = [
+            g.position[0],
+            g.position[1],
+            g.degrees.truth(),
+            g.degrees.indeterminacy(),
+            g.degrees.falsity(),
+        ];
         for (a, b) in g.iter().zip(w) {
             assert!((a - b).abs() < 1e-14, "Q_{k}: {g:?} vs {w:?}");
         }
@@ -587,7 +599,12 @@ fn nurbs_book_example_5_1_insertion_and_its_removal() {
     let back = inserted.remove_knot(2.5, 1, 1e-12).unwrap();
     assert_eq!(back.removed, 1);
     assert_eq!(back.curve.knots(), curve.knots());
-    for (a, b) in back.curve.control_points().iter().zip(curve.control_points()) {
+    for (a, b) in back
+        .curve
+        .control_points()
+        .iter()
+        .zip(curve.control_points())
+    {
         for (x, y) in a.position.iter().zip(b.position) {
             assert!((x - y).abs() < 1e-13);
         }
