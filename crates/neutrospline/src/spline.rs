@@ -233,9 +233,17 @@ impl Spline {
                 max: p + 1,
             });
         }
-        if let Some(n) = self.periodic_count() {
-            return Ok(self.insert_periodic_knot(u, n));
+        match self.periodic_count() {
+            Some(n) => self.insert_periodic_knot(u, n),
+            None => Ok(self.insert_open_knot(u)),
         }
+    }
+
+    /// Boehm's insertion of `u` (in the domain, multiplicity below `p + 1`) into the knot
+    /// vector as it is.
+    fn insert_open_knot(&self, u: f64) -> Spline {
+        let Range { end, .. } = self.knots.domain();
+        let p = self.degree();
         let knots = self.knots.knots();
         // Span with u_k <= u < u_{k+1}, or the last non-empty span at the domain end.
         let k = if u >= end {
@@ -276,9 +284,66 @@ impl Spline {
         }
         let mut new_knots = knots.to_vec();
         new_knots.insert(k + 1, u);
-        Ok(Spline {
+        Spline {
             knots: KnotVector::from_parts_unchecked(p, new_knots),
             stride,
+            data,
+            weights,
+        }
+    }
+
+    /// The periodic spline with `n` distinct points unrolled over `periods` periods: the
+    /// unclamped spline of `periods n + p` points (point `i` is point `i mod n`) over the knots
+    /// of the breakpoints of all the periods (`tau_j + k T`), and those breakpoints.
+    fn unrolled(&self, n: usize, periods: usize) -> (Spline, Vec<f64>) {
+        let p = self.degree();
+        let breakpoints = self.knots.periodic_breakpoints().unwrap_or_default();
+        let period = breakpoints[n] - breakpoints[0];
+        let mut all = breakpoints.to_vec();
+        for k in 1..periods {
+            all.extend(breakpoints[1..].iter().map(|b| b + k as f64 * period));
+        }
+        let count = periods * n + p;
+        let mut data = Vec::with_capacity(count * self.stride);
+        let mut weights = self.weights.as_ref().map(|_| Vec::with_capacity(count));
+        for i in 0..count {
+            data.extend_from_slice(self.row(i % n));
+            if let Some(w) = weights.as_mut() {
+                w.push(self.weight(i % n));
+            }
+        }
+        let spline = Spline {
+            knots: KnotVector::from_parts_unchecked(p, crate::knots::periodic_extension(p, &all)),
+            stride: self.stride,
+            data,
+            weights,
+        };
+        (spline, all)
+    }
+
+    /// The periodic spline over `breakpoints` whose `distinct` points are the unrolled points
+    /// `first .. first + distinct` (point `first + j` is distinct point `j`), repeated.
+    fn rolled_up(
+        unrolled: &Spline,
+        first: usize,
+        distinct: usize,
+        breakpoints: &[f64],
+    ) -> Option<Spline> {
+        let p = unrolled.degree();
+        let knots = KnotVector::periodic(p, breakpoints).ok()?;
+        let count = distinct + p;
+        let mut data = Vec::with_capacity(count * unrolled.stride);
+        let mut weights = unrolled.weights.as_ref().map(|_| Vec::with_capacity(count));
+        for j in 0..count {
+            let i = first + j % distinct;
+            data.extend_from_slice(unrolled.row(i));
+            if let Some(w) = weights.as_mut() {
+                w.push(unrolled.weight(i));
+            }
+        }
+        Some(Spline {
+            knots,
+            stride: unrolled.stride,
             data,
             weights,
         })
@@ -286,67 +351,40 @@ impl Spline {
 
     /// Boehm's insertion of `u` (in the domain `[tau_0, tau_n]`) into a periodic spline with
     /// `n` distinct control points, once in every period, so that the result is periodic with
-    /// `n + 1` (docs/model.md, "Knot vectors"). With the periodic knots `u_i` (all integers
-    /// `i`), cyclic points `P_i = P_{i mod n}` and `u_k <= u < u_{k+1}`, the new points over
-    /// one period are `Q_i = a_i P_i + (1 - a_i) P_{i-1}`, `a_i = (u - u_i) / (u_{i+p} - u_i)`,
-    /// for `k - p < i <= k` and `Q_i = P_{i-1}` for `k < i <= k - p + n + 1`; the new distinct
-    /// point `j` is the `Q_i` with `i = j (mod n + 1)`.
-    fn insert_periodic_knot(&self, u: f64, n: usize) -> Spline {
+    /// `n + 1` (docs/model.md, "Knot vectors"): the spline unrolled over `m + 1` periods
+    /// (`m (n + 1) >= p`) gets `u + k T` inserted in each, and the new distinct points are its
+    /// points `m (n + 1) ..` of period `m`, whose supports hold every copy they need; the
+    /// knots are rebuilt from the new breakpoints.
+    ///
+    /// # Errors
+    /// As [`Spline::insert_open_knot`]'s checks (a breakpoint already of multiplicity p + 1).
+    fn insert_periodic_knot(&self, u: f64, n: usize) -> Result<Spline, KnotError> {
         let p = self.degree();
-        let breakpoints = self.knots.periodic_breakpoints().unwrap_or_default();
+        let breakpoints = self
+            .knots
+            .periodic_breakpoints()
+            .unwrap_or_default()
+            .to_vec();
+        let period = breakpoints[n] - breakpoints[0];
         let u = if u >= breakpoints[n] {
             breakpoints[0]
         } else {
             u
         };
-        let period = breakpoints[n] - breakpoints[0];
-        // The periodic knot u_i for any integer i (i = p + j: breakpoint j).
-        let knot = |i: isize| {
-            let j = i - p as isize;
-            breakpoints[j.rem_euclid(n as isize) as usize]
-                + j.div_euclid(n as isize) as f64 * period
-        };
-        let row = |i: isize| self.row(i.rem_euclid(n as isize) as usize);
-        let weight = |i: isize| self.weight(i.rem_euclid(n as isize) as usize);
-        // Span k in [p, p + n - 1] with u_k <= u < u_{k+1}.
-        let k = p as isize + breakpoints[..n].partition_point(|&b| b <= u) as isize - 1;
-        let stride = self.stride;
-        let mut points: Vec<(Vec<f64>, f64)> = vec![(Vec::new(), 1.0); n + 1];
-        let mut pair = vec![0.0; 2 * stride];
-        for i in k - p as isize + 1..=k - p as isize + n as isize + 1 {
-            let (values, w) = if i <= k {
-                let a = ((u - knot(i)) / (knot(i + p as isize) - knot(i))).clamp(0.0, 1.0);
-                pair[..stride].copy_from_slice(row(i - 1));
-                pair[stride..].copy_from_slice(row(i));
-                let ws = self.weights.as_ref().map(|_| (weight(i - 1), weight(i)));
-                let w = combine(&mut pair, stride, (0, 0, 1), (1.0 - a, a), ws);
-                (pair[..stride].to_vec(), w)
-            } else {
-                (row(i - 1).to_vec(), weight(i - 1))
-            };
-            points[i.rem_euclid(n as isize + 1) as usize] = (values, w);
+        let m = p.div_ceil(n + 1).max(1);
+        let (mut unrolled, _) = self.unrolled(n, m + 1);
+        for k in 0..=m {
+            unrolled = unrolled.insert_open_knot(u + k as f64 * period);
         }
-        let mut new_breakpoints = breakpoints.to_vec();
+        let mut new_breakpoints = breakpoints.clone();
         new_breakpoints.insert(breakpoints[..n].partition_point(|&b| b <= u), u);
-        let knots = KnotVector::from_parts_unchecked(
-            p,
-            crate::knots::periodic_extension(p, &new_breakpoints),
-        );
-        let mut data = Vec::with_capacity((n + 1 + p) * stride);
-        let mut weights = self.weights.as_ref().map(|_| Vec::with_capacity(n + 1 + p));
-        for j in 0..n + 1 + p {
-            let (values, w) = &points[j % (n + 1)];
-            data.extend_from_slice(values);
-            if let Some(ws) = weights.as_mut() {
-                ws.push(*w);
-            }
-        }
-        Spline {
-            knots,
-            stride,
-            data,
-            weights,
-        }
+        Spline::rolled_up(&unrolled, m * (n + 1), n + 1, &new_breakpoints).ok_or(
+            KnotError::MultiplicityTooHigh {
+                value: u,
+                multiplicity: self.knots.multiplicity(u) + 1,
+                max: p + 1,
+            },
+        )
     }
 
     /// This spline with its knots rebuilt exactly as [`KnotVector::periodic`] of its
@@ -361,10 +399,17 @@ impl Spline {
         let breakpoints = &self.knots.knots()[p..=p + n];
         let period = breakpoints[n] - breakpoints[0];
         let rebuilt = crate::knots::periodic_extension(p, breakpoints);
+        // Rounding of the mapped or reflected knots: a few units in the last place of the
+        // largest knot, or 1e-12 of the period.
+        let size = self
+            .knots
+            .knots()
+            .iter()
+            .fold(0.0f64, |m, u| m.max(u.abs()));
         let close = rebuilt
             .iter()
             .zip(self.knots.knots())
-            .all(|(a, b)| (a - b).abs() <= 1e-12 * period);
+            .all(|(a, b)| (a - b).abs() <= (8.0 * f64::EPSILON * size).max(1e-12 * period));
         let repeats = (n..n + p).all(|i| {
             self.row(i) == self.row(i - n)
                 && self.weight(i).to_bits() == self.weight(i - n).to_bits()
@@ -393,71 +438,33 @@ impl Spline {
 
     /// Tiller's removal of `u` from a periodic spline with `n` distinct control points, once
     /// in every period, so that the result is periodic with `n - 1`: the spline unrolled over
-    /// three periods (`3 n + p` points, the knots of the breakpoints of all three) loses the
-    /// copy `u + T` of the middle period by [`Spline::remove_open_knot_once`], and the new
-    /// distinct points are read from the `n - 1` points starting at the first one that
-    /// changed (the unrolled point `i` is periodic point `(i - 1) mod (n - 1)` there). The
-    /// copies are `n > p` knots apart, so Tiller's equations for one never reach another and
-    /// removing them one at a time is removing them all. `None` when the knot is not
-    /// removable within `tolerance`, or when a period holds too few control points (`n <= p`).
+    /// `2 q + 1` periods (`q` periods of margin, `q n > p + 1`) loses the copies `u + k T` of
+    /// every period but the first and the last, one at a time by
+    /// [`Spline::remove_open_knot_once`], and the new distinct points are read from the
+    /// middle period (the unrolled point `i` there is periodic point `(i - 1) mod (n - 1)`:
+    /// the first period keeps its copy). `None` when a copy is not removable within
+    /// `tolerance`, or when no distinct point would be left (`n < 2`).
     fn remove_periodic_knot_once(&self, u: f64, tolerance: f64, n: usize) -> Option<Spline> {
         let p = self.degree();
-        if n <= p || n < 2 {
+        if n < 2 {
             return None;
         }
-        let breakpoints = self.knots.periodic_breakpoints()?;
+        let breakpoints = self.knots.periodic_breakpoints()?.to_vec();
         let period = breakpoints[n] - breakpoints[0];
         if !(u > breakpoints[0] && u < breakpoints[n]) || self.knots.multiplicity(u) == 0 {
             return None;
         }
-        let mut three = breakpoints.to_vec();
-        three.extend(breakpoints[1..].iter().map(|b| b + period));
-        three.extend(breakpoints[1..].iter().map(|b| b + 2.0 * period));
-        let shifted = u + period;
-        let mut data = Vec::with_capacity((3 * n + p) * self.stride);
-        let mut weights = self.weights.as_ref().map(|_| Vec::with_capacity(3 * n + p));
-        for i in 0..3 * n + p {
-            data.extend_from_slice(self.row(i % n));
-            if let Some(w) = weights.as_mut() {
-                w.push(self.weight(i % n));
-            }
+        let q = (p + 2).div_ceil(n) + 1;
+        let periods = 2 * q + 1;
+        let (mut unrolled, _) = self.unrolled(n, periods);
+        for k in 1..periods - 1 {
+            unrolled = unrolled.remove_open_knot_once(u + k as f64 * period, tolerance)?;
         }
-        let unrolled = Spline {
-            knots: KnotVector::from_parts_unchecked(p, crate::knots::periodic_extension(p, &three)),
-            stride: self.stride,
-            data,
-            weights,
-        };
-        let r = unrolled.knots.knots().partition_point(|&x| x <= shifted) - 1;
-        let removed = unrolled.remove_open_knot_once(shifted, tolerance)?;
-        let distinct = n - 1;
-        let start = r - p;
-        let mut rows: Vec<(usize, usize)> = (start..start + distinct)
-            .map(|i| ((i - 1) % distinct, i))
-            .collect();
-        rows.sort_unstable();
-        let mut new_breakpoints = breakpoints.to_vec();
+        let mut new_breakpoints = breakpoints.clone();
         let at = new_breakpoints.iter().position(|&b| b == u)?;
         new_breakpoints.remove(at);
-        let knots = KnotVector::periodic(p, &new_breakpoints).ok()?;
-        let mut data = Vec::with_capacity((distinct + p) * self.stride);
-        let mut weights = removed
-            .weights
-            .as_ref()
-            .map(|_| Vec::with_capacity(distinct + p));
-        for j in 0..distinct + p {
-            let i = rows[j % distinct].1;
-            data.extend_from_slice(removed.row(i));
-            if let Some(w) = weights.as_mut() {
-                w.push(removed.weight(i));
-            }
-        }
-        Some(Spline {
-            knots,
-            stride: self.stride,
-            data,
-            weights,
-        })
+        let distinct = n - 1;
+        Spline::rolled_up(&unrolled, q * distinct + 1, distinct, &new_breakpoints)
     }
 
     /// Tiller's removal on the knot vector as it is (clamped or unclamped); see
@@ -721,7 +728,7 @@ impl Spline {
         for row in self.data.chunks_exact(self.stride).rev() {
             data.extend_from_slice(row);
         }
-        Spline {
+        let reversed = Spline {
             knots: KnotVector::from_parts_unchecked(self.degree(), knots),
             stride: self.stride,
             data,
@@ -729,6 +736,10 @@ impl Spline {
                 .weights
                 .as_ref()
                 .map(|w| w.iter().rev().copied().collect()),
+        };
+        match self.periodic_count() {
+            Some(n) => reversed.periodic_again(n),
+            None => reversed,
         }
     }
 

@@ -329,11 +329,7 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
     /// this curve's point at `a + b - t` (control points and weights in reverse order, knots
     /// reflected).
     pub fn reversed(&self) -> Self {
-        let reversed = self.spline.reversed();
-        SplineCurve::from_spline(match self.periodic_count() {
-            Some(n) => reversed.periodic_again(n),
-            None => reversed,
-        })
+        SplineCurve::from_spline(self.spline.reversed())
     }
 
     /// The curve with an affine map applied to its control positions; weights and degrees

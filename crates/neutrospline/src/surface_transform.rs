@@ -13,8 +13,8 @@ use crate::knots::{KnotError, KnotVector};
 use crate::spline::Spline;
 use crate::surface::{homogeneous_rows, Direction, Surface, SurfaceKind, S};
 use crate::transform::{
-    check_interior_knot, deviation_samples, mapped_knots, point_deviation, reduce_within,
-    remove_while, KnotRemoval, DEVIATION_SAMPLES_PER_SPAN,
+    check_interior_knot, deviation_samples, point_deviation, reduce_within, remove_while,
+    KnotRemoval, DEVIATION_SAMPLES_PER_SPAN,
 };
 use crate::EvaluateSurface;
 
@@ -252,11 +252,7 @@ impl Surface {
         start: f64,
         end: f64,
     ) -> Result<Surface, KnotError> {
-        let spline = self.direction_spline(direction);
-        let spline = Spline {
-            knots: mapped_knots(&spline.knots, start, end)?,
-            ..spline
-        };
+        let spline = self.direction_spline(direction).with_domain(start, end)?;
         Ok(self.with_direction_spline(direction, spline))
     }
 

@@ -361,14 +361,9 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn reparametrized(&self, start: f64, end: f64) -> Result<Self, KnotError> {
-        let spline = Spline {
-            knots: mapped_knots(self.knots(), start, end)?,
-            ..self.spline().clone()
-        };
-        Ok(SplineCurve::from_spline(match self.periodic_count() {
-            Some(n) => spline.periodic_again(n),
-            None => spline,
-        }))
+        Ok(SplineCurve::from_spline(
+            self.spline().with_domain(start, end)?,
+        ))
     }
 }
 
@@ -376,6 +371,24 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
 /// curve becomes its clamped B-spline for the operations that need knots (insertion,
 /// refinement, a domain other than \[0, 1\]); a knot removal that leaves one span gives a
 /// spline still (the kind is the user's to change).
+impl Spline {
+    /// The same spline on the domain `[start, end]` (the knots mapped by [`mapped_knots`]); a
+    /// periodic one stays periodic, its rounded knots rebuilt from its breakpoints.
+    ///
+    /// # Errors
+    /// As [`mapped_knots`].
+    pub(crate) fn with_domain(&self, start: f64, end: f64) -> Result<Spline, KnotError> {
+        let mapped = Spline {
+            knots: mapped_knots(&self.knots, start, end)?,
+            ..self.clone()
+        };
+        Ok(match self.periodic_count() {
+            Some(n) => mapped.periodic_again(n),
+            None => mapped,
+        })
+    }
+}
+
 impl<const D: usize> crate::AnyCurve<D> {
     /// A spline of this curve: itself, or a Bézier curve as its clamped B-spline.
     fn as_spline(&self) -> crate::AnyCurve<D> {

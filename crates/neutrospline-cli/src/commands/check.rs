@@ -43,7 +43,7 @@ const KNOTS_SHOWN: usize = 6;
 
 /// `0, 0, 0, 0.5, 1, 1, 1 (7 knots, clamped-uniform)` or `... (9 knots, given, unclamped)`;
 /// long lists show their ends only.
-fn knots_line(knots: &KnotVector, source: Option<KnotSource>) -> String {
+fn knots_line(knots: &KnotVector, source: Option<KnotSource>, periodic: bool) -> String {
     let values = knots.knots();
     let shown: Vec<String> = if values.len() > KNOTS_IN_FULL {
         let head = values[..KNOTS_SHOWN].iter().map(|&k| number(k));
@@ -54,7 +54,6 @@ fn knots_line(knots: &KnotVector, source: Option<KnotSource>) -> String {
     } else {
         values.iter().map(|&k| number(k)).collect()
     };
-    let periodic = knots.periodic_breakpoints().is_some();
     let source = match source {
         Some(KnotSource::Rule(rule)) if periodic => format!("{}, periodic", rule.name()),
         Some(KnotSource::Rule(rule)) => rule.name().to_owned(),
@@ -122,6 +121,9 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
     // How the knots were given: one source per knot direction (u, then v for surfaces).
     let sources = model.knot_sources().to_vec();
     let source = |i: usize| sources.get(i).copied();
+    // A direction is periodic when its knots are and its points repeat (`periodic_counts`).
+    let periodic = model.periodic_counts();
+    let periodic = |i: usize| periodic.get(i).copied().flatten().is_some();
     let spreads = model.spreads().map(<[_]>::to_vec);
     let shape = model.into_shape();
     let geometry = match &shape {
@@ -150,8 +152,16 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
                 )?;
                 writeln!(w, "membership: {membership}")?;
                 if shape.kind().has_knots() {
-                    writeln!(w, "knots_u: {}", knots_line(s.knots_u(), source(0)))?;
-                    writeln!(w, "knots_v: {}", knots_line(s.knots_v(), source(1)))?;
+                    writeln!(
+                        w,
+                        "knots_u: {}",
+                        knots_line(s.knots_u(), source(0), periodic(0))
+                    )?;
+                    writeln!(
+                        w,
+                        "knots_v: {}",
+                        knots_line(s.knots_v(), source(1), periodic(1))
+                    )?;
                 }
                 let [domain_u, domain_v] = s.domain();
                 writeln!(w, "domain_u: {}", domain_line(domain_u))?;
@@ -165,7 +175,7 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
                 writeln!(w, "control points: {}", shape.control_count())?;
                 writeln!(w, "membership: {membership}")?;
                 if let Some(knots) = shape.curve_knots() {
-                    writeln!(w, "knots: {}", knots_line(knots, source(0)))?;
+                    writeln!(w, "knots: {}", knots_line(knots, source(0), periodic(0)))?;
                 }
                 if let Some(domain) = shape.curve_domain() {
                     writeln!(w, "domain: {}", domain_line(domain))?;
