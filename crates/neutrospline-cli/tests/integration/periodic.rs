@@ -220,22 +220,76 @@ fn few_points_surfaces_and_uniform_knots() {
     );
     for i in 0..3 {
         for j in 0..2 {
-            surface.push_str(&format!("{{ x = {i}, y = {j}, z = {}, T = 0.5, I = 0.5, F = 0.5 }},\n", (i + j) % 2));
+            surface.push_str(&format!(
+                "{{ x = {i}, y = {j}, z = {}, T = 0.5, I = 0.5, F = 0.5 }},\n",
+                (i + j) % 2
+            ));
         }
     }
     surface.push_str("]\n");
     let uniform = "kind = \"bspline\"\ndegree = 2\nknots = \"uniform\"\ncontrol_points = [\n\
         { x = 0, y = 0, T = 0.5, I = 0.5, F = 0.5 },\n{ x = 1, y = 1, T = 0.5, I = 0.5, F = 0.5 },\n\
         { x = 2, y = 0, T = 0.5, I = 0.5, F = 0.5 },\n]\n";
-    let dir = dir_with(&[("few.toml", few), ("s.toml", surface.as_str()), ("u.toml", uniform)]);
+    let dir = dir_with(&[
+        ("few.toml", few),
+        ("s.toml", surface.as_str()),
+        ("u.toml", uniform),
+    ]);
     let before = rows(&ok(dir.path(), &["eval", "few.toml", "--samples", "21"]));
-    ok(dir.path(), &["transform", "few.toml", "-o", "more.toml", "--insert-knot", "0.25,0.6"]);
-    assert_close(&before, &rows(&ok(dir.path(), &["eval", "more.toml", "--samples", "21"])), "few points");
-    ok(dir.path(), &["transform", "more.toml", "-o", "back.toml", "--remove-knot", "0.25", "--tolerance", "1e-9"]);
-    assert_close(&before, &rows(&ok(dir.path(), &["eval", "back.toml", "--samples", "21"])), "removed");
-    ok(dir.path(), &["transform", "s.toml", "-o", "r.toml", "--reverse", "--direction", "u"]);
+    ok(
+        dir.path(),
+        &[
+            "transform",
+            "few.toml",
+            "-o",
+            "more.toml",
+            "--insert-knot",
+            "0.25,0.6",
+        ],
+    );
+    assert_close(
+        &before,
+        &rows(&ok(dir.path(), &["eval", "more.toml", "--samples", "21"])),
+        "few points",
+    );
+    ok(
+        dir.path(),
+        &[
+            "transform",
+            "more.toml",
+            "-o",
+            "back.toml",
+            "--remove-knot",
+            "0.25",
+            "--tolerance",
+            "1e-9",
+        ],
+    );
+    assert_close(
+        &before,
+        &rows(&ok(dir.path(), &["eval", "back.toml", "--samples", "21"])),
+        "removed",
+    );
+    ok(
+        dir.path(),
+        &[
+            "transform",
+            "s.toml",
+            "-o",
+            "r.toml",
+            "--reverse",
+            "--direction",
+            "u",
+        ],
+    );
     let reversed = std::fs::read_to_string(dir.path().join("r.toml")).unwrap();
-    assert!(reversed.contains("rows = 3\n") && reversed.contains("periodic_u = true\n"), "{reversed}");
+    assert!(
+        reversed.contains("rows = 3\n") && reversed.contains("periodic_u = true\n"),
+        "{reversed}"
+    );
     let check = ok(dir.path(), &["check", "u.toml"]).stdout;
-    assert!(check.contains("knots: -2, -1, 0, 1, 2, 3 (6 knots, uniform)\n"), "{check}");
+    assert!(
+        check.contains("knots: -2, -1, 0, 1, 2, 3 (6 knots, uniform)\n"),
+        "{check}"
+    );
 }
