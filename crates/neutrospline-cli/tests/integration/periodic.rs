@@ -15,6 +15,13 @@ fn ok(dir: &Path, args: &[&str]) -> Output {
     out
 }
 
+/// The model file `name` written in `dir`, which must be in the periodic form.
+fn periodic_file(dir: &Path, name: &str) -> String {
+    let text = std::fs::read_to_string(dir.join(name)).unwrap();
+    assert!(text.contains("periodic = true\n"), "{name}: {text}");
+    text
+}
+
 fn rows(out: &Output) -> Vec<Vec<f64>> {
     out.stdout
         .lines()
@@ -68,8 +75,7 @@ fn transform_keeps_it_periodic_and_removal_undoes_insertion() {
             "0.3,0.3,0.95",
         ],
     );
-    let more = std::fs::read_to_string(dir.path().join("more.toml")).unwrap();
-    assert!(more.contains("periodic = true\n"), "{more}");
+    let more = periodic_file(dir.path(), "more.toml");
     assert_eq!(more.matches("[[control_points]]").count(), 9);
     assert_close(
         &original,
@@ -109,9 +115,8 @@ fn transform_keeps_it_periodic_and_removal_undoes_insertion() {
             "1e-9",
         ],
     );
-    let back = std::fs::read_to_string(dir.path().join("back2.toml")).unwrap();
+    let back = periodic_file(dir.path(), "back2.toml");
     assert_eq!(back.matches("[[control_points]]").count(), 6);
-    assert!(back.contains("periodic = true\n"), "{back}");
     assert_close(
         &original,
         &rows(&ok(dir.path(), &["eval", "back2.toml", "--samples", "41"])),
@@ -122,9 +127,7 @@ fn transform_keeps_it_periodic_and_removal_undoes_insertion() {
         dir.path(),
         &["transform", EXAMPLE, "-o", "rev.toml", "--reverse"],
     );
-    assert!(std::fs::read_to_string(dir.path().join("rev.toml"))
-        .unwrap()
-        .contains("periodic = true\n"));
+    periodic_file(dir.path(), "rev.toml");
     ok(
         dir.path(),
         &["transform", EXAMPLE, "-o", "half.toml", "--split", "0.5"],
@@ -195,12 +198,10 @@ fn fit_closed_and_dxf_write_the_periodic_form() {
             "ring.toml",
         ],
     );
-    let fitted = std::fs::read_to_string(dir.path().join("ring.toml")).unwrap();
-    assert!(fitted.contains("periodic = true\n"), "{fitted}");
+    let fitted = periodic_file(dir.path(), "ring.toml");
     ok(dir.path(), &["export", EXAMPLE, "-o", "pond.dxf"]);
     ok(dir.path(), &["import", "pond.dxf", "-o", "pond.toml"]);
-    let imported = std::fs::read_to_string(dir.path().join("pond.toml")).unwrap();
-    assert!(imported.contains("periodic = true\n"), "{imported}");
+    let imported = periodic_file(dir.path(), "pond.toml");
     assert_close(
         &rows(&ok(dir.path(), &["eval", EXAMPLE, "--samples", "33"])),
         &rows(&ok(dir.path(), &["eval", "pond.toml", "--samples", "33"])),
