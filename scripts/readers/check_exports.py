@@ -41,6 +41,7 @@ import functools
 import http.server
 import io
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -140,6 +141,10 @@ def control_rows(model):
                 float(p.get("weight", 1.0)),
             )
         )
+    if info.get("periodic"):
+        # A periodic curve lists its distinct points; the spline repeats the first `degree`.
+        n = len(rows)
+        rows += [rows[i % n] for i in range(info["degree"])]
     return info, rows
 
 
@@ -339,9 +344,39 @@ def check_ezdxf_import():
         print(f"ok  {os.path.basename(model)}: imported from ezdxf, eval within {worst:.1e} of ezdxf")
 
 
+def periodic_knots(info, degree, count):
+    """The knots of a periodic curve (docs/model.md, "Knot vectors"): its breakpoints tau_0 ..
+    tau_n (listed, uniform, or chord-length along the closed control polygon) extended by the
+    period T: u_{p+j} = tau_j, then tau_{j mod n} + floor(j / n) T."""
+    n = count - degree
+    rule = info.get("knots", "uniform")
+    if rule == "uniform":
+        breakpoints = [j / n for j in range(n + 1)]
+    elif rule == "chord-length":
+        points = [[float(p["x"]), float(p["y"])] + ([float(p["z"])] if "z" in p else []) for p in info["control_points"]]
+        steps = [math.sqrt(sum((a - b) * (a - b) for a, b in zip(points[k], points[(k + 1) % n]))) for k in range(n)]
+        total = sum(steps)
+        breakpoints, acc = [0.0], 0.0
+        for step in steps[:-1]:
+            acc += step
+            breakpoints.append(min(acc / total, 1.0))
+        breakpoints.append(1.0)
+    else:
+        check(isinstance(rule, list), f"periodic knot rule {rule!r} is not one this check knows")
+        breakpoints = [float(k) for k in rule]
+    period = breakpoints[n] - breakpoints[0]
+    knots = []
+    for i in range(n + 2 * degree + 1):
+        j = i - degree
+        knots.append(breakpoints[j] if 0 <= j <= n else breakpoints[j % n] + (j // n) * period)
+    return knots
+
+
 def model_knots(info, key, degree, count):
-    """A direction's knots from the model file: listed, the rule `clamped-uniform`, or a Bezier
-    one's p + 1 zeros and p + 1 ones."""
+    """A direction's knots from the model file: listed, the rule `clamped-uniform`, a periodic
+    curve's ([`periodic_knots`]), or a Bezier one's p + 1 zeros and p + 1 ones."""
+    if key == "knots" and info.get("periodic"):
+        return periodic_knots(info, degree, count)
     knots = info.get(key)
     if knots is None:
         return [0.0] * (degree + 1) + [1.0] * (degree + 1)
@@ -403,7 +438,9 @@ def check_point_names(path, points, rows):
     for k, ((name, xyz), (position, triple, _)) in enumerate(zip(named, rows)):
         fields = name.split(" ")
         label = " ".join(fields[:-3])
-        expected_label = info["control_points"][k].get("name", f"P{k}")
+        # A periodic curve's repeated points carry the names of the points they repeat.
+        listed = info["control_points"]
+        expected_label = listed[k % len(listed)].get("name", f"P{k}")
         check(label == expected_label, f"{path}: point {k} is named {label!r}, not {expected_label!r}")
         check([f[:2] for f in fields[-3:]] == ["T=", "I=", "F="], f"{path}: point name {name!r}")
         values = [float(f[2:]) for f in fields[-3:]]
