@@ -198,10 +198,10 @@ fn fit_closed_and_dxf_write_the_periodic_form() {
             "ring.toml",
         ],
     );
-    let fitted = periodic_file(dir.path(), "ring.toml");
+    periodic_file(dir.path(), "ring.toml");
     ok(dir.path(), &["export", EXAMPLE, "-o", "pond.dxf"]);
     ok(dir.path(), &["import", "pond.dxf", "-o", "pond.toml"]);
-    let imported = periodic_file(dir.path(), "pond.toml");
+    periodic_file(dir.path(), "pond.toml");
     assert_close(
         &rows(&ok(dir.path(), &["eval", EXAMPLE, "--samples", "33"])),
         &rows(&ok(dir.path(), &["eval", "pond.toml", "--samples", "33"])),
