@@ -21,7 +21,7 @@ use std::ops::Range;
 
 use neutrospline::{
     AnyCurve, BSpline, Bezier, ControlPoint, ControlPolygon, Degrees, Derivative, EvalError,
-    Evaluate, EvaluateSurface, KnotVector, Membership, Nurbs, Surface,
+    Evaluate, EvaluateSurface, Family, KnotVector, Nurbs, Surface,
 };
 
 use neutrospline_exchange::{ExportFormat, ExportOptions};
@@ -46,8 +46,8 @@ pub fn csv_model(data: &[u8]) {
     };
     let settings = [
         ReadOptions::default(),
-        options(&|o| o.membership = Some(Membership::Intuitionistic)),
-        options(&|o| o.membership = Some(Membership::Fuzzy)),
+        options(&|o| o.membership = Some(Family::Intuitionistic)),
+        options(&|o| o.membership = Some(Family::Fuzzy)),
         options(&|o| {
             o.kind = Some(Kind::Curve(CurveKind::BSpline));
             o.degree = Some(2);

@@ -4,7 +4,7 @@
 
 use std::fmt;
 
-use neutrospline::Membership;
+use neutrospline::Family;
 use neutrospline_io::{DataTable, Model, ReadError, ReadOptions, TableInput};
 
 use crate::commands::options::ModelArgs;
@@ -74,11 +74,7 @@ pub fn read_model(file: &str, args: &ModelArgs) -> anyhow::Result<Model> {
 /// # Errors
 /// A [`UsageError`] for an extension that is not a table's; the located error of the io
 /// crate.
-pub fn read_data(
-    file: &str,
-    membership: Membership,
-    input: &TableInput,
-) -> anyhow::Result<DataTable> {
+pub fn read_data(file: &str, membership: Family, input: &TableInput) -> anyhow::Result<DataTable> {
     let result = if file == "-" {
         neutrospline_io::read_data_with(STDIN_NAME, std::io::stdin().lock(), membership, input)
     } else {

@@ -8,8 +8,8 @@ use std::ops::Range;
 use std::cell::Cell;
 
 use neutrospline::{
-    DerivativeValue, DynCurve, DynDerivative, EvalError, EvaluateSurface, GeometryError,
-    KnotVector, Surface, DEFAULT_ACCURACY,
+    DegreeKind, Degrees, DerivativeValue, DynCurve, DynDerivative, EvalError, EvaluateSurface,
+    Family, GeometryError, KnotVector, Surface, DEFAULT_ACCURACY,
 };
 pub use neutrospline_io::Shape;
 
@@ -47,6 +47,98 @@ pub struct Extras {
     pub geometry: bool,
     /// The relative accuracy of the arc length (`geometry` only).
     pub accuracy: f64,
+    /// The membership family of the degrees: which degree columns, derived degrees and
+    /// scores the table has ([`DegreeView`]).
+    pub family: Family,
+}
+
+/// The degree columns of a family's table (docs/model.md, "Membership families"). The three
+/// families of the original model (neutrosophic, intuitionistic, fuzzy) keep the columns
+/// `truth, indeterminacy, falsity` (the intuitionistic indeterminacy is the hesitation) and the
+/// scores `score, accuracy, certainty` of section 7. Every other family has a column per
+/// channel it carries, then its derived degrees computed from the blended channels (the
+/// hesitation `(1 - T^q - F^q)^(1/q)`, the picture refusal, ...), and the scores `score,
+/// accuracy` of its literature (SPEC section 10). Rates (derivatives) are given for the
+/// channels only: a derived degree is not linear in them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DegreeView {
+    family: Family,
+}
+
+impl DegreeView {
+    /// The view of `family`'s degrees.
+    pub fn new(family: Family) -> Self {
+        DegreeView { family }
+    }
+
+    /// Whether the view keeps the columns `truth, indeterminacy, falsity` (the three
+    /// families of the original model).
+    pub fn triple(&self) -> bool {
+        matches!(
+            self.family,
+            Family::Neutrosophic | Family::Intuitionistic | Family::Fuzzy
+        )
+    }
+
+    /// The degrees shown, in `truth, indeterminacy, falsity` order.
+    fn kinds(&self) -> Vec<DegreeKind> {
+        DegreeKind::ALL
+            .into_iter()
+            .filter(|k| self.triple() || self.family.carries(*k))
+            .collect()
+    }
+
+    /// The channel column names (also the names of the rates).
+    pub fn channel_names(&self) -> Vec<&'static str> {
+        self.kinds().into_iter().map(DegreeKind::name).collect()
+    }
+
+    /// The channel columns, then the derived degrees.
+    pub fn names(&self) -> Vec<&'static str> {
+        let mut names = self.channel_names();
+        if !self.triple() {
+            names.extend(self.family.derived_names());
+        }
+        names
+    }
+
+    /// The score column names.
+    pub fn score_names(&self) -> &'static [&'static str] {
+        let zeros = vec![0.0; self.family.channel_count()];
+        if self.triple() {
+            &SCORES
+        } else if self.family.accuracy(&zeros).is_some() {
+            &SCORES[..2]
+        } else {
+            &SCORES[..1]
+        }
+    }
+
+    /// The values of [`DegreeView::names`] for `degrees`.
+    pub fn values(&self, degrees: &Degrees) -> Vec<f64> {
+        let mut values: Vec<f64> = self.kinds().into_iter().map(|k| degrees.get(k)).collect();
+        if !self.triple() {
+            let derived = self.family.derived(&values);
+            values.extend(derived.iter());
+        }
+        values
+    }
+
+    /// The values of [`DegreeView::score_names`] for `degrees`.
+    pub fn scores(&self, degrees: &Degrees) -> Vec<f64> {
+        if self.triple() {
+            return scores(degrees).to_vec();
+        }
+        let channels: Vec<f64> = self.kinds().into_iter().map(|k| degrees.get(k)).collect();
+        let mut values = vec![self.family.score(&channels)];
+        values.extend(self.family.accuracy(&channels));
+        values
+    }
+
+    /// The rates of the shown channels from the rates `[dT, dI, dF]`.
+    fn rates(&self, rates: [f64; 3]) -> impl Iterator<Item = f64> + '_ {
+        self.kinds().into_iter().map(move |k| rates[k.index()])
+    }
 }
 
 impl Default for Extras {
@@ -57,6 +149,7 @@ impl Default for Extras {
             scores: false,
             geometry: false,
             accuracy: DEFAULT_ACCURACY,
+            family: Family::Neutrosophic,
         }
     }
 }
@@ -78,13 +171,6 @@ pub type Row = Vec<Option<f64>>;
 
 /// Column names of the position, by dimension.
 const AXES: [&str; 3] = ["x", "y", "z"];
-/// Column names of the degrees.
-const DEGREES: [&str; 3] = ["truth", "indeterminacy", "falsity"];
-
-/// `x, y, z, truth, indeterminacy, falsity` for a dimension.
-fn channel_names(dimension: usize) -> impl Iterator<Item = &'static str> {
-    AXES[..dimension].iter().chain(DEGREES.iter()).copied()
-}
 
 /// The domain `[a, b]` of a curve or one direction of a surface, as text: `[0, 1]`, or with its
 /// knot indices, `[knot 2, knot 7] = [2, 5]`.
@@ -179,15 +265,17 @@ impl Table for Shape {
     }
 
     fn columns(&self, extras: Extras) -> Vec<String> {
-        let names: Vec<&str> = channel_names(self.dimension()).collect();
+        let view = DegreeView::new(extras.family);
+        let axes = &AXES[..self.dimension()];
+        let names: Vec<&str> = axes.iter().copied().chain(view.channel_names()).collect();
         let mut columns: Vec<String> = if self.is_surface() {
             vec!["u".to_owned(), "v".to_owned()]
         } else {
             vec!["t".to_owned()]
         };
-        columns.extend(names.iter().map(|n| (*n).to_owned()));
+        columns.extend(axes.iter().chain(&view.names()).map(|n| (*n).to_owned()));
         if extras.scores {
-            columns.extend(SCORES.map(str::to_owned));
+            columns.extend(view.score_names().iter().map(|n| (*n).to_owned()));
         }
         for order in 1..=extras.derivative {
             if self.is_surface() {
@@ -262,6 +350,7 @@ pub struct CurveSampler<'a> {
     /// The derivatives of orders 1, 2, ... asked for.
     derivatives: Vec<DynDerivative>,
     scores: bool,
+    view: DegreeView,
     /// The accuracy of the arc length, when the geometry columns are asked for.
     geometry: Option<f64>,
     /// The last parameter and its arc length: a row at a larger parameter adds the length
@@ -284,6 +373,7 @@ impl<'a> CurveSampler<'a> {
                 })
                 .collect(),
             scores: extras.scores,
+            view: DegreeView::new(extras.family),
             geometry: extras.geometry.then_some(extras.accuracy),
             last_length: Cell::new(None),
         }
@@ -305,12 +395,16 @@ impl<'a> CurveSampler<'a> {
     fn row(&self, t: f64) -> anyhow::Result<Row> {
         let p = self.curve.evaluate_point(t).map_err(explain("position"))?;
         let mut row = vec![t];
-        row.extend(p.row());
+        row.extend(&p.position);
+        row.extend(self.view.values(&p.degrees));
         if self.scores {
-            row.extend(scores(&p.degrees));
+            row.extend(self.view.scores(&p.degrees));
         }
         for derivative in &self.derivatives {
-            row.extend(derivative.evaluate_row(t).map_err(explain("derivative"))?);
+            let rates = derivative.evaluate_row(t).map_err(explain("derivative"))?;
+            let (position, degrees) = rates.split_at(rates.len() - 3);
+            row.extend(position);
+            row.extend(self.view.rates([degrees[0], degrees[1], degrees[2]]));
         }
         let mut row: Row = row.into_iter().map(Some).collect();
         if let Some(accuracy) = self.geometry {
@@ -326,9 +420,9 @@ impl<'a> CurveSampler<'a> {
     }
 }
 
-fn push_rates<const D: usize>(row: &mut Vec<f64>, d: &DerivativeValue<D>) {
+fn push_rates<const D: usize>(row: &mut Vec<f64>, view: DegreeView, d: &DerivativeValue<D>) {
     row.extend(d.position);
-    row.extend([d.truth, d.indeterminacy, d.falsity]);
+    row.extend(view.rates([d.truth, d.indeterminacy, d.falsity]));
 }
 
 /// The core's error, with an overflow said in terms of what overflowed (the core's message
@@ -344,26 +438,27 @@ fn explain(what: &'static str) -> impl Fn(EvalError) -> anyhow::Error {
 
 fn surface_row(surface: &Surface, extras: Extras, u: f64, v: f64) -> anyhow::Result<Row> {
     let p = surface.evaluate(u, v).map_err(explain("position"))?;
+    let view = DegreeView::new(extras.family);
     let mut values = Vec::with_capacity(2 + 3 * 6);
     values.extend([u, v]);
     values.extend(p.position);
-    values.extend(p.degrees.to_array());
+    values.extend(view.values(&p.degrees));
     if extras.scores {
-        values.extend(scores(&p.degrees));
+        values.extend(view.scores(&p.degrees));
     }
     if extras.derivative >= 1 {
         let d = surface
             .partial_derivatives(u, v)
             .map_err(explain("derivative"))?;
-        push_rates(&mut values, &d.du);
-        push_rates(&mut values, &d.dv);
+        push_rates(&mut values, view, &d.du);
+        push_rates(&mut values, view, &d.dv);
     }
     for order in 2..=extras.derivative {
         for d in surface
             .mixed_partials(u, v, order)
             .map_err(explain("derivative"))?
         {
-            push_rates(&mut values, &d);
+            push_rates(&mut values, view, &d);
         }
     }
     let mut row: Row = values.into_iter().map(Some).collect();

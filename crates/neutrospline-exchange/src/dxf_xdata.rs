@@ -20,7 +20,7 @@
 //! surrogate pairs beyond U+FFFF), as DXF R2000 writes text. Reals are written in the shortest
 //! form that reads back to the same `f64`, so the degrees come back to the last bit.
 
-use neutrospline::{Degrees, Membership};
+use neutrospline::{Degrees, Family};
 
 use neutrospline_io::Kind;
 
@@ -62,7 +62,7 @@ impl XValue {
 pub(crate) struct ModelInfo {
     pub kind: Kind,
     pub dimension: usize,
-    pub membership: Membership,
+    pub membership: Family,
     pub name: Option<String>,
     pub description: Option<String>,
     /// One triple per control point (empty for a mesh, whose vertices carry their own).
@@ -212,7 +212,7 @@ pub(crate) fn read(tags: &[XTag<'_>], fallback_line: usize) -> Result<ModelInfo,
     let mut info = ModelInfo {
         kind: Kind::DEFAULT,
         dimension: 3,
-        membership: Membership::Neutrosophic,
+        membership: Family::Neutrosophic,
         name: None,
         description: None,
         degrees: Vec::new(),
@@ -390,7 +390,7 @@ mod tests {
         let info = ModelInfo {
             kind: Kind::Curve(CurveKind::Nurbs),
             dimension: 2,
-            membership: Membership::Fuzzy,
+            membership: Family::Fuzzy,
             name: Some("n\u{e9}".into()),
             description: None,
             degrees: vec![

@@ -8,17 +8,17 @@
 //! CSV files (see [`crate::read_csv`]); line numbers in errors are physical lines.
 //!
 //! ```
-//! use neutrospline::Membership;
+//! use neutrospline::Family;
 //! use neutrospline_io::read_data;
 //!
 //! let csv = "x,y,T,I,F,weight\n0,0,0.9,0.1,0.0,1\n1,2,0.8,0.2,0.1,2\n2,1,0.7,0.2,0.1,1\n";
-//! let table = read_data("survey.csv", csv.as_bytes(), Membership::Neutrosophic)?;
+//! let table = read_data("survey.csv", csv.as_bytes(), Family::Neutrosophic)?;
 //! assert_eq!((table.len(), table.dimension()), (3, 2));
 //! assert_eq!(table.weights(), Some(&[1.0, 2.0, 1.0][..]));
 //! assert_eq!(table.line(2), 4);
 //!
 //! let bad = "x,y,T,I,F,weight\n0,0,0.9,0.1,0.0,0\n";
-//! let error = read_data("survey.csv", bad.as_bytes(), Membership::Neutrosophic).unwrap_err();
+//! let error = read_data("survey.csv", bad.as_bytes(), Family::Neutrosophic).unwrap_err();
 //! assert_eq!(
 //!     error.to_string(),
 //!     "survey.csv:2: column `weight`: weight = 0 is not positive (a data weight scales how \
@@ -34,7 +34,7 @@ use neutrospline::fit::{
     fit_rows, fit_surface, DynFit, FitError, FitOptions, SurfaceFit, SurfaceFitData,
     SurfaceFitOptions,
 };
-use neutrospline::{Degrees, Membership};
+use neutrospline::{Degrees, Family};
 
 use crate::csv::{read_degrees, require_degrees, Columns, Table};
 use crate::parsed::{duplicate_rule, Field};
@@ -179,7 +179,7 @@ impl DataTable {
     ///
     /// ```
     /// use neutrospline::fit::{SurfaceFitOptions, SurfaceTarget};
-    /// use neutrospline::Membership;
+    /// use neutrospline::Family;
     /// use neutrospline_io::read_data;
     /// let mut csv = String::from("x,y,z,T,I,F\n");
     /// for k in 0..4 {
@@ -187,7 +187,7 @@ impl DataTable {
     ///         csv.push_str(&format!("{k},{l},{},0.5,0.2,0.1\n", k * l));
     ///     }
     /// }
-    /// let table = read_data("grid.csv", csv.as_bytes(), Membership::Neutrosophic)?;
+    /// let table = read_data("grid.csv", csv.as_bytes(), Family::Neutrosophic)?;
     /// let options = SurfaceFitOptions::default()
     ///     .with_degrees(3, 2)
     ///     .with_target(SurfaceTarget::Interpolate);
@@ -324,7 +324,7 @@ fn weight_message(value: f64) -> String {
 ///
 /// # Errors
 /// The file cannot be read, or is invalid: see [`read_data`].
-pub fn load_data(path: impl AsRef<Path>, membership: Membership) -> Result<DataTable, ReadError> {
+pub fn load_data(path: impl AsRef<Path>, membership: Family) -> Result<DataTable, ReadError> {
     load_data_with(path, membership, &TableInput::default())
 }
 
@@ -336,7 +336,7 @@ pub fn load_data(path: impl AsRef<Path>, membership: Membership) -> Result<DataT
 /// file cannot be read, or is invalid: see [`read_data`].
 pub fn load_data_with(
     path: impl AsRef<Path>,
-    membership: Membership,
+    membership: Family,
     input: &TableInput,
 ) -> Result<DataTable, ReadError> {
     let path = path.as_ref();
@@ -353,7 +353,7 @@ pub fn load_data_with(
 pub fn read_data(
     file: &str,
     reader: impl BufRead,
-    membership: Membership,
+    membership: Family,
 ) -> Result<DataTable, ReadError> {
     read_data_with(file, reader, membership, &TableInput::default())
 }
@@ -365,7 +365,7 @@ pub fn read_data(
 pub fn read_data_with(
     file: &str,
     reader: impl BufRead,
-    membership: Membership,
+    membership: Family,
     input: &TableInput,
 ) -> Result<DataTable, ReadError> {
     let column = |heading: &str| {
@@ -468,7 +468,7 @@ pub fn read_data_with(
 mod tests {
     use super::*;
 
-    fn read(text: &str, membership: Membership) -> Result<DataTable, String> {
+    fn read(text: &str, membership: Family) -> Result<DataTable, String> {
         read_data("d.csv", text.as_bytes(), membership).map_err(|e| e.to_string())
     }
 
@@ -477,7 +477,7 @@ mod tests {
         let table = read(
             "# survey\nname,parameter,F,I,T,z,y,x,weight\n\nA,0,0.1,0.2,0.7,3,2,1,0.5\n\
              # gap\n,0.5,0,0,1,6,5,4,2\n",
-            Membership::Neutrosophic,
+            Family::Neutrosophic,
         )
         .unwrap();
         assert_eq!(table.dimension(), 3);
@@ -491,11 +491,7 @@ mod tests {
 
     #[test]
     fn intuitionistic_data_needs_no_indeterminacy_column() {
-        let table = read(
-            "x,y,truth,falsity\n0,0,0.6,0.3\n",
-            Membership::Intuitionistic,
-        )
-        .unwrap();
+        let table = read("x,y,truth,falsity\n0,0,0.6,0.3\n", Family::Intuitionistic).unwrap();
         let [t, i, f] = table.degrees()[0].to_array();
         assert_eq!((t, f), (0.6, 0.3));
         assert!((i - 0.1).abs() < 1e-15);
@@ -519,7 +515,7 @@ mod tests {
         ];
         for (text, want) in cases {
             assert_eq!(
-                read(text, Membership::Neutrosophic).unwrap_err(),
+                read(text, Family::Neutrosophic).unwrap_err(),
                 *want,
                 "{text:?}"
             );
@@ -530,7 +526,7 @@ mod tests {
     fn fit_errors_name_the_line() {
         let table = read(
             "x,y,T,I,F,parameter\n0,0,1,0,0,0\n# note\n1,1,1,0,0,0.5\n2,0,1,0,0,0.25\n",
-            Membership::Neutrosophic,
+            Family::Neutrosophic,
         )
         .unwrap();
         let error = table.fit(&FitOptions::default()).unwrap_err();

@@ -1,6 +1,6 @@
 //! [`Model`]: what a model file holds once validated, in any format.
 
-use neutrospline::{DegreeError, Degrees, Membership, Spread};
+use neutrospline::{DegreeError, Degrees, Family, Spread};
 
 use crate::settings::{Kind, KnotRule, KnotSpec};
 use crate::{ReadOptions, Shape};
@@ -34,7 +34,7 @@ pub enum ModelError {
     /// produce them (intuitionistic: indeterminacy = 1 - truth - falsity to the last bit; fuzzy:
     /// indeterminacy and falsity 0).
     #[error("control point {index}: {error}")]
-    Membership {
+    Family {
         /// The control point (surfaces: row by row).
         index: usize,
         /// The rule broken.
@@ -56,7 +56,7 @@ pub enum ModelError {
 /// writes to a file that reads back to an equal `Model` (CSV: see [`crate::to_csv_string`]).
 ///
 /// ```
-/// use neutrospline::{example1, AnyCurve, Membership};
+/// use neutrospline::{example1, AnyCurve, Family};
 /// use neutrospline_io::{parse, to_toml_string, Format, Model, ReadOptions};
 ///
 /// let model = Model::new(AnyCurve::Bezier(example1()))
@@ -65,14 +65,14 @@ pub enum ModelError {
 /// let text = to_toml_string(&model);
 /// let back = parse("example1.toml", Format::Toml, text.as_bytes(), &ReadOptions::default())?;
 /// assert_eq!(back, model);
-/// assert_eq!(back.membership(), Membership::Neutrosophic);
+/// assert_eq!(back.membership(), Family::Neutrosophic);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct Model {
     name: Option<String>,
     description: Option<String>,
-    membership: Membership,
+    membership: Family,
     point_names: Vec<Option<String>>,
     shape: Shape,
     knot_sources: Vec<KnotSource>,
@@ -104,7 +104,7 @@ fn knot_directions(shape: &Shape) -> usize {
 
 /// Whether `degrees` are exactly what a reader produces under `membership` from the degrees
 /// the rule keeps (truth and falsity; truth alone).
-fn obeys(membership: Membership, degrees: &Degrees) -> Result<(), DegreeError> {
+fn obeys(membership: Family, degrees: &Degrees) -> Result<(), DegreeError> {
     let [t, i, f] = degrees.to_array();
     let derived = Degrees::with_membership(membership, t, Some(i), Some(f))?;
     if derived.indeterminacy() != i {
@@ -124,7 +124,7 @@ impl Model {
         Model {
             name: None,
             description: None,
-            membership: Membership::Neutrosophic,
+            membership: Family::Neutrosophic,
             point_names: vec![None; shape.control_count()],
             knot_sources: vec![KnotSource::Explicit; knot_directions(&shape)],
             spreads: vec![Spread::ZERO; shape.control_count()],
@@ -137,7 +137,7 @@ impl Model {
         shape: Shape,
         name: Option<String>,
         description: Option<String>,
-        membership: Membership,
+        membership: Family,
         point_names: Vec<Option<String>>,
         knot_sources: Vec<KnotSource>,
         spreads: Vec<Spread<3>>,
@@ -211,13 +211,13 @@ impl Model {
     /// With this membership rule for the degrees.
     ///
     /// # Errors
-    /// [`ModelError::Membership`] for the first control point whose degrees do not obey the
+    /// [`ModelError::Family`] for the first control point whose degrees do not obey the
     /// rule exactly as a reader would build them: intuitionistic degrees need truth + falsity
     /// <= 1 and indeterminacy equal to `(1 - truth - falsity).max(0)` (as
     /// [`Degrees::intuitionistic`] computes it); fuzzy degrees need indeterminacy and falsity 0.
-    pub fn with_membership(mut self, membership: Membership) -> Result<Model, ModelError> {
+    pub fn with_membership(mut self, membership: Family) -> Result<Model, ModelError> {
         for (index, degrees) in self.shape.control_degrees().iter().enumerate() {
-            obeys(membership, degrees).map_err(|error| ModelError::Membership { index, error })?;
+            obeys(membership, degrees).map_err(|error| ModelError::Family { index, error })?;
         }
         self.membership = membership;
         Ok(self)
@@ -255,7 +255,7 @@ impl Model {
     }
 
     /// The rule the degrees obey.
-    pub fn membership(&self) -> Membership {
+    pub fn membership(&self) -> Family {
         self.membership
     }
 
@@ -420,7 +420,7 @@ mod tests {
         assert_eq!(
             model
                 .clone()
-                .with_membership(Membership::Fuzzy)
+                .with_membership(Family::Fuzzy)
                 .unwrap_err()
                 .to_string(),
             "control point 0: indeterminacy = 0.6 is not allowed (fuzzy rule: only truth is \
@@ -428,7 +428,7 @@ mod tests {
         );
         assert_eq!(
             model
-                .with_membership(Membership::Intuitionistic)
+                .with_membership(Family::Intuitionistic)
                 .unwrap_err()
                 .to_string(),
             "control point 1: indeterminacy = 0.1 differs from the hesitation 1 - truth - \
@@ -442,17 +442,17 @@ mod tests {
         let exact = Degrees::intuitionistic(0.8, 0.1).unwrap();
         let close = Degrees::new(0.8, 0.1, 0.1).unwrap();
         assert_ne!(exact, close, "1 - 0.8 - 0.1 is not 0.1 in binary");
-        assert!(close.check_membership(Membership::Intuitionistic).is_ok());
+        assert!(close.check_membership(Family::Intuitionistic).is_ok());
         let surface = |d| Surface::bezier(1, 1, vec![ControlPoint::new([0.0; 3], d)]).unwrap();
         assert!(Model::new(surface(exact))
-            .with_membership(Membership::Intuitionistic)
+            .with_membership(Family::Intuitionistic)
             .is_ok());
         let e = Model::new(surface(close))
-            .with_membership(Membership::Intuitionistic)
+            .with_membership(Family::Intuitionistic)
             .unwrap_err();
         assert!(matches!(
             e,
-            ModelError::Membership {
+            ModelError::Family {
                 index: 0,
                 error: DegreeError::HesitationMismatch { .. }
             }

@@ -1,7 +1,7 @@
 //! [`ReadOptions`]: what the caller says about the shape besides the file (the command line's
 //! `--kind`, `--degree`, `--knots`, `--rows`, ..., `--membership`), and the limits.
 
-use neutrospline::Membership;
+use neutrospline::Family;
 
 use crate::settings::{Key, KeyValue, Kind, KnotSpec};
 use crate::{Format, Limits, ReadError, TableInput};
@@ -25,7 +25,7 @@ use crate::{Format, Limits, ReadError, TableInput};
 #[non_exhaustive]
 pub struct ReadOptions {
     /// The membership rule of the degrees (`--membership`; default neutrosophic).
-    pub membership: Option<Membership>,
+    pub membership: Option<Family>,
     /// The kind (`--kind`).
     pub kind: Option<Kind>,
     /// The degree of a curve (`--degree`).

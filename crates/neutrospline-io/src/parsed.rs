@@ -2,7 +2,7 @@
 //! by every format ([`Parsed`]), with the origin (line, field) of everything, so that an error
 //! found later (a knot, a weight) can still be located. Also the control-point fields.
 
-use neutrospline::{DegreeError, Degrees, Membership, Side, Spread};
+use neutrospline::{DegreeError, Degrees, Family, Side, Spread};
 
 use crate::settings::{resolve, Kind, Structure};
 pub(crate) use crate::text::{line_of, not_finite_message, parse_number, strip_bom, Origin};
@@ -254,7 +254,7 @@ pub(crate) struct Parsed {
     /// Optional free-text description.
     pub(crate) description: Option<String>,
     /// The rule the degrees were validated with.
-    pub(crate) membership: Membership,
+    pub(crate) membership: Family,
     /// 2 or 3 (always 3 for surfaces).
     pub(crate) dimension: usize,
     /// The control points, in order (at least one; surfaces row by row).
@@ -274,16 +274,21 @@ impl Parsed {
 /// neutrosophic. A declaration that contradicts the command line is an error (`Err` carries the
 /// message).
 pub(crate) fn resolve_membership(
-    declared: Option<Membership>,
-    cli: Option<Membership>,
-) -> Result<Membership, String> {
-    resolve("membership", "--membership", declared, cli).map(Option::unwrap_or_default)
+    declared: Option<Family>,
+    cli: Option<Family>,
+) -> Result<Family, String> {
+    let family = resolve("membership", "--membership", declared, cli)?.unwrap_or_default();
+    if family.fits_degrees() {
+        Ok(family)
+    } else {
+        Err(DegreeError::TooManyChannels { membership: family }.to_string())
+    }
 }
 
 /// The degree that `membership` requires but that is absent when only the degrees flagged
 /// present are given, as decided by the core's own rule (probed with zeros).
 pub(crate) fn missing_degree(
-    membership: Membership,
+    membership: Family,
     has_indeterminacy: bool,
     has_falsity: bool,
 ) -> Option<DegreeError> {
@@ -304,7 +309,7 @@ mod tests {
 
     #[test]
     fn resolve_membership_rules() {
-        use Membership::*;
+        use Family::*;
         assert_eq!(resolve_membership(None, None), Ok(Neutrosophic));
         assert_eq!(resolve_membership(None, Some(Fuzzy)), Ok(Fuzzy));
         assert_eq!(resolve_membership(Some(Fuzzy), Some(Fuzzy)), Ok(Fuzzy));
@@ -314,7 +319,7 @@ mod tests {
 
     #[test]
     fn missing_degree_follows_core_rule() {
-        use Membership::*;
+        use Family::*;
         assert!(missing_degree(Neutrosophic, true, true).is_none());
         assert!(missing_degree(Neutrosophic, false, true).is_some());
         assert!(missing_degree(Neutrosophic, true, false).is_some());

@@ -19,7 +19,7 @@ use neutrospline::options::{
 };
 use neutrospline::{
     on_dimension, AnyCurve, BSpline, Bezier, ControlPoint, ControlPolygon, Degrees, Direction,
-    DynCurve, Membership, Nurbs, Split as _, Spread, Surface, SurfaceKind,
+    DynCurve, Family, Nurbs, Split as _, Spread, Surface, SurfaceKind,
 };
 
 use crate::model::Model;
@@ -382,12 +382,13 @@ const ROUNDING: f64 = 1e-12;
 /// The degrees as the membership rule's reader makes them from the blended channels: the
 /// intuitionistic hesitation derived from truth and falsity again (a sum of rounding-free
 /// terms differs from the blended one by an ulp), a truth + falsity above 1 by rounding
-/// brought back to 1.
-fn conform(membership: Membership, degrees: Degrees) -> Result<Degrees, String> {
+/// brought back to 1; under any other family, channels that break the rule by rounding
+/// projected onto it.
+fn conform(membership: Family, degrees: Degrees) -> Result<Degrees, String> {
     let [t, i, f] = degrees.to_array();
     let made = match membership {
-        Membership::Neutrosophic => return Ok(degrees),
-        Membership::Intuitionistic => {
+        Family::Neutrosophic => return Ok(degrees),
+        Family::Intuitionistic => {
             let f = if t + f > 1.0 && t + f <= 1.0 + ROUNDING {
                 1.0 - t
             } else {
@@ -395,14 +396,20 @@ fn conform(membership: Membership, degrees: Degrees) -> Result<Degrees, String> 
             };
             Degrees::with_membership(membership, t, None, Some(f))
         }
-        Membership::Fuzzy => Degrees::with_membership(membership, t, None, None),
+        family => {
+            let mut values = family.from_degrees(&degrees).unwrap_or_default();
+            if family.check(&values).is_err() && family.check_within(&values, ROUNDING).is_ok() {
+                family.project(&mut values);
+            }
+            family.to_degrees(&values)
+        }
     };
     made.map_err(|e| format!("a new control point's degrees ({t}, {i}, {f}) break the rule: {e}"))
 }
 
 fn conform_points<const D: usize>(
     points: Vec<ControlPoint<D>>,
-    membership: Membership,
+    membership: Family,
 ) -> Result<Vec<ControlPoint<D>>, String> {
     points
         .into_iter()
@@ -436,16 +443,16 @@ fn with_points<const D: usize, const E: usize>(
 /// The curve with its control degrees conformed to `membership`.
 fn conform_curve<const D: usize>(
     curve: AnyCurve<D>,
-    membership: Membership,
+    membership: Family,
 ) -> Result<AnyCurve<D>, String> {
-    if membership == Membership::Neutrosophic {
+    if membership == Family::Neutrosophic {
         return Ok(curve);
     }
     with_points(&curve, conform_points(curve.control_points(), membership)?)
 }
 
-fn conform_surface(surface: Surface, membership: Membership) -> Result<Surface, String> {
-    if membership == Membership::Neutrosophic {
+fn conform_surface(surface: Surface, membership: Family) -> Result<Surface, String> {
+    if membership == Family::Neutrosophic {
         return Ok(surface);
     }
     let points = conform_points(surface.control_points(), membership)?;
@@ -483,7 +490,7 @@ type Outcome<T> = (Vec<T>, String, Option<(usize, usize)>);
 fn curve_op<const D: usize>(
     curve: &AnyCurve<D>,
     op: &Operation,
-    membership: Membership,
+    membership: Family,
 ) -> Result<Outcome<AnyCurve<D>>, String> {
     let (pieces, note) = match op {
         Operation::Elevate(n) => (vec![curve.elevated(*n)], String::new()),
@@ -542,7 +549,7 @@ fn surface_op(
     surface: &Surface,
     op: &Operation,
     direction: Option<Direction>,
-    membership: Membership,
+    membership: Family,
 ) -> Result<Outcome<Surface>, String> {
     if let Operation::ToBezier = op {
         return Ok((surface.to_bezier_patches(), String::new(), None));

@@ -43,7 +43,7 @@ mod tests;
 
 use std::ops::Range;
 
-use neutrospline::Membership;
+use neutrospline::Family;
 
 use crate::format::MAX_INTEGER;
 use crate::number::format_number as number;
@@ -57,11 +57,13 @@ use crate::tree::{found, Entry, JsonNode, Node, TomlNode, Value};
 use crate::{Format, InputError, ReadOptions};
 
 /// The keys of a model's top-level table.
-const TOP_KEYS: [&str; 16] = [
+const TOP_KEYS: [&str; 18] = [
     "kind",
     "name",
     "description",
     "membership",
+    "q",
+    "n",
     "degree",
     "knots",
     "rows",
@@ -217,6 +219,64 @@ impl<'a> Walker<'a> {
         }
     }
 
+    /// The membership family named by `found` (`"pythagorean"`, `"q-rung:4"`), its
+    /// parameter given in the name or by the top-level key `q` (`q-rung`) or `n`
+    /// (`t-spherical`) that `parameter` looks up.
+    fn family<'n>(
+        &self,
+        found: &Node,
+        parameter: &dyn Fn(&str) -> Option<&'n Node>,
+    ) -> Result<Family, InputError> {
+        let text = self.string(found, "membership")?;
+        let at = |message: String| {
+            self.error(found.span.as_ref(), Some("membership".to_owned()), message)
+        };
+        let name = text.trim().to_ascii_lowercase();
+        let key = match name.split(':').next().map(str::trim) {
+            Some("q-rung") => Some("q"),
+            Some("t-spherical") => Some("n"),
+            _ => None,
+        };
+        let given = match key.and_then(|k| parameter(k).map(|p| (k, p))) {
+            None => None,
+            Some((key, p)) => match p.value {
+                Value::Integer(v) if (1..=i64::from(u32::MAX)).contains(&v) => {
+                    Some((key, v as u32))
+                }
+                _ => {
+                    return Err(self.error(
+                        p.span.as_ref(),
+                        Some(key.to_owned()),
+                        format!(
+                            "`{key}` must be an integer >= 1 (the parameter of membership \"{name}\"), found {}",
+                            match p.value {
+                                Value::Integer(v) => v.to_string(),
+                                _ => p.value.describe(self.format).to_owned(),
+                            }
+                        ),
+                    ))
+                }
+            },
+        };
+        match (key, given) {
+            (Some(key), None) if !name.contains(':') => Err(at(format!(
+                "membership \"{name}\" needs its parameter: add `{key} = 4` (an integer >= 1) or write \"{name}:4\""
+            ))),
+            (Some(_), Some((_, value))) if !name.contains(':') => {
+                Family::with_parameter(&name, value).map_err(|e| at(e.to_string()))
+            }
+            _ => {
+                let family = text.parse::<Family>().map_err(|e| at(e.to_string()))?;
+                match (family.parameter(), given) {
+                    (Some((key, inside)), Some((_, outside))) if inside != outside => Err(at(format!(
+                        "membership \"{text}\" has {key} = {inside} but key `{key}` says {outside}"
+                    ))),
+                    _ => Ok(family),
+                }
+            }
+        }
+    }
+
     fn model(&self, root: Node, cli: &ReadOptions) -> Result<Parsed, InputError> {
         let Value::Table(entries) = &root.value else {
             return Err(self.error(
@@ -298,17 +358,24 @@ impl<'a> Walker<'a> {
         let membership_node = node("membership");
         let declared = match membership_node {
             None => None,
-            Some(node) => {
-                let text = self.string(node, "membership")?;
-                Some(text.parse::<Membership>().map_err(|e| {
-                    self.error(
-                        node.span.as_ref(),
-                        Some("membership".to_owned()),
-                        e.to_string(),
-                    )
-                })?)
-            }
+            Some(found) => Some(self.family(found, &node)?),
         };
+        for key in ["q", "n"] {
+            if let Some(given) = node(key) {
+                let applies = declared.and_then(|f| f.parameter()).map(|(k, _)| k);
+                if applies != Some(key) {
+                    let family = if key == "q" { "q-rung" } else { "t-spherical" };
+                    return Err(self.error(
+                        given.span.as_ref(),
+                        Some(key.to_owned()),
+                        format!(
+                            "key `{key}` is the parameter of membership \"{family}\"; this model's membership is {}",
+                            declared.map_or("not declared".to_owned(), |f| format!("\"{}\"", f.name()))
+                        ),
+                    ));
+                }
+            }
+        }
         let membership = resolve_membership(declared, cli.membership).map_err(|m| {
             self.error(
                 membership_node.and_then(|n| n.span.as_ref()),

@@ -13,7 +13,7 @@ use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::Path;
 
-use neutrospline::{Membership, Spread};
+use neutrospline::{DegreeKind, Family, Spread};
 
 use crate::format::MAX_CSV_LINE;
 use crate::number::file_number;
@@ -84,17 +84,17 @@ fn layout(model: &Model) -> (Vec<(&'static str, Setting)>, Vec<usize>) {
 
 /// The degrees written under `membership`, with their index in `[truth, indeterminacy,
 /// falsity]`: those the rule does not derive.
-fn degree_keys(membership: Membership) -> &'static [(&'static str, usize)] {
-    match membership {
-        Membership::Neutrosophic => &[("truth", 0), ("indeterminacy", 1), ("falsity", 2)],
-        Membership::Intuitionistic => &[("truth", 0), ("falsity", 2)],
-        Membership::Fuzzy => &[("truth", 0)],
-    }
+fn degree_keys(membership: Family) -> Vec<(&'static str, usize)> {
+    DegreeKind::ALL
+        .into_iter()
+        .filter(|kind| membership.carries(*kind))
+        .map(|kind| (kind.name(), kind.index()))
+        .collect()
 }
 
 /// The keys and values of a control point in writing order: `x, y, [z,] truth,
 /// indeterminacy, falsity, [weight]` (the degrees the rule keeps).
-fn point_values(point: &PointData, membership: Membership) -> Vec<(&'static str, f64)> {
+fn point_values(point: &PointData, membership: Family) -> Vec<(&'static str, f64)> {
     let mut values: Vec<(&'static str, f64)> = ["x", "y", "z"]
         .into_iter()
         .zip(point.position.iter().copied())
@@ -227,7 +227,11 @@ pub fn to_toml_string(model: &Model) -> String {
             out.push('\n');
         }
     }
-    let _ = writeln!(out, "membership = \"{}\"", model.membership());
+    let membership = model.membership();
+    let _ = writeln!(out, "membership = \"{}\"", membership.name());
+    if let Some((key, value)) = membership.parameter() {
+        let _ = writeln!(out, "{key} = {value}");
+    }
     let (settings, kept) = layout(model);
     for (key, setting) in settings {
         let _ = write!(out, "{key} = ");
@@ -270,7 +274,11 @@ pub fn to_json_string(model: &Model) -> String {
             json_string(&mut out, value);
         }
     }
-    let _ = write!(out, ",\n  \"membership\": \"{}\"", model.membership());
+    let membership = model.membership();
+    let _ = write!(out, ",\n  \"membership\": \"{}\"", membership.name());
+    if let Some((key, value)) = membership.parameter() {
+        let _ = write!(out, ",\n  \"{key}\": {value}");
+    }
     let (settings, kept) = layout(model);
     for (key, setting) in settings {
         let _ = write!(out, ",\n  \"{key}\": ");

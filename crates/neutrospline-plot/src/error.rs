@@ -4,6 +4,16 @@
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum PlotError {
+    /// A view that would misdraw the degrees of the model's membership family.
+    #[error("--view {view} does not draw {family} models: {reason}")]
+    FamilyView {
+        /// The view's name.
+        view: String,
+        /// The family.
+        family: String,
+        /// Why, and which views do.
+        reason: String,
+    },
     /// A view name that [`View`](crate::View) does not know.
     #[error("unknown view \"{name}\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, data, band)")]
     UnknownView {

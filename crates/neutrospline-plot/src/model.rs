@@ -284,6 +284,9 @@ pub struct PlotModel {
     /// The fuzzy position of a curve (control point spreads, SPEC section 9), for the band
     /// view; `None` draws the curve as crisp.
     band: Option<Arc<dyn BandSampler>>,
+    /// The membership family of the degrees: which views draw them truthfully
+    /// ([`PlotModel::check_view`]).
+    family: neutrospline::Family,
 }
 
 impl fmt::Debug for PlotModel {
@@ -357,6 +360,7 @@ impl PlotModel {
             label: CURVE_LABEL.to_string(),
             data: None,
             band: None,
+            family: neutrospline::Family::Neutrosophic,
         })
     }
 
@@ -468,6 +472,7 @@ impl PlotModel {
             label: label.to_string(),
             data: None,
             band: None,
+            family: neutrospline::Family::Neutrosophic,
         })
     }
 
@@ -502,6 +507,34 @@ impl PlotModel {
             }),
             Shape::Surface(s) => PlotModel::from_surface(s)?,
         };
+        let mut figure = figure;
+        let family = model.membership();
+        figure.family = family;
+        // The title names the family beyond the original three: "Pythagorean fuzzy Bézier
+        // curve", "q-rung (q = 4) orthopair fuzzy B-spline curve", ...
+        let adjective = match family {
+            neutrospline::Family::Neutrosophic
+            | neutrospline::Family::Intuitionistic
+            | neutrospline::Family::Fuzzy => None,
+            neutrospline::Family::QRung(q) => Some(format!("q-rung (q = {q}) orthopair fuzzy")),
+            neutrospline::Family::TSpherical(n) => Some(format!("T-spherical (n = {n}) fuzzy")),
+            other => {
+                let name = other.name();
+                let mut chars = name.chars();
+                let capital: String = chars
+                    .next()
+                    .map(|c| c.to_ascii_uppercase())
+                    .into_iter()
+                    .chain(chars)
+                    .collect();
+                Some(format!("{capital} fuzzy"))
+            }
+        };
+        if let Some(adjective) = adjective {
+            if let Some(rest) = figure.label.strip_prefix("Neutrosophic") {
+                figure.label = format!("{adjective}{rest}");
+            }
+        }
         let names = model.point_names();
         if names.iter().all(Option::is_none) {
             return Ok(figure);
@@ -511,6 +544,49 @@ impl PlotModel {
             .enumerate()
             .map(|(i, n)| n.clone().unwrap_or_else(|| format!("P{i}")));
         figure.with_names(names)
+    }
+
+    /// Refuses a view that would misdraw the degrees of this model's family. The views draw
+    /// truth, indeterminacy and falsity, and score the degrees by the neutrosophic score
+    /// `(2 + T - I - F) / 3` (docs/model.md section 7). A family outside the original three
+    /// that does not carry indeterminacy (the orthopair families: pythagorean, q-rung, ...)
+    /// has no indeterminacy to draw, and the score of every such family is its own (SPEC
+    /// section 10, `eval --scores`).
+    ///
+    /// # Errors
+    /// [`PlotError::FamilyView`] naming the view, the family and why.
+    pub fn check_view(&self, view: crate::View) -> Result<(), PlotError> {
+        use crate::View;
+        use neutrospline::{DegreeKind, Family};
+        let family = self.family;
+        if matches!(
+            family,
+            Family::Neutrosophic | Family::Intuitionistic | Family::Fuzzy
+        ) {
+            return Ok(());
+        }
+        let needs_indeterminacy = matches!(
+            view,
+            View::Indeterminacy | View::All | View::Plane | View::Controls
+        );
+        let reason = if view == View::Score {
+            format!(
+                "the score view draws the neutrosophic score (2 + T - I - F) / 3, not the {family} \
+                 score; `eval --scores` gives the {family} score along the curve"
+            )
+        } else if needs_indeterminacy && !family.carries(DegreeKind::Indeterminacy) {
+            format!(
+                "{family} degrees are {} (no indeterminacy); give --view truth or --view falsity",
+                family.channels().join(" and ")
+            )
+        } else {
+            return Ok(());
+        };
+        Err(PlotError::FamilyView {
+            view: view.name().to_owned(),
+            family: family.to_string(),
+            reason,
+        })
     }
 
     /// Names the control points, in order (one name each, shown next to each point).
@@ -751,6 +827,7 @@ impl<const D: usize> From<&Bezier<D>> for PlotModel {
             label: BEZIER_LABEL.to_string(),
             data: None,
             band: None,
+            family: neutrospline::Family::Neutrosophic,
         }
     }
 }

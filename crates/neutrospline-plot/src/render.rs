@@ -64,6 +64,7 @@ pub fn render_drawing(
     view: View,
     options: &PlotOptions,
 ) -> Result<Drawing, PlotError> {
+    model.check_view(view)?;
     let figure = views::figure(view);
     if figure.draws_data() && model.data().is_none() {
         return Err(PlotError::NoData);

@@ -7,7 +7,7 @@ use neutrospline::fit::{
     SurfaceFitData, SurfaceFitRequest,
 };
 use neutrospline::options::{OptionSet, OptionValue};
-use neutrospline::{Degrees, Membership};
+use neutrospline::{Degrees, Family};
 use neutrospline_io::{load_data_with, read_data_with, DataTable, Model, TableInput};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
@@ -123,7 +123,7 @@ fn report_dict<'py>(
     for a in &report.at_bound {
         let entry = PyDict::new(py);
         entry.set_item("index", a.index)?;
-        entry.set_item("channel", a.channel)?;
+        entry.set_item("channel", &a.channel)?;
         entry.set_item("bound", a.bound)?;
         at_bound.append(entry)?;
     }
@@ -232,7 +232,7 @@ pub fn fit<'py>(
 fn read_source(
     data: &Bound<'_, PyAny>,
     degrees: Option<&Bound<'_, PyAny>>,
-    membership: Membership,
+    membership: Family,
     input: TableInput,
 ) -> PyResult<Source> {
     if frame::is_frame(data) {

@@ -485,7 +485,7 @@ pub fn check_relation(
         positions,
         "positions",
         degrees,
-        neutrospline::Membership::Neutrosophic,
+        neutrospline::Family::Neutrosophic,
         false,
     )?;
     if arrays.dimension != 2 {

@@ -5,7 +5,7 @@
 use std::path::Path;
 use std::str::FromStr;
 
-use neutrospline::{ControlPoint, Degrees, Membership};
+use neutrospline::{ControlPoint, Degrees, Family};
 use neutrospline_io::{write_atomically, Format, Model, ReadOptions, Shape};
 use neutrospline_plot::{
     render_figure, render_svg, FigureFormat, FigureRequest, PlotModel, PlotOptions, View,
@@ -40,12 +40,12 @@ impl Meta {
 }
 
 /// Parses a membership rule name (`neutrosophic`, `intuitionistic`, `fuzzy`).
-pub fn membership(name: &str) -> PyResult<Membership> {
-    Membership::from_str(name).map_err(|e| invalid_at("membership", e))
+pub fn membership(name: &str) -> PyResult<Family> {
+    Family::from_str(name).map_err(|e| invalid_at("membership", e))
 }
 
 /// The model of `shape` under `membership`, with the names of `meta`.
-pub fn model(shape: impl Into<Shape>, membership: Membership, meta: Meta) -> PyResult<Model> {
+pub fn model(shape: impl Into<Shape>, membership: Family, meta: Meta) -> PyResult<Model> {
     let mut model = Model::new(shape)
         .with_membership(membership)
         .map_err(invalid)?;
@@ -107,7 +107,7 @@ impl PointArrays {
         positions: &Bound<'_, PyAny>,
         what: &str,
         degrees: &Bound<'_, PyAny>,
-        membership: Membership,
+        membership: Family,
         grid: bool,
     ) -> PyResult<PointArrays> {
         let positions = float_array(positions, what)?;
@@ -165,27 +165,26 @@ impl PointArrays {
 fn read_degrees(
     array: &FloatArray<'_>,
     points: &[usize],
-    membership: Membership,
+    membership: Family,
 ) -> PyResult<Vec<Degrees>> {
     let shape = array.shape();
-    let columns = match membership {
-        Membership::Neutrosophic => "3 (truth, indeterminacy, falsity)",
-        Membership::Intuitionistic => "3 (truth, indeterminacy, falsity) or 2 (truth, falsity)",
-        Membership::Fuzzy => "1 (truth) or 3 (truth, 0, 0), or no last axis",
+    let count = membership.channel_count();
+    let columns = match count {
+        3 => "3 (truth, indeterminacy, falsity)".to_owned(),
+        1 => "1 (truth) or 3 (truth, 0, 0), or no last axis".to_owned(),
+        _ => format!(
+            "3 (truth, indeterminacy, falsity) or {count} ({})",
+            membership.channels().join(", ")
+        ),
     };
     let width = if shape.len() == points.len() + 1 && shape[..points.len()] == *points {
         Some(shape[points.len()])
-    } else if shape == points && membership == Membership::Fuzzy {
+    } else if shape == points && membership == Family::Fuzzy {
         Some(1)
     } else {
         None
     };
-    let allowed = match (width, membership) {
-        (Some(3), _) | (Some(2), Membership::Intuitionistic) | (Some(1), Membership::Fuzzy) => {
-            width
-        }
-        _ => None,
-    };
+    let allowed = width.filter(|&w| w == 3 || w == count);
     let Some(width) = allowed else {
         return Err(invalid_at(
             "degrees",
@@ -205,19 +204,11 @@ fn read_degrees(
                 Some(c) if points.len() == 2 => format!("degrees[{}, {}]", k / c, k % c),
                 _ => format!("degrees[{k}]"),
             };
-            let (truth, indeterminacy, falsity) = match *row {
-                [t, i, f] => (t, Some(i), Some(f)),
-                [t, f] => (t, None, Some(f)),
-                [t] => (t, None, None),
-                _ => {
-                    return Err(invalid_at(
-                        at(),
-                        format!("a row of {} values (expected 1 to 3)", row.len()),
-                    ))
-                }
-            };
-            Degrees::with_membership(membership, truth, indeterminacy, falsity)
-                .map_err(|e| invalid_at(at(), e))
+            match *row {
+                [t, i, f] => Degrees::with_membership(membership, t, Some(i), Some(f)),
+                _ => membership.to_degrees(row),
+            }
+            .map_err(|e| invalid_at(at(), e))
         })
         .collect()
 }

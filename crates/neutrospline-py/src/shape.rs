@@ -54,10 +54,11 @@ impl BaseShape {
 
 #[pymethods]
 impl BaseShape {
-    /// The membership rule: `"neutrosophic"`, `"intuitionistic"` or `"fuzzy"`.
+    /// The membership family: `"neutrosophic"`, `"intuitionistic"`, `"fuzzy"`,
+    /// `"pythagorean"`, `"q-rung:4"`, ... (as `membership=` takes it).
     #[getter]
-    fn membership(&self) -> &'static str {
-        self.model.membership().name()
+    fn membership(&self) -> String {
+        self.model.membership().to_string()
     }
 
     /// The model's name, if any.

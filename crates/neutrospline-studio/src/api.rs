@@ -32,7 +32,7 @@ use std::time::Instant;
 
 use neutrospline::fit::{FitRequest, SurfaceFitRequest};
 use neutrospline::{
-    uniform_parameter, AnyCurve, ControlPolygon, DegreeKind, DynCurve, EvaluateSurface, Membership,
+    uniform_parameter, AnyCurve, ControlPolygon, DegreeKind, DynCurve, EvaluateSurface, Family,
 };
 use neutrospline_io::{format_number, DataTable, Format, Model, ReadError, ReadOptions, Shape};
 use neutrospline_plot::{
@@ -296,11 +296,11 @@ fn figure_options(model: &Model, request: &FigureRequest) -> Result<PlotOptions,
     })
 }
 
-fn membership(body: &Value, default: Membership) -> Result<Membership, Response> {
+fn membership(body: &Value, default: Family) -> Result<Family, Response> {
     match body.get("membership") {
         None | Some(Value::Null) => Ok(default),
         Some(Value::String(m)) => {
-            Membership::from_str(m).map_err(|e| Response::error(400, &e.to_string()))
+            Family::from_str(m).map_err(|e| Response::error(400, &e.to_string()))
         }
         Some(other) => Err(Response::error(
             400,
@@ -310,7 +310,7 @@ fn membership(body: &Value, default: Membership) -> Result<Membership, Response>
 }
 
 /// The data table of `data = {name, text}` (`name` is used in messages only).
-fn data_table(data: &Value, membership: Membership) -> Result<Option<DataTable>, Response> {
+fn data_table(data: &Value, membership: Family) -> Result<Option<DataTable>, Response> {
     if data.is_null() {
         return Ok(None);
     }
@@ -665,7 +665,7 @@ fn open(body: &Value) -> Result<Response, Response> {
 }
 
 fn data(body: &Value) -> Result<Response, Response> {
-    let membership = membership(body, Membership::Neutrosophic)?;
+    let membership = membership(body, Family::Neutrosophic)?;
     let table =
         data_table(body, membership)?.ok_or_else(|| Response::error(400, "no data given"))?;
     Ok(Response::json(

@@ -172,12 +172,24 @@ fn split_and_derivative(c: &mut Criterion) {
     group.finish();
 }
 
+/// The degree channels' solve of a fit under a round rule: 500 control points, Pythagorean
+/// data on and beyond `truth^2 + falsity^2 = 1` (the interior-point solver of the rule fit).
+fn rule_fit(c: &mut Criterion) {
+    let mut group = c.benchmark_group("rule_fit_solve");
+    let problem = neutrospline::fit::RuleFitBench::new(neutrospline::Family::Pythagorean, 500);
+    group.bench_function("pythagorean_500", |b| {
+        b.iter(|| black_box(&problem).solve())
+    });
+    group.finish();
+}
+
 criterion_group!(
     benches,
     single,
     batch_bezier,
     batch_spline,
     write_reference,
-    split_and_derivative
+    split_and_derivative,
+    rule_fit
 );
 criterion_main!(benches);

@@ -3,6 +3,9 @@
 use core::fmt;
 use core::str::FromStr;
 
+pub(crate) use crate::family::Family;
+use crate::family::{RuleError, RULE_TOLERANCE};
+
 /// Tolerance used when a file gives the indeterminacy of an intuitionistic fuzzy value and the
 /// library checks it against the derived hesitation `1 - truth - falsity`.
 pub const HESITATION_TOLERANCE: f64 = 1e-9;
@@ -60,7 +63,7 @@ impl fmt::Display for DegreeKind {
     }
 }
 
-/// Error returned when a string names no [`DegreeKind`] or [`Membership`].
+/// Error returned when a string names no [`DegreeKind`] or [`Family`].
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[error("unknown {what} `{given}` (expected one of: {expected})")]
 pub struct ParseNameError {
@@ -93,61 +96,6 @@ impl FromStr for DegreeKind {
                 what: "degree",
                 given: s.to_owned(),
                 expected: "truth, indeterminacy, falsity",
-            }),
-        }
-    }
-}
-
-/// The validity rule a set of degrees obeys (docs/model.md section 1).
-///
-/// | rule | stored as | constraint |
-/// |---|---|---|
-/// | `Neutrosophic` | T, I, F independent | each in \[0, 1\] |
-/// | `Intuitionistic` | T = membership, F = non-membership, I = 1 - T - F | T + F <= 1 |
-/// | `Fuzzy` | T = membership, I = F = 0 | T in \[0, 1\] |
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
-pub enum Membership {
-    /// Single-valued neutrosophic: three independent degrees in \[0, 1\].
-    #[default]
-    Neutrosophic,
-    /// Intuitionistic fuzzy: truth + falsity <= 1, indeterminacy is the hesitation 1 - T - F.
-    Intuitionistic,
-    /// Fuzzy: a single membership degree (truth); indeterminacy and falsity are 0.
-    Fuzzy,
-}
-
-impl Membership {
-    /// The lowercase name used in files and on the command line.
-    pub const fn name(self) -> &'static str {
-        match self {
-            Membership::Neutrosophic => "neutrosophic",
-            Membership::Intuitionistic => "intuitionistic",
-            Membership::Fuzzy => "fuzzy",
-        }
-    }
-}
-
-impl fmt::Display for Membership {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for Membership {
-    type Err = ParseNameError;
-
-    /// Parses `neutrosophic`, `intuitionistic` or `fuzzy` (case-insensitive).
-    fn from_str(s: &str) -> Result<Self, Self::Err> {
-        match s.trim().to_ascii_lowercase().as_str() {
-            "neutrosophic" => Ok(Membership::Neutrosophic),
-            "intuitionistic" => Ok(Membership::Intuitionistic),
-            "fuzzy" => Ok(Membership::Fuzzy),
-            _ => Err(ParseNameError {
-                what: "membership rule",
-                given: s.to_owned(),
-                expected: "neutrosophic, intuitionistic, fuzzy",
             }),
         }
     }
@@ -200,16 +148,43 @@ pub enum DegreeError {
         /// Which degree.
         kind: DegreeKind,
         /// The rule that requires it.
-        membership: Membership,
+        membership: Family,
     },
-    /// Fuzzy rule: indeterminacy or falsity given with a non-zero value.
-    #[error("{kind} = {value} is not allowed (fuzzy rule: only truth is given; {kind} must be absent or 0)")]
-    FuzzyExtra {
+    /// A degree the rule does not carry is given with a non-zero value (indeterminacy or
+    /// falsity under the fuzzy rule, indeterminacy under the orthopair rules).
+    #[error("{kind} = {value} is not allowed ({membership} rule: only {given} given; {kind} must be absent or 0)", given = carried(*membership))]
+    NotCarried {
         /// Which degree.
         kind: DegreeKind,
         /// The offending value.
         value: f64,
+        /// The rule.
+        membership: Family,
     },
+    /// The values break the family's rule (a sum of powers above 1, ...).
+    #[error(transparent)]
+    Rule(#[from] RuleError),
+    /// The family's channels do not fit in truth, indeterminacy and falsity (interval-valued
+    /// and bipolar families carry up to six).
+    #[error("the {membership} family has {count} channels ({names}); a truth, indeterminacy, falsity triple cannot hold them", count = membership.channel_count(), names = membership.channels().join(", "))]
+    TooManyChannels {
+        /// The family.
+        membership: Family,
+    },
+}
+
+/// "truth is", "truth and falsity are", ...: the degrees `membership` carries.
+fn carried(membership: Family) -> String {
+    let names: Vec<&str> = DegreeKind::ALL
+        .into_iter()
+        .filter(|k| membership.carries(*k))
+        .map(DegreeKind::name)
+        .collect();
+    match names.as_slice() {
+        [one] => format!("{one} is"),
+        [init @ .., last] => format!("{} and {last} are", init.join(", ")),
+        [] => "nothing is".to_owned(),
+    }
 }
 
 /// A neutrosophic value: the triple (truth, indeterminacy, falsity), each in \[0, 1\].
@@ -339,63 +314,83 @@ impl Degrees {
         })
     }
 
-    /// Builds degrees under the given rule from the values a file or user supplied.
-    ///
-    /// - `Neutrosophic`: all three required.
-    /// - `Intuitionistic`: `falsity` required; `indeterminacy`, when given, must equal the
-    ///   hesitation `1 - truth - falsity` within [`HESITATION_TOLERANCE`].
-    /// - `Fuzzy`: `indeterminacy` and `falsity` must be absent or 0.
+    /// Builds degrees under the given rule from the values a file or user supplied. The
+    /// degrees the family carries ([`Family::carries`]) are required; the others must be
+    /// absent or 0 and are stored as 0, except under the intuitionistic rule, whose stored
+    /// indeterminacy is the hesitation `1 - truth - falsity` (when given, it must equal it
+    /// within [`HESITATION_TOLERANCE`]). Then the family's rule is checked ([`Family::check`];
+    /// a round rule's sum of powers may exceed 1 by [`RULE_TOLERANCE`], the rounding of
+    /// decimals on its boundary).
     ///
     /// ```
-    /// use neutrospline::{Degrees, Membership};
-    /// let d = Degrees::with_membership(Membership::Fuzzy, 0.7, None, None)?;
+    /// use neutrospline::{Degrees, Family};
+    /// let d = Degrees::with_membership(Family::Fuzzy, 0.7, None, None)?;
     /// assert_eq!(d.to_array(), [0.7, 0.0, 0.0]);
+    /// let p = Degrees::with_membership(Family::Pythagorean, 0.8, None, Some(0.6))?;
+    /// assert_eq!(p.to_array(), [0.8, 0.0, 0.6]);
+    /// let e = Degrees::with_membership(Family::Pythagorean, 0.9, None, Some(0.7)).unwrap_err();
+    /// assert_eq!(e.to_string(), "truth^2 + falsity^2 = 1.3 exceeds 1 (pythagorean rule)");
     /// # Ok::<(), neutrospline::DegreeError>(())
     /// ```
     ///
     /// # Errors
-    /// The first rule broken, as a [`DegreeError`].
+    /// The first rule broken, as a [`DegreeError`]: a missing or out-of-range degree (checked
+    /// in the order truth, indeterminacy, falsity), a degree the family does not carry, the
+    /// family's rule, or a family whose channels are not truth, indeterminacy and falsity.
     pub fn with_membership(
-        membership: Membership,
+        membership: Family,
         truth: f64,
         indeterminacy: Option<f64>,
         falsity: Option<f64>,
     ) -> Result<Self, DegreeError> {
-        let missing = |kind| DegreeError::Missing { kind, membership };
-        match membership {
-            Membership::Neutrosophic => Degrees::new(
-                truth,
-                indeterminacy.ok_or(missing(DegreeKind::Indeterminacy))?,
-                falsity.ok_or(missing(DegreeKind::Falsity))?,
-            ),
-            Membership::Intuitionistic => {
-                let d =
-                    Degrees::intuitionistic(truth, falsity.ok_or(missing(DegreeKind::Falsity))?)?;
-                if let Some(given) = indeterminacy {
-                    let given = check_unit(DegreeKind::Indeterminacy, given)?;
-                    if (given - d.indeterminacy).abs() > HESITATION_TOLERANCE {
-                        return Err(DegreeError::HesitationMismatch {
-                            given,
-                            hesitation: d.indeterminacy,
-                        });
-                    }
+        if !membership.fits_degrees() {
+            return Err(DegreeError::TooManyChannels { membership });
+        }
+        if membership == Family::Intuitionistic {
+            let falsity = falsity.ok_or(DegreeError::Missing {
+                kind: DegreeKind::Falsity,
+                membership,
+            })?;
+            let d = Degrees::intuitionistic(truth, falsity)?;
+            if let Some(given) = indeterminacy {
+                let given = check_unit(DegreeKind::Indeterminacy, given)?;
+                if (given - d.indeterminacy).abs() > HESITATION_TOLERANCE {
+                    return Err(DegreeError::HesitationMismatch {
+                        given,
+                        hesitation: d.indeterminacy,
+                    });
                 }
-                Ok(d)
             }
-            Membership::Fuzzy => {
-                for (kind, value) in [
-                    (DegreeKind::Indeterminacy, indeterminacy),
-                    (DegreeKind::Falsity, falsity),
-                ] {
-                    if let Some(value) = value {
-                        if value != 0.0 {
-                            return Err(DegreeError::FuzzyExtra { kind, value });
-                        }
-                    }
-                }
-                Degrees::fuzzy(truth)
+            return Ok(d);
+        }
+        let mut triple = [0.0; 3];
+        for (kind, value) in DegreeKind::ALL
+            .into_iter()
+            .zip([Some(truth), indeterminacy, falsity])
+        {
+            if membership.carries(kind) {
+                let value = value.ok_or(DegreeError::Missing { kind, membership })?;
+                triple[kind.index()] = check_unit(kind, value)?;
+            } else if let Some(value) = value.filter(|v| *v != 0.0) {
+                return Err(DegreeError::NotCarried {
+                    kind,
+                    value,
+                    membership,
+                });
             }
         }
+        let degrees = Degrees::new_unchecked(triple[0], triple[1], triple[2]);
+        if let Some(values) = membership.from_degrees(&degrees) {
+            // A round rule's sum of powers is rarely exact in binary: decimals on the boundary
+            // (0.28^2 + 0.96^2 = 1) may sum to 1 + 2e-16. Such rounding is accepted.
+            let tolerance = if membership.power_rule().is_some() {
+                RULE_TOLERANCE
+            } else {
+                0.0
+            };
+            membership.check_within(&values, tolerance)?;
+        }
+        Ok(degrees)
     }
 
     /// Checks that these degrees also obey `membership` (every `Degrees` obeys the
@@ -403,7 +398,7 @@ impl Degrees {
     ///
     /// # Errors
     /// The rule broken, as in [`Degrees::with_membership`].
-    pub fn check_membership(&self, membership: Membership) -> Result<(), DegreeError> {
+    pub fn check_membership(&self, membership: Family) -> Result<(), DegreeError> {
         Degrees::with_membership(
             membership,
             self.truth,
@@ -607,7 +602,7 @@ mod tests {
 
     #[test]
     fn degrees_with_membership_rules() {
-        use Membership::*;
+        use Family::*;
         assert!(Degrees::with_membership(Neutrosophic, 0.1, Some(0.2), Some(0.3)).is_ok());
         assert_eq!(
             Degrees::with_membership(Neutrosophic, 0.1, None, Some(0.3)).unwrap_err(),
@@ -636,18 +631,21 @@ mod tests {
     #[test]
     fn degrees_check_membership() {
         let d = Degrees::new(0.5, 0.3, 0.2).unwrap();
-        assert!(d.check_membership(Membership::Intuitionistic).is_ok());
+        assert!(d.check_membership(Family::Intuitionistic).is_ok());
         let d = Degrees::new(0.5, 0.5, 0.2).unwrap();
-        assert!(d.check_membership(Membership::Intuitionistic).is_err());
-        assert!(d.check_membership(Membership::Fuzzy).is_err());
+        assert!(d.check_membership(Family::Intuitionistic).is_err());
+        assert!(d.check_membership(Family::Fuzzy).is_err());
     }
 
     #[test]
     fn membership_and_kind_parse() {
-        assert_eq!("Fuzzy".parse::<Membership>().unwrap(), Membership::Fuzzy);
+        assert_eq!("Fuzzy".parse::<Family>().unwrap(), Family::Fuzzy);
         assert_eq!(
-            "crisp".parse::<Membership>().unwrap_err().to_string(),
-            "unknown membership rule `crisp` (expected one of: neutrosophic, intuitionistic, fuzzy)"
+            "crisp".parse::<Family>().unwrap_err().to_string(),
+            "unknown membership family `crisp` (no such family; expected one of: neutrosophic, \
+             intuitionistic, fuzzy, pythagorean, fermatean, q-rung:Q, picture, spherical, \
+             t-spherical:N, interval-neutrosophic, interval-intuitionistic, interval-type2, \
+             bipolar-neutrosophic (Q and N integers >= 1))"
         );
         assert_eq!(
             "I".parse::<DegreeKind>().unwrap(),

@@ -44,7 +44,7 @@
 //! ```
 //!
 //! ## The pieces
-//! - Values: [`Degrees`] with its validity rules [`Membership`] (neutrosophic, intuitionistic
+//! - Values: [`Degrees`] with its validity rules [`Family`] (neutrosophic, intuitionistic
 //!   fuzzy, fuzzy), [`DegreeKind`]; [`NeutrosophicPoint`] (alias [`ControlPoint`],
 //!   [`CurvePoint`]), [`DerivativeValue`], [`Interval`], [`BoundingBox`], [`Affine`].
 //! - Relations: [`AxisSet`] and [`PointRelation`], the paper's Def. 4 (the largest admissible
@@ -84,7 +84,7 @@
 //! [`RelationError`]); nothing here reads or writes files (the `neutrospline-io` crate does).
 //!
 //! ## Feature flags
-//! - `serde`: `Serialize`/`Deserialize` for [`Degrees`], [`DegreeKind`], [`Membership`] and
+//! - `serde`: `Serialize`/`Deserialize` for [`Degrees`], [`DegreeKind`], [`Family`] and
 //!   [`NeutrosophicPoint`] (a point is the control point of the model files: keys `x`, `y`,
 //!   `z` for 3-D, `truth`, `indeterminacy`, `falsity`). Deserialization checks exactly like
 //!   the constructors.
@@ -136,9 +136,7 @@ pub use curve::{
     Bounded, ControlPolygon, CurveError, Derivative, Elevate, EvalError, Evaluate, Split,
     BOUNDS_TOLERANCE,
 };
-pub use degrees::{
-    DegreeError, DegreeKind, Degrees, Membership, ParseNameError, HESITATION_TOLERANCE,
-};
+pub use degrees::{DegreeError, DegreeKind, Degrees, ParseNameError, HESITATION_TOLERANCE};
 pub use derivative::CurveDerivative;
 pub use dyn_curve::{Dimensional, DynCurve, DynDerivative, DynPoint, NearestRow, RowLengthError};
 pub use example::{example1, EXAMPLE1_NAMES, EXAMPLE1_TABLE};

@@ -15,9 +15,9 @@
 //! pieces are reduced in homogeneous form, so the constraint on `w T` is `0 <= w T <= w` with
 //! the piece's new weight `w`, solved in `T = (w T) / w`.
 
-use crate::degrees::Membership;
+use crate::degrees::{DegreeKind, Family};
 use crate::fit::banded::{Band, Normal};
-use crate::fit::qp;
+use crate::fit::{convex, qp};
 use crate::knots::KnotVector;
 use crate::spline::Spline;
 
@@ -30,7 +30,7 @@ pub(crate) struct DegreeLayout {
     pub(crate) point: usize,
     pub(crate) truth: usize,
     pub(crate) weight: Option<usize>,
-    pub(crate) membership: Membership,
+    pub(crate) membership: Family,
 }
 
 /// The degree channels of the free control points `inner` of a reduced piece (the solution
@@ -57,21 +57,30 @@ fn bound_degrees(
             base + layout.truth + 1,
             base + layout.truth + 2,
         );
-        let groups: &[&[usize]] = match layout.membership {
-            Membership::Neutrosophic => &[&[0], &[1], &[2]],
-            Membership::Fuzzy => &[&[0]],
-            Membership::Intuitionistic => &[&[0, 2]],
+        // Channel groups solved together: each neutrosophic degree alone, the intuitionistic
+        // truth and falsity by the active-set method, the channels of any other family under
+        // its whole rule.
+        let carried: Vec<usize> = DegreeKind::ALL
+            .into_iter()
+            .filter(|kind| layout.membership.carries(*kind))
+            .map(DegreeKind::index)
+            .collect();
+        let groups: Vec<&[usize]> = match layout.membership {
+            Family::Neutrosophic => vec![&[0], &[1], &[2]],
+            _ => vec![&carried],
         };
         let euclidean =
             |inner: &[Vec<f64>], j: usize, c: usize| inner[j][base + layout.truth + c] / weights[j];
         let breaks = |inner: &[Vec<f64>], group: &[usize]| {
             (0..n).any(|j| {
                 let values: Vec<f64> = group.iter().map(|&c| euclidean(inner, j, c)).collect();
-                values.iter().any(|v| !(0.0..=1.0).contains(v))
-                    || (group.len() == 2 && values[0] + values[1] > 1.0)
+                match layout.membership {
+                    Family::Neutrosophic => !(0.0..=1.0).contains(&values[0]),
+                    family => family.check(&values).is_err(),
+                }
             })
         };
-        for &group in groups {
+        for group in groups {
             if !breaks(inner, group) {
                 continue;
             }
@@ -91,24 +100,29 @@ fn bound_degrees(
                     start[j * k + slot] = euclidean(inner, j, c);
                 }
             }
-            let solution = qp::solve(&Normal::Open(band), k, &rhs, &start)?;
+            let matrix = Normal::Open(band);
+            let solution = match layout.membership {
+                Family::Neutrosophic | Family::Fuzzy | Family::Intuitionistic => {
+                    qp::solve(&matrix, k, &rhs, &start)?.x
+                }
+                family => convex::solve_family(&matrix, family, &rhs, &start)?.x,
+            };
             for j in 0..n {
                 for (slot, &c) in group.iter().enumerate() {
-                    inner[j][base + layout.truth + c] = weights[j] * solution.x[j * k + slot];
+                    inner[j][base + layout.truth + c] = weights[j] * solution[j * k + slot];
                 }
             }
         }
         // The channels the rule derives.
         for (j, row) in inner.iter_mut().enumerate() {
             let w = weights[j];
-            match layout.membership {
-                Membership::Neutrosophic => {}
-                Membership::Fuzzy => {
-                    row[i] = 0.0;
-                    row[f] = 0.0;
-                }
-                Membership::Intuitionistic => {
-                    row[i] = w * (1.0 - row[t] / w - row[f] / w).max(0.0);
+            if layout.membership == Family::Intuitionistic {
+                row[i] = w * (1.0 - row[t] / w - row[f] / w).max(0.0);
+            } else {
+                for kind in DegreeKind::ALL {
+                    if !layout.membership.carries(kind) {
+                        row[base + layout.truth + kind.index()] = 0.0;
+                    }
                 }
             }
         }

@@ -360,7 +360,7 @@ impl Surface {
         &self,
         direction: Direction,
         tolerance: f64,
-        membership: crate::Membership,
+        membership: crate::Family,
     ) -> Result<crate::DegreeReduction<Surface>, crate::ReduceError> {
         let build = |work: &Spline| -> Result<Surface, crate::ReduceError> {
             let mut s = self.with_direction_spline(direction, work.clone());

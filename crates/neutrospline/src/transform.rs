@@ -548,12 +548,13 @@ pub struct DegreeReduction<C> {
 /// The degrees of every row (channels `first..first + 3`, stride `stride`) projected onto
 /// `membership`'s rule: each onto \[0, 1\]; for intuitionistic degrees, truth + falsity above 1
 /// brought onto the line T + F = 1 by the nearest point, and the hesitation 1 - T - F derived;
-/// for fuzzy degrees, indeterminacy and falsity 0.
+/// for fuzzy degrees, indeterminacy and falsity 0; for any other family, the carried channels
+/// onto the rule by its exact projection ([`crate::Family::project`]), the others 0.
 pub(crate) fn project_degrees(
     data: &mut [f64],
     stride: usize,
     first: usize,
-    membership: crate::Membership,
+    membership: crate::Family,
 ) {
     for row in data.chunks_exact_mut(stride) {
         let d = &mut row[first..first + 3];
@@ -561,12 +562,12 @@ pub(crate) fn project_degrees(
             *v = if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
         }
         match membership {
-            crate::Membership::Neutrosophic => {}
-            crate::Membership::Fuzzy => {
+            crate::Family::Neutrosophic => {}
+            crate::Family::Fuzzy => {
                 d[1] = 0.0;
                 d[2] = 0.0;
             }
-            crate::Membership::Intuitionistic => {
+            crate::Family::Intuitionistic => {
                 let excess = d[0] + d[2] - 1.0;
                 if excess > 0.0 {
                     d[0] = (d[0] - excess / 2.0).clamp(0.0, 1.0);
@@ -574,13 +575,26 @@ pub(crate) fn project_degrees(
                 }
                 d[1] = (1.0 - d[0] - d[2]).max(0.0);
             }
+            family => {
+                let carried: Vec<usize> = crate::DegreeKind::ALL
+                    .into_iter()
+                    .filter(|kind| family.carries(*kind))
+                    .map(crate::DegreeKind::index)
+                    .collect();
+                let mut values: Vec<f64> = carried.iter().map(|&c| d[c]).collect();
+                family.project(&mut values);
+                d.fill(0.0);
+                for (&c, v) in carried.iter().zip(values) {
+                    d[c] = v;
+                }
+            }
         }
     }
 }
 
 impl<const D: usize, W: Weighting> SplineCurve<D, W> {
     /// The curve of a spline in the form the reduction works in (homogeneous for NURBS).
-    fn from_work(work: &Spline, membership: crate::Membership) -> Result<Self, ReduceError> {
+    fn from_work(work: &Spline, membership: crate::Family) -> Result<Self, ReduceError> {
         let mut spline = if W::RATIONAL {
             let s = work.euclidean();
             if s.weights
@@ -611,10 +625,10 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
     /// [`ReduceError::NonPositiveWeight`].
     ///
     /// ```
-    /// use neutrospline::{Elevate, Membership};
+    /// use neutrospline::{Elevate, Family};
     /// let curve = neutrospline::example1().to_bspline();
     /// let up = curve.elevate();
-    /// let back = up.reduce_degree(1e-12, Membership::Neutrosophic)?;
+    /// let back = up.reduce_degree(1e-12, Family::Neutrosophic)?;
     /// assert_eq!(back.curve.degree(), 3);
     /// assert!(back.error < 1e-13);
     /// # Ok::<(), neutrospline::ReduceError>(())
@@ -622,7 +636,7 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
     pub fn reduce_degree(
         &self,
         tolerance: f64,
-        membership: crate::Membership,
+        membership: crate::Family,
     ) -> Result<DegreeReduction<Self>, ReduceError> {
         let work = if W::RATIONAL {
             self.spline().homogeneous()
@@ -656,7 +670,7 @@ impl<const D: usize> crate::AnyCurve<D> {
         &self,
         times: usize,
         tolerance: f64,
-        membership: crate::Membership,
+        membership: crate::Family,
     ) -> Result<DegreeReduction<Self>, ReduceError> {
         let original = self.as_spline();
         let mut current = original.clone();

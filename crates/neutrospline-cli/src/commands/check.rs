@@ -1,13 +1,13 @@
 //! `neutrospline check FILE`: validate a file and summarise the curve or surface (for curves
 //! with the length and the arc-length averages of the degrees).
 
-use neutrospline::{DynCurve, EvaluateSurface, GeometryError, KnotVector};
+use neutrospline::{DegreeKind, DynCurve, EvaluateSurface, GeometryError, KnotVector};
 use neutrospline_io::{KnotRule, KnotSource};
 
 use crate::commands::options::ModelArgs;
 use crate::input;
 use crate::output::{self, number};
-use crate::shape::Shape;
+use crate::shape::{DegreeView, Shape};
 
 /// Arguments of `check`.
 #[derive(Debug, clap::Args)]
@@ -80,8 +80,11 @@ const MEASURED_DEGREE: usize = 30;
 
 /// The lines `length: L`, then `average truth: ...` and the others; for a curve of length
 /// zero, or one whose length cannot be measured (its speed overflows a 64-bit float), one
-/// line that says so instead of the averages (the file is still valid).
-fn geometry_lines(curve: &DynCurve) -> Vec<String> {
+/// line that says so instead of the averages (the file is still valid). The averages are those
+/// of the degrees `view` shows, and the score's only for the original three families (the
+/// score of the others is not linear in the degrees, so its average is not the average
+/// curve's score).
+fn geometry_lines(curve: &DynCurve, view: DegreeView) -> Vec<String> {
     if curve.len() > MEASURED_CONTROL_POINTS || curve.degree() > MEASURED_DEGREE {
         return vec![format!(
             "length: not measured (check measures curves of at most {MEASURED_CONTROL_POINTS} \
@@ -89,13 +92,22 @@ fn geometry_lines(curve: &DynCurve) -> Vec<String> {
         )];
     }
     match curve.arc_averages(neutrospline::DEFAULT_ACCURACY) {
-        Ok(a) => vec![
-            format!("length: {}", twelve_digits(a.length)),
-            format!("average truth: {}", twelve_digits(a.truth)),
-            format!("average indeterminacy: {}", twelve_digits(a.indeterminacy)),
-            format!("average falsity: {}", twelve_digits(a.falsity)),
-            format!("average score: {}", twelve_digits(a.score)),
-        ],
+        Ok(a) => {
+            let mut lines = vec![format!("length: {}", twelve_digits(a.length))];
+            for (name, value) in [
+                ("truth", a.truth),
+                ("indeterminacy", a.indeterminacy),
+                ("falsity", a.falsity),
+            ] {
+                if view.channel_names().contains(&name) {
+                    lines.push(format!("average {name}: {}", twelve_digits(value)));
+                }
+            }
+            if view.triple() {
+                lines.push(format!("average score: {}", twelve_digits(a.score)));
+            }
+            lines
+        }
         Err(GeometryError::ZeroLength) => vec![
             "length: 0".to_owned(),
             "averages: none (the curve has length zero: all its control positions coincide)"
@@ -127,7 +139,7 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
     let spreads = model.spreads().map(<[_]>::to_vec);
     let shape = model.into_shape();
     let geometry = match &shape {
-        Shape::Curve(c) => geometry_lines(c),
+        Shape::Curve(c) => geometry_lines(c, DegreeView::new(membership)),
         Shape::Surface(_) => Vec::new(),
     };
     output::emit(None, |w| {
@@ -190,14 +202,35 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
                 });
             writeln!(w, "weights: {}..{}", number(min), number(max))?;
         }
-        for (label, range) in ["truth", "indeterminacy", "falsity"]
-            .iter()
-            .zip(shape.degree_ranges())
-        {
-            // Degrees are computed from values in [0, 1] (under the intuitionistic rule the
-            // indeterminacy is 1 - T - F): printed to the precision that justifies.
-            let degree = |v: f64| neutrospline_io::format_justified(v, 1.0);
-            writeln!(w, "{label}: {}..{}", degree(range.min), degree(range.max))?;
+        let view = DegreeView::new(membership);
+        // Degrees are computed from values in [0, 1] (under the intuitionistic rule the
+        // indeterminacy is 1 - T - F): printed to the precision that justifies.
+        let degree = |v: f64| neutrospline_io::format_justified(v, 1.0);
+        for (kind, range) in DegreeKind::ALL.iter().zip(shape.degree_ranges()) {
+            if view.channel_names().contains(&kind.name()) {
+                writeln!(w, "{kind}: {}..{}", degree(range.min), degree(range.max))?;
+            }
+        }
+        // The rule's sum at the control points (the curve's stays below its largest: the
+        // rule is convex), for the families with a sum rule beyond the original three.
+        if !view.triple() {
+            let sums: Vec<(String, f64)> = shape
+                .control_degrees()
+                .iter()
+                .filter_map(|d| membership.from_degrees(d))
+                .filter_map(|values| membership.rule_sum(&values))
+                .collect();
+            if let Some((terms, _)) = sums.first() {
+                let largest = sums
+                    .iter()
+                    .map(|(_, s)| *s)
+                    .fold(f64::NEG_INFINITY, f64::max);
+                writeln!(
+                    w,
+                    "rule: {terms} <= 1 (largest at the control points: {})",
+                    degree(largest)
+                )?;
+            }
         }
         if let Some(spreads) = &spreads {
             let range = |values: &mut dyn Iterator<Item = f64>| {

@@ -408,6 +408,7 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
     } else {
         None
     };
+    let family = model.membership();
     let shape = model.into_shape();
     if args.normal && !shape.is_surface() {
         return Err(UsageError(format!(
@@ -445,6 +446,7 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         scores: args.scores,
         geometry: args.geometry,
         accuracy: args.accuracy.unwrap_or(neutrospline::DEFAULT_ACCURACY),
+        family,
     };
     let mut columns = shape.columns(extras);
     if let Some(fuzzy) = &fuzzy {

@@ -17,25 +17,10 @@ pub mod relation;
 pub mod studio;
 pub mod transform;
 
-use neutrospline::Membership;
+use neutrospline::Family;
 
-/// The `--membership` values, mirroring the core's [`Membership`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum MembershipArg {
-    /// Truth, indeterminacy and falsity, independent, each in [0, 1].
-    Neutrosophic,
-    /// Truth and falsity with truth + falsity <= 1; indeterminacy optional (= 1 - T - F).
-    Intuitionistic,
-    /// Truth only; indeterminacy and falsity absent or 0.
-    Fuzzy,
-}
-
-impl From<MembershipArg> for Membership {
-    fn from(m: MembershipArg) -> Membership {
-        match m {
-            MembershipArg::Neutrosophic => Membership::Neutrosophic,
-            MembershipArg::Intuitionistic => Membership::Intuitionistic,
-            MembershipArg::Fuzzy => Membership::Fuzzy,
-        }
-    }
+/// Parses a `--membership` value with the core's [`Family`] names (`pythagorean`,
+/// `q-rung:4`, ...); the message lists the accepted forms.
+pub fn parse_family(text: &str) -> Result<Family, String> {
+    text.parse::<Family>().map_err(|e| e.to_string())
 }

@@ -1,11 +1,11 @@
 //! The options shared by the commands that read a model file: the membership rule and the
 //! shape settings a CSV file cannot hold (kind, degree, knots, grid).
 
-use neutrospline::{CurveKind, SurfaceKind};
+use neutrospline::{CurveKind, Family, SurfaceKind};
 
 use std::path::PathBuf;
 
-use crate::commands::MembershipArg;
+use crate::commands::parse_family;
 use crate::input::UsageError;
 use crate::output;
 use crate::request::RequestArgs;
@@ -95,9 +95,11 @@ fn parse_knots(text: &str) -> Result<KnotSpec, String> {
 #[derive(Debug, Clone, clap::Args)]
 #[command(next_help_heading = "Model options")]
 pub struct ModelArgs {
-    /// Membership rule for the degrees. For CSV it chooses the rule (default neutrosophic)
-    #[arg(long, value_enum, value_name = "RULE")]
-    pub membership: Option<MembershipArg>,
+    /// Membership family of the degrees: neutrosophic, intuitionistic, fuzzy, pythagorean,
+    /// fermatean, q-rung:Q, picture, spherical, t-spherical:N. For CSV it chooses the family
+    /// (default neutrosophic); a model file's own must agree
+    #[arg(long, value_name = "FAMILY", value_parser = parse_family)]
+    pub membership: Option<Family>,
 
     /// Kind of curve or surface (CSV default: bezier)
     #[arg(long, value_enum, value_name = "KIND")]
@@ -172,7 +174,7 @@ impl ModelArgs {
     pub fn read_options(&self) -> ReadOptions {
         let count = |v: Option<u64>| v.map(|v| usize::try_from(v).unwrap_or(usize::MAX));
         let mut options = ReadOptions::default();
-        options.membership = self.membership.map(Into::into);
+        options.membership = self.membership;
         options.kind = self.kind.map(Into::into);
         options.degree = count(self.degree);
         options.knots = self.knots.clone();

@@ -552,9 +552,9 @@ fn toml_errors_name_field_path_and_line() {
         ("y = 1\n", "", "error: bad.toml:11: control_points[1]: missing key `y` (every control point needs x and y)"),
         ("kind = \"bezier\"", "kind = \"spline\"", "error: bad.toml:1: kind: unknown kind `spline` (known kinds: bezier, bspline, nurbs, bezier-surface, bspline-surface, nurbs-surface)"),
         ("kind = \"bezier\"\n", "", "error: bad.toml: missing key `kind` (known kinds: bezier, bspline, nurbs, bezier-surface, bspline-surface, nurbs-surface)"),
-        ("name = \"test\"", "name = \"test\"\ncolour = \"red\"", "error: bad.toml:3: unknown key `colour` (known keys: kind, name, description, membership, degree, knots, rows, cols, degree_u, degree_v, knots_u, knots_v, periodic, periodic_u, periodic_v, control_points)"),
+        ("name = \"test\"", "name = \"test\"\ncolour = \"red\"", "error: bad.toml:3: unknown key `colour` (known keys: kind, name, description, membership, q, n, degree, knots, rows, cols, degree_u, degree_v, knots_u, knots_v, periodic, periodic_u, periodic_v, control_points)"),
         ("name = \"test\"", "name = 7", "error: bad.toml:2: name: expected a string, found a number"),
-        ("name = \"test\"", "membership = \"crisp\"", "error: bad.toml:2: membership: unknown membership rule `crisp` (expected one of: neutrosophic, intuitionistic, fuzzy)"),
+        ("name = \"test\"", "membership = \"crisp\"", "error: bad.toml:2: membership: unknown membership family `crisp` (no such family; expected one of: neutrosophic, intuitionistic, fuzzy, pythagorean, fermatean, q-rung:Q, picture, spherical, t-spherical:N, interval-neutrosophic, interval-intuitionistic, interval-type2, bipolar-neutrosophic (Q and N integers >= 1))"),
         ("name = \"test\"", "name = \"test\"\nname = \"again\"", "error: bad.toml:3: invalid TOML: duplicate key `name` in document root"),
     ];
     for (from, to, message) in cases {
@@ -647,7 +647,7 @@ fn json_errors_name_field_path() {
         (r#"{"kind": "bezier", "control_points": {}}"#,
          "error: bad.json: control_points: expected an array, found an object"),
         (r#"{"kind": "bezier", "extra": 1, "control_points": []}"#,
-         "error: bad.json: unknown key `extra` (known keys: kind, name, description, membership, degree, knots, rows, cols, degree_u, degree_v, knots_u, knots_v, periodic, periodic_u, periodic_v, control_points)"),
+         "error: bad.json: unknown key `extra` (known keys: kind, name, description, membership, q, n, degree, knots, rows, cols, degree_u, degree_v, knots_u, knots_v, periodic, periodic_u, periodic_v, control_points)"),
         (r#"{"kind": "bezier", "control_points": [{"x": 0, "y": 0, "z": 0, "T": 0.5, "I": 0.5, "F": 0.5}, {"x": 0, "y": 0, "T": 0.5, "I": 0.5, "F": 0.5}]}"#,
          "error: bad.json: control_points[1]: has no `z` but control_points[0] has one (all control points must have the same dimension)"),
         ("{\n  \"kind\": \"bezier\",\n  \"control_points\": [\n}\n", "error: bad.json:4: invalid JSON: expected value (column 1)"),

@@ -7,6 +7,7 @@ mod cli;
 mod derivatives;
 mod dialects;
 mod export;
+mod families;
 mod faults;
 mod fit;
 mod fit_surface;

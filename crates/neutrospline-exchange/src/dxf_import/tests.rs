@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use proptest::prelude::*;
 
-use neutrospline::{Evaluate, Membership};
+use neutrospline::{Evaluate, Family};
 
 use super::{parse_dxf, Limits, Model};
 use crate::report::ImportOptions;
@@ -67,7 +67,7 @@ fn dxf_export_then_import_gives_back_every_example_curve() {
         .unwrap();
         assert_eq!(back, [model], "{file}");
     }
-    // Membership, names with escapes and a long description survive too.
+    // Family, names with escapes and a long description survive too.
     let model = Model::new(AnyCurve::Bezier(neutrospline::example1()))
         .with_name("caf\u{e9} ^ \\U+0041 \u{1F600}")
         .with_description("d".repeat(700))
@@ -83,7 +83,7 @@ fn dxf_export_then_import_gives_back_every_example_curve() {
         ])
         .unwrap(),
     ))
-    .with_membership(Membership::Fuzzy)
+    .with_membership(Family::Fuzzy)
     .unwrap();
     for model in [model, fuzzy] {
         let bytes = export(&model, ExportFormat::Dxf, &ExportOptions::new()).unwrap();
@@ -114,7 +114,7 @@ fn dxf_spline_without_extended_data_takes_the_default_degrees() {
     assert_eq!(model.kind(), Kind::Curve(CurveKind::BSpline));
     assert_eq!(
         (model.name(), model.membership()),
-        (None, Membership::Neutrosophic)
+        (None, Family::Neutrosophic)
     );
     let Some(neutrospline::DynCurve::Planar(curve)) = model.shape().curve() else {
         panic!("a plane curve")

@@ -4,7 +4,7 @@
 
 use std::io::BufRead;
 
-use neutrospline::{DegreeError, Degrees, Membership};
+use neutrospline::{DegreeError, Degrees, Family};
 
 use super::Records;
 use crate::format::too_many_points;
@@ -320,13 +320,13 @@ fn unknown_hint(message: String, heading: &str) -> String {
 /// `column` is the table's column of a field.
 pub(crate) fn require_degrees<R: BufRead, C: Copy + PartialEq>(
     table: &Table<'_, R, C>,
-    membership: Membership,
+    membership: Family,
     column: impl Fn(Field) -> C,
 ) -> Result<(), InputError> {
     let has = |f: Field| table.has(column(f));
     match missing_degree(membership, has(Field::Indeterminacy), has(Field::Falsity)) {
         Some(DegreeError::Missing { kind, membership }) => {
-            let hint = if membership == Membership::Neutrosophic && !has(Field::Indeterminacy) {
+            let hint = if membership == Family::Neutrosophic && !has(Field::Indeterminacy) {
                 "; truth and falsity alone are an intuitionistic table (--membership \
                  intuitionistic, indeterminacy 1 - T - F), truth alone a fuzzy one (--membership \
                  fuzzy)"
@@ -349,7 +349,7 @@ pub(crate) fn require_degrees<R: BufRead, C: Copy + PartialEq>(
 /// Degrees that break the rule, located at the row's line.
 pub(crate) fn read_degrees<C: Copy>(
     row: &Row<'_, C>,
-    membership: Membership,
+    membership: Family,
     values: &[Option<f64>],
 ) -> Result<Degrees, InputError> {
     let get = |f: Field| values[f.index()];

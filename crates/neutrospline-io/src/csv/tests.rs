@@ -2,9 +2,9 @@
 
 use super::*;
 
-use neutrospline::Membership;
+use neutrospline::Family;
 
-fn rule(membership: Membership) -> ReadOptions {
+fn rule(membership: Family) -> ReadOptions {
     ReadOptions {
         membership: Some(membership),
         ..ReadOptions::default()
@@ -12,10 +12,10 @@ fn rule(membership: Membership) -> ReadOptions {
 }
 
 fn parse_ok(text: &str) -> Parsed {
-    parse("t.csv", text.as_bytes(), &rule(Membership::Neutrosophic)).unwrap()
+    parse("t.csv", text.as_bytes(), &rule(Family::Neutrosophic)).unwrap()
 }
 
-fn parse_err(text: &[u8], membership: Membership) -> String {
+fn parse_err(text: &[u8], membership: Family) -> String {
     parse("t.csv", text, &rule(membership))
         .unwrap_err()
         .to_string()
@@ -53,7 +53,7 @@ fn csv_parse_bom_crlf_comments_aliases_whitespace() {
 #[test]
 fn csv_parse_refuses_a_row_hidden_in_a_comment() {
     let text = "name,x,y,truth,indeterminacy,falsity\nC0,1,3,0.3,0.6,0.1\n#1,3,6,0.8,0.1,0.1\nC2,6,2,0.7,0.1,0.2\n";
-    let err = parse("t.csv", text.as_bytes(), &rule(Membership::Neutrosophic)).unwrap_err();
+    let err = parse("t.csv", text.as_bytes(), &rule(Family::Neutrosophic)).unwrap_err();
     assert_eq!(
         err.to_string(),
         "t.csv:3: `#1,3,6,0.8,0.1,0.1` starts with `#`, so it is a comment, yet it holds a \
@@ -63,7 +63,7 @@ fn csv_parse_refuses_a_row_hidden_in_a_comment() {
     );
     // The same at the end of the file, without a line end.
     let last = "name,x,y,truth,indeterminacy,falsity\nC0,1,3,0.3,0.6,0.1\nC1,3,6,0.8,0.1,0.1\n# C3, 9, 5, 0.2, 0.4, 0.4";
-    let err = parse("t.csv", last.as_bytes(), &rule(Membership::Neutrosophic)).unwrap_err();
+    let err = parse("t.csv", last.as_bytes(), &rule(Family::Neutrosophic)).unwrap_err();
     assert!(
         err.to_string()
             .starts_with("t.csv:4: `# C3, 9, 5, 0.2, 0.4, 0.4` starts with"),
@@ -80,15 +80,15 @@ fn csv_parse_refuses_a_row_hidden_in_a_comment() {
 fn csv_parse_line_numbers_count_comments() {
     let text = "x,y,truth,indeterminacy,falsity\n# c\n1,2,0,0,0\n# c\n\n1,2,1.5,0,0\n";
     assert_eq!(
-        parse_err(text.as_bytes(), Membership::Neutrosophic),
+        parse_err(text.as_bytes(), Family::Neutrosophic),
         "t.csv:6: truth = 1.5 is outside [0, 1] (every degree must be in [0, 1])"
     );
 }
 
 #[test]
 fn csv_parse_errors() {
-    use Membership::*;
-    let cases: &[(&[u8], Membership, &str)] = &[
+    use Family::*;
+    let cases: &[(&[u8], Family, &str)] = &[
         (b"", Neutrosophic, "t.csv: empty file (expected a header row such as `x,y,truth,indeterminacy,falsity`)"),
         (b"# only a comment\n", Neutrosophic, "t.csv: empty file (expected a header row such as `x,y,truth,indeterminacy,falsity`)"),
         (b"x,y,truth,indeterminacy,falsity\n", Neutrosophic, "t.csv: no control points (the header row is not followed by any data row)"),
@@ -123,11 +123,11 @@ fn csv_parse_membership_rules() {
     let m = parse(
         "t.csv",
         b"x,y,truth,falsity\n0,0,0.5,0.25\n",
-        &rule(Membership::Intuitionistic),
+        &rule(Family::Intuitionistic),
     )
     .unwrap();
     assert_eq!(m.points[0].degrees.to_array(), [0.5, 0.25, 0.25]);
-    let m = parse("t.csv", b"x,y,truth\n0,0,0.5\n", &rule(Membership::Fuzzy)).unwrap();
+    let m = parse("t.csv", b"x,y,truth\n0,0,0.5\n", &rule(Family::Fuzzy)).unwrap();
     assert_eq!(m.points[0].degrees.to_array(), [0.5, 0.0, 0.0]);
 }
 
@@ -135,7 +135,7 @@ fn csv_parse_membership_rules() {
 fn csv_parse_streams_quoted_newlines_and_counts_lines() {
     let text = "name,x,y,T,I,F\n\"two\nlines\",1,2,0,0,0\n  \n,1,2,0,0,2\n";
     assert_eq!(
-        parse_err(text.as_bytes(), Membership::Neutrosophic),
+        parse_err(text.as_bytes(), Family::Neutrosophic),
         "t.csv:5: falsity = 2 is outside [0, 1] (every degree must be in [0, 1])"
     );
     let m = parse_ok("name,x,y,T,I,F\n\"two\nlines\",1,2,0,0,0\n");
@@ -162,7 +162,7 @@ fn csv_parse_reader_stops_at_the_first_bad_line() {
         8,
         Endless(b"x,y,truth,indeterminacy,falsity\n1,2,0,0,0\n1,2,0,x,0\n".to_vec()),
     );
-    let e = parse_reader("t.csv", reader, &rule(Membership::Neutrosophic)).unwrap_err();
+    let e = parse_reader("t.csv", reader, &rule(Family::Neutrosophic)).unwrap_err();
     assert_eq!(
         e.to_string(),
         "t.csv:3: column `indeterminacy`: value `x` is not a number"
@@ -176,7 +176,7 @@ fn csv_parse_spreads() {
     assert_eq!(m.points[0].spread.right, [0.5, 2.0, 0.0]);
     let m = parse_ok("x,y,T,I,F\n0,0,1,0,0\n");
     assert!(m.points[0].spread.is_zero());
-    use Membership::*;
+    use Family::*;
     let cases: &[(&[u8], &str)] = &[
         (b"x,y,T,I,F,spread_x,spread_x_right\n", "t.csv:1: column `spread_x` and `spread_x_right` are both given (give the symmetric spread `spread_x` or the asymmetric `spread_x_left` and `spread_x_right` for one axis, not both)"),
         (b"x,y,T,I,F,spread_z\n", "t.csv:1: column `spread_z` does not apply to a curve without z (the spread of z needs a z coordinate)"),
@@ -218,7 +218,7 @@ fn csv_parse_refuses_the_row_past_the_limit() {
             max_control_points: 2,
             ..crate::Limits::default()
         },
-        ..rule(Membership::Neutrosophic)
+        ..rule(Family::Neutrosophic)
     };
     let two = "x,y,T,I,F\n0,0,1,0,0\n# c\n1,1,1,0,0\n";
     assert_eq!(

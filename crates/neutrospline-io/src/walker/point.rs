@@ -1,6 +1,6 @@
 //! The control points of a TOML or JSON model.
 
-use neutrospline::{DegreeError, DegreeKind, Degrees, Membership};
+use neutrospline::{DegreeError, DegreeKind, Degrees, Family};
 
 use super::Walker;
 use crate::parsed::{
@@ -17,7 +17,7 @@ impl Walker<'_> {
         &self,
         item: &Node,
         index: usize,
-        membership: Membership,
+        membership: Family,
         kind: Kind,
     ) -> Result<PointRecord, InputError> {
         let path = format!("control_points[{index}]");
@@ -191,7 +191,7 @@ impl Walker<'_> {
                 ),
                 DegreeError::OutOfRange { kind, .. }
                 | DegreeError::NotFinite { kind, .. }
-                | DegreeError::FuzzyExtra { kind, .. } => (at(*kind), e.to_string()),
+                | DegreeError::NotCarried { kind, .. } => (at(*kind), e.to_string()),
                 DegreeError::HesitationMismatch { .. } => {
                     (at(DegreeKind::Indeterminacy), e.to_string())
                 }

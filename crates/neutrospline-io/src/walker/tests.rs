@@ -2,7 +2,7 @@
 
 use super::*;
 
-fn with_membership(membership: Option<Membership>) -> ReadOptions {
+fn with_membership(membership: Option<Family>) -> ReadOptions {
     ReadOptions {
         membership,
         ..ReadOptions::default()
@@ -63,7 +63,7 @@ fn model_parse_toml_example1() {
     let m = parse_toml("m.toml", EXAMPLE1_TOML.as_bytes(), &ReadOptions::default()).unwrap();
     assert_eq!(m.kind, Kind::DEFAULT);
     assert_eq!(m.name.as_deref(), Some("Example 1"));
-    assert_eq!(m.membership, Membership::Neutrosophic);
+    assert_eq!(m.membership, Family::Neutrosophic);
     assert_eq!(m.dimension, 2);
     assert_eq!(m.points.len(), 4);
     assert_eq!(m.points[1].degrees.to_array(), [0.8, 0.1, 0.1]);
@@ -78,7 +78,7 @@ fn model_parse_json_inline() {
                            {"x": 1, "y": 0, "z": 2, "T": 0.25, "F": 0.5, "I": 0.25}]}"#;
     let m = parse_json("m.json", text.as_bytes(), &ReadOptions::default()).unwrap();
     assert_eq!(m.dimension, 3);
-    assert_eq!(m.membership, Membership::Intuitionistic);
+    assert_eq!(m.membership, Family::Intuitionistic);
     assert_eq!(m.points[0].degrees.to_array(), [0.5, 0.25, 0.25]);
     assert_eq!(m.points[1].position, vec![1.0, 0.0, 2.0]);
 }
@@ -138,7 +138,7 @@ fn model_parse_toml_errors_name_path_and_line() {
     let bad = EXAMPLE1_TOML.replace("name = \"Example 1\"", "title = \"Example 1\"");
     assert_eq!(
         toml_err(&bad),
-        "m.toml:2: unknown key `title` (known keys: kind, name, description, membership, degree, knots, rows, cols, degree_u, degree_v, knots_u, knots_v, periodic, periodic_u, periodic_v, control_points)"
+        "m.toml:2: unknown key `title` (known keys: kind, name, description, membership, q, n, degree, knots, rows, cols, degree_u, degree_v, knots_u, knots_v, periodic, periodic_u, periodic_v, control_points)"
     );
 }
 
@@ -157,7 +157,7 @@ fn model_parse_membership_conflict_and_default() {
     let e = parse_toml(
         "m.toml",
         text.as_bytes(),
-        &with_membership(Some(Membership::Neutrosophic)),
+        &with_membership(Some(Family::Neutrosophic)),
     )
     .unwrap_err()
     .to_string();
@@ -169,10 +169,10 @@ fn model_parse_membership_conflict_and_default() {
     let m = parse_toml(
         "m.toml",
         text.as_bytes(),
-        &with_membership(Some(Membership::Fuzzy)),
+        &with_membership(Some(Family::Fuzzy)),
     )
     .unwrap();
-    assert_eq!(m.membership, Membership::Fuzzy);
+    assert_eq!(m.membership, Family::Fuzzy);
 }
 
 #[test]

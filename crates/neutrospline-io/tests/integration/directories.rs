@@ -1,7 +1,7 @@
 //! A directory where a file is expected: every reader says that the path is a directory and
 //! what it reads in its place (issue 23: `import DIR.dxf` advised a .csv, .toml or .json file).
 
-use neutrospline::Membership;
+use neutrospline::Family;
 use neutrospline_io::{load, load_data, load_points, read_whole, ReadError, ReadOptions};
 
 #[test]
@@ -31,7 +31,7 @@ fn every_reader_names_the_directory_and_what_it_reads() {
     }
     let p = path("data.csv");
     assert_eq!(
-        message(load_data(&p, Membership::Neutrosophic).map(drop)),
+        message(load_data(&p, Family::Neutrosophic).map(drop)),
         format!(
             "{}: cannot read: it is a directory (give a .csv file of data points)",
             shown(&p)

@@ -6,8 +6,8 @@
 
 use neutrospline::strategies;
 use neutrospline::{
-    AnyCurve, BSpline, Bezier, ControlPoint, ControlPolygon, CurveKind, Degrees, KnotVector,
-    Membership, Nurbs, Spread, Surface, SurfaceKind,
+    AnyCurve, BSpline, Bezier, ControlPoint, ControlPolygon, CurveKind, Degrees, Family,
+    KnotVector, Nurbs, Spread, Surface, SurfaceKind,
 };
 use neutrospline_io::{parse, to_string, Format, Model, ReadOptions, Shape};
 use proptest::prelude::*;
@@ -45,23 +45,36 @@ fn unit() -> impl Strategy<Value = f64> {
 }
 
 /// Degrees obeying `membership`, built as a reader builds them.
-fn degrees(membership: Membership) -> BoxedStrategy<Degrees> {
+fn degrees(membership: Family) -> BoxedStrategy<Degrees> {
     match membership {
-        Membership::Neutrosophic => (unit(), unit(), unit())
+        Family::Neutrosophic => (unit(), unit(), unit())
             .prop_map(|(t, i, f)| Degrees::new(t, i, f).unwrap())
             .boxed(),
-        Membership::Intuitionistic => (unit(), unit())
+        Family::Intuitionistic => (unit(), unit())
             .prop_filter_map("truth + falsity > 1", |(t, f)| {
                 Degrees::intuitionistic(t, f * (1.0 - t)).ok()
             })
             .boxed(),
-        Membership::Fuzzy => unit().prop_map(|t| Degrees::fuzzy(t).unwrap()).boxed(),
+        Family::Fuzzy => unit().prop_map(|t| Degrees::fuzzy(t).unwrap()).boxed(),
+        // Any other family: random channels, half of them projected onto the rule (so on its
+        // boundary), the others scaled into it.
+        family => (
+            prop::collection::vec(unit(), family.channel_count()),
+            any::<bool>(),
+        )
+            .prop_map(move |(mut values, boundary)| {
+                if boundary || family.check(&values).is_err() {
+                    family.project(&mut values);
+                }
+                family.to_degrees(&values).unwrap()
+            })
+            .boxed(),
     }
 }
 
 fn points<const D: usize>(
     count: usize,
-    membership: Membership,
+    membership: Family,
 ) -> impl Strategy<Value = Vec<ControlPoint<D>>> {
     prop::collection::vec(
         (prop::array::uniform::<_, D>(number()), degrees(membership))
@@ -91,7 +104,7 @@ fn knots(degree: usize, count: usize) -> BoxedStrategy<KnotVector> {
     prop_oneof![3 => strategies::knot_vector(degree, count), 1 => sorted].boxed()
 }
 
-fn curve<const D: usize>(kind: CurveKind, membership: Membership) -> BoxedStrategy<Shape>
+fn curve<const D: usize>(kind: CurveKind, membership: Family) -> BoxedStrategy<Shape>
 where
     Shape: From<AnyCurve<D>>,
 {
@@ -119,7 +132,7 @@ where
     }
 }
 
-fn surface(kind: SurfaceKind, membership: Membership) -> BoxedStrategy<Shape> {
+fn surface(kind: SurfaceKind, membership: Family) -> BoxedStrategy<Shape> {
     (1usize..=3, 1usize..=3)
         .prop_flat_map(move |(rows, cols)| {
             let degree = |n: usize| {
@@ -164,7 +177,7 @@ fn breakpoints(n: usize) -> BoxedStrategy<Vec<f64>> {
 
 /// A periodic B-spline or NURBS curve (`BSpline::periodic`): its writers write the short
 /// form, `periodic = true`, the breakpoints and the distinct control points.
-fn periodic_curve<const D: usize>(kind: CurveKind, membership: Membership) -> BoxedStrategy<Shape>
+fn periodic_curve<const D: usize>(kind: CurveKind, membership: Family) -> BoxedStrategy<Shape>
 where
     Shape: From<AnyCurve<D>>,
 {
@@ -192,7 +205,7 @@ where
 }
 
 /// A B-spline or NURBS surface periodic along u, and along v or not.
-fn periodic_surface(kind: SurfaceKind, membership: Membership) -> BoxedStrategy<Shape> {
+fn periodic_surface(kind: SurfaceKind, membership: Family) -> BoxedStrategy<Shape> {
     (
         1usize..=3,
         1usize..=3,
@@ -239,16 +252,23 @@ fn periodic_surface(kind: SurfaceKind, membership: Membership) -> BoxedStrategy<
         .boxed()
 }
 
-fn membership() -> impl Strategy<Value = Membership> {
-    prop::sample::select(vec![
-        Membership::Neutrosophic,
-        Membership::Intuitionistic,
-        Membership::Fuzzy,
-    ])
+/// Every family whose channels fit truth, indeterminacy and falsity, the three of old
+/// weighted in.
+fn membership() -> impl Strategy<Value = Family> {
+    let others: Vec<Family> = Family::EXAMPLES
+        .into_iter()
+        .skip(3)
+        .chain([Family::q_rung(1).unwrap(), Family::t_spherical(7).unwrap()])
+        .filter(Family::fits_degrees)
+        .collect();
+    prop_oneof![
+        2 => prop::sample::select(vec![Family::Neutrosophic, Family::Intuitionistic, Family::Fuzzy]),
+        1 => prop::sample::select(others),
+    ]
 }
 
 /// A shape of any kind, and the rule its degrees obey.
-fn shape() -> impl Strategy<Value = (Shape, Membership)> {
+fn shape() -> impl Strategy<Value = (Shape, Family)> {
     (0usize..13, membership()).prop_flat_map(|(kind, m)| {
         let shape = match kind {
             0 => curve::<2>(CurveKind::Bezier, m),
@@ -437,9 +457,9 @@ proptest! {
         let membership = model.membership();
         let mut text = String::new();
         let header: Vec<&str> = match membership {
-            Membership::Neutrosophic => vec!["T", "I", "F"],
-            Membership::Intuitionistic => vec!["truth", "falsity"],
-            Membership::Fuzzy => vec!["truth"],
+            Family::Neutrosophic => vec!["T", "I", "F"],
+            Family::Intuitionistic => vec!["truth", "falsity"],
+            family => family.channels().to_vec(),
         };
         let dimension = model.shape().dimension();
         let weights = model.shape().weights();
@@ -473,12 +493,8 @@ proptest! {
                 cells.push(format!("\"{}\"", name.replace('"', "\"\"")));
             }
             cells.extend(position.iter().map(|v| format!("{v}")));
-            let [t, i_, f] = degrees.to_array();
-            cells.extend(match membership {
-                Membership::Neutrosophic => vec![t, i_, f],
-                Membership::Intuitionistic => vec![t, f],
-                Membership::Fuzzy => vec![t],
-            }.iter().map(|v| format!("{v}")));
+            let values = membership.from_degrees(&degrees).unwrap();
+            cells.extend(values.iter().map(|v| format!("{v}")));
             if let Some(w) = weights {
                 cells.push(format!("{}", w[i]));
             }

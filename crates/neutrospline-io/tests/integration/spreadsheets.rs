@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use neutrospline::options::{OptionSet, OptionValue};
-use neutrospline::Membership;
+use neutrospline::Family;
 use neutrospline_io::{load_data_with, ReadError, TableInput};
 
 fn fixture(name: &str) -> PathBuf {
@@ -29,14 +29,13 @@ fn survey_input() -> TableInput {
 fn every_workbook_reads_the_survey_exactly() {
     let plain = load_data_with(
         fixture("survey-plain.csv"),
-        Membership::Neutrosophic,
+        Family::Neutrosophic,
         &TableInput::default(),
     )
     .unwrap();
     assert_eq!(plain.len(), 12);
     for book in ["workbook.xlsx", "workbook.ods", "workbook.xls"] {
-        let table =
-            load_data_with(fixture(book), Membership::Neutrosophic, &survey_input()).unwrap();
+        let table = load_data_with(fixture(book), Family::Neutrosophic, &survey_input()).unwrap();
         assert_eq!(table.positions(), plain.positions(), "{book}");
         assert_eq!(table.degrees(), plain.degrees(), "{book}");
     }
@@ -77,7 +76,7 @@ fn damaged_workbooks_are_refused_not_panicked_on() {
             let path = dir.path().join(format!("case{case}-{book}"));
             std::fs::write(&path, &damaged).unwrap();
             let result = std::panic::catch_unwind(|| {
-                load_data_with(&path, Membership::Neutrosophic, &survey_input())
+                load_data_with(&path, Family::Neutrosophic, &survey_input())
             });
             let result = result.unwrap_or_else(|_| panic!("{book} case {case} panicked"));
             match result {

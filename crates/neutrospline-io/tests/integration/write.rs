@@ -2,7 +2,7 @@
 //! it reads back to the same model.
 
 use neutrospline::{
-    AnyCurve, BSpline, Bezier, ControlPoint, Degrees, KnotVector, Membership, Nurbs, Surface,
+    AnyCurve, BSpline, Bezier, ControlPoint, Degrees, Family, KnotVector, Nurbs, Surface,
 };
 use neutrospline_io::{
     parse, save, to_csv_string, to_json_string, to_toml_string, Format, Model, ReadOptions,
@@ -48,7 +48,7 @@ fn bspline() -> Model {
     )
     .unwrap();
     Model::new(AnyCurve::BSpline(curve))
-        .with_membership(Membership::Intuitionistic)
+        .with_membership(Family::Intuitionistic)
         .unwrap()
 }
 
@@ -65,7 +65,7 @@ fn nurbs() -> Model {
     )
     .unwrap();
     Model::new(AnyCurve::Nurbs(curve))
-        .with_membership(Membership::Fuzzy)
+        .with_membership(Family::Fuzzy)
         .unwrap()
         .with_point_names([Some("a"), None, Some("c")])
         .unwrap()
@@ -417,7 +417,7 @@ fn csv_options_name_what_csv_cannot_hold() {
         options.knots_u,
         Some(neutrospline_io::KnotSpec::Explicit(vec![0.0, 1.0]))
     );
-    assert_eq!(options.membership, Some(Membership::Neutrosophic));
+    assert_eq!(options.membership, Some(Family::Neutrosophic));
     // Without them the CSV table is a Bézier curve, or an error.
     let csv = to_csv_string(&bspline()).unwrap();
     let e = parse(

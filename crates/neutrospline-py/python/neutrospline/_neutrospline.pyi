@@ -41,7 +41,9 @@ from typing_extensions import deprecated
 ArrayLike = npt.ArrayLike
 FloatArray = npt.NDArray[np.float64]
 PathLike = Union[str, "os.PathLike[str]"]
-Membership = Literal["neutrosophic", "intuitionistic", "fuzzy"]
+# A membership family: "neutrosophic", "intuitionistic", "fuzzy", "pythagorean", "fermatean",
+# "q-rung:Q", "picture", "spherical" or "t-spherical:N" (Q, N integers >= 1).
+Membership = str
 ViewName = Literal[
     "all", "controls", "truth", "indeterminacy", "falsity", "plane", "score", "data", "band"
 ]

@@ -4,7 +4,7 @@
 use neutrospline::alpha_cut;
 use neutrospline::{
     AnyCurve, BSpline as BSplineCurve, Bezier as BezierCurve, ControlPoint, ControlPolygon,
-    CurveError, Degrees, KnotVector, Membership, Nurbs as NurbsCurve, Spread,
+    CurveError, Degrees, Family, KnotVector, Nurbs as NurbsCurve, Spread,
 };
 use neutrospline_io::Shape;
 use pyo3::prelude::*;
@@ -17,9 +17,9 @@ use crate::model;
 /// indeterminacy `1 - truth - falsity` recomputed after blending, which rounds).
 pub(super) fn under_rule<const D: usize>(
     curve: AnyCurve<D>,
-    membership: Membership,
+    membership: Family,
 ) -> PyResult<AnyCurve<D>> {
-    if membership != Membership::Intuitionistic {
+    if membership != Family::Intuitionistic {
         return Ok(curve);
     }
     let points: Vec<ControlPoint<D>> = curve

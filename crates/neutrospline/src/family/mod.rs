@@ -47,7 +47,7 @@ use core::num::NonZeroU32;
 use core::ops::Deref;
 use core::str::FromStr;
 
-use crate::degrees::{DegreeError, Degrees, Membership};
+use crate::degrees::{DegreeError, DegreeKind, Degrees};
 
 pub use rule::{LinearConstraint, PowerRule, RuleError, RULE_TOLERANCE};
 
@@ -340,27 +340,58 @@ impl Family {
         self.power().is_none_or(|p| p == 1)
     }
 
-    /// The legacy rule with the same name, for the three families of [`Membership`].
+    /// The family's parameter with its key in model files: `("q", q)` for `q-rung`,
+    /// `("n", n)` for `t-spherical`, `None` for the others.
     ///
     /// ```
-    /// use neutrospline::{Family, Membership};
-    /// assert_eq!(Family::Fuzzy.membership(), Some(Membership::Fuzzy));
-    /// assert_eq!(Family::from(Membership::Intuitionistic), Family::Intuitionistic);
-    /// assert_eq!(Family::Pythagorean.membership(), None);
+    /// use neutrospline::Family;
+    /// assert_eq!(Family::q_rung(4)?.parameter(), Some(("q", 4)));
+    /// assert_eq!(Family::Spherical.parameter(), None);
+    /// # Ok::<(), neutrospline::ParseFamilyError>(())
     /// ```
-    pub const fn membership(&self) -> Option<Membership> {
+    pub const fn parameter(&self) -> Option<(&'static str, u32)> {
         match self {
-            Family::Neutrosophic => Some(Membership::Neutrosophic),
-            Family::Intuitionistic => Some(Membership::Intuitionistic),
-            Family::Fuzzy => Some(Membership::Fuzzy),
+            Family::QRung(q) => Some(("q", q.get())),
+            Family::TSpherical(n) => Some(("n", n.get())),
             _ => None,
         }
     }
 
-    /// The channels of legacy [`Degrees`] under this family, for the three families of
-    /// [`Membership`]: `[T, I, F]` (neutrosophic), `[T, F]` (intuitionistic: the stored
-    /// indeterminacy is the derived hesitation), `[T]` (fuzzy). `None` for the other
-    /// families. The values are not re-checked: see [`Degrees::check_membership`].
+    /// The family named `name` (as in [`Family::name`]) with the parameter `value` of
+    /// [`Family::parameter`]: `with_parameter("q-rung", 4)` is `q-rung:4`.
+    ///
+    /// # Errors
+    /// `name` names no family, the family takes no parameter, or `value` is 0.
+    pub fn with_parameter(name: &str, value: u32) -> Result<Family, ParseFamilyError> {
+        format!("{}:{value}", name.trim()).parse()
+    }
+
+    /// Whether the family carries the degree `kind` as one of its channels.
+    ///
+    /// ```
+    /// use neutrospline::{DegreeKind, Family};
+    /// assert!(Family::Pythagorean.carries(DegreeKind::Falsity));
+    /// assert!(!Family::Pythagorean.carries(DegreeKind::Indeterminacy));
+    /// assert!(!Family::IntervalType2.carries(DegreeKind::Truth));
+    /// ```
+    pub fn carries(&self, kind: DegreeKind) -> bool {
+        self.channels().contains(&kind.name())
+    }
+
+    /// Whether every channel is one of truth, indeterminacy and falsity, so that a value of
+    /// the family is held by [`Degrees`] (all families but the interval-valued and bipolar
+    /// ones). A degree the family does not carry is stored as 0, except the intuitionistic
+    /// indeterminacy, which is the hesitation `1 - T - F` (linear, so it blends exactly).
+    pub fn fits_degrees(&self) -> bool {
+        self.channels()
+            .iter()
+            .all(|c| DegreeKind::ALL.iter().any(|k| k.name() == *c))
+    }
+
+    /// The channel values held by `degrees`, in the family's channel order (`[T, F]` for
+    /// the orthopair families, `[T, I, F]` for picture and spherical ones), or `None` when the
+    /// family does not [fit](Family::fits_degrees) in degrees. The values are not re-checked:
+    /// see [`Degrees::check_membership`].
     ///
     /// ```
     /// use neutrospline::{Degrees, Family};
@@ -371,47 +402,39 @@ impl Family {
     /// # Ok::<(), neutrospline::DegreeError>(())
     /// ```
     pub fn from_degrees(&self, degrees: &Degrees) -> Option<FamilyValues> {
-        let [t, i, f] = degrees.to_array();
-        match self {
-            Family::Neutrosophic => Some(FamilyValues::from_slice(&[t, i, f])),
-            Family::Intuitionistic => Some(FamilyValues::from_slice(&[t, f])),
-            Family::Fuzzy => Some(FamilyValues::from_slice(&[t])),
-            _ => None,
+        if !self.fits_degrees() {
+            return None;
         }
+        let carried: Vec<f64> = DegreeKind::ALL
+            .into_iter()
+            .filter(|k| self.carries(*k))
+            .map(|k| degrees.get(k))
+            .collect();
+        Some(FamilyValues::from_slice(&carried))
     }
 
-    /// Legacy [`Degrees`] from the channels of the three families of [`Membership`], checked
-    /// by [`Degrees::with_membership`]; the inverse of [`Family::from_degrees`].
+    /// [`Degrees`] from the family's channel values, checked by
+    /// [`Degrees::with_membership`]; the inverse of [`Family::from_degrees`].
     ///
     /// # Errors
-    /// The rule broken, or [`DegreeError::Missing`] when `values` is too short; a family
-    /// outside [`Membership`] reports the truth as missing under the neutrosophic rule.
+    /// The rule broken; [`DegreeError::Missing`] when `values` is too short;
+    /// [`DegreeError::TooManyChannels`] for a family that does not fit in degrees.
     pub fn to_degrees(&self, values: &[f64]) -> Result<Degrees, DegreeError> {
-        let membership = self.membership().unwrap_or_default();
-        let get = |c: usize| values.get(c).copied();
-        let missing = DegreeError::Missing {
-            kind: crate::DegreeKind::Truth,
-            membership,
-        };
-        if self.membership().is_none() {
-            return Err(missing);
+        if !self.fits_degrees() {
+            return Err(DegreeError::TooManyChannels { membership: *self });
         }
-        let truth = get(0).ok_or(missing)?;
-        match membership {
-            Membership::Neutrosophic => Degrees::with_membership(membership, truth, get(1), get(2)),
-            Membership::Intuitionistic => Degrees::with_membership(membership, truth, None, get(1)),
-            Membership::Fuzzy => Degrees::with_membership(membership, truth, None, None),
+        let mut given = [None; 3];
+        let mut next = values.iter().copied();
+        for kind in DegreeKind::ALL {
+            if self.carries(kind) {
+                given[kind.index()] = next.next();
+            }
         }
-    }
-}
-
-impl From<Membership> for Family {
-    fn from(membership: Membership) -> Self {
-        match membership {
-            Membership::Neutrosophic => Family::Neutrosophic,
-            Membership::Intuitionistic => Family::Intuitionistic,
-            Membership::Fuzzy => Family::Fuzzy,
-        }
+        let truth = given[0].ok_or(DegreeError::Missing {
+            kind: DegreeKind::Truth,
+            membership: *self,
+        })?;
+        Degrees::with_membership(*self, truth, given[1], given[2])
     }
 }
 

@@ -1,5 +1,5 @@
 //! The Euclidean projection onto a family's feasible set: the nearest valid channel vector,
-//! exactly (the bound fitting gives every control point; docs/model.md, "Membership
+//! exactly (the bound fitting gives every control point; docs/model.md, "Family
 //! families").
 //!
 //! - boxes: clamping;

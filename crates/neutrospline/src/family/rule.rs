@@ -64,7 +64,7 @@ pub enum RuleError {
         upper_value: f64,
     },
     /// The sum of powers of the rule exceeds 1 (`truth + falsity`, `truth^2 + falsity^2`, ...).
-    #[error("{} = {sum} exceeds 1 ({family} rule)", terms(channels, *power))]
+    #[error("{} = {} exceeds 1 ({family} rule)", terms(channels, *power), fifteen_digits(*sum))]
     SumExceeds {
         /// The family.
         family: Family,
@@ -75,6 +75,18 @@ pub enum RuleError {
         /// The sum of the powers.
         sum: f64,
     },
+}
+
+/// `value` rounded to 15 significant digits, in shortest form: a sum of rounded powers
+/// (0.6^2 + 0.1^2 + 0.8^2 = 1.0100000000000002) printed as the decimals gave it (1.01). Any
+/// sum that would print as 1 prints in full (1.0000000000000002).
+fn fifteen_digits(value: f64) -> f64 {
+    let rounded: f64 = format!("{value:.14e}").parse().unwrap_or(value);
+    if rounded == 1.0 {
+        value
+    } else {
+        rounded
+    }
 }
 
 fn terms(channels: &[&str], power: u32) -> String {
@@ -300,5 +312,27 @@ impl Family {
             }),
             _ => None,
         }
+    }
+
+    /// The rule's sum `sum x_c^p` over its summed channels (`truth + falsity` under the
+    /// intuitionistic rule, `truth^2 + falsity^2` under the Pythagorean one, ...), with its
+    /// terms written out, or `None` for the families without a sum rule. The sum is computed
+    /// as [`Family::check`] computes it.
+    ///
+    /// ```
+    /// use neutrospline::Family;
+    /// let (terms, sum) = Family::Pythagorean.rule_sum(&[0.6, 0.8]).unwrap();
+    /// assert_eq!(terms, "truth^2 + falsity^2");
+    /// assert!((sum - 1.0).abs() < 1e-15);
+    /// assert!(Family::Neutrosophic.rule_sum(&[0.1, 0.2, 0.3]).is_none());
+    /// ```
+    ///
+    /// # Panics
+    /// If `values` has fewer entries than the family has channels.
+    pub fn rule_sum(&self, values: &[f64]) -> Option<(String, f64)> {
+        let shape = self.shape();
+        let power = self.power()?;
+        let names: Vec<&str> = shape.sum.iter().map(|&c| shape.channels[c]).collect();
+        Some((terms(&names, power), power_sum(values, shape.sum, power)))
     }
 }

@@ -42,16 +42,52 @@ interval-type2, bipolar-neutrosophic (Q and N integers >= 1)";
 }
 
 #[test]
-fn legacy_membership_converts_both_ways() {
-    for m in [
-        Membership::Neutrosophic,
-        Membership::Intuitionistic,
-        Membership::Fuzzy,
-    ] {
-        let family = Family::from(m);
-        assert_eq!(family.membership(), Some(m));
-        assert_eq!(family.to_string(), m.to_string());
+fn degrees_hold_the_families_that_fit_them() {
+    // Every family but the interval-valued and bipolar ones fits truth, indeterminacy and
+    // falsity, and its channels round-trip through degrees.
+    for family in Family::EXAMPLES {
+        let wide = matches!(
+            family,
+            Family::IntervalNeutrosophic
+                | Family::IntervalIntuitionistic
+                | Family::IntervalType2
+                | Family::BipolarNeutrosophic
+        );
+        assert_eq!(family.fits_degrees(), !wide, "{family}");
+        let mut values = vec![0.7; family.channel_count()];
+        family.project(&mut values);
+        match family.to_degrees(&values) {
+            Ok(d) => assert_eq!(&*family.from_degrees(&d).unwrap(), values.as_slice()),
+            Err(e) => assert!(wide, "{family}: {e}"),
+        }
     }
+    // Degrees the family does not carry must be absent or 0.
+    let e = Degrees::with_membership(Family::Pythagorean, 0.5, Some(0.2), Some(0.5));
+    assert_eq!(
+        e.unwrap_err().to_string(),
+        "indeterminacy = 0.2 is not allowed (pythagorean rule: only truth and falsity are given; \
+         indeterminacy must be absent or 0)"
+    );
+    assert_eq!(
+        Degrees::with_membership(Family::Fuzzy, 0.5, None, Some(0.1))
+            .unwrap_err()
+            .to_string(),
+        "falsity = 0.1 is not allowed (fuzzy rule: only truth is given; falsity must be absent or 0)"
+    );
+    assert_eq!(
+        Degrees::with_membership(Family::Spherical, 0.5, None, Some(0.1))
+            .unwrap_err()
+            .to_string(),
+        "indeterminacy is missing (spherical rule requires it)"
+    );
+    assert_eq!(
+        Family::IntervalType2
+            .to_degrees(&[0.1, 0.2])
+            .unwrap_err()
+            .to_string(),
+        "the interval-type2 family has 2 channels (truth_lower, truth_upper); a truth, \
+         indeterminacy, falsity triple cannot hold them"
+    );
     let d = Degrees::new(0.3, 0.6, 0.1).unwrap();
     let v = Family::Neutrosophic.from_degrees(&d).unwrap();
     assert_eq!(Family::Neutrosophic.to_degrees(&v).unwrap(), d);
@@ -59,8 +95,19 @@ fn legacy_membership_converts_both_ways() {
     assert_eq!(&*Family::Fuzzy.from_degrees(&d).unwrap(), &[0.4]);
     assert_eq!(Family::Fuzzy.to_degrees(&[0.4]).unwrap(), d);
     assert!(Family::Intuitionistic.to_degrees(&[0.7, 0.6]).is_err());
-    assert!(Family::Picture.from_degrees(&d).is_none());
-    assert!(Family::Picture.to_degrees(&[0.1, 0.1, 0.1]).is_err());
+    assert_eq!(
+        &*Family::Picture.from_degrees(&d).unwrap(),
+        &[0.4, 0.0, 0.0]
+    );
+    assert!(Family::Picture.to_degrees(&[0.1, 0.1, 0.1]).is_ok());
+    assert_eq!(
+        Family::Picture
+            .to_degrees(&[0.5, 0.3, 0.3])
+            .unwrap_err()
+            .to_string(),
+        "truth + indeterminacy + falsity = 1.1 exceeds 1 (picture rule)"
+    );
+    assert!(Family::IntervalType2.from_degrees(&d).is_none());
     assert!(Family::Neutrosophic.to_degrees(&[0.1, 0.1]).is_err());
 }
 
@@ -72,7 +119,7 @@ fn refusals_name_the_rule_and_the_value() {
         (
             Family::Pythagorean,
             &[0.8, 0.7],
-            "truth^2 + falsity^2 = 1.1300000000000001 exceeds 1 (pythagorean rule)",
+            "truth^2 + falsity^2 = 1.13 exceeds 1 (pythagorean rule)",
         ),
         (
             Family::Intuitionistic,

@@ -36,6 +36,9 @@ pub(crate) mod banded;
 mod basis;
 mod bounds;
 mod choose;
+pub(crate) mod convex;
+#[doc(hidden)]
+pub use convex::RuleFitBench;
 pub(crate) mod knots;
 pub(crate) mod qp;
 mod report;
@@ -49,7 +52,7 @@ use core::fmt;
 
 use crate::any_curve::AnyCurve;
 use crate::curve::CurveError;
-use crate::degrees::{DegreeError, DegreeKind, Degrees, Membership};
+use crate::degrees::{DegreeError, DegreeKind, Degrees, Family};
 use crate::dyn_curve::DynCurve;
 use crate::surface::SurfaceError;
 
@@ -240,7 +243,7 @@ pub struct FitOptions {
     closed: bool,
     smoothing: f64,
     weights: DataWeights,
-    membership: Membership,
+    membership: Family,
     kind: FitKind,
     tangents: Option<[Vec<f64>; 2]>,
     knots: Option<Vec<f64>>,
@@ -255,7 +258,7 @@ impl Default for FitOptions {
             closed: false,
             smoothing: 0.0,
             weights: DataWeights::None,
-            membership: Membership::Neutrosophic,
+            membership: Family::Neutrosophic,
             kind: FitKind::BSpline,
             tangents: None,
             knots: None,
@@ -304,7 +307,7 @@ impl FitOptions {
 
     /// The rule the degrees obey (default neutrosophic): the data must obey it, and the fitted
     /// control values do.
-    pub fn with_membership(mut self, membership: Membership) -> Self {
+    pub fn with_membership(mut self, membership: Family) -> Self {
         self.membership = membership;
         self
     }
@@ -337,7 +340,7 @@ impl FitOptions {
     }
 
     /// The membership rule.
-    pub fn membership(&self) -> Membership {
+    pub fn membership(&self) -> Family {
         self.membership
     }
 

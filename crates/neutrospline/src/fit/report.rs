@@ -5,8 +5,9 @@
 pub struct AtBound {
     /// The control point (0-based; for a closed curve, among the distinct ones).
     pub index: usize,
-    /// `truth`, `indeterminacy`, `falsity`, or `truth + falsity` (intuitionistic rule).
-    pub channel: &'static str,
+    /// `truth`, `indeterminacy`, `falsity`, or the rule's sum (`truth + falsity` under the
+    /// intuitionistic rule, `truth^2 + falsity^2` under the Pythagorean one, ...).
+    pub channel: String,
     /// The bound: 0 or 1.
     pub bound: f64,
 }

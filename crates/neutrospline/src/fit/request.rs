@@ -6,7 +6,7 @@ use core::str::FromStr;
 
 use super::{DataWeights, FitKind, FitOptions, FitTarget, Parametrization};
 use crate::options::{find, OptionError, OptionSet, OptionSpec, OptionValue, Read, ValueKind};
-use crate::{Membership, ParseNameError};
+use crate::{Family, ParseNameError};
 
 /// The options of a fit as every front end gives them: one field per option of
 /// [`OptionSet::OPTIONS`], set by name with [`OptionSet::set`] and checked by
@@ -55,7 +55,7 @@ pub struct FitRequest {
     /// `kind`: a B-spline or one Bézier segment.
     pub kind: FitKind,
     /// `membership`: the rule of the data's degrees and of the fitted curve's.
-    pub membership: Membership,
+    pub membership: Family,
 }
 
 impl Default for FitRequest {
@@ -70,7 +70,7 @@ impl Default for FitRequest {
             weights: DataWeights::None,
             smoothing: 0.0,
             kind: FitKind::BSpline,
-            membership: Membership::Neutrosophic,
+            membership: Family::Neutrosophic,
         }
     }
 }
@@ -138,9 +138,11 @@ impl OptionSet for FitRequest {
         },
         OptionSpec {
             name: "membership",
-            kind: ValueKind::Choice(&["neutrosophic", "intuitionistic", "fuzzy"]),
-            value_name: "RULE",
-            help: "Membership rule of the data's degrees and of the fitted curve's",
+            kind: ValueKind::Text,
+            value_name: "FAMILY",
+            help: "Membership family of the data's degrees and of the fitted curve's: \
+                   neutrosophic, intuitionistic, fuzzy, pythagorean, fermatean, q-rung:Q, \
+                   picture, spherical, t-spherical:N",
         },
     ];
 
@@ -159,7 +161,15 @@ impl OptionSet for FitRequest {
             ("parametrization", Read::Choice(word)) => self.parametrization = parse(word),
             ("weights", Read::Choice(word)) => self.weights = parse(word),
             ("kind", Read::Choice(word)) => self.kind = parse(word),
-            ("membership", Read::Choice(word)) => self.membership = parse(word),
+            ("membership", Read::Text(word)) => {
+                self.membership =
+                    word.parse()
+                        .map_err(|e: crate::ParseFamilyError| OptionError::Invalid {
+                            name: spec.name,
+                            given: format!("{word:?}"),
+                            expected: e.to_string(),
+                        })?;
+            }
             (other, read) => unreachable!("option {other} read as {read:?}"),
         }
         Ok(())
@@ -474,9 +484,6 @@ mod tests {
         }
         for word in names("kind") {
             assert_eq!(word.parse::<FitKind>().unwrap().name(), *word);
-        }
-        for word in names("membership") {
-            assert_eq!(word.parse::<Membership>().unwrap().to_string(), *word);
         }
     }
 

@@ -8,9 +8,7 @@ use neutrospline::fit::{
     fit, DataWeights, FitData, FitError, FitKind, FitOptions, FitTarget, Parametrization,
 };
 use neutrospline::strategies::bspline;
-use neutrospline::{
-    AnyCurve, ControlPolygon, Degrees, Derivative, Evaluate, KnotVector, Membership,
-};
+use neutrospline::{AnyCurve, ControlPolygon, Degrees, Derivative, Evaluate, Family, KnotVector};
 use proptest::prelude::*;
 
 /// Points along a wavy path, `m` of them, with degrees from `degree(k)`.
@@ -47,16 +45,32 @@ fn smooth_degrees(k: usize) -> Degrees {
 }
 
 /// Degrees that jump 0 -> 1 -> 0: the interpolant of such data leaves [0, 1].
-fn jumping(membership: Membership) -> impl Fn(usize) -> Degrees {
+fn jumping(membership: Family) -> impl Fn(usize) -> Degrees {
     move |k| {
         let high = (k / 2) % 2 == 0;
         let v = if high { 1.0 } else { 0.0 };
         match membership {
-            Membership::Neutrosophic => Degrees::new(v, 1.0 - v, v).unwrap(),
-            Membership::Intuitionistic => Degrees::intuitionistic(v, 1.0 - v).unwrap(),
-            Membership::Fuzzy => Degrees::fuzzy(v).unwrap(),
+            Family::Neutrosophic => Degrees::new(v, 1.0 - v, v).unwrap(),
+            Family::Intuitionistic => Degrees::intuitionistic(v, 1.0 - v).unwrap(),
+            family => {
+                let mut values: Vec<f64> = carried(family)
+                    .iter()
+                    .map(|&c| if c == 1 { 1.0 - v } else { v })
+                    .collect();
+                family.project(&mut values);
+                family.to_degrees(&values).unwrap()
+            }
         }
     }
+}
+
+/// The slots (0 truth, 1 indeterminacy, 2 falsity) of the degrees `family` carries.
+fn carried(family: Family) -> Vec<usize> {
+    neutrospline::DegreeKind::ALL
+        .into_iter()
+        .filter(|k| family.carries(*k))
+        .map(neutrospline::DegreeKind::index)
+        .collect()
 }
 
 fn parametrization() -> impl Strategy<Value = Parametrization> {
@@ -140,7 +154,7 @@ proptest! {
     fn degrees_stay_valid_for_adversarial_data(
         p in 1usize..=5,
         extra in 0usize..40,
-        rule in prop::sample::select(vec![Membership::Neutrosophic, Membership::Intuitionistic, Membership::Fuzzy]),
+        rule in prop::sample::select(vec![Family::Neutrosophic, Family::Intuitionistic, Family::Fuzzy]),
         interpolate in any::<bool>(),
         closed in any::<bool>(),
         t in 0.0..1.0f64,
@@ -161,7 +175,7 @@ proptest! {
         let at = domain.start + t * (domain.end - domain.start);
         let d = fitted.curve.evaluate(at.min(domain.end)).unwrap().degrees;
         prop_assert!(d.to_array().iter().all(|v| (0.0..=1.0).contains(v)));
-        if rule == Membership::Intuitionistic {
+        if rule == Family::Intuitionistic {
             prop_assert!(d.truth() + d.falsity() <= 1.0 + 1e-12);
         }
         check_optimal(&data, &fitted.curve, &fitted.parameters, rule, closed)?;
@@ -289,7 +303,7 @@ fn check_optimal(
     data: &FitData<2>,
     curve: &AnyCurve<2>,
     params: &[f64],
-    rule: Membership,
+    rule: Family,
     closed: bool,
 ) -> Result<(), TestCaseError> {
     let AnyCurve::BSpline(spline) = curve else {
@@ -303,12 +317,7 @@ fn check_optimal(
             .map(|(&t, d)| {
                 let got = c.evaluate(t).unwrap().degrees.to_array();
                 let want = d.to_array();
-                let channels: &[usize] = match rule {
-                    Membership::Neutrosophic => &[0, 1, 2],
-                    Membership::Intuitionistic => &[0, 2],
-                    Membership::Fuzzy => &[0],
-                };
-                channels
+                carried(rule)
                     .iter()
                     .map(|&c| (got[c] - want[c]).powi(2))
                     .sum::<f64>()
@@ -326,16 +335,18 @@ fn check_optimal(
     };
     for i in 0..distinct {
         for (c, delta) in [(0usize, 1e-4), (0, -1e-4), (2, 1e-4), (2, -1e-4)] {
-            if rule == Membership::Fuzzy && c != 0 {
+            if rule == Family::Fuzzy && c != 0 {
                 continue;
             }
             let mut moved = points.clone();
             let mut v = moved[i].degrees.to_array();
             v[c] += delta;
             let d = match rule {
-                Membership::Neutrosophic => Degrees::new(v[0], v[1], v[2]),
-                Membership::Intuitionistic => Degrees::intuitionistic(v[0], v[2]),
-                Membership::Fuzzy => Degrees::fuzzy(v[0]),
+                Family::Neutrosophic => Degrees::new(v[0], v[1], v[2]),
+                Family::Intuitionistic => Degrees::intuitionistic(v[0], v[2]),
+                family => {
+                    family.to_degrees(&carried(family).iter().map(|&c| v[c]).collect::<Vec<_>>())
+                }
             };
             let Ok(d) = d else { continue };
             moved[i] = neutrospline::ControlPoint::new(moved[i].position, d);
@@ -507,7 +518,7 @@ fn fit_errors_name_the_problem() {
     )
     .unwrap();
     assert_eq!(
-        fit(&bad, &FitOptions::default().with_degree(1).with_membership(Membership::Intuitionistic))
+        fit(&bad, &FitOptions::default().with_degree(1).with_membership(Family::Intuitionistic))
             .unwrap_err()
             .to_string(),
         "point 0: truth + falsity = 0.7 + 0.6 = 1.2999999999999998 exceeds 1 (intuitionistic rule: truth + falsity <= 1)"

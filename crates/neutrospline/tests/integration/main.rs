@@ -12,6 +12,7 @@ mod bspline_properties;
 mod curve_batch_properties;
 mod degree_zero;
 mod family_blending;
+mod family_fit;
 mod family_reference;
 mod fit_properties;
 mod fit_reference;

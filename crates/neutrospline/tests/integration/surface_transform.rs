@@ -194,7 +194,7 @@ fn degree_reduction_undoes_elevation_on_surfaces() {
         for direction in [Direction::U, Direction::V] {
             let up = s.elevate(direction);
             let back = up
-                .reduce_degree(direction, 1e-9, neutrospline::Membership::Neutrosophic)
+                .reduce_degree(direction, 1e-9, neutrospline::Family::Neutrosophic)
                 .unwrap();
             assert!(
                 back.error <= 1e-9,

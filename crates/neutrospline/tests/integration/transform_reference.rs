@@ -382,7 +382,7 @@ fn removal_refuses_what_is_not_an_interior_knot() {
 /// cannot meet is refused with the deviation found.
 #[test]
 fn degree_reduction_undoes_elevation_and_reports_its_error() {
-    use neutrospline::{Membership, ReduceError};
+    use neutrospline::{Family, ReduceError};
     for (n, case) in cases().iter().enumerate() {
         let rows: Vec<Vec<f64>> = case
             .rows
@@ -396,7 +396,7 @@ fn degree_reduction_undoes_elevation_and_reports_its_error() {
         let curve = build(case.degree, &case.knots, &rows, case.weights.as_ref());
         let s = scale(&case.rows);
         let (back, error) = each!(&curve, c => {
-            let out = c.elevate().reduce_degree(1e-9 * s, Membership::Intuitionistic).unwrap();
+            let out = c.elevate().reduce_degree(1e-9 * s, Family::Intuitionistic).unwrap();
             (build_like(&curve, out.curve), out.error)
         });
         assert!(error <= 1e-9 * s, "case {n}: {error}");
@@ -406,7 +406,7 @@ fn degree_reduction_undoes_elevation_and_reports_its_error() {
         assert!(dense_deviation(&curve, &back) <= 1e-9 * s, "case {n}");
         if case.degree >= 2 {
             let (reduced, error) = each!(&curve, c => {
-                let out = c.reduce_degree(1e3 * s, Membership::Intuitionistic).unwrap();
+                let out = c.reduce_degree(1e3 * s, Family::Intuitionistic).unwrap();
                 (build_like(&curve, out.curve), out.error)
             });
             let dense = dense_deviation(&curve, &reduced);
@@ -422,7 +422,7 @@ fn degree_reduction_undoes_elevation_and_reports_its_error() {
                 );
             }
             let refused =
-                each!(&curve, c => c.reduce_degree(1e-12, Membership::Intuitionistic).unwrap_err());
+                each!(&curve, c => c.reduce_degree(1e-12, Family::Intuitionistic).unwrap_err());
             match refused {
                 ReduceError::NotWithin { degree, error, .. } => {
                     assert_eq!(degree, case.degree - 1);
@@ -441,7 +441,7 @@ fn degree_reduction_undoes_elevation_and_reports_its_error() {
     )
     .unwrap();
     assert_eq!(
-        line.reduce_degree(1.0, Membership::Neutrosophic).unwrap_err().to_string(),
+        line.reduce_degree(1.0, Family::Neutrosophic).unwrap_err().to_string(),
         "degree 1 cannot be reduced (the reduced curve keeps both ends, so it needs degree 1 or more)"
     );
 }
@@ -453,7 +453,7 @@ fn degree_reduction_undoes_elevation_and_reports_its_error() {
 /// of the unconstrained one.
 #[test]
 fn reduction_solves_the_degrees_under_the_bounds() {
-    use neutrospline::{AnyCurve, Bezier, Membership};
+    use neutrospline::{AnyCurve, Bezier, Family};
     let truth = [0.0, 1.0, 1.0, 0.3, 0.0];
     let points: Vec<ControlPoint<2>> = truth
         .iter()
@@ -461,7 +461,7 @@ fn reduction_solves_the_degrees_under_the_bounds() {
         .map(|(i, &t)| ControlPoint::new([i as f64 / 4.0, 0.0], Degrees::new(t, 0.5, 0.5).unwrap()))
         .collect();
     let quartic = AnyCurve::Bezier(Bezier::new(points).unwrap());
-    let reduced = quartic.reduced(1, 1.0, Membership::Neutrosophic).unwrap();
+    let reduced = quartic.reduced(1, 1.0, Family::Neutrosophic).unwrap();
     let got: Vec<f64> = reduced
         .curve
         .control_points()

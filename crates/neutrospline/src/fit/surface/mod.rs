@@ -53,7 +53,7 @@ use core::fmt;
 use core::str::FromStr;
 
 use super::{DataWeights, FitError, Parametrization};
-use crate::degrees::{Degrees, Membership};
+use crate::degrees::{Degrees, Family};
 use crate::surface::Surface;
 use crate::ParseNameError;
 
@@ -283,7 +283,7 @@ pub struct SurfaceFitOptions {
     projection: Projection,
     smoothing: f64,
     weights: DataWeights,
-    membership: Membership,
+    membership: Family,
 }
 
 impl Default for SurfaceFitOptions {
@@ -295,7 +295,7 @@ impl Default for SurfaceFitOptions {
             projection: Projection::Plane,
             smoothing: 0.0,
             weights: DataWeights::None,
-            membership: Membership::Neutrosophic,
+            membership: Family::Neutrosophic,
         }
     }
 }
@@ -342,7 +342,7 @@ impl SurfaceFitOptions {
 
     /// The rule the degrees obey (default neutrosophic): the data must obey it, and the fitted
     /// control values do.
-    pub fn with_membership(mut self, membership: Membership) -> Self {
+    pub fn with_membership(mut self, membership: Family) -> Self {
         self.membership = membership;
         self
     }
@@ -358,7 +358,7 @@ impl SurfaceFitOptions {
     }
 
     /// The membership rule.
-    pub fn membership(&self) -> Membership {
+    pub fn membership(&self) -> Family {
         self.membership
     }
 }

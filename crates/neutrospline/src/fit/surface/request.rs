@@ -4,7 +4,7 @@
 use super::super::{DataWeights, Parametrization};
 use super::{Projection, SurfaceFitOptions, SurfaceTarget};
 use crate::options::{find, OptionError, OptionSet, OptionSpec, OptionValue, Read, ValueKind};
-use crate::Membership;
+use crate::Family;
 
 /// The options of a surface fit as every front end gives them, set by name and checked by
 /// [`SurfaceFitRequest::validate`].
@@ -56,7 +56,7 @@ pub struct SurfaceFitRequest {
     /// `smoothing`: the weight of the thin-plate penalty.
     pub smoothing: f64,
     /// `membership`: the rule of the data's degrees and of the fitted surface's.
-    pub membership: Membership,
+    pub membership: Family,
 }
 
 impl Default for SurfaceFitRequest {
@@ -72,7 +72,7 @@ impl Default for SurfaceFitRequest {
             projection: Projection::Plane,
             weights: DataWeights::None,
             smoothing: 0.0,
-            membership: Membership::Neutrosophic,
+            membership: Family::Neutrosophic,
         }
     }
 }
@@ -172,7 +172,7 @@ impl OptionSet for SurfaceFitRequest {
             name: "membership",
             kind: ValueKind::Choice(&["neutrosophic", "intuitionistic", "fuzzy"]),
             value_name: "RULE",
-            help: "Membership rule of the data's degrees and of the fitted surface's",
+            help: "Family rule of the data's degrees and of the fitted surface's",
         },
     ];
 

@@ -123,11 +123,7 @@ fn the_two_pass_solver_matches_the_whole_system() {
 fn degrees_stay_valid_under_every_rule_for_jumping_data() {
     // Degrees jumping 0 -> 1 -> 0 along u (and the rule's complement), which an
     // unconstrained fit overshoots.
-    for membership in [
-        Membership::Neutrosophic,
-        Membership::Intuitionistic,
-        Membership::Fuzzy,
-    ] {
+    for membership in [Family::Neutrosophic, Family::Intuitionistic, Family::Fuzzy] {
         let (rows, cols) = (16, 9);
         let (mut positions, mut degrees) = (Vec::new(), Vec::new());
         for k in 0..rows {
@@ -135,9 +131,9 @@ fn degrees_stay_valid_under_every_rule_for_jumping_data() {
                 positions.push([k as f64, l as f64, 0.1 * (k * l) as f64]);
                 let on = if (5..10).contains(&k) { 1.0 } else { 0.0 };
                 let d = match membership {
-                    Membership::Neutrosophic => Degrees::new(on, 1.0 - on, on),
-                    Membership::Intuitionistic => Degrees::intuitionistic(on, 1.0 - on),
-                    Membership::Fuzzy => Degrees::fuzzy(on),
+                    Family::Neutrosophic => Degrees::new(on, 1.0 - on, on),
+                    Family::Intuitionistic => Degrees::intuitionistic(on, 1.0 - on),
+                    family => Degrees::with_membership(family, on, None, None),
                 };
                 degrees.push(d.unwrap());
             }
@@ -163,7 +159,7 @@ fn degrees_stay_valid_under_every_rule_for_jumping_data() {
                     let [t, i, f] = fitted.surface.evaluate(u, v).unwrap().degrees.to_array();
                     let e = 1e-14;
                     assert!([t, i, f].iter().all(|x| (-e..=1.0 + e).contains(x)));
-                    if membership == Membership::Intuitionistic {
+                    if membership == Family::Intuitionistic {
                         assert!(t + f <= 1.0 + e);
                     }
                 }
