@@ -401,6 +401,28 @@ def test_points_rules_files_data_and_camera(start_studio, page, binary, out_dir,
     page.select_option("#model-membership", "neutrosophic")
     idle(page)
     assert model(page)["control_points"][1]["indeterminacy"] == 0.1
+    # The families beyond the original three: Pythagorean drops the indeterminacy and refuses
+    # truth^2 + falsity^2 > 1 with its rule; q-rung gets q = 3.
+    page.select_option("#model-membership", "pythagorean")
+    idle(page)
+    m = model(page)
+    assert m["membership"] == "pythagorean"
+    assert "indeterminacy" not in m["control_points"][1]
+    assert page.locator("input[name=indeterminacy]").is_disabled()
+    page.fill("input[name=truth]", "0.9")
+    page.press("input[name=truth]", "Enter")
+    idle(page)
+    page.fill("input[name=falsity]", "0.7")
+    page.press("input[name=falsity]", "Enter")
+    idle(page)
+    assert "exceeds 1 (pythagorean rule)" in page.locator("[role=alert]").inner_text()
+    shot(page, out_dir, "09b-pythagorean-refused")
+    page.select_option("#model-membership", "q-rung")
+    idle(page)
+    assert model(page)["membership"] == "q-rung" and model(page)["q"] == 3
+    page.select_option("#model-membership", "neutrosophic")
+    idle(page)
+    assert model(page)["membership"] == "neutrosophic" and "q" not in model(page)
 
     # Open a file through the picker; a broken knot list is refused next to its field.
     page.set_input_files("#open-file", str(ROOT / "examples" / "bspline.toml"))

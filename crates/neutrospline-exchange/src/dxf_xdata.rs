@@ -7,7 +7,7 @@
 //! 1000 neutrospline 1            the layout's version
 //! 1000 kind          1000 bezier | bspline | nurbs | bezier-surface | ...
 //! 1000 dimension     1070 2 | 3
-//! 1000 membership    1000 neutrosophic | intuitionistic | fuzzy
+//! 1000 membership    1000 the family: neutrosophic | intuitionistic | fuzzy | pythagorean | q-rung:4 | ...
 //! 1000 name          1071 K, then K strings 1000          (optional)
 //! 1000 description   1071 K, then K strings 1000          (optional)
 //! 1000 degrees       1071 N, then N times 1040 truth, 1040 indeterminacy, 1040 falsity
@@ -151,7 +151,7 @@ impl ModelInfo {
             text("dimension"),
             XValue::Short(if self.dimension == 2 { 2 } else { 3 }),
             text("membership"),
-            text(self.membership.name()),
+            text(&self.membership.to_string()),
         ];
         let long_text = |out: &mut Vec<XValue>, value: &str| {
             let pieces = encode_text(value);

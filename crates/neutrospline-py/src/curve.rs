@@ -729,7 +729,7 @@ impl Curve {
             "{class}(control_points={count}, degree={}, dimension={}, membership='{}'",
             model.shape().curve_degree().unwrap_or(0),
             self.state.dimension(),
-            model.membership().name()
+            model.membership()
         );
         if let Some(name) = model.name() {
             text.push_str(&format!(", name={name:?}"));

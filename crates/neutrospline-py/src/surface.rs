@@ -544,7 +544,7 @@ impl Surface {
             self.surface.cols(),
             self.surface.degree_u(),
             self.surface.degree_v(),
-            self.model.membership().name()
+            self.model.membership()
         );
         if let Some(name) = self.model.name() {
             text.push_str(&format!(", name={name:?}"));

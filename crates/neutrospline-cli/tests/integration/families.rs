@@ -2,7 +2,8 @@
 //! `examples/families/`) from end to end: `eval` columns, derived degrees and scores against
 //! their closed forms, `check`'s rule line, refusals with the rule they break, the writers'
 //! `membership = "q-rung"` with `q = 4`, `fit` under a round rule passing `check`, and the
-//! plot views that would misdraw a family refused with the reason.
+//! plot views that would misdraw a family refused with the reason, and the DXF export read
+//! back with its family.
 
 use std::path::Path;
 
@@ -365,4 +366,32 @@ fn plot_refuses_the_views_that_would_misdraw_a_family() {
         dir.path(),
         &["plot", "s.toml", "--view", "all", "-o", "s.svg"],
     );
+}
+
+#[test]
+fn dxf_export_and_import_keep_the_family() {
+    let dir = dir_with(&[("q.toml", Q_RUNG), ("t.toml", T_SPHERICAL)]);
+    for (model, family) in [("q.toml", "q-rung:4"), ("t.toml", "t-spherical:3")] {
+        ok(dir.path(), &["export", model, "-o", "out.dxf"]);
+        ok(dir.path(), &["import", "out.dxf", "-o", "back.toml"]);
+        let check = ok(dir.path(), &["check", "back.toml"]).stdout;
+        assert!(
+            check.contains(&format!("membership: {family}\n")),
+            "{check}"
+        );
+        let before = table(&ok(
+            dir.path(),
+            &["eval", model, "--samples", "5", "--scores"],
+        ));
+        let after = table(&ok(
+            dir.path(),
+            &["eval", "back.toml", "--samples", "5", "--scores"],
+        ));
+        assert_eq!(before.0, after.0);
+        for (a, b) in before.1.iter().zip(&after.1) {
+            for (x, y) in a.iter().zip(b) {
+                assert!((x - y).abs() <= 1e-14, "{model}: {a:?} vs {b:?}");
+            }
+        }
+    }
 }

@@ -152,7 +152,7 @@ fn build(model: &Model, samples: &Samples, by: ColorBy) -> (Map<String, Value>, 
         extras.insert("description".into(), description.into());
     }
     extras.insert("kind".into(), model.kind().name().into());
-    extras.insert("membership".into(), model.membership().name().into());
+    extras.insert("membership".into(), model.membership().to_string().into());
     extras.insert("color_by".into(), by.name().into());
     let mut node = json!({ "name": label, "mesh": 0 });
     if samples.dimension == 3 {

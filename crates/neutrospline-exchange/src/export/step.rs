@@ -687,7 +687,7 @@ pub(super) fn document(model: &Model) -> Result<String, ExportError> {
     out.push_str("ISO-10303-21;\nHEADER;\n");
     let description = [
         format!("neutrospline {kind} model"),
-        format!("membership {}", model.membership().name()),
+        format!("membership {}", model.membership()),
         "degrees: each control point's CARTESIAN_POINT is named 'NAME T=truth I=indeterminacy F=falsity'"
             .to_owned(),
     ];

@@ -100,7 +100,6 @@ pub(super) fn bounded_degrees(
             }
         }
         family => {
-            drop(bounded);
             control = under_rule(&free, family, &mut built, system, &mut at_bound)?;
         }
     }

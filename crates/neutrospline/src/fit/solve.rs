@@ -9,7 +9,7 @@ use super::system::{Extra, Layout, Rows, System, Values};
 use super::{channel_names, DataWeights, Fit, FitData, FitError, FitKind, FitOptions, FitTarget};
 use crate::any_curve::AnyCurve;
 use crate::bezier::Bezier;
-use crate::degrees::Degrees;
+use crate::degrees::{DegreeKind, Degrees, Family};
 use crate::knots::KnotVector;
 use crate::point::ControlPoint;
 use crate::spline_curve::BSpline;
@@ -207,12 +207,12 @@ fn finish<const D: usize>(
     let report = FitReport {
         control_points: n,
         degree: p,
-        max_error: names.iter().copied().zip(max).collect(),
-        rms_error: names
-            .iter()
-            .copied()
-            .zip(sum.iter().map(|s| (s / m as f64).sqrt()))
-            .collect(),
+        max_error: shown(&names, max, options.membership),
+        rms_error: shown(
+            &names,
+            sum.iter().map(|s| (s / m as f64).sqrt()).collect(),
+            options.membership,
+        ),
         worst_index,
         worst_parameter: params[worst_index],
         worst_distance,
@@ -288,4 +288,25 @@ fn build_curve<const D: usize>(
     let knots =
         KnotVector::new(layout.knots.clone(), p, count).map_err(crate::curve::CurveError::from)?;
     Ok(AnyCurve::BSpline(BSpline::new(points, knots)?))
+}
+
+/// The channels a report lists with their values: the positions and the degrees the family
+/// carries (all three for the original families, whose intuitionistic indeterminacy is the
+/// hesitation and whose fuzzy ones are 0).
+fn shown(names: &[&'static str], values: Vec<f64>, family: Family) -> Vec<(&'static str, f64)> {
+    let original = matches!(
+        family,
+        Family::Neutrosophic | Family::Intuitionistic | Family::Fuzzy
+    );
+    names
+        .iter()
+        .copied()
+        .zip(values)
+        .filter(|(name, _)| {
+            original
+                || DegreeKind::ALL
+                    .iter()
+                    .all(|k| k.name() != *name || family.carries(*k))
+        })
+        .collect()
 }

@@ -167,7 +167,7 @@ function fillModelFields(force) {
       value = p.indeterminacy !== undefined ? p.indeterminacy : hesitation(p);
       derived = true;
     }
-    if (rule === 'fuzzy' && d !== 'truth') { value = 0; derived = true; }
+    if (!carries(rule, d) && rule !== 'intuitionistic') { value = 0; derived = true; }
     put(input, 'disabled', derived);
     put(slider, 'disabled', derived);
     setValue(input, value, force);
@@ -182,6 +182,17 @@ function fillModelFields(force) {
   put($('#add-point'), 'disabled', !curve);
   put($('#insert-point'), 'disabled', !curve);
   put($('#delete-point'), 'disabled', !curve || n <= 2);
+}
+
+// The degrees a membership family carries (docs/model.md, "Membership families"): the
+// orthopair families (intuitionistic, pythagorean, fermatean, q-rung) truth and falsity, fuzzy
+// truth alone, the others all three. A family given with its parameter ("q-rung:4") counts
+// by its name.
+function carries(rule, degree) {
+  const name = String(rule).split(':')[0];
+  if (name === 'fuzzy') return degree === 'truth';
+  if (['intuitionistic', 'pythagorean', 'fermatean', 'q-rung'].includes(name)) return degree !== 'indeterminacy';
+  return true;
 }
 
 // The hesitation 1 - T - F shown (not sent) under the intuitionistic rule.
@@ -287,17 +298,15 @@ function setMembership(rule) {
   const m = clone(state.model);
   const from = m.membership || 'neutrosophic';
   for (const p of m.control_points) {
-    if (rule === 'neutrosophic') {
-      if (from === 'intuitionistic' && p.indeterminacy === undefined) p.indeterminacy = hesitation(p);
-      if (from === 'fuzzy') { p.indeterminacy = p.indeterminacy || 0; p.falsity = p.falsity || 0; }
-    } else if (rule === 'intuitionistic') {
-      delete p.indeterminacy;
-      if (p.falsity === undefined) p.falsity = 0;
-    } else {
-      delete p.indeterminacy;
-      delete p.falsity;
+    if (from === 'intuitionistic' && p.indeterminacy === undefined) p.indeterminacy = hesitation(p);
+    for (const d of DEGREES) {
+      if (!carries(rule, d)) delete p[d];
+      else if (p[d] === undefined) p[d] = 0;
     }
   }
+  // The parametrised families keep the file's parameter, else 3; the others have none.
+  if (rule === 'q-rung') m.q = m.q || 3; else delete m.q;
+  if (rule === 't-spherical') m.n = m.n || 3; else delete m.n;
   m.membership = rule;
   propose(m, { commit: true, message: `membership: ${rule}` });
 }
