@@ -224,6 +224,99 @@ fn every_family_is_feasible_and_optimal_on_spline_fits() {
     }
 }
 
+/// The reference problems of `scripts/reference/make_rule_fit_reference.py` (cvxpy + Clarabel,
+/// polished on the KKT system): every point valid, the objective within 1e-9 relative of the
+/// reference optimum.
+#[test]
+fn matches_the_independent_reference_optima() {
+    let text = include_str!("../../../tests/data/rule_fit_reference.json");
+    let data: serde_json::Value = serde_json::from_str(text).expect("valid JSON");
+    let cases = data["cases"].as_array().expect("cases");
+    let floats = |v: &serde_json::Value| -> Vec<f64> {
+        v.as_array()
+            .expect("array")
+            .iter()
+            .map(|x| x.as_f64().expect("number"))
+            .collect()
+    };
+    let mut worst = 0.0_f64;
+    let mut most_iterations = 0;
+    let mut families = std::collections::BTreeSet::new();
+    for case in cases {
+        let family: Family = case["family"]
+            .as_str()
+            .expect("name")
+            .parse()
+            .expect("family");
+        families.insert(family.to_string());
+        let n = case["control_points"].as_u64().expect("n") as usize;
+        let closed = case["closed"].as_bool().expect("closed");
+        let k = family.channel_count();
+        let band: Vec<Vec<f64>> = case["band"]
+            .as_array()
+            .expect("band")
+            .iter()
+            .map(floats)
+            .collect();
+        let w = band[0].len() - 1;
+        let mut m = if closed {
+            Normal::Closed(CyclicBand::zeros(n, w))
+        } else {
+            Normal::Open(Band::zeros(n, w))
+        };
+        for (i, row) in band.iter().enumerate() {
+            for (d, &v) in row.iter().enumerate() {
+                if closed {
+                    m.add(i, (i + n - d) % n, v);
+                } else if d <= i {
+                    m.add(i, i - d, v);
+                }
+            }
+        }
+        let b: Vec<f64> = case["b"]
+            .as_array()
+            .expect("b")
+            .iter()
+            .flat_map(floats)
+            .collect();
+        assert_eq!(b.len(), n * k);
+        // The warm start: the unconstrained solution.
+        let factor = m.factor().expect("positive definite");
+        let mut free = vec![0.0; n * k];
+        let mut channel = vec![0.0; n];
+        for c in 0..k {
+            for i in 0..n {
+                channel[i] = b[i * k + c];
+            }
+            factor.solve(&mut channel);
+            for i in 0..n {
+                free[i * k + c] = channel[i];
+            }
+        }
+        let solution = solve_family(&m, family, &b, &free).expect("positive definite");
+        for i in 0..n {
+            assert!(
+                family.check(&solution.x[i * k..(i + 1) * k]).is_ok(),
+                "{family} n {n}: point {i}"
+            );
+        }
+        let (f, _) = objective_and_gradient(&m, k, &b, &solution.x);
+        let reference = case["objective"].as_f64().expect("objective");
+        let gap = (f - reference).abs() / reference.abs().max(1.0);
+        eprintln!(
+            "{family} n = {n}{}: {} iterations, relative gap {gap:.2e} (certified bound {:.2e})",
+            if closed { " closed" } else { "" },
+            solution.iterations,
+            solution.gap_bound / reference.abs().max(1.0)
+        );
+        assert!(gap <= 1e-9, "{family} n {n}: {f} vs {reference}");
+        worst = worst.max(gap);
+        most_iterations = most_iterations.max(solution.iterations);
+    }
+    assert_eq!(families.len(), Family::EXAMPLES.len());
+    eprintln!("worst relative gap {worst:.2e}, most iterations {most_iterations}");
+}
+
 #[test]
 fn agrees_with_the_active_set_solver() {
     for family in [Family::Neutrosophic, Family::Intuitionistic, Family::Fuzzy] {
