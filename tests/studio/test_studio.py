@@ -409,6 +409,8 @@ def test_points_rules_files_data_and_camera(start_studio, page, binary, out_dir,
     assert m["membership"] == "pythagorean"
     assert "indeterminacy" not in m["control_points"][1]
     assert page.locator("input[name=indeterminacy]").is_disabled()
+    header = page.locator("#table-host thead").inner_text().split()
+    assert header[-3:] == ["truth", "falsity", "hesitation"], header
     page.fill("input[name=truth]", "0.9")
     page.press("input[name=truth]", "Enter")
     idle(page)

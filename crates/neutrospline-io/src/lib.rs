@@ -56,6 +56,7 @@ mod atomic;
 mod build;
 mod csv;
 mod data;
+mod degree_view;
 mod error;
 mod fit_report;
 mod format;
@@ -80,6 +81,7 @@ mod write;
 
 pub use atomic::{write_atomically, AtomicFile};
 pub use data::{load_data, load_data_with, read_data, read_data_with, DataTable};
+pub use degree_view::DegreeView;
 pub use error::{InputError, ReadError, UnsupportedFormat, WriteError};
 pub use fit_report::{surface_fit_report_json, surface_fit_warning, ILL_CONDITIONED};
 pub use format::{Format, Limits, DEFAULT_MAX_CONTROL_POINTS, DEFAULT_MAX_FILE_SIZE, MAX_INTEGER};

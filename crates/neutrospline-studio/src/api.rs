@@ -444,7 +444,8 @@ fn render(body: &Value) -> Result<Response, Response> {
     if let Some(e) = data_error {
         errors.insert("data".to_owned(), Value::String(e));
     }
-    let table = match table(model.shape(), body["at"].as_str().unwrap_or("")) {
+    let view = neutrospline_io::DegreeView::new(model.membership());
+    let table = match table(model.shape(), view, body["at"].as_str().unwrap_or("")) {
         Ok((columns, rows)) => json!({ "columns": columns, "rows": rows }),
         Err(message) => json!({ "error": message }),
     };
@@ -542,11 +543,16 @@ fn info(model: &Model) -> Value {
     })
 }
 
-/// The table of `eval` (columns `t, x, y[, z], truth, indeterminacy, falsity`; surfaces
+/// The table of `eval` (columns `t, x, y[, z]`, then the degrees as `view` shows the model's
+/// family: `truth, indeterminacy, falsity`, or its channels and derived degrees; surfaces
 /// `u, v, x, y, z, ...`) at the parameters of `at` (`T1,T2,...` or `U:V,...`), or at 11
 /// evenly spaced parameters (a 3 x 3 grid on a surface) when it is empty. Numbers as `eval`
 /// writes them.
-fn table(shape: &Shape, at: &str) -> Result<(Vec<String>, Vec<Vec<String>>), String> {
+fn table(
+    shape: &Shape,
+    view: neutrospline_io::DegreeView,
+    at: &str,
+) -> Result<(Vec<String>, Vec<Vec<String>>), String> {
     let mut columns: Vec<String> = if shape.is_surface() {
         vec!["u".into(), "v".into()]
     } else {
@@ -557,7 +563,7 @@ fn table(shape: &Shape, at: &str) -> Result<(Vec<String>, Vec<Vec<String>>), Str
             .iter()
             .map(|s| (*s).into()),
     );
-    columns.extend(["truth", "indeterminacy", "falsity"].map(String::from));
+    columns.extend(view.names().into_iter().map(String::from));
     let number = |item: &str| -> Result<f64, String> {
         match item.trim().parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
@@ -599,7 +605,7 @@ fn table(shape: &Shape, at: &str) -> Result<(Vec<String>, Vec<Vec<String>>), Str
                 let p = s.evaluate(u, v).map_err(|e| e.to_string())?;
                 let mut row = vec![cell(u), cell(v)];
                 row.extend(p.position.iter().map(|&x| cell(x)));
-                row.extend(p.degrees.to_array().iter().map(|&x| cell(x)));
+                row.extend(view.values(&p.degrees).into_iter().map(cell));
                 rows.push(row);
             }
         }
@@ -614,8 +620,9 @@ fn table(shape: &Shape, at: &str) -> Result<(Vec<String>, Vec<Vec<String>>), Str
             };
             for t in params {
                 let mut row = vec![cell(t)];
-                let values = curve.evaluate_row(t).map_err(|e| e.to_string())?;
-                row.extend(values.iter().map(|&x| cell(x)));
+                let p = curve.evaluate_point(t).map_err(|e| e.to_string())?;
+                row.extend(p.position.iter().map(|&x| cell(x)));
+                row.extend(view.values(&p.degrees).into_iter().map(cell));
                 rows.push(row);
             }
         }

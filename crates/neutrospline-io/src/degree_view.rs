@@ -1,0 +1,101 @@
+//! How a membership family's degrees appear as table columns, shared by `eval`, `check` and the
+//! studio's table (docs/model.md, "Membership families").
+
+use neutrospline::{DegreeKind, Degrees, Family};
+
+/// Column names of the scores of the original three families.
+const SCORES: [&str; 3] = ["score", "accuracy", "certainty"];
+
+/// The score, accuracy and certainty of a point's degrees (docs/model.md section 7).
+fn scores(degrees: &Degrees) -> [f64; 3] {
+    [degrees.score(), degrees.accuracy(), degrees.certainty()]
+}
+
+/// The degree columns of a family's table (docs/model.md, "Membership families"). The three
+/// families of the original model (neutrosophic, intuitionistic, fuzzy) keep the columns
+/// `truth, indeterminacy, falsity` (the intuitionistic indeterminacy is the hesitation) and the
+/// scores `score, accuracy, certainty` of section 7. Every other family has a column per
+/// channel it carries, then its derived degrees computed from the blended channels (the
+/// hesitation `(1 - T^q - F^q)^(1/q)`, the picture refusal, ...), and the scores `score,
+/// accuracy` of its literature (SPEC section 10). Rates (derivatives) are given for the
+/// channels only: a derived degree is not linear in them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DegreeView {
+    family: Family,
+}
+
+impl DegreeView {
+    /// The view of `family`'s degrees.
+    pub fn new(family: Family) -> Self {
+        DegreeView { family }
+    }
+
+    /// Whether the view keeps the columns `truth, indeterminacy, falsity` (the three
+    /// families of the original model).
+    pub fn triple(&self) -> bool {
+        matches!(
+            self.family,
+            Family::Neutrosophic | Family::Intuitionistic | Family::Fuzzy
+        )
+    }
+
+    /// The degrees shown, in `truth, indeterminacy, falsity` order.
+    fn kinds(&self) -> Vec<DegreeKind> {
+        DegreeKind::ALL
+            .into_iter()
+            .filter(|k| self.triple() || self.family.carries(*k))
+            .collect()
+    }
+
+    /// The channel column names (also the names of the rates).
+    pub fn channel_names(&self) -> Vec<&'static str> {
+        self.kinds().into_iter().map(DegreeKind::name).collect()
+    }
+
+    /// The channel columns, then the derived degrees.
+    pub fn names(&self) -> Vec<&'static str> {
+        let mut names = self.channel_names();
+        if !self.triple() {
+            names.extend(self.family.derived_names());
+        }
+        names
+    }
+
+    /// The score column names.
+    pub fn score_names(&self) -> &'static [&'static str] {
+        let zeros = vec![0.0; self.family.channel_count()];
+        if self.triple() {
+            &SCORES
+        } else if self.family.accuracy(&zeros).is_some() {
+            &SCORES[..2]
+        } else {
+            &SCORES[..1]
+        }
+    }
+
+    /// The values of [`DegreeView::names`] for `degrees`.
+    pub fn values(&self, degrees: &Degrees) -> Vec<f64> {
+        let mut values: Vec<f64> = self.kinds().into_iter().map(|k| degrees.get(k)).collect();
+        if !self.triple() {
+            let derived = self.family.derived(&values);
+            values.extend(derived.iter());
+        }
+        values
+    }
+
+    /// The values of [`DegreeView::score_names`] for `degrees`.
+    pub fn scores(&self, degrees: &Degrees) -> Vec<f64> {
+        if self.triple() {
+            return scores(degrees).to_vec();
+        }
+        let channels: Vec<f64> = self.kinds().into_iter().map(|k| degrees.get(k)).collect();
+        let mut values = vec![self.family.score(&channels)];
+        values.extend(self.family.accuracy(&channels));
+        values
+    }
+
+    /// The rates of the shown channels from the rates `[dT, dI, dF]`.
+    pub fn rates(&self, rates: [f64; 3]) -> impl Iterator<Item = f64> + '_ {
+        self.kinds().into_iter().map(move |k| rates[k.index()])
+    }
+}
