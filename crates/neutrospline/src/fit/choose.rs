@@ -293,7 +293,8 @@ pub(super) fn position_residuals<const D: usize>(
 /// Knot refinement to a tolerance (as splipy's `fit` and The NURBS Book's A9.10 do): fit,
 /// then split at its middle every span holding a point whose position residual exceeds `e`,
 /// as long as the data still determines every control point; stop when every residual is
-/// within `e` or no span can be split.
+/// within `e` or no span can be split, or keep the previous layout when the refined one's
+/// system is singular in double precision (the tolerance is then reported not met).
 pub(super) fn refine<const D: usize>(
     data: &FitData<D>,
     layout: &mut Layout,
@@ -303,8 +304,24 @@ pub(super) fn refine<const D: usize>(
     e: f64,
 ) -> Result<Chosen, FitError> {
     let mut rows = Rows::new(layout, params);
+    // The last layout whose system could be solved: a refinement whose system is singular in
+    // double precision (the Schoenberg-Whitney conditions hold, but barely) falls back to it.
+    let mut previous: Option<(Layout, Rows)> = None;
     for _ in 0..MAX_REFINEMENTS {
-        let residuals = position_residuals(data, layout, &rows, weights, lambda)?;
+        let residuals = match position_residuals(data, layout, &rows, weights, lambda) {
+            Ok(residuals) => residuals,
+            Err(FitError::Singular) if previous.is_some() => {
+                if let Some((last, _)) = previous.take() {
+                    *layout = last;
+                }
+                return Ok(Chosen {
+                    layout: layout.clone(),
+                    extras_tangents: false,
+                    tolerance_met: Some(false),
+                });
+            }
+            Err(e) => return Err(e),
+        };
         let bad: Vec<f64> = params
             .iter()
             .zip(&residuals)
@@ -363,6 +380,7 @@ pub(super) fn refine<const D: usize>(
                 tolerance_met: Some(false),
             });
         }
+        previous = Some((layout.clone(), rows));
         *layout = candidate;
         rows = candidate_rows;
     }

@@ -532,3 +532,31 @@ fn fit_errors_name_the_problem() {
     )
     .is_err());
 }
+
+/// A case proptest found: refining toward 1e-4 through noise of 0.15 reaches a layout whose
+/// system is singular in double precision although the Schoenberg-Whitney conditions hold.
+/// The fit keeps the last solvable layout and says the tolerance is not met.
+#[test]
+fn tolerance_refinement_stops_before_a_singular_system() {
+    let (p, m, noise, tolerance) = (2usize, 83usize, 0.15140413279227788f64, 0.0001f64);
+    let mut data = path::<2>(m, 1.0, smooth_degrees);
+    let noisy: Vec<[f64; 2]> = data
+        .positions()
+        .iter()
+        .enumerate()
+        .map(|(k, q)| {
+            [
+                q[0] + noise * ((k as f64 * 12.9898).sin() * 43758.5453).fract(),
+                q[1],
+            ]
+        })
+        .collect();
+    data = FitData::new(noisy, data.degrees().to_vec()).unwrap();
+    let options = FitOptions::default()
+        .with_degree(p)
+        .with_target(FitTarget::Tolerance(tolerance));
+    let fitted = fit(&data, &options).unwrap();
+    assert_eq!(fitted.report.tolerance_met, Some(false));
+    assert!(fitted.report.worst_distance > tolerance);
+    assert!(fitted.report.control_points > 3 && fitted.report.control_points < m);
+}
