@@ -69,6 +69,22 @@ pub fn read_model(file: &str, args: &ModelArgs) -> anyhow::Result<Model> {
     })
 }
 
+/// Refuses a model of an interval-valued or bipolar family (two lanes, docs/model.md "Lanes")
+/// in a command that reads the families of one lane only, with the reason.
+///
+/// # Errors
+/// The model's family has two lanes.
+pub fn one_lane(file: &str, model: Model, command: &str, reason: &str) -> anyhow::Result<Model> {
+    let family = model.membership();
+    if family.lane_count() == 1 {
+        return Ok(model);
+    }
+    Err(anyhow::anyhow!(
+        "{}: membership {family}: `neutrospline {command}` {reason}",
+        label(file)
+    ))
+}
+
 /// Reads a data file (or standard input for `-`) as `input` says.
 ///
 /// # Errors

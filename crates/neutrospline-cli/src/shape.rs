@@ -299,15 +299,15 @@ impl<'a> CurveSampler<'a> {
         let p = self.curve.evaluate_point(t).map_err(explain("position"))?;
         let mut row = vec![t];
         row.extend(&p.position);
-        row.extend(self.view.values(&p.degrees));
+        row.extend(self.view.values(&[p.degrees]));
         if self.scores {
-            row.extend(self.view.scores(&p.degrees));
+            row.extend(self.view.scores(&[p.degrees]));
         }
         for derivative in &self.derivatives {
             let rates = derivative.evaluate_row(t).map_err(explain("derivative"))?;
             let (position, degrees) = rates.split_at(rates.len() - 3);
             row.extend(position);
-            row.extend(self.view.rates([degrees[0], degrees[1], degrees[2]]));
+            row.extend(self.view.rates(&[[degrees[0], degrees[1], degrees[2]]]));
         }
         let mut row: Row = row.into_iter().map(Some).collect();
         if let Some(accuracy) = self.geometry {
@@ -325,7 +325,7 @@ impl<'a> CurveSampler<'a> {
 
 fn push_rates<const D: usize>(row: &mut Vec<f64>, view: DegreeView, d: &DerivativeValue<D>) {
     row.extend(d.position);
-    row.extend(view.rates([d.truth, d.indeterminacy, d.falsity]));
+    row.extend(view.rates(&[[d.truth, d.indeterminacy, d.falsity]]));
 }
 
 /// The core's error, with an overflow said in terms of what overflowed (the core's message
@@ -345,9 +345,9 @@ fn surface_row(surface: &Surface, extras: Extras, u: f64, v: f64) -> anyhow::Res
     let mut values = Vec::with_capacity(2 + 3 * 6);
     values.extend([u, v]);
     values.extend(p.position);
-    values.extend(view.values(&p.degrees));
+    values.extend(view.values(&[p.degrees]));
     if extras.scores {
-        values.extend(view.scores(&p.degrees));
+        values.extend(view.scores(&[p.degrees]));
     }
     if extras.derivative >= 1 {
         let d = surface

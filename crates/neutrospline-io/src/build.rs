@@ -30,6 +30,18 @@ impl Parsed {
     pub(crate) fn into_model(mut self) -> Result<Model, InputError> {
         self.wrap_periodic()?;
         let shape = self.shape()?;
+        // A wide family's second lane: the same construction with the second lane's degrees
+        // (positions, weights and knots are the same, so it cannot fail where the first did not).
+        let second = if self.membership.lane_count() == 2 {
+            for p in &mut self.points {
+                if let Some(second) = p.second {
+                    p.degrees = second;
+                }
+            }
+            Some(self.shape()?)
+        } else {
+            None
+        };
         let source = |setting: &Option<KnotsSetting>| match setting.as_ref().map(|k| &k.spec) {
             None => KnotSource::Default,
             Some(KnotSpec::Rule(rule)) => KnotSource::Rule(*rule),
@@ -49,6 +61,7 @@ impl Parsed {
         let names = self.points.into_iter().map(|p| p.name).collect();
         Ok(Model::from_parts(
             shape,
+            second,
             self.name,
             self.description,
             self.membership,

@@ -39,7 +39,7 @@ impl DegreeView {
         )
     }
 
-    /// The degrees shown, in `truth, indeterminacy, falsity` order.
+    /// The degrees shown by a three-column view, in `truth, indeterminacy, falsity` order.
     fn kinds(&self) -> Vec<DegreeKind> {
         DegreeKind::ALL
             .into_iter()
@@ -47,9 +47,15 @@ impl DegreeView {
             .collect()
     }
 
-    /// The channel column names (also the names of the rates).
+    /// The channel column names (also the names of the rates): `truth, indeterminacy,
+    /// falsity` for the three original families, else the family's channels
+    /// (`truth_lower, truth_upper, ...` for the interval-valued ones).
     pub fn channel_names(&self) -> Vec<&'static str> {
-        self.kinds().into_iter().map(DegreeKind::name).collect()
+        if self.triple() {
+            self.kinds().into_iter().map(DegreeKind::name).collect()
+        } else {
+            self.family.channels().to_vec()
+        }
     }
 
     /// The channel columns, then the derived degrees.
@@ -73,9 +79,23 @@ impl DegreeView {
         }
     }
 
-    /// The values of [`DegreeView::names`] for `degrees`.
-    pub fn values(&self, degrees: &Degrees) -> Vec<f64> {
-        let mut values: Vec<f64> = self.kinds().into_iter().map(|k| degrees.get(k)).collect();
+    /// The channel values of a point from the degrees of each lane (`Family::lanes`: one
+    /// lane for most families, two for the interval-valued and bipolar ones).
+    fn channels(&self, lanes: &[Degrees]) -> Vec<f64> {
+        if self.triple() {
+            self.kinds().into_iter().map(|k| lanes[0].get(k)).collect()
+        } else {
+            self.family.join(lanes).to_vec()
+        }
+    }
+
+    /// The values of [`DegreeView::names`] for a point whose lanes hold `lanes` (one
+    /// [`Degrees`] per lane of the family, in lane order).
+    ///
+    /// # Panics
+    /// If `lanes` has fewer entries than the family has lanes.
+    pub fn values(&self, lanes: &[Degrees]) -> Vec<f64> {
+        let mut values = self.channels(lanes);
         if !self.triple() {
             let derived = self.family.derived(&values);
             values.extend(derived.iter());
@@ -83,19 +103,33 @@ impl DegreeView {
         values
     }
 
-    /// The values of [`DegreeView::score_names`] for `degrees`.
-    pub fn scores(&self, degrees: &Degrees) -> Vec<f64> {
+    /// The values of [`DegreeView::score_names`] for a point whose lanes hold `lanes`.
+    ///
+    /// # Panics
+    /// If `lanes` has fewer entries than the family has lanes.
+    pub fn scores(&self, lanes: &[Degrees]) -> Vec<f64> {
         if self.triple() {
-            return scores(degrees).to_vec();
+            return scores(&lanes[0]).to_vec();
         }
-        let channels: Vec<f64> = self.kinds().into_iter().map(|k| degrees.get(k)).collect();
+        let channels = self.channels(lanes);
         let mut values = vec![self.family.score(&channels)];
         values.extend(self.family.accuracy(&channels));
         values
     }
 
-    /// The rates of the shown channels from the rates `[dT, dI, dF]`.
-    pub fn rates(&self, rates: [f64; 3]) -> impl Iterator<Item = f64> + '_ {
-        self.kinds().into_iter().map(move |k| rates[k.index()])
+    /// The rates of the shown channels from each lane's rates `[dT, dI, dF]` (the channels
+    /// are linear in the lanes' slots, so their rates are the same map of the slots' rates).
+    ///
+    /// # Panics
+    /// If `lanes` has fewer entries than the family has lanes.
+    pub fn rates(&self, lanes: &[[f64; 3]]) -> Vec<f64> {
+        if self.triple() {
+            self.kinds()
+                .into_iter()
+                .map(|k| lanes[0][k.index()])
+                .collect()
+        } else {
+            self.family.join_slots(lanes).to_vec()
+        }
     }
 }

@@ -1,6 +1,6 @@
 //! [`Model`]: what a model file holds once validated, in any format.
 
-use neutrospline::{DegreeError, Degrees, Family, Spread};
+use neutrospline::{DegreeError, Degrees, Family, FamilyValues, Spread};
 
 use crate::settings::{Kind, KnotRule, KnotSpec};
 use crate::{ReadOptions, Shape};
@@ -41,6 +41,10 @@ pub enum ModelError {
         #[source]
         error: DegreeError,
     },
+    /// Lanes that do not make a model of the family (docs/model.md, "Lanes"): a wide family
+    /// given one lane, a family of one lane given two, or lanes whose geometry differs.
+    #[error("{0}")]
+    Lanes(String),
     /// Spreads that a model cannot carry: not one per control point, negative or not finite,
     /// a spread of `z` on a planar curve, or spreads on a surface.
     #[error("{0}")]
@@ -75,6 +79,9 @@ pub struct Model {
     membership: Family,
     point_names: Vec<Option<String>>,
     shape: Shape,
+    /// The second lane of an interval-valued or bipolar family (`Family::lanes`): the same
+    /// geometry as `shape`, with the second lane's degrees.
+    second: Option<Shape>,
     knot_sources: Vec<KnotSource>,
     /// One per control point (all zero when the model has none; `z` zero for planar curves).
     spreads: Vec<Spread<3>>,
@@ -89,6 +96,7 @@ impl PartialEq for Model {
             && self.membership == other.membership
             && self.point_names == other.point_names
             && self.shape == other.shape
+            && self.second == other.second
             && self.spreads == other.spreads
     }
 }
@@ -100,6 +108,12 @@ fn knot_directions(shape: &Shape) -> usize {
         (true, false) => 1,
         (true, true) => 2,
     }
+}
+
+/// `lower and upper`, `positive and negative`: the names of a family's lanes.
+fn lane_names(membership: Family) -> String {
+    let names: Vec<&str> = membership.lanes().iter().map(|l| l.name).collect();
+    names.join(" and ")
 }
 
 /// Whether `degrees` are exactly what a reader produces under `membership` from the degrees
@@ -129,12 +143,15 @@ impl Model {
             knot_sources: vec![KnotSource::Explicit; knot_directions(&shape)],
             spreads: vec![Spread::ZERO; shape.control_count()],
             shape,
+            second: None,
         }
     }
 
     /// A model from parts a reader validated.
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn from_parts(
         shape: Shape,
+        second: Option<Shape>,
         name: Option<String>,
         description: Option<String>,
         membership: Family,
@@ -148,6 +165,7 @@ impl Model {
             membership,
             point_names,
             shape,
+            second,
             knot_sources,
             spreads,
         }
@@ -216,10 +234,115 @@ impl Model {
     /// <= 1 and indeterminacy equal to `(1 - truth - falsity).max(0)` (as
     /// [`Degrees::intuitionistic`] computes it); fuzzy degrees need indeterminacy and falsity 0.
     pub fn with_membership(mut self, membership: Family) -> Result<Model, ModelError> {
+        if membership.lane_count() != 1 {
+            return Err(ModelError::Lanes(format!(
+                "the {membership} family rides in two lanes ({}); give the second lane with \
+                 Model::with_lanes",
+                lane_names(membership)
+            )));
+        }
+        self.second = None;
         for (index, degrees) in self.shape.control_degrees().iter().enumerate() {
             obeys(membership, degrees).map_err(|error| ModelError::Family { index, error })?;
         }
         self.membership = membership;
+        Ok(self)
+    }
+
+    /// With an interval-valued or bipolar family (`Family::lanes`): this model's shape is the
+    /// first lane (`lower`, or `positive`), `second` the second lane (`upper`, or the negated
+    /// `negative` degrees), with the same geometry.
+    ///
+    /// ```
+    /// use neutrospline::{AnyCurve, Bezier, ControlPoint, Degrees, Family};
+    /// use neutrospline_io::Model;
+    /// let lane = |t: f64| -> Result<AnyCurve<2>, neutrospline::CurveError> {
+    ///     let d = Degrees::new(t, 0.0, 0.0).unwrap();
+    ///     let points = vec![ControlPoint::new([0.0, 0.0], d), ControlPoint::new([1.0, 1.0], d)];
+    ///     Ok(AnyCurve::Bezier(Bezier::new(points)?))
+    /// };
+    /// let model = Model::new(lane(0.2)?).with_lanes(Family::IntervalType2, lane(0.7)?)?;
+    /// assert_eq!(&*model.control_channels()[0], &[0.2, 0.7]); // truth_lower, truth_upper
+    /// assert!(Model::new(lane(0.9)?).with_lanes(Family::IntervalType2, lane(0.7)?).is_err());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`ModelError::Lanes`] for a family of one lane or a second lane of another geometry;
+    /// [`ModelError::Family`] for the first control point whose channels break the rule (or
+    /// whose lanes hold what no channel values give, such as a non-zero slot the family does
+    /// not use).
+    pub fn with_lanes(
+        mut self,
+        membership: Family,
+        second: impl Into<Shape>,
+    ) -> Result<Model, ModelError> {
+        let second = second.into();
+        if membership.lane_count() != 2 {
+            return Err(ModelError::Lanes(format!(
+                "the {membership} family has one lane; use Model::with_membership"
+            )));
+        }
+        if !self.shape.same_geometry(&second) {
+            return Err(ModelError::Lanes(format!(
+                "the {} lane has another geometry than the {} lane (positions, weights, degree \
+                 and knots must be the same)",
+                membership.lanes()[1].name,
+                membership.lanes()[0].name
+            )));
+        }
+        let (first, other) = (self.shape.control_degrees(), second.control_degrees());
+        for (index, (a, b)) in first.iter().zip(&other).enumerate() {
+            let channels = membership.join(&[*a, *b]);
+            let fail = |error| ModelError::Family { index, error };
+            let (lanes, _) = membership.split(&channels).map_err(fail)?;
+            if lanes[0] != *a || lanes[1] != *b {
+                return Err(ModelError::Lanes(format!(
+                    "control point {index}: the lanes hold degrees {:?} and {:?}, which no {membership} \
+                     channel values give (a slot the family does not use must be 0, lanes hold \
+                     values in [0, 1])",
+                    a.to_array(),
+                    b.to_array()
+                )));
+            }
+        }
+        self.membership = membership;
+        self.second = Some(second);
+        Ok(self)
+    }
+
+    /// The lanes of the model (`Family::lanes`): the shape, and the second lane of an
+    /// interval-valued or bipolar family; all have the same geometry.
+    pub fn lanes(&self) -> Vec<&Shape> {
+        core::iter::once(&self.shape)
+            .chain(self.second.as_ref())
+            .collect()
+    }
+
+    /// The channel values of every control point (surfaces row by row), in the family's
+    /// channel order (`Family::channels`).
+    pub fn control_channels(&self) -> Vec<FamilyValues> {
+        let lanes: Vec<Vec<Degrees>> = self.lanes().iter().map(|s| s.control_degrees()).collect();
+        (0..self.shape.control_count())
+            .map(|i| {
+                let at: Vec<Degrees> = lanes.iter().map(|lane| lane[i]).collect();
+                self.membership.join(&at)
+            })
+            .collect()
+    }
+
+    /// The same model with every lane replaced by `map(lane)`: for operations that act on the
+    /// geometry and blend the degrees with the basis (docs/model.md, "Lanes"), applied to each
+    /// lane alike so the lanes keep one geometry.
+    ///
+    /// # Errors
+    /// The first error of `map`.
+    pub fn map_lanes<E>(
+        mut self,
+        mut map: impl FnMut(Shape) -> Result<Shape, E>,
+    ) -> Result<Model, E> {
+        self.shape = map(self.shape)?;
+        self.second = self.second.map(map).transpose()?;
         Ok(self)
     }
 

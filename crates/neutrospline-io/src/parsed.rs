@@ -230,8 +230,10 @@ pub(crate) struct PointRecord {
     pub(crate) name: Option<String>,
     /// `x`, `y` and, for 3-D input, `z`.
     pub(crate) position: Vec<f64>,
-    /// The validated degrees.
+    /// The validated degrees (of a wide family: its first lane, see [`Family::lanes`]).
     pub(crate) degrees: Degrees,
+    /// The second lane's degrees of an interval-valued or bipolar family.
+    pub(crate) second: Option<Degrees>,
     /// The NURBS weight (present exactly for the NURBS kinds; checked when the shape is built).
     pub(crate) weight: Option<f64>,
     /// Where the point was read, for errors found later.
@@ -277,12 +279,87 @@ pub(crate) fn resolve_membership(
     declared: Option<Family>,
     cli: Option<Family>,
 ) -> Result<Family, String> {
-    let family = resolve("membership", "--membership", declared, cli)?.unwrap_or_default();
-    if family.fits_degrees() {
-        Ok(family)
-    } else {
-        Err(DegreeError::TooManyChannels { membership: family }.to_string())
+    Ok(resolve("membership", "--membership", declared, cli)?.unwrap_or_default())
+}
+
+/// The channel names of the interval-valued and bipolar families other than truth,
+/// indeterminacy and falsity: the extra keys and columns of their control points.
+pub(crate) const WIDE_CHANNELS: [&str; 9] = [
+    "truth_lower",
+    "truth_upper",
+    "indeterminacy_lower",
+    "indeterminacy_upper",
+    "falsity_lower",
+    "falsity_upper",
+    "negative_truth",
+    "negative_indeterminacy",
+    "negative_falsity",
+];
+
+/// The index in [`WIDE_CHANNELS`] of the channel called `text`, exactly or ignoring ASCII case.
+pub(crate) fn wide_channel(text: &str, ignore_case: bool) -> Option<usize> {
+    WIDE_CHANNELS.iter().position(|c| {
+        if ignore_case {
+            c.eq_ignore_ascii_case(text)
+        } else {
+            *c == text
+        }
+    })
+}
+
+/// Why the degree keys (or columns) given do not match the channels of `membership`: a
+/// channel of the family missing, or a degree given that the family does not have. `present`
+/// lists the canonical names given among `truth`, `indeterminacy`, `falsity` and
+/// [`WIDE_CHANNELS`]; `word` is `key` or `column`. Families of one lane only meet the second
+/// problem for the wide channel names (their truth, indeterminacy and falsity are judged by
+/// the core's rule, which knows the derived and absent degrees).
+pub(crate) fn channel_problem(membership: Family, present: &[&str], word: &str) -> Option<String> {
+    let channels = membership.channels();
+    if let Some(extra) = present.iter().find(|name| {
+        !channels.contains(name)
+            && (!membership.fits_degrees() || wide_channel(name, false).is_some())
+    }) {
+        let mut carriers: Vec<&str> = Family::EXAMPLES
+            .iter()
+            .filter(|f| f.channels().contains(extra))
+            .map(|f| f.name())
+            .collect();
+        carriers.dedup();
+        let carried_by = if carriers.is_empty() {
+            String::new()
+        } else {
+            format!("; `{extra}` is a channel of {}", carriers.join(", "))
+        };
+        return Some(format!(
+            "{word} `{extra}` does not apply to membership {membership} (its channels: {}){carried_by}",
+            channels.join(", ")
+        ));
     }
+    if membership.fits_degrees() {
+        return None;
+    }
+    channels
+        .iter()
+        .find(|c| !present.contains(c))
+        .map(|missing| format!("missing {word} `{missing}` ({membership} rule requires it)"))
+}
+
+/// The two lanes' degrees of a wide family's control point from its channel values
+/// (`value(name)` for each channel; [`channel_problem`] has made sure each is present).
+///
+/// # Errors
+/// The rule broken, with the channels named.
+pub(crate) fn wide_lanes(
+    membership: Family,
+    value: impl Fn(&str) -> Option<f64>,
+) -> Result<(Degrees, Degrees), DegreeError> {
+    let values: Vec<f64> = membership
+        .channels()
+        .iter()
+        .map(|c| value(c).unwrap_or(f64::NAN))
+        .collect();
+    let (lanes, _) = membership.split(&values)?;
+    Ok((lanes[0], lanes[1]))
 }
 
 /// The degree that `membership` requires but that is absent when only the degrees flagged

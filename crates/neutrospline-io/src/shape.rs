@@ -144,6 +144,36 @@ impl Shape {
     }
 
     /// Every control point with its weight, for the writers.
+    /// Whether `other` has the same kind, positions, weights, degree, knots and grid: the
+    /// same geometry, whatever its degrees (the lanes of a wide family, see
+    /// `Family::lanes`).
+    pub fn same_geometry(&self, other: &Shape) -> bool {
+        let same_points = || {
+            let (a, b) = (self.point_data(), other.point_data());
+            a.len() == b.len()
+                && a.iter()
+                    .zip(&b)
+                    .all(|(p, q)| p.position == q.position && p.weight == q.weight)
+        };
+        let same_knots = match (self, other) {
+            (Shape::Curve(_), Shape::Curve(_)) => {
+                self.curve_degree() == other.curve_degree()
+                    && self.curve_knots() == other.curve_knots()
+            }
+            (Shape::Surface(a), Shape::Surface(b)) => {
+                (a.rows(), a.cols(), a.degree_u(), a.degree_v())
+                    == (b.rows(), b.cols(), b.degree_u(), b.degree_v())
+                    && a.knots_u() == b.knots_u()
+                    && a.knots_v() == b.knots_v()
+            }
+            _ => false,
+        };
+        self.kind() == other.kind()
+            && self.dimension() == other.dimension()
+            && same_knots
+            && same_points()
+    }
+
     pub(crate) fn point_data(&self) -> Vec<PointData> {
         match self {
             Shape::Curve(c) => on_dimension!(c, c => point_data(c.control_points(), c.weights())),

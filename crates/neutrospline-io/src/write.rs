@@ -13,7 +13,7 @@ use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::Path;
 
-use neutrospline::{DegreeKind, Family, Spread};
+use neutrospline::{Family, Spread};
 
 use crate::format::MAX_CSV_LINE;
 use crate::number::file_number;
@@ -82,28 +82,25 @@ fn layout(model: &Model) -> (Vec<(&'static str, Setting)>, Vec<usize>) {
     }
 }
 
-/// The degrees written under `membership`, with their index in `[truth, indeterminacy,
-/// falsity]`: those the rule does not derive.
-fn degree_keys(membership: Family) -> Vec<(&'static str, usize)> {
-    DegreeKind::ALL
-        .into_iter()
-        .filter(|kind| membership.carries(*kind))
-        .map(|kind| (kind.name(), kind.index()))
-        .collect()
-}
-
-/// The keys and values of a control point in writing order: `x, y, [z,] truth,
-/// indeterminacy, falsity, [weight]` (the degrees the rule keeps).
-fn point_values(point: &PointData, membership: Family) -> Vec<(&'static str, f64)> {
+/// The keys and values of a control point in writing order: `x, y, [z,]` the channels of the
+/// membership family (`truth, indeterminacy, falsity` for the neutrosophic rule, `truth,
+/// falsity` for the orthopair rules, `truth_lower, truth_upper, ...` for the interval-valued
+/// ones), `[weight]`. `channels` are the point's channel values ([`Model::control_channels`]).
+fn point_values(
+    point: &PointData,
+    channels: &[f64],
+    membership: Family,
+) -> Vec<(&'static str, f64)> {
     let mut values: Vec<(&'static str, f64)> = ["x", "y", "z"]
         .into_iter()
         .zip(point.position.iter().copied())
         .collect();
-    let degrees = point.degrees.to_array();
     values.extend(
-        degree_keys(membership)
+        membership
+            .channels()
             .iter()
-            .map(|&(k, i)| (k, degrees[i])),
+            .copied()
+            .zip(channels.iter().copied()),
     );
     if let Some(w) = point.weight {
         values.push(("weight", w));
@@ -240,6 +237,7 @@ pub fn to_toml_string(model: &Model) -> String {
     }
     let spreads = model.spreads();
     let points = model.shape().point_data();
+    let channels = model.control_channels();
     for i in kept {
         let (point, name) = (&points[i], &model.point_names()[i]);
         out.push_str("\n[[control_points]]\n");
@@ -248,7 +246,7 @@ pub fn to_toml_string(model: &Model) -> String {
             toml_string(&mut out, name);
             out.push('\n');
         }
-        let mut values = point_values(point, model.membership());
+        let mut values = point_values(point, &channels[i], model.membership());
         if let Some(spreads) = spreads {
             values.extend(spread_values(&spreads[i], point.position.len()));
         }
@@ -286,6 +284,7 @@ pub fn to_json_string(model: &Model) -> String {
     }
     out.push_str(",\n  \"control_points\": [");
     let points = model.shape().point_data();
+    let channels = model.control_channels();
     for (k, &i) in kept.iter().enumerate() {
         let (point, name) = (&points[i], &model.point_names()[i]);
         out.push_str(if k == 0 { "\n    { " } else { ",\n    { " });
@@ -295,7 +294,7 @@ pub fn to_json_string(model: &Model) -> String {
             json_string(&mut out, name);
             first = false;
         }
-        let mut values = point_values(point, model.membership());
+        let mut values = point_values(point, &channels[i], model.membership());
         if let Some(spreads) = model.spreads() {
             values.extend(spread_values(&spreads[i], point.position.len()));
         }
@@ -360,6 +359,7 @@ pub fn to_csv_string(model: &Model) -> Result<String, WriteError> {
     let names = model.point_names();
     let named = names.iter().any(Option::is_some);
     let points = model.shape().point_data();
+    let channels = model.control_channels();
     let (_, kept) = layout(model);
     let mut out = String::new();
     let mut header: Vec<&str> = Vec::new();
@@ -367,7 +367,11 @@ pub fn to_csv_string(model: &Model) -> Result<String, WriteError> {
         header.push("name");
     }
     if let Some(point) = points.first() {
-        header.extend(point_values(point, model.membership()).iter().map(|v| v.0));
+        header.extend(
+            point_values(point, &channels[0], model.membership())
+                .iter()
+                .map(|v| v.0),
+        );
     }
     let spreads = model.spreads();
     let dimension = points.first().map_or(0, |p| p.position.len());
@@ -391,7 +395,10 @@ pub fn to_csv_string(model: &Model) -> Result<String, WriteError> {
             }
             row.push(',');
         }
-        for (i, (_, value)) in point_values(point, model.membership()).iter().enumerate() {
+        for (i, (_, value)) in point_values(point, &channels[index], model.membership())
+            .iter()
+            .enumerate()
+        {
             if i > 0 {
                 row.push(',');
             }

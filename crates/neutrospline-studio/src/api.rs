@@ -605,7 +605,7 @@ fn table(
                 let p = s.evaluate(u, v).map_err(|e| e.to_string())?;
                 let mut row = vec![cell(u), cell(v)];
                 row.extend(p.position.iter().map(|&x| cell(x)));
-                row.extend(view.values(&p.degrees).into_iter().map(cell));
+                row.extend(view.values(&[p.degrees]).into_iter().map(cell));
                 rows.push(row);
             }
         }
@@ -622,7 +622,7 @@ fn table(
                 let mut row = vec![cell(t)];
                 let p = curve.evaluate_point(t).map_err(|e| e.to_string())?;
                 row.extend(p.position.iter().map(|&x| cell(x)));
-                row.extend(view.values(&p.degrees).into_iter().map(cell));
+                row.extend(view.values(&[p.degrees]).into_iter().map(cell));
                 rows.push(row);
             }
         }

@@ -141,8 +141,8 @@ pub use derivative::CurveDerivative;
 pub use dyn_curve::{Dimensional, DynCurve, DynDerivative, DynPoint, NearestRow, RowLengthError};
 pub use example::{example1, EXAMPLE1_NAMES, EXAMPLE1_TABLE};
 pub use family::{
-    Family, FamilyValues, LinearConstraint, ParseFamilyError, PowerRule, RuleError, FAMILY_FORMS,
-    MAX_CHANNELS, RULE_TOLERANCE,
+    Family, FamilyValues, Lane, LaneDegrees, LinearConstraint, ParseFamilyError, PowerRule,
+    RuleError, FAMILY_FORMS, MAX_CHANNELS, RULE_TOLERANCE,
 };
 pub use fuzzy::{alpha_cut, centroid_curve, FuzzyError, Side, Spread};
 pub use geometry::{

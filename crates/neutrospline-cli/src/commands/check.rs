@@ -126,7 +126,12 @@ fn domain_line(domain: std::ops::Range<f64>) -> String {
 /// # Errors
 /// An invalid file, or a write error.
 pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
-    let model = input::read_model(&args.file, &args.model)?;
+    let model = input::one_lane(
+        &args.file,
+        input::read_model(&args.file, &args.model)?,
+        "check",
+        "LANES_TODO",
+    )?;
     let file = input::label(&args.file);
     let name = model.name().map(str::to_owned);
     let membership = model.membership();

@@ -385,7 +385,12 @@ fn data_warning(file: &str, model: &neutrospline_io::Model) -> Option<String> {
 pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
     // The table's options are refused before the file is read.
     args.table.table_output()?;
-    let model = input::read_model(&args.file, &args.model)?;
+    let model = input::one_lane(
+        &args.file,
+        input::read_model(&args.file, &args.model)?,
+        "eval",
+        "LANES_TODO",
+    )?;
     let file = input::label(&args.file);
     if let Some(warning) = data_warning(&args.file, &model) {
         eprintln!("{warning}");

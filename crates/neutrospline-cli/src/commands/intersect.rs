@@ -55,7 +55,14 @@ const COLUMNS: [&str; 12] = [
 
 /// The plane curve of `file`, or an error naming what it holds.
 fn plane_curve(file: &str, model: &ModelArgs) -> anyhow::Result<DynCurve> {
-    match input::read_model(file, model)?.into_shape() {
+    match input::one_lane(
+        file,
+        input::read_model(file, model)?,
+        "intersect",
+        "LANES_TODO",
+    )?
+    .into_shape()
+    {
         Shape::Curve(curve) if curve.dimension() == 2 => Ok(curve),
         shape => {
             let what = if shape.is_surface() {

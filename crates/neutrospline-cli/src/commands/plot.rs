@@ -94,7 +94,12 @@ pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
     let mut options = request
         .plot_options()
         .map_err(|e| UsageError(e.to_string()))?;
-    let model = input::read_model(&args.file, &args.model)?;
+    let model = input::one_lane(
+        &args.file,
+        input::read_model(&args.file, &args.model)?,
+        "plot",
+        "LANES_TODO",
+    )?;
     let membership = model.membership();
     let mut plot = PlotModel::from_model(&model)?;
     let description = model.description().map(str::to_owned);

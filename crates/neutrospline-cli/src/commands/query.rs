@@ -50,7 +50,13 @@ const BATCH: usize = 1 << 14;
 /// An invalid model or points file, points of another dimension than the model, a point
 /// whose distance overflows, or a write error.
 pub fn run(args: &QueryArgs) -> anyhow::Result<()> {
-    let shape = input::read_model(&args.model_file, &args.model)?.into_shape();
+    let shape = input::one_lane(
+        &args.model_file,
+        input::read_model(&args.model_file, &args.model)?,
+        "query",
+        "LANES_TODO",
+    )?
+    .into_shape();
     let model_file = input::label(&args.model_file);
     let table = neutrospline_io::load_points_with(&args.points, &args.model.table_input()?)
         .map_err(input::table_error)?;

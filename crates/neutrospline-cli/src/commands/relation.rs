@@ -150,7 +150,12 @@ fn read_axis(
 /// Checks that the control points of the plane curve in `model_file` form a relation of `m`
 /// and `n`, and says so on standard output.
 fn check(model_file: &str, args: &ModelArgs, m: &AxisTable, n: &AxisTable) -> anyhow::Result<()> {
-    let model = input::read_model(model_file, args)?;
+    let model = input::one_lane(
+        model_file,
+        input::read_model(model_file, args)?,
+        "relation",
+        "LANES_TODO",
+    )?;
     let shown = input::label(model_file);
     let Some(points) = model
         .shape()

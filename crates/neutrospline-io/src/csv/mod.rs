@@ -24,8 +24,9 @@ pub(crate) use table::{read_degrees, require_degrees, Columns, Table};
 use std::io::BufRead;
 
 use crate::parsed::{
-    check_spread_value, duplicate_rule, spread_from_values, spread_hint, spread_keys_problem,
-    Field, Origin, Parsed, PointRecord, SpreadKey,
+    channel_problem, check_spread_value, duplicate_rule, spread_from_values, spread_hint,
+    spread_keys_problem, wide_channel, wide_lanes, Field, Origin, Parsed, PointRecord, SpreadKey,
+    WIDE_CHANNELS,
 };
 use crate::settings::{Key, Kind, KnotSpec, KnotsSetting, Setting, Structure};
 use crate::{InputError, ReadOptions};
@@ -58,12 +59,27 @@ pub(crate) fn parse_reader(
     for f in [Field::X, Field::Y] {
         table.require(Column::Field(f), f.name(), "every file needs x and y")?;
     }
-    table.require(
-        Column::Field(Field::Truth),
-        Field::Truth.name(),
-        "every membership rule requires it",
-    )?;
-    require_degrees(&table, membership, Column::Field)?;
+    let mut present: Vec<&str> = [Field::Truth, Field::Indeterminacy, Field::Falsity]
+        .into_iter()
+        .filter(|f| has(*f))
+        .map(Field::name)
+        .collect();
+    present.extend(
+        (0..WIDE_CHANNELS.len())
+            .filter(|&c| table.has(Column::Channel(c)))
+            .map(|c| WIDE_CHANNELS[c]),
+    );
+    if let Some(message) = channel_problem(membership, &present, "column") {
+        return Err(table.header_error(message));
+    }
+    if membership.fits_degrees() {
+        table.require(
+            Column::Field(Field::Truth),
+            Field::Truth.name(),
+            "every membership rule requires it",
+        )?;
+        require_degrees(&table, membership, Column::Field)?;
+    }
     if kind.is_surface() && !has(Field::Z) {
         return Err(table.header_error(
             "missing column `z` (surfaces are 3-D: every control point needs x, y and z)"
@@ -96,11 +112,16 @@ pub(crate) fn parse_reader(
     let mut points = Vec::new();
     while let Some(row) = table.next_row()? {
         let mut values = [None::<f64>; 8];
+        let mut wide = [None::<f64>; 9];
         let mut spreads = [None::<f64>; 9];
         let mut name = None;
         for cell in row.cells() {
             let field = match cell.column {
                 Column::Field(field) => field,
+                Column::Channel(c) => {
+                    wide[c] = Some(row.number(&cell)?);
+                    continue;
+                }
                 Column::Spread(key) => {
                     let value = row.number(&cell).and_then(|value| {
                         check_spread_value(value).map_err(|m| row.cell_error(&cell, m))
@@ -122,13 +143,25 @@ pub(crate) fn parse_reader(
         }
         let get = |f: Field| values[f.index()];
         let line = Some(row.line());
+        let (degrees, second) = if membership.fits_degrees() {
+            (read_degrees(&row, membership, &values)?, None)
+        } else {
+            let value = |name: &str| match wide_channel(name, false) {
+                Some(c) => wide[c],
+                None => Field::from_name(name, false).and_then(get),
+            };
+            let (first, second) =
+                wide_lanes(membership, value).map_err(|e| row.error(None, e.to_string()))?;
+            (first, Some(second))
+        };
         points.push(PointRecord {
             name,
             position: [Field::X, Field::Y, Field::Z][..dimension]
                 .iter()
                 .map(|&f| get(f).unwrap_or_default())
                 .collect(),
-            degrees: read_degrees(&row, membership, &values)?,
+            degrees,
+            second,
             weight: get(Field::Weight),
             origin: Origin { line, field: None },
             weight_origin: Origin {
@@ -215,10 +248,12 @@ fn structure(kind: Kind, options: &ReadOptions) -> Structure {
 const FIT_HINT: &str = "; a table of measured points (with a parameter or weight per point) \
                         is fitted by `neutrospline fit FILE`, not evaluated";
 
-/// What a header cell names: a field of the control point, or a spread.
+/// What a header cell names: a field of the control point, a channel of the interval-valued
+/// and bipolar families (index in [`WIDE_CHANNELS`]), or a spread.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Column {
     Field(Field),
+    Channel(usize),
     Spread(SpreadKey),
 }
 
@@ -226,6 +261,7 @@ enum Column {
 fn column(heading: &str) -> Result<Column, String> {
     Field::from_name(heading, true)
         .map(Column::Field)
+        .or_else(|| wide_channel(heading, true).map(Column::Channel))
         .or_else(|| SpreadKey::from_name(heading, true).map(Column::Spread))
         .ok_or_else(|| {
             let fit = if heading.eq_ignore_ascii_case("parameter") {

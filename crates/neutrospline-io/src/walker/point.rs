@@ -4,8 +4,9 @@ use neutrospline::{DegreeError, DegreeKind, Degrees, Family};
 
 use super::Walker;
 use crate::parsed::{
-    check_spread_value, duplicate_rule, spread_from_values, spread_hint, spread_keys_problem,
-    Field, Origin, PointRecord, SpreadKey,
+    channel_problem, check_spread_value, duplicate_rule, spread_from_values, spread_hint,
+    spread_keys_problem, wide_channel, wide_lanes, Field, Origin, PointRecord, SpreadKey,
+    WIDE_CHANNELS,
 };
 use crate::settings::Kind;
 use crate::tree::{Node, Value};
@@ -29,7 +30,24 @@ impl Walker<'_> {
         let mut spread_nodes: [Option<&Node>; 9] = Default::default();
         let mut spread_keys: [Option<&str>; 9] = Default::default();
         let mut first_spread_span = None;
+        let mut wide_nodes: [Option<&Node>; 9] = Default::default();
         for entry in entries {
+            if let Some(c) = wide_channel(&entry.key, false) {
+                if wide_nodes[c].is_some() {
+                    return Err(self.error(
+                        entry.key_span.as_ref(),
+                        Some(path.clone()),
+                        format!(
+                            "key `{}` repeats key `{}` ({})",
+                            entry.key,
+                            entry.key,
+                            duplicate_rule()
+                        ),
+                    ));
+                }
+                wide_nodes[c] = Some(&entry.value);
+                continue;
+            }
             if let Some(key) = SpreadKey::from_name(&entry.key, false) {
                 if spread_keys[key.index()].is_some() {
                     return Err(self.error(
@@ -160,6 +178,87 @@ impl Walker<'_> {
                 ),
             ));
         }
+        let mut present: Vec<&str> = [Field::Truth, Field::Indeterminacy, Field::Falsity]
+            .into_iter()
+            .filter(|f| node(*f).is_some())
+            .map(Field::name)
+            .collect();
+        present.extend(
+            WIDE_CHANNELS
+                .iter()
+                .zip(&wide_nodes)
+                .filter(|(_, n)| n.is_some())
+                .map(|(c, _)| *c),
+        );
+        if let Some(message) = channel_problem(membership, &present, "key") {
+            let span = present
+                .iter()
+                .find(|name| message.starts_with(&format!("key `{name}`")))
+                .and_then(|name| match wide_channel(name, false) {
+                    Some(c) => wide_nodes[c],
+                    None => Field::from_name(name, false).and_then(node),
+                })
+                .and_then(|n| n.span.as_ref())
+                .or(item.span.as_ref());
+            return Err(self.error(span, Some(path.clone()), message));
+        }
+        let (degrees, second) = if membership.fits_degrees() {
+            (self.degrees(item, &path, membership, &node, &value)?, None)
+        } else {
+            let mut values = [0.0; 9 + 3];
+            for (c, n) in wide_nodes.iter().enumerate() {
+                if let Some(n) = n {
+                    values[c] = self.number(n, &format!("{path}.{}", WIDE_CHANNELS[c]))?;
+                }
+            }
+            for (k, f) in [Field::Truth, Field::Indeterminacy, Field::Falsity]
+                .into_iter()
+                .enumerate()
+            {
+                values[9 + k] = value(f)?.unwrap_or_default();
+            }
+            let (first, second) = wide_lanes(membership, |name| {
+                wide_channel(name, false)
+                    .or_else(|| Field::from_name(name, false).map(|f| 9 + f.index() - 3))
+                    .map(|i| values[i])
+            })
+            .map_err(|e| self.error(item.span.as_ref(), Some(path.clone()), e.to_string()))?;
+            (first, Some(second))
+        };
+        let weight_origin = Origin {
+            line: self.line(
+                node(Field::Weight)
+                    .and_then(|n| n.span.as_ref())
+                    .or(item.span.as_ref()),
+            ),
+            field: Some(format!("{path}.weight")),
+        };
+        Ok(PointRecord {
+            name,
+            position,
+            degrees,
+            second,
+            weight,
+            origin: Origin {
+                line: self.line(item.span.as_ref()),
+                field: Some(path),
+            },
+            weight_origin,
+            spread: spread_from_values(&spreads),
+        })
+    }
+
+    /// The degrees of a control point of a family of one lane, validated by its rule and
+    /// located at the key that breaks it.
+    fn degrees<'n>(
+        &self,
+        item: &Node,
+        path: &str,
+        membership: Family,
+        node: &dyn Fn(Field) -> Option<&'n Node>,
+        value: &dyn Fn(Field) -> Result<Option<f64>, InputError>,
+    ) -> Result<Degrees, InputError> {
+        let path = path.to_owned();
         let truth = value(Field::Truth)?.ok_or_else(|| {
             self.error(
                 item.span.as_ref(),
@@ -167,7 +266,7 @@ impl Walker<'_> {
                 "missing key `truth` (every membership rule requires it)".to_owned(),
             )
         })?;
-        let degrees = Degrees::with_membership(
+        Degrees::with_membership(
             membership,
             truth,
             value(Field::Indeterminacy)?,
@@ -198,26 +297,6 @@ impl Walker<'_> {
                 _ => (item.span.as_ref(), e.to_string()),
             };
             self.error(span, Some(path.clone()), message)
-        })?;
-        let weight_origin = Origin {
-            line: self.line(
-                node(Field::Weight)
-                    .and_then(|n| n.span.as_ref())
-                    .or(item.span.as_ref()),
-            ),
-            field: Some(format!("{path}.weight")),
-        };
-        Ok(PointRecord {
-            name,
-            position,
-            degrees,
-            weight,
-            origin: Origin {
-                line: self.line(item.span.as_ref()),
-                field: Some(path),
-            },
-            weight_origin,
-            spread: spread_from_values(&spreads),
         })
     }
 }

@@ -38,6 +38,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod lanes;
 mod measures;
 mod project;
 mod rule;
@@ -49,6 +50,7 @@ use core::str::FromStr;
 
 use crate::degrees::{DegreeError, DegreeKind, Degrees};
 
+pub use lanes::{Lane, LaneDegrees};
 pub use rule::{LinearConstraint, PowerRule, RuleError, RULE_TOLERANCE};
 
 /// The largest number of channels of any family (bipolar and interval neutrosophic: 6).
