@@ -325,7 +325,7 @@ pub(crate) fn channel_problem(membership: Family, present: &[&str], word: &str) 
             .map(|f| f.name())
             .collect();
         carriers.dedup();
-        let carried_by = if carriers.is_empty() {
+        let carried_by = if carriers.is_empty() || wide_channel(extra, false).is_none() {
             String::new()
         } else {
             format!("; `{extra}` is a channel of {}", carriers.join(", "))

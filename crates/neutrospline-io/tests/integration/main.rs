@@ -8,4 +8,5 @@ mod periodic;
 mod roundtrip;
 mod schema;
 mod spreadsheets;
+mod wide;
 mod write;

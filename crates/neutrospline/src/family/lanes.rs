@@ -161,7 +161,7 @@ impl Family {
         for (lane, slots) in self.lanes().iter().zip(lanes) {
             for (channel, value) in lane.slots.iter().zip(slots) {
                 if let Some(c) = channel {
-                    values[*c] = if lane.negated { -value } else { *value };
+                    values[*c] = if lane.negated { 0.0 - value } else { *value };
                 }
             }
         }

@@ -321,3 +321,76 @@ fn linear_constraints_describe_each_rule() {
     );
     assert_eq!(Family::q_rung(1).unwrap().power_rule(), None);
 }
+
+#[test]
+fn lanes_split_and_join_every_family() {
+    // Values from a box larger than each rule's, projected onto it: split gives lanes whose
+    // slots are in [0, 1], and join gives the values back to the bit.
+    let seeds = [-0.9, 0.0, 0.15, 0.5, 0.7, 1.0, 1.3];
+    for family in Family::EXAMPLES {
+        for (k, _) in seeds.iter().enumerate() {
+            let mut values: Vec<f64> = (0..family.channel_count())
+                .map(|c| seeds[(k + 3 * c) % seeds.len()])
+                .collect();
+            family.project(&mut values);
+            let (lanes, count) = family.split(&values).unwrap();
+            assert_eq!(count, family.lane_count(), "{family}");
+            for lane in &lanes[..count] {
+                assert!(lane.to_array().iter().all(|v| (0.0..=1.0).contains(v)));
+            }
+            assert_eq!(
+                &*family.join(&lanes[..count]),
+                values.as_slice(),
+                "{family}"
+            );
+        }
+    }
+    // The lanes of the interval-intuitionistic family leave the indeterminacy slot at 0, and
+    // the bipolar negative lane holds the negated degrees.
+    let (lanes, _) = Family::IntervalIntuitionistic
+        .split(&[0.1, 0.4, 0.2, 0.5])
+        .unwrap();
+    assert_eq!(lanes[0].to_array(), [0.1, 0.0, 0.2]);
+    assert_eq!(lanes[1].to_array(), [0.4, 0.0, 0.5]);
+    let (lanes, _) = Family::BipolarNeutrosophic
+        .split(&[0.9, 0.0, 0.1, -1.0, -0.25, -0.0])
+        .unwrap();
+    assert_eq!(lanes[1].to_array(), [1.0, 0.25, 0.0]);
+    assert!(lanes[1].falsity().is_sign_positive());
+    // Rates map like values: a lane's slot rates join to the channels' rates.
+    assert_eq!(
+        &*Family::BipolarNeutrosophic.join_slots(&[[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]),
+        &[1.0, 2.0, 3.0, -4.0, -5.0, -6.0]
+    );
+    assert_eq!(
+        &*Family::Pythagorean.join_slots(&[[0.5, 9.0, 0.25]]),
+        &[0.5, 0.25]
+    );
+}
+
+#[test]
+fn lanes_refuse_values_that_break_the_rule() {
+    let message = |family: Family, values: &[f64]| family.split(values).unwrap_err().to_string();
+    assert_eq!(
+        message(
+            Family::IntervalNeutrosophic,
+            &[0.6, 0.4, 0.0, 0.1, 0.0, 0.1]
+        ),
+        "truth_lower = 0.6 exceeds truth_upper = 0.4 (interval-neutrosophic rule: lower <= upper)"
+    );
+    assert_eq!(
+        message(Family::IntervalIntuitionistic, &[0.1, 0.7, 0.1, 0.4]),
+        "truth_upper + falsity_upper = 1.1 exceeds 1 (interval-intuitionistic rule)"
+    );
+    assert_eq!(
+        message(
+            Family::BipolarNeutrosophic,
+            &[0.5, 0.5, 0.5, 0.2, -0.1, -0.1]
+        ),
+        "negative_truth = 0.2 is outside [-1, 0] (bipolar-neutrosophic rule)"
+    );
+    assert_eq!(
+        message(Family::IntervalType2, &[0.2]),
+        "1 values given; the interval-type2 family has 2 channels (truth_lower, truth_upper)"
+    );
+}

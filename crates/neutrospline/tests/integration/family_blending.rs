@@ -8,8 +8,8 @@
 //! channels per curve, so this is the engine's blend, not a copy of it.
 
 use neutrospline::{
-    AnyCurve, BSpline, Bezier, ControlPoint, Degrees, Evaluate, Family, KnotVector, Nurbs,
-    RULE_TOLERANCE,
+    AnyCurve, BSpline, Bezier, ControlPoint, ControlPolygon, Degrees, Evaluate, Family, KnotVector,
+    Nurbs, RULE_TOLERANCE,
 };
 use proptest::prelude::*;
 
@@ -135,6 +135,80 @@ proptest! {
                 for d in family.derived(&blend).iter() {
                     prop_assert!((0.0..=1.0).contains(d), "{family}: derived {d}");
                 }
+            }
+        }
+    }
+}
+
+/// The curves of `layout` whose control points carry `lanes[i]` as degrees and `positions[i]`
+/// as positions: one curve per lane of a wide family, one geometry.
+fn lane_curves(layout: &Layout, family: Family, values: &[Vec<f64>]) -> Vec<AnyCurve<3>> {
+    let split: Vec<[Degrees; 2]> = values.iter().map(|v| family.split(v).unwrap().0).collect();
+    (0..family.lane_count())
+        .map(|lane| {
+            // The lane's degrees ride in the degree slots; the positions are any fixed points.
+            let carrier: Vec<Vec<f64>> = (0..values.len())
+                .map(|i| vec![i as f64, (i * i) as f64 * 0.5, 1.0 - i as f64])
+                .collect();
+            let mut curve = curves(layout, &carrier).remove(0);
+            let degrees: Vec<Degrees> = split.iter().map(|lanes| lanes[lane]).collect();
+            curve = with_degrees(curve, &degrees);
+            curve
+        })
+        .collect()
+}
+
+/// `curve` with the control degrees `degrees` (periodic layouts repeat the first ones).
+fn with_degrees(curve: AnyCurve<3>, degrees: &[Degrees]) -> AnyCurve<3> {
+    let n = degrees.len();
+    let points: Vec<ControlPoint<3>> = curve
+        .control_points()
+        .iter()
+        .enumerate()
+        .map(|(i, p)| ControlPoint::new(p.position, degrees[i % n]))
+        .collect();
+    match curve {
+        AnyCurve::Bezier(_) => Bezier::new(points).unwrap().into(),
+        AnyCurve::BSpline(c) => BSpline::new(points, c.knots().clone()).unwrap().into(),
+        AnyCurve::Nurbs(c) => Nurbs::new(points, c.weights().unwrap().to_vec(), c.knots().clone())
+            .unwrap()
+            .into(),
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(6))]
+
+    /// The wide families ride in two lanes of degree slots (docs/model.md, "Lanes"): the
+    /// degrees of each lane's curve, joined, equal the channels blended as coordinates (an
+    /// independent path through the engine) and keep the rule at 10,000 parameters.
+    #[test]
+    fn wide_families_blend_through_their_lanes(
+        layout in layout(),
+        seed in prop::collection::vec(-1.6f64..1.6, 37),
+    ) {
+        for family in Family::EXAMPLES.into_iter().filter(|f| f.lane_count() == 2) {
+            let count = if layout.kind == 0 { layout.degree + 1 } else { layout.count };
+            let values = boundary_values(family, count, &seed);
+            let coordinates = curves(&layout, &values);
+            let lanes = lane_curves(&layout, family, &values);
+            let domain = coordinates[0].domain();
+            for k in 0..10_000u32 {
+                let t = (domain.start + (domain.end - domain.start) * f64::from(k) / 9_999.0)
+                    .min(domain.end);
+                let at: Vec<Degrees> = lanes.iter().map(|c| c.evaluate(t).unwrap().degrees).collect();
+                let joined = family.join(&at);
+                let mut blend = Vec::with_capacity(6);
+                for curve in &coordinates {
+                    blend.extend_from_slice(&curve.evaluate(t).unwrap().position);
+                }
+                for (c, (a, b)) in joined.iter().zip(&blend).enumerate() {
+                    prop_assert!((a - b).abs() <= 1e-12, "{family} channel {c} at t = {t}: {a} vs {b}");
+                }
+                prop_assert!(
+                    family.check_within(&joined, RULE_TOLERANCE).is_ok(),
+                    "{family} at t = {t}: {joined:?}"
+                );
             }
         }
     }
