@@ -186,3 +186,22 @@ fn keys_and_columns_must_be_the_familys_channels() {
          interval-intuitionistic, interval-type2"
     );
 }
+
+#[test]
+fn the_wide_examples_read_and_keep_their_rule() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/families/");
+    for (file, family) in [
+        ("interval-neutrosophic.toml", Family::IntervalNeutrosophic),
+        ("interval-intuitionistic.toml", Family::IntervalIntuitionistic),
+        ("interval-type2.toml", Family::IntervalType2),
+        ("bipolar-neutrosophic.toml", Family::BipolarNeutrosophic),
+    ] {
+        let model = neutrospline_io::load(format!("{root}{file}"), &ReadOptions::default())
+            .unwrap_or_else(|e| panic!("{file}: {e}"));
+        assert_eq!(model.membership(), family);
+        assert_eq!(model.lanes().len(), 2);
+        for values in model.control_channels() {
+            family.check(&values).unwrap();
+        }
+    }
+}
