@@ -147,6 +147,12 @@ impl Family {
     /// # Panics
     /// If `lanes` has fewer entries than the family has lanes.
     pub fn join_slots(&self, lanes: &[[f64; 3]]) -> FamilyValues {
+        assert!(
+            lanes.len() >= self.lane_count(),
+            "{} lanes given; the {self} family has {}",
+            lanes.len(),
+            self.lane_count()
+        );
         let count = self.channel_count();
         let mut values = FamilyValues::from_slice(&[0.0; super::MAX_CHANNELS][..count]);
         if self.fits_degrees() {
