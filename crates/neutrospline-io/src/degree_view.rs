@@ -3,22 +3,26 @@
 
 use neutrospline::{DegreeKind, Degrees, Family};
 
-/// Column names of the scores of the original three families.
+/// Column names of the neutrosophic scores (docs/model.md section 7); the other families use
+/// the first one or two.
 const SCORES: [&str; 3] = ["score", "accuracy", "certainty"];
 
-/// The score, accuracy and certainty of a point's degrees (docs/model.md section 7).
+/// The score, accuracy and certainty of a neutrosophic point's degrees (docs/model.md
+/// section 7).
 fn scores(degrees: &Degrees) -> [f64; 3] {
     [degrees.score(), degrees.accuracy(), degrees.certainty()]
 }
 
 /// The degree columns of a family's table (docs/model.md, "Membership families"). The three
 /// families of the original model (neutrosophic, intuitionistic, fuzzy) keep the columns
-/// `truth, indeterminacy, falsity` (the intuitionistic indeterminacy is the hesitation) and the
-/// scores `score, accuracy, certainty` of section 7. Every other family has a column per
-/// channel it carries, then its derived degrees computed from the blended channels (the
-/// hesitation `(1 - T^q - F^q)^(1/q)`, the picture refusal, ...), and the scores `score,
-/// accuracy` of its literature (SPEC section 10). Rates (derivatives) are given for the
-/// channels only: a derived degree is not linear in them.
+/// `truth, indeterminacy, falsity` (the intuitionistic indeterminacy is the hesitation). Every
+/// other family has a column per channel (`truth_lower, truth_upper, ...` for the
+/// interval-valued ones, read from both lanes), then its derived degrees computed from the
+/// blended channels (the hesitation `(1 - T^q - F^q)^(1/q)`, the picture refusal, ...). The
+/// scores are the family's: `score, accuracy, certainty` of section 7 for the neutrosophic
+/// family, `score` and, where its literature has one, `accuracy` for every other family
+/// (SPEC section 10: intuitionistic T - F and T + F, fuzzy T). Rates (derivatives) are given
+/// for the channels only: a derived degree is not linear in them.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DegreeView {
     family: Family,
@@ -67,10 +71,13 @@ impl DegreeView {
         names
     }
 
-    /// The score column names.
+    /// The score column names: `score, accuracy, certainty` for the neutrosophic family
+    /// (docs/model.md section 7), else the family's `score` and, where its literature has
+    /// one, `accuracy` (SPEC section 10: the intuitionistic score is T - F with accuracy
+    /// T + F, the fuzzy score is T).
     pub fn score_names(&self) -> &'static [&'static str] {
         let zeros = vec![0.0; self.family.channel_count()];
-        if self.triple() {
+        if self.family == Family::Neutrosophic {
             &SCORES
         } else if self.family.accuracy(&zeros).is_some() {
             &SCORES[..2]
@@ -108,10 +115,10 @@ impl DegreeView {
     /// # Panics
     /// If `lanes` has fewer entries than the family has lanes.
     pub fn scores(&self, lanes: &[Degrees]) -> Vec<f64> {
-        if self.triple() {
+        if self.family == Family::Neutrosophic {
             return scores(&lanes[0]).to_vec();
         }
-        let channels = self.channels(lanes);
+        let channels = self.family.join(lanes);
         let mut values = vec![self.family.score(&channels)];
         values.extend(self.family.accuracy(&channels));
         values

@@ -230,7 +230,7 @@ fn a_value_that_breaks_the_rule_is_refused_with_the_rule() {
         ),
         (
             &["check", "int.toml"],
-            "error: int.toml:9: membership: the interval-type2 family has 2 channels (truth_lower, truth_upper); a truth, indeterminacy, falsity triple cannot hold them\n",
+            "error: int.toml:15: control_points[0]: key `truth` does not apply to membership interval-type2 (its channels: truth_lower, truth_upper)\n",
         ),
     ];
     for (args, want) in cases {

@@ -160,7 +160,8 @@ fn latex_table_compiles() {
          \\input{table.tex}\n\\end{document}\n",
         &["-layout"],
     );
-    // The middle row: t, x, y, T, I, F, then the score (2 + 0.55 - 0.075 - 0.375) / 3 = 0.7.
+    // The middle row: t, x, y, T, I, F, then the intuitionistic score T - F = 0.55 - 0.375 and
+    // its accuracy T + F = 0.925 (SPEC section 7: not the neutrosophic (2 + T - I - F) / 3).
     let row: Vec<&str> = text
         .lines()
         .find(|l| l.trim_start().starts_with("0.5 "))
@@ -168,8 +169,8 @@ fn latex_table_compiles() {
         .split_whitespace()
         .collect();
     assert_eq!(
-        row[..7],
-        ["0.5", "1", "1", "0.55", "0.075", "0.375", "0.7"],
+        row[..8],
+        ["0.5", "1", "1", "0.55", "0.075", "0.375", "0.175", "0.925"],
         "{text}"
     );
 }
