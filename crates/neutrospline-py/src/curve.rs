@@ -11,7 +11,8 @@ use std::sync::Arc;
 
 use neutrospline::{
     map_dimension, on_dimension, AnyCurve, BatchOptions, BatchParams, Bounded, ControlPolygon,
-    CurveBatch, CurveDerivative, CurveKind, Dimensional, DynCurve, Elevate, Evaluate, Split,
+    CurveBatch, CurveDerivative, CurveKind, Dimensional, DynCurve, Elevate, Evaluate, Family,
+    Split,
 };
 use neutrospline_io::Model;
 use pyo3::prelude::*;
@@ -27,6 +28,10 @@ mod construction;
 mod derived;
 use derived::bezier_as_bspline;
 mod evaluation;
+
+/// The core curves of a model's lanes (one, or two for an interval-valued or bipolar family),
+/// of one dimension.
+type LaneCurves<'a> = Dimensional<Vec<&'a AnyCurve<2>>, Vec<&'a AnyCurve<3>>>;
 
 /// A model curve with its prepared batch evaluator.
 #[derive(Clone, Debug)]
@@ -49,6 +54,9 @@ pub enum State {
     Model {
         model: Arc<Model>,
         curve: Dimensional<Prepared<2>, Prepared<3>>,
+        /// The second lane of a family of two lanes (docs/model.md, "Lanes"): the same
+        /// geometry with the second lane's degrees.
+        second: Option<Box<Dimensional<Prepared<2>, Prepared<3>>>>,
     },
     /// The derivative of order `order` of the curve of `base`: evaluable and differentiable;
     /// its values are rates of change, not degrees.
@@ -56,6 +64,8 @@ pub enum State {
         base: Arc<Model>,
         order: usize,
         derivative: Dimensional<CurveDerivative<2>, CurveDerivative<3>>,
+        /// The derivative of the second lane of a family of two lanes.
+        second: Option<Dimensional<CurveDerivative<2>, CurveDerivative<3>>>,
     },
 }
 
@@ -63,20 +73,48 @@ impl State {
     /// The state of a curve model (`None` for a surface).
     pub fn of_model(model: Model) -> Option<State> {
         let curve = map_dimension!(model.shape().curve()?, c => Prepared::new(c.clone()));
+        let second = model
+            .lanes()
+            .get(1)
+            .and_then(|lane| lane.curve())
+            .map(|lane| Box::new(map_dimension!(lane, c => Prepared::new(c.clone()))));
         Some(State::Model {
             model: Arc::new(model),
             curve,
+            second,
         })
     }
 
-    /// The derivative of order `order` (>= 1) of the curve of `base`.
+    /// The derivative of order `order` (>= 1) of the curve of `base` (of each lane).
     fn derivative_of(base: Arc<Model>, order: usize) -> Option<State> {
         let derivative = base.shape().curve()?.nth_derivative(order);
+        let second = base
+            .lanes()
+            .get(1)
+            .and_then(|lane| lane.curve())
+            .map(|lane| lane.nth_derivative(order));
         Some(State::Derivative {
             base,
             order,
             derivative,
+            second,
         })
+    }
+
+    /// The membership family of the model.
+    fn membership(&self) -> Family {
+        self.base().membership()
+    }
+
+    /// The columns of an evaluation: the dimension and the degree columns (3, or the channel
+    /// count of a family of two lanes).
+    fn columns(&self) -> usize {
+        self.dimension() + model::degree_columns(self.membership()).len()
+    }
+
+    /// Whether the model rides in two lanes.
+    fn wide(&self) -> bool {
+        model::is_wide(self.membership())
     }
 
     fn base(&self) -> &Arc<Model> {
@@ -108,7 +146,9 @@ impl State {
 /// A neutrosophic curve: the base class of `Bezier`, `BSpline` and `Nurbs`.
 ///
 /// Evaluating gives one row per parameter with the columns `x, y[, z], truth,
-/// indeterminacy, falsity` (the command line's `eval` columns).
+/// indeterminacy, falsity` (the command line's `eval` columns); a curve of an interval-valued
+/// or bipolar family gives `x, y[, z]` and its `channels` (the two lanes evaluated and joined,
+/// docs/model.md "Lanes").
 #[pyclass(extends = BaseShape, subclass, frozen, module = "neutrospline")]
 pub struct Curve {
     pub(crate) state: State,
@@ -183,10 +223,31 @@ impl Curve {
             .ok_or_else(|| invalid("a surface is not a curve"))
     }
 
+    /// The model's lanes as core curves of one dimension: the curve, and the second lane of a
+    /// family of two lanes (docs/model.md, "Lanes"); an error for a derivative.
+    fn lane_curves(&self) -> PyResult<LaneCurves<'_>> {
+        let (_, curve) = self.model()?;
+        let second = match &self.state {
+            State::Model { second, .. } => second.as_deref(),
+            State::Derivative { .. } => None,
+        };
+        Ok(match (curve, second) {
+            (Dimensional::Planar(a), None) => Dimensional::Planar(vec![&a.curve]),
+            (Dimensional::Spatial(a), None) => Dimensional::Spatial(vec![&a.curve]),
+            (Dimensional::Planar(a), Some(Dimensional::Planar(b))) => {
+                Dimensional::Planar(vec![&a.curve, &b.curve])
+            }
+            (Dimensional::Spatial(a), Some(Dimensional::Spatial(b))) => {
+                Dimensional::Spatial(vec![&a.curve, &b.curve])
+            }
+            _ => return Err(invalid("the lanes of the model differ in dimension")),
+        })
+    }
+
     /// The model and its curve; an error for a derivative (see `BaseShape::model`).
     fn model(&self) -> PyResult<(&Model, &Dimensional<Prepared<2>, Prepared<3>>)> {
         match &self.state {
-            State::Model { model, curve } => Ok((&**model, curve)),
+            State::Model { model, curve, .. } => Ok((&**model, curve)),
             State::Derivative { order, .. } => Err(invalid(format!(
                 "this is a derivative (order {order}): its values are rates of change, not \
                  degrees in [0, 1], so it is not a model; apply this to the curve itself"
@@ -204,11 +265,18 @@ impl Curve {
         out: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Py<PyAny>> {
         let domain = self.domain_range();
-        let columns = self.state.dimension() + 3;
+        let columns = self.state.columns();
         let output = Output::new(py, out, count, columns)?;
         let mut writer = output.write()?;
-        if let (State::Model { curve, .. }, Some(columns), true) =
-            (&self.state, writer.columns()?, count > 0)
+        if let (
+            State::Model {
+                curve,
+                second: None,
+                ..
+            },
+            Some(columns),
+            true,
+        ) = (&self.state, writer.columns()?, count > 0)
         {
             let options = BatchOptions::default();
             let result = on_dimension!(curve, c => py.detach(|| {
@@ -232,7 +300,9 @@ impl Curve {
     /// Evaluates at `t` (a float or 0-d array, or a 1-D array or sequence of any layout and
     /// real dtype: unaligned, byte-swapped, strided, read-only, float16/32/64, integers; the
     /// answer is the one for a fresh aligned float64 copy): an array of shape (len(t),
-    /// dimension + 3), columns x, y[, z], truth, indeterminacy, falsity (a 1-D row for a
+    /// dimension + 3), columns x, y[, z], truth, indeterminacy, falsity (dimension +
+    /// channel_count, x, y[, z] and the `channels`, for an interval-valued or bipolar
+    /// family: each channel blended with the same basis, `sum_i B_i(t) c_i`) (a 1-D row for a
     /// scalar `t`; no rows for an empty `t`). `None`, complex, boolean and string values raise
     /// `ModelError` naming the element (`t[3] = None is not a number`). The result is
     /// Fortran-ordered (each column contiguous); with `out` (an aligned, writeable, native
@@ -327,8 +397,8 @@ impl Curve {
     /// >>> np.allclose(left(1.0), ns.example1()(0.5), rtol=0, atol=1e-15), np.allclose(right(0.0), left(1.0), rtol=0, atol=1e-15)
     /// (True, True)
     fn split<'py>(&self, py: Python<'py>, t: f64) -> PyResult<Bound<'py, PyTuple>> {
-        let (_, curve) = self.model()?;
-        let pieces = on_dimension!(curve, c => self.derive(py, &c.curve, |c| {
+        let lanes = self.lane_curves()?;
+        let pieces = on_dimension!(&lanes, c => self.derive(py, c, |c| {
             let (left, right) = c.split(t).map_err(|e| invalid_at("t", e))?;
             Ok(vec![left, right])
         }))?;
@@ -342,8 +412,8 @@ impl Curve {
     /// 4
     #[pyo3(signature = (times = 1))]
     fn elevate(&self, py: Python<'_>, times: usize) -> PyResult<Py<PyAny>> {
-        let (_, curve) = self.model()?;
-        let mut curves = on_dimension!(curve, c => self.derive(py, &c.curve, |c| {
+        let lanes = self.lane_curves()?;
+        let mut curves = on_dimension!(&lanes, c => self.derive(py, c, |c| {
             let mut elevated = c.clone();
             for _ in 0..times {
                 elevated = elevated.elevate();
@@ -362,8 +432,8 @@ impl Curve {
     /// ('BSpline', [0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 1.0])
     #[pyo3(signature = (u, times = 1))]
     fn insert_knot(&self, py: Python<'_>, u: f64, times: usize) -> PyResult<Py<PyAny>> {
-        let (_, curve) = self.model()?;
-        let mut curves = on_dimension!(curve, c => self.derive(py, &c.curve, |c| {
+        let lanes = self.lane_curves()?;
+        let mut curves = on_dimension!(&lanes, c => self.derive(py, c, |c| {
             let mut spline = c.clone();
             for _ in 0..times {
                 spline = match spline {
@@ -379,18 +449,21 @@ impl Curve {
     }
 
     /// The tight bounding box of the curve: an array of shape (2, dimension + 3), the rows
-    /// the minimum and the maximum of each column (x, y[, z], truth, indeterminacy, falsity).
+    /// the minimum and the maximum of each column (x, y[, z], truth, indeterminacy, falsity;
+    /// of an interval-valued or bipolar family: x, y[, z] and its `channels`, shape (2,
+    /// dimension + channel_count)).
     ///
     /// >>> import neutrospline as ns
     /// >>> ns.example1().bounding_box()[:, 0].tolist()
     /// [1.0, 9.0]
     fn bounding_box<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let (_, curve) = self.model()?;
-        let (rows, columns) = on_dimension!(curve, c => {
-            let b = c.curve.bounding_box();
-            (b.min_max_rows().concat(), b.position.len() + 3)
+        let lanes = self.lane_curves()?;
+        let bounds: Vec<[Vec<f64>; 2]> = on_dimension!(&lanes, c => {
+            c.iter().map(|lane| lane.bounding_box().min_max_rows()).collect()
         });
-        readonly_array(py, rows, &[2, columns])
+        let (membership, dimension) = (self.state.membership(), self.state.dimension());
+        let rows = model::join_bounds(membership, dimension, &bounds).concat();
+        readonly_array(py, rows, &[2, self.state.columns()])
     }
 
     /// The length of the curve, to the relative `accuracy` (adaptive Gauss-Legendre on the
@@ -511,14 +584,21 @@ impl Curve {
         let found = py
             .detach(|| curve.nearest_rows(flat))
             .map_err(|e| invalid_at("points", e))?;
+        let columns = self.state.columns();
         let mut t = Vec::with_capacity(found.len());
         let mut distance = Vec::with_capacity(found.len());
-        let mut rows = Vec::with_capacity(found.len() * (dimension + 3));
+        let mut rows = Vec::with_capacity(found.len() * columns);
         for (k, result) in found.into_iter().enumerate() {
             let n = result.map_err(|e| invalid_at(format!("points[{k}]"), e))?;
             t.push(n.parameter);
             distance.push(n.distance);
             rows.extend(n.point.row());
+        }
+        if self.state.wide() {
+            // The rows of both lanes at the nearest parameters, joined into the channels.
+            rows = py
+                .detach(|| self.rows_at(&t))
+                .map_err(|e| invalid_at("points", e))?;
         }
         if single {
             let row = vector(py, rows).into_any();
@@ -537,7 +617,7 @@ impl Curve {
             [
                 vector(py, t).into_any(),
                 vector(py, distance).into_any(),
-                crate::arrays::new_array(py, rows, &[m, dimension + 3])?,
+                crate::arrays::new_array(py, rows, &[m, columns])?,
             ],
         )
     }
@@ -545,7 +625,9 @@ impl Curve {
     /// The intersections of this plane curve with `other` (another plane curve; omitted: the
     /// curve's self-intersections), as `neutrospline intersect`: an array of shape (k, 10),
     /// columns `t_a, t_b, x, y, truth_a, indeterminacy_a, falsity_a, truth_b,
-    /// indeterminacy_b, falsity_b`, ordered by `t_a`, one row per contact; curves that
+    /// indeterminacy_b, falsity_b` (a curve of an interval-valued or bipolar family gives its
+    /// `channels` at its parameter instead of the three degrees: shape (k, 4 + its degree
+    /// columns + the other's)), ordered by `t_a`, one row per contact; curves that
     /// overlap raise `ModelError`. With `contacts=True`, the pair `(array, contacts)`, where
     /// `contacts[k]` is how the curves meet at row k, the `contact` column of `intersect`:
     /// `"crossing"` (at an angle), `"tangent"` (the tangents agree: touching, osculating or
@@ -586,14 +668,31 @@ impl Curve {
             None => py.detach(|| a.self_intersections()),
         }
         .map_err(invalid)?;
-        let mut rows = Vec::with_capacity(found.len() * 10);
-        for hit in &found {
-            rows.extend_from_slice(&[hit.parameter_a, hit.parameter_b]);
-            rows.extend_from_slice(&hit.point_a.position);
-            rows.extend_from_slice(&hit.point_a.degrees.to_array());
-            rows.extend_from_slice(&hit.point_b.degrees.to_array());
+        let b_curve = other.map_or(self, |o| o.get());
+        let (width_a, width_b) = (self.state.columns() - 2, b_curve.state.columns() - 2);
+        let columns = 4 + width_a + width_b;
+        let mut rows = Vec::with_capacity(found.len() * columns);
+        if self.state.wide() || b_curve.state.wide() {
+            // Each curve's degree columns (its channels, for two lanes) at its parameter.
+            let ta: Vec<f64> = found.iter().map(|hit| hit.parameter_a).collect();
+            let tb: Vec<f64> = found.iter().map(|hit| hit.parameter_b).collect();
+            let a_rows = py.detach(|| self.rows_at(&ta)).map_err(invalid)?;
+            let b_rows = py.detach(|| b_curve.rows_at(&tb)).map_err(invalid)?;
+            for (k, hit) in found.iter().enumerate() {
+                rows.extend_from_slice(&[hit.parameter_a, hit.parameter_b]);
+                rows.extend_from_slice(&hit.point_a.position);
+                rows.extend_from_slice(&a_rows[k * (width_a + 2) + 2..(k + 1) * (width_a + 2)]);
+                rows.extend_from_slice(&b_rows[k * (width_b + 2) + 2..(k + 1) * (width_b + 2)]);
+            }
+        } else {
+            for hit in &found {
+                rows.extend_from_slice(&[hit.parameter_a, hit.parameter_b]);
+                rows.extend_from_slice(&hit.point_a.position);
+                rows.extend_from_slice(&hit.point_a.degrees.to_array());
+                rows.extend_from_slice(&hit.point_b.degrees.to_array());
+            }
         }
-        let array = crate::arrays::new_array(py, rows, &[found.len(), 10])?;
+        let array = crate::arrays::new_array(py, rows, &[found.len(), columns])?;
         if !contacts {
             return Ok(array);
         }
@@ -656,7 +755,8 @@ impl Curve {
         readonly_array(py, positions, &[n, d])
     }
 
-    /// The control points' membership degrees, shape (n, 3): truth, indeterminacy, falsity,
+    /// The control points' membership degrees, shape (n, 3): truth, indeterminacy, falsity
+    /// (of an interval-valued or bipolar family: shape (n, channel_count), its `channels`),
     /// read-only (of a polynomial derivative: their rates of change). Not the polynomial
     /// `degree`.
     ///
@@ -666,7 +766,8 @@ impl Curve {
     #[getter]
     fn membership_degrees<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let (_, degrees, n, _) = self.control_rows()?;
-        readonly_array(py, degrees, &[n, 3])
+        let width = self.state.columns() - self.state.dimension();
+        readonly_array(py, degrees, &[n, width])
     }
 
     /// The NURBS weights, shape (n,), read-only; None for other kinds.
@@ -746,30 +847,56 @@ impl Curve {
     /// Positions and degrees of the control points (of a polynomial derivative: its control
     /// values), with their count and dimension.
     fn control_rows(&self) -> PyResult<(Vec<f64>, Vec<f64>, usize, usize)> {
+        let dim = self.state.dimension();
         match &self.state {
-            State::Model { curve, .. } => Ok(on_dimension!(curve, c => {
+            State::Model { curve, model, .. } => Ok(on_dimension!(curve, c => {
                 let points = c.curve.control_points();
                 let (p, d) = model::point_rows(&points);
+                let d = if self.state.wide() { model::control_degree_rows(model) } else { d };
                 (p, d, points.len(), c.curve.start().map_or(0, |s| s.position.len()))
             })),
             State::Derivative {
-                derivative, order, ..
-            } => on_dimension!(derivative, d => {
-                let values = d.control_values().ok_or_else(|| {
+                derivative,
+                order,
+                second,
+                ..
+            } => {
+                let rational = || {
                     invalid(format!(
                         "the derivative (order {order}) of a NURBS curve is rational: it has no \
                          control points of its own (evaluate it instead)"
                     ))
-                })?;
-                let n = values.len();
-                let dim = self.state.dimension();
-                let positions = values.iter().flat_map(|v| v.position).collect();
-                let degrees = values
-                    .iter()
-                    .flat_map(|v| [v.truth, v.indeterminacy, v.falsity])
+                };
+                // Each lane's control values as rows x, y[, z], dT, dI, dF.
+                let lanes = core::iter::once(derivative)
+                    .chain(second.as_ref())
+                    .map(|lane| {
+                        on_dimension!(lane, d => {
+                            let values = d.control_values().ok_or_else(rational)?;
+                            Ok(values
+                                .iter()
+                                .flat_map(|v| {
+                                    v.position
+                                        .into_iter()
+                                        .chain([v.truth, v.indeterminacy, v.falsity])
+                                })
+                                .collect::<Vec<f64>>())
+                        })
+                    })
+                    .collect::<PyResult<Vec<Vec<f64>>>>()?;
+                let n = lanes[0].len() / (dim + 3);
+                let positions = lanes[0]
+                    .chunks_exact(dim + 3)
+                    .flat_map(|row| row[..dim].to_vec())
+                    .collect();
+                let joined = model::join_rows(self.state.membership(), dim, &lanes);
+                let width = self.state.columns();
+                let degrees = joined
+                    .chunks_exact(width)
+                    .flat_map(|row| row[dim..].to_vec())
                     .collect();
                 Ok((positions, degrees, n, dim))
-            }),
+            }
         }
     }
 }

@@ -189,6 +189,7 @@ pub fn fit<'py>(
             .map_err(invalid)?;
     }
     let membership_rule = request.membership;
+    refuse_lanes(membership_rule)?;
     let source = read_source(data, degrees, membership_rule, input)?;
     let description = match &source {
         Source::File(table, None) => format!(
@@ -401,6 +402,7 @@ pub fn fit_surface<'py>(
         None => None,
     };
     let membership = request.membership;
+    refuse_lanes(membership)?;
     let fit_options = request.validate().map_err(invalid)?;
     let uv = parameters
         .map(|p| {
@@ -588,4 +590,25 @@ fn refuse_arrays(given: [bool; 3], columns: &str, weights: &str) -> PyResult<()>
         return Err(invalid_at("weights", weights));
     }
     Ok(())
+}
+
+/// Refuses a fit under an interval-valued or bipolar family: the fitter fits one set of
+/// control points with truth, indeterminacy and falsity, and keeps the rule of one lane;
+/// the rule joining two lanes (lower <= upper, the bipolar signs) across the fitted control
+/// points is not among its constraints (docs/model.md, "Lanes").
+fn refuse_lanes(membership: Family) -> PyResult<()> {
+    if !crate::model::is_wide(membership) {
+        return Ok(());
+    }
+    Err(crate::errors::invalid_at(
+        "membership",
+        format!(
+            "a fit under the {membership} family is refused: its {} channels ({}) ride in two \
+             lanes, and the fitter fits the three degrees of one lane without the rule joining \
+             the lanes, so the fitted channels could break it; fit under a family of one lane \
+             (neutrosophic, intuitionistic, ...)",
+            membership.channel_count(),
+            membership.channels().join(", ")
+        ),
+    ))
 }

@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use neutrospline::options::OptionSet;
-use neutrospline::{AxisSet, AxisSetName, Degrees, PointRelation};
+use neutrospline::{AxisSet, AxisSetName, Degrees, Family, PointRelation};
 use neutrospline_exchange::{ImportReport, ImportRequest, SourceFormat};
 use neutrospline_io::{Format, Kind, KnotSpec, Model, ReadOptions, TableInput};
 use pyo3::prelude::*;
@@ -345,27 +345,145 @@ fn measure(
     }
 }
 
-/// The score `(2 + truth - indeterminacy - falsity) / 3` of degree triples (an array of shape
-/// (..., 3); a float for one triple), in [0, 1]: 1 fully true, 0 fully false.
+/// Applies `measure` to the channel values of every row of `degrees` (shape (...,
+/// channel_count), the family's channels in the last axis), each checked against the rule;
+/// `measure` gives the values of one row (or a refusal).
+fn measure_channels(
+    py: Python<'_>,
+    degrees: &Bound<'_, PyAny>,
+    membership: &str,
+    width: usize,
+    measure: impl Fn(Family, &[f64]) -> PyResult<Vec<f64>>,
+) -> PyResult<Py<PyAny>> {
+    let family = model::membership(membership)?;
+    let array = float_array(degrees, "degrees")?;
+    let shape = array.shape().to_vec();
+    let count = family.channel_count();
+    if shape.last() != Some(&count) {
+        return Err(invalid_at(
+            "degrees",
+            format!(
+                "expected an array of shape (..., {count}) (the {family} channels {} in the last \
+                 axis), got shape {shape:?}",
+                family.channels().join(", ")
+            ),
+        ));
+    }
+    let values = array.values()?;
+    let mut results = Vec::with_capacity(values.len() / count * width);
+    for (k, row) in values.chunks_exact(count).enumerate() {
+        family
+            .check(row)
+            .map_err(|e| invalid_at(format!("degrees[{k}]"), e))?;
+        results.extend(measure(family, row)?);
+    }
+    let mut outer = shape[..shape.len() - 1].to_vec();
+    if width != 1 {
+        outer.push(width);
+    }
+    if outer.is_empty() {
+        Ok(results[0].into_pyobject(py)?.into_any().unbind())
+    } else {
+        Ok(new_array(py, results, &outer)?.unbind())
+    }
+}
+
+/// The score of degree values, in [0, 1]: without `membership`, the neutrosophic score
+/// `(2 + truth - indeterminacy - falsity) / 3` of triples (an array of shape (..., 3); a
+/// float for one triple), 1 fully true, 0 fully false. With `membership`, the family's score
+/// (docs/model.md, "Membership families") of its channel values (shape (...,
+/// channel_count), in the order of its `channels`), such as `(4 + T_L + T_U - I_L - I_U -
+/// F_L - F_U) / 6` for `interval-neutrosophic` and `(3 + T+ - I+ - F+ + T- - I- - F-) / 6`
+/// for `bipolar-neutrosophic`; each row is checked against the family's rule.
 ///
 /// >>> import neutrospline as ns
 /// >>> round(ns.score([0.7, 0.1, 0.2]), 15)
 /// 0.8
 /// >>> ns.score([[1, 0, 0], [0, 1, 1]]).tolist()
 /// [1.0, 0.0]
+/// >>> ns.score([0.25, 0.75], membership="interval-type2")
+/// 0.5
 #[pyfunction]
-pub fn score(py: Python<'_>, degrees: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-    measure(py, degrees, Degrees::score)
+#[pyo3(signature = (degrees, *, membership = None))]
+pub fn score(
+    py: Python<'_>,
+    degrees: &Bound<'_, PyAny>,
+    membership: Option<&str>,
+) -> PyResult<Py<PyAny>> {
+    match membership {
+        None => measure(py, degrees, Degrees::score),
+        Some(name) => measure_channels(py, degrees, name, 1, |family, row| {
+            Ok(vec![family.score(row)])
+        }),
+    }
 }
 
-/// The accuracy `truth - falsity` of degree triples (shape (..., 3)), in [-1, 1].
+/// The accuracy that breaks ties of the score: without `membership`, `truth - falsity` of
+/// degree triples (shape (..., 3)), in [-1, 1]; with `membership`, the family's accuracy of
+/// its channel values (shape (..., channel_count)), such as `(T_L + T_U + F_L + F_U) / 2` for
+/// `interval-intuitionistic`. The families whose literature ranks by the score alone (fuzzy,
+/// interval-neutrosophic, interval-type2, bipolar-neutrosophic) have none: `ModelError`.
 ///
 /// >>> import neutrospline as ns
 /// >>> round(ns.accuracy([0.7, 0.1, 0.2]), 15)
 /// 0.5
 #[pyfunction]
-pub fn accuracy(py: Python<'_>, degrees: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-    measure(py, degrees, Degrees::accuracy)
+#[pyo3(signature = (degrees, *, membership = None))]
+pub fn accuracy(
+    py: Python<'_>,
+    degrees: &Bound<'_, PyAny>,
+    membership: Option<&str>,
+) -> PyResult<Py<PyAny>> {
+    match membership {
+        None => measure(py, degrees, Degrees::accuracy),
+        Some(name) => measure_channels(py, degrees, name, 1, |family, row| {
+            family.accuracy(row).map(|a| vec![a]).ok_or_else(|| {
+                invalid_at(
+                    "membership",
+                    format!(
+                        "the {family} family has no accuracy: its literature ranks its values \
+                         by the score alone"
+                    ),
+                )
+            })
+        }),
+    }
+}
+
+/// The degrees derived from a family's channel values (shape (..., channel_count), in the
+/// order of its `channels`), as an array of shape (..., len(names)) with their `names`
+/// (`Family::derived`): `hesitation` (intuitionistic, orthopair and spherical families),
+/// `refusal` (picture), `hesitation_lower, hesitation_upper` (interval-intuitionistic: `1 -
+/// T_U - F_U`, `1 - T_L - F_L`), `type_reduced, footprint` (interval-type2: `(M_L + M_U) /
+/// 2`, `M_U - M_L`). Returns the pair `(values, names)`; a family without derived degrees
+/// raises `ModelError`.
+///
+/// >>> import neutrospline as ns
+/// >>> values, names = ns.derived_degrees([[0.25, 0.75]], membership="interval-type2")
+/// >>> values.tolist(), names
+/// ([[0.5, 0.5]], ['type_reduced', 'footprint'])
+#[pyfunction]
+#[pyo3(signature = (degrees, *, membership))]
+pub fn derived_degrees<'py>(
+    py: Python<'py>,
+    degrees: &Bound<'py, PyAny>,
+    membership: &str,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let family = model::membership(membership)?;
+    let names = family.derived_names();
+    if names.is_empty() {
+        return Err(invalid_at(
+            "membership",
+            format!("the {family} family derives no degrees from its channels"),
+        ));
+    }
+    let values = measure_channels(py, degrees, membership, names.len(), |family, row| {
+        Ok(family.derived(row).to_vec())
+    })?;
+    PyTuple::new(
+        py,
+        [values.into_bound(py), PyList::new(py, names)?.into_any()],
+    )
 }
 
 /// The certainty `truth` of degree triples (shape (..., 3)), in [0, 1].

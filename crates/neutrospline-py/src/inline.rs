@@ -142,20 +142,23 @@ fn request_for(model: &Model, setting: &Inline) -> PyResult<FigureRequest> {
     Ok(request)
 }
 
-/// The inline SVG of `model`, responsive, or `None` when the setting gives PNG only.
+/// The inline SVG of `model`, responsive, or `None` when the setting gives PNG only (or the
+/// model is of a family of two lanes, which the figures do not draw: Jupyter then shows the
+/// text `repr`).
 pub fn svg(py: Python<'_>, model: &Model) -> PyResult<Option<String>> {
     let setting = current();
-    if setting.format == Format::Png {
+    if setting.format == Format::Png || model::is_wide(model.membership()) {
         return Ok(None);
     }
     let text = model::svg(py, model, &request_for(model, &setting)?)?;
     Ok(Some(responsive(&text)))
 }
 
-/// The inline PNG of `model`, or `None` when the setting gives SVG only.
+/// The inline PNG of `model`, or `None` when the setting gives SVG only (or the model is of a
+/// family of two lanes, as for [`svg`]).
 pub fn png<'py>(py: Python<'py>, model: &Model) -> PyResult<Option<Bound<'py, PyBytes>>> {
     let setting = current();
-    if setting.format == Format::Svg {
+    if setting.format == Format::Svg || model::is_wide(model.membership()) {
         return Ok(None);
     }
     let request = request_for(model, &setting)?;

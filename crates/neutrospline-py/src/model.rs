@@ -39,16 +39,26 @@ impl Meta {
     }
 }
 
-/// Parses a membership rule name (`neutrosophic`, `intuitionistic`, `fuzzy`).
+/// Parses a membership family name (`neutrosophic`, `pythagorean`, `q-rung:4`,
+/// `interval-neutrosophic`, ...).
 pub fn membership(name: &str) -> PyResult<Family> {
     Family::from_str(name).map_err(|e| invalid_at("membership", e))
 }
 
-/// The model of `shape` under `membership`, with the names of `meta`.
-pub fn model(shape: impl Into<Shape>, membership: Family, meta: Meta) -> PyResult<Model> {
-    let mut model = Model::new(shape)
-        .with_membership(membership)
-        .map_err(invalid)?;
+/// The model of `shape` under `membership`, with the names of `meta`. A family of two lanes
+/// (interval-valued, bipolar: docs/model.md, "Lanes") takes its second lane `second`, a shape
+/// of the same geometry; a family of one lane takes none.
+pub fn model(
+    shape: impl Into<Shape>,
+    second: Option<Shape>,
+    membership: Family,
+    meta: Meta,
+) -> PyResult<Model> {
+    let mut model = match second {
+        Some(second) => Model::new(shape).with_lanes(membership, second),
+        None => Model::new(shape).with_membership(membership),
+    }
+    .map_err(invalid)?;
     if let Some(name) = meta.name {
         model = model.with_name(name);
     }
@@ -64,11 +74,13 @@ pub fn model(shape: impl Into<Shape>, membership: Family, meta: Meta) -> PyResul
 }
 
 /// A model like `like` (membership, name, description; point names when the count is
-/// unchanged) for a new shape derived from its shape by `split`, `elevate` and the like, with
-/// the derived shape's `spreads` when the model is fuzzy.
+/// unchanged) for a new shape derived from its shape by `split`, `elevate` and the like (and
+/// the same operation's `second` lane for a family of two lanes), with the derived shape's
+/// `spreads` when the model is fuzzy.
 pub fn derived(
     like: &Model,
     shape: impl Into<Shape>,
+    second: Option<Shape>,
     spreads: Option<Vec<neutrospline::Spread<3>>>,
 ) -> PyResult<Model> {
     let shape = shape.into();
@@ -79,7 +91,7 @@ pub fn derived(
         point_names: (names.len() == shape.control_count() && names.iter().any(Option::is_some))
             .then(|| names.to_vec()),
     };
-    let model = model(shape, like.membership(), meta)?;
+    let model = model(shape, second, like.membership(), meta)?;
     match spreads {
         Some(spreads) => model.with_spreads(spreads).map_err(invalid),
         None => Ok(model),
@@ -87,15 +99,21 @@ pub fn derived(
 }
 
 /// Control points from `positions` (`(n, dimension)`, or `rows x cols` grids when `grid`) and
-/// `degrees` (`(n, 3)` as truth, indeterminacy, falsity; `(n, 2)` as truth, falsity under
-/// the intuitionistic rule; `(n,)` or `(n, 1)` truth alone under the fuzzy rule).
+/// `degrees` (`(n, 3)` as truth, indeterminacy, falsity; `(n, channel_count)` as the family's
+/// channels, such as `(n, 2)` truth, falsity under the intuitionistic rule; `(n,)` or `(n, 1)`
+/// truth alone under the fuzzy rule). An interval-valued or bipolar family takes exactly its
+/// `(n, channel_count)` channels (`Family::channels`), split into its two lanes
+/// (`Family::split`, docs/model.md "Lanes").
 pub struct PointArrays {
     /// The positions, point-major.
     pub positions: Vec<f64>,
     /// Coordinates per point.
     pub dimension: usize,
-    /// The degrees, one triple per point.
+    /// The degrees of the first lane, one triple per point.
     pub degrees: Vec<Degrees>,
+    /// The degrees of the second lane of a family of two lanes (`upper`, or the negated
+    /// `negative` bipolar degrees), one triple per point.
+    pub second: Option<Vec<Degrees>>,
     /// `(rows, cols)` of a grid.
     pub grid: Option<(usize, usize)>,
 }
@@ -136,21 +154,32 @@ impl PointArrays {
             }
         };
         let flat = positions.values()?.to_vec();
-        let degrees = read_degrees(&degree_array, &shape[..shape.len() - 1], membership)?;
+        let (degrees, second) = read_degrees(&degree_array, &shape[..shape.len() - 1], membership)?;
         debug_assert_eq!(degrees.len(), count);
         Ok(PointArrays {
             positions: flat,
             dimension,
             degrees,
+            second,
             grid,
         })
     }
 
-    /// The control points, with `D` equal to [`PointArrays::dimension`].
+    /// The control points (of the first lane), with `D` equal to [`PointArrays::dimension`].
     pub fn points<const D: usize>(&self) -> Vec<ControlPoint<D>> {
+        self.lane_points(&self.degrees)
+    }
+
+    /// The control points of the second lane of a family of two lanes: the same positions
+    /// with the second lane's degrees.
+    pub fn second_points<const D: usize>(&self) -> Option<Vec<ControlPoint<D>>> {
+        self.second.as_ref().map(|d| self.lane_points(d))
+    }
+
+    fn lane_points<const D: usize>(&self, degrees: &[Degrees]) -> Vec<ControlPoint<D>> {
         self.positions
             .chunks_exact(D)
-            .zip(&self.degrees)
+            .zip(degrees)
             .map(|(p, &d)| {
                 let mut position = [0.0; D];
                 position.copy_from_slice(p);
@@ -160,16 +189,22 @@ impl PointArrays {
     }
 }
 
+/// The degrees of the lanes of the two lanes of a family, per point.
+type LaneRows = (Vec<Degrees>, Option<Vec<Degrees>>);
+
 /// The degrees of `points` points (the leading shape `points`), one row each, checked under
-/// `membership`; a bad value is named as `degrees[i]` (or `degrees[i, j]` on a grid).
+/// `membership`; a bad value is named as `degrees[i]` (or `degrees[i, j]` on a grid). A
+/// family of two lanes gives the second lane's degrees too.
 fn read_degrees(
     array: &FloatArray<'_>,
     points: &[usize],
     membership: Family,
-) -> PyResult<Vec<Degrees>> {
+) -> PyResult<LaneRows> {
     let shape = array.shape();
     let count = membership.channel_count();
+    let wide = membership.lane_count() == 2;
     let columns = match count {
+        _ if wide => format!("{count} ({})", membership.channels().join(", ")),
         3 => "3 (truth, indeterminacy, falsity)".to_owned(),
         1 => "1 (truth) or 3 (truth, 0, 0), or no last axis".to_owned(),
         _ => format!(
@@ -184,7 +219,7 @@ fn read_degrees(
     } else {
         None
     };
-    let allowed = width.filter(|&w| w == 3 || w == count);
+    let allowed = width.filter(|&w| w == count || (w == 3 && !wide));
     let Some(width) = allowed else {
         return Err(invalid_at(
             "degrees",
@@ -196,21 +231,137 @@ fn read_degrees(
     };
     let values = array.values()?;
     let cols = points.get(1).copied();
-    values
-        .chunks_exact(width)
-        .enumerate()
+    let at = |k: usize| match cols {
+        Some(c) if points.len() == 2 => format!("degrees[{}, {}]", k / c, k % c),
+        _ => format!("degrees[{k}]"),
+    };
+    let rows = values.chunks_exact(width).enumerate();
+    if wide {
+        let mut first = Vec::with_capacity(values.len() / width.max(1));
+        let mut second = Vec::with_capacity(first.capacity());
+        for (k, row) in rows {
+            let (lanes, _) = membership.split(row).map_err(|e| invalid_at(at(k), e))?;
+            first.push(lanes[0]);
+            second.push(lanes[1]);
+        }
+        return Ok((first, Some(second)));
+    }
+    let first = rows
         .map(|(k, row)| {
-            let at = || match cols {
-                Some(c) if points.len() == 2 => format!("degrees[{}, {}]", k / c, k % c),
-                _ => format!("degrees[{k}]"),
-            };
             match *row {
                 [t, i, f] => Degrees::with_membership(membership, t, Some(i), Some(f)),
                 _ => membership.to_degrees(row),
             }
-            .map_err(|e| invalid_at(at(), e))
+            .map_err(|e| invalid_at(at(k), e))
         })
-        .collect()
+        .collect::<PyResult<_>>()?;
+    Ok((first, None))
+}
+
+/// Whether `membership` rides in two lanes (the interval-valued and bipolar families).
+pub fn is_wide(membership: Family) -> bool {
+    membership.lane_count() == 2
+}
+
+/// The names of the degree columns of a model's arrays (evaluation, control degrees, bounding
+/// boxes): `truth, indeterminacy, falsity` for a family of one lane, the family's channels
+/// (`Family::channels`) for one of two lanes.
+pub fn degree_columns(membership: Family) -> Vec<&'static str> {
+    if is_wide(membership) {
+        membership.channels().to_vec()
+    } else {
+        vec!["truth", "indeterminacy", "falsity"]
+    }
+}
+
+/// Joins the rows of the lanes of one evaluation (or of derivative rates): `lanes[l]` holds
+/// `m` rows of `dimension + 3` values (position, the lane's three slots), row-major; the
+/// result holds `m` rows of the position and `degree_columns(membership)` values, the slots
+/// of each lane joined into the family's channels (`Family::join_slots`, a linear map, so it
+/// serves rates as well as values).
+pub fn join_rows(membership: Family, dimension: usize, lanes: &[Vec<f64>]) -> Vec<f64> {
+    let stride = dimension + 3;
+    let m = lanes.first().map_or(0, |l| l.len() / stride);
+    if !is_wide(membership) {
+        return lanes.first().cloned().unwrap_or_default();
+    }
+    let mut out = Vec::with_capacity(m * (dimension + membership.channel_count()));
+    for k in 0..m {
+        let row = &lanes[0][k * stride..(k + 1) * stride];
+        out.extend_from_slice(&row[..dimension]);
+        let slots: Vec<[f64; 3]> = lanes
+            .iter()
+            .map(|lane| {
+                let r = &lane[k * stride + dimension..(k + 1) * stride];
+                [r[0], r[1], r[2]]
+            })
+            .collect();
+        out.extend_from_slice(&membership.join_slots(&slots));
+    }
+    out
+}
+
+/// Joins the bounds of the lanes: `lanes[l]` is `[min, max]` of a lane's `dimension + 3`
+/// columns; the result is `[min, max]` of the position and the family's channels (a negated
+/// lane's minimum is the negative of its slot's maximum).
+pub fn join_bounds(membership: Family, dimension: usize, lanes: &[[Vec<f64>; 2]]) -> [Vec<f64>; 2] {
+    if !is_wide(membership) {
+        return lanes[0].clone();
+    }
+    let count = membership.channel_count();
+    let mut low = lanes[0][0][..dimension].to_vec();
+    let mut high = lanes[0][1][..dimension].to_vec();
+    low.resize(dimension + count, 0.0);
+    high.resize(dimension + count, 0.0);
+    for (lane, [lo, hi]) in membership.lanes().iter().zip(lanes) {
+        for (slot, channel) in lane.slots.iter().enumerate() {
+            let Some(c) = channel else { continue };
+            let (a, b) = (lo[dimension + slot], hi[dimension + slot]);
+            let (a, b) = if lane.negated {
+                (0.0 - b, 0.0 - a)
+            } else {
+                (a, b)
+            };
+            low[dimension + c] = a;
+            high[dimension + c] = b;
+        }
+    }
+    [low, high]
+}
+
+/// The control degrees of `model` as rows of `degree_columns` values: the triples of a family
+/// of one lane, the channels (`Model::control_channels`) of one of two.
+pub fn control_degree_rows(model: &Model) -> Vec<f64> {
+    if is_wide(model.membership()) {
+        model
+            .control_channels()
+            .iter()
+            .flat_map(|c| c.to_vec())
+            .collect()
+    } else {
+        model
+            .shape()
+            .control_degrees()
+            .iter()
+            .flat_map(Degrees::to_array)
+            .collect()
+    }
+}
+
+/// Refuses a figure of a model of two lanes: the figures draw truth, indeterminacy and
+/// falsity, one lane's worth of degrees.
+pub fn drawable(model: &Model) -> PyResult<()> {
+    let membership = model.membership();
+    if !is_wide(membership) {
+        return Ok(());
+    }
+    Err(invalid(format!(
+        "the figures draw the three degrees truth, indeterminacy and falsity; a model of the \
+         {membership} family carries {} channels ({}) in two lanes, which a figure would show \
+         only half of: evaluate it (the columns are its channels) or save it instead",
+        membership.channel_count(),
+        membership.channels().join(", ")
+    )))
 }
 
 /// Positions, degrees and weights of control points as row-major values.
@@ -251,6 +402,7 @@ pub fn prepare(model: &Model, request: &FigureRequest) -> PyResult<(PlotModel, V
 
 /// The SVG text of a figure of `model`.
 pub fn svg(py: Python<'_>, model: &Model, request: &FigureRequest) -> PyResult<String> {
+    drawable(model)?;
     let (figure, view, options) = prepare(model, request)?;
     py.detach(|| render_svg(&figure, view, &options))
         .map_err(invalid)
@@ -265,6 +417,7 @@ pub fn save_figure(
     request: &FigureRequest,
 ) -> PyResult<()> {
     let format = FigureFormat::from_path(path).map_err(invalid)?;
+    drawable(model)?;
     let (figure, view, options) = prepare(model, request)?;
     let bytes = py
         .detach(|| render_figure(&figure, view, &options, format))

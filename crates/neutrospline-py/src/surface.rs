@@ -34,6 +34,9 @@ use crate::shape::BaseShape;
 pub struct Surface {
     model: Arc<Model>,
     surface: CoreSurface,
+    /// The second lane of a family of two lanes (docs/model.md, "Lanes"): the same geometry
+    /// with the second lane's degrees.
+    second: Option<CoreSurface>,
 }
 
 /// A Bézier surface `S(u, v) = sum_i sum_j B_i^m(u) B_j^n(v) P_ij` over [0, 1] x [0, 1].
@@ -58,13 +61,45 @@ pub struct NurbsSurface;
 impl Surface {
     /// The surface of a surface model (`None` for a curve).
     pub fn of_model(model: Model) -> Option<Surface> {
+        let second = match model.lanes().get(1) {
+            Some(Shape::Surface(s)) => Some(s.clone()),
+            _ => None,
+        };
         match model.shape() {
             Shape::Surface(s) => Some(Surface {
                 surface: s.clone(),
+                second,
                 model: Arc::new(model),
             }),
             _ => None,
         }
+    }
+
+    /// The lanes: the surface, and the second lane of a family of two lanes.
+    fn lanes(&self) -> Vec<&CoreSurface> {
+        core::iter::once(&self.surface)
+            .chain(self.second.as_ref())
+            .collect()
+    }
+
+    /// The number of degree columns: 3, or the channel count of a family of two lanes.
+    fn degree_columns(&self) -> usize {
+        model::degree_columns(self.model.membership()).len()
+    }
+
+    /// The row `x, y, z, degree columns` at `(u, v)`: the lanes evaluated and joined.
+    fn row_at(&self, u: f64, v: f64) -> Result<Vec<f64>, neutrospline::EvalError> {
+        let lanes = self
+            .lanes()
+            .into_iter()
+            .map(|lane| {
+                let p = lane.evaluate(u, v)?;
+                let mut row = p.position.to_vec();
+                row.extend_from_slice(&p.degrees.to_array());
+                Ok(row)
+            })
+            .collect::<Result<Vec<_>, neutrospline::EvalError>>()?;
+        Ok(model::join_rows(self.model.membership(), 3, &lanes))
     }
 
     /// The class chain of this surface: the base `Shape` (the model) and the surface.
@@ -139,7 +174,24 @@ fn build(
     let (rows, cols) = arrays
         .grid
         .ok_or_else(|| invalid_at("positions", "expected a grid of shape (rows, cols, 3)"))?;
-    let points = arrays.points::<3>();
+    let surface = grid_surface(&settings, rows, cols, arrays.points::<3>())?;
+    // A family of two lanes: the second lane is the same surface with the second lane's
+    // degrees (docs/model.md, "Lanes").
+    let second = arrays
+        .second_points::<3>()
+        .map(|points| grid_surface(&settings, rows, cols, points))
+        .transpose()?;
+    let model = model::model(surface, second.map(Shape::from), membership, meta)?;
+    Ok(Surface::of_model(model).expect("a surface shape"))
+}
+
+/// The surface of the kind of `settings` through the control grid `points`.
+fn grid_surface(
+    settings: &Settings<'_, '_>,
+    rows: usize,
+    cols: usize,
+    points: Vec<neutrospline::ControlPoint<3>>,
+) -> PyResult<CoreSurface> {
     let surface = match settings.kind {
         SurfaceKind::Bezier => CoreSurface::bezier(rows, cols, points),
         kind => {
@@ -171,8 +223,7 @@ fn build(
         }
     }
     .map_err(invalid)?;
-    let model = model::model(surface, membership, meta)?;
-    Ok(Surface::of_model(model).expect("a surface shape"))
+    Ok(surface)
 }
 
 /// `u` and `v` as flat parameter lists of one shape.
@@ -258,8 +309,10 @@ fn names(name: Option<String>, description: Option<String>) -> Meta {
 #[pymethods]
 impl BezierSurface {
     /// A Bézier surface from `positions` of shape (rows, cols, 3) and `degrees` of shape
-    /// (rows, cols, 3) (truth, indeterminacy, falsity; (rows, cols, 2) truth, falsity under
-    /// the intuitionistic rule; (rows, cols) truth under the fuzzy rule).
+    /// (rows, cols, 3) (truth, indeterminacy, falsity; (rows, cols, channel_count) the
+    /// family's channels, such as (rows, cols, 2) truth, falsity under the intuitionistic
+    /// rule; (rows, cols) truth under the fuzzy rule). An interval-valued or bipolar family
+    /// takes exactly (rows, cols, channel_count), in the order of its `channels`.
     #[new]
     #[pyo3(signature = (positions, degrees, membership = "neutrosophic", *, name = None, description = None))]
     fn new(
@@ -335,8 +388,9 @@ impl NurbsSurface {
 impl Surface {
     /// Evaluates at `(u, v)` (numbers, or arrays of one shape S, of any layout and real dtype
     /// as for `Curve.evaluate`): an array of shape S + (6,), columns x, y, z, truth,
-    /// indeterminacy, falsity; written into `out` (an aligned, writeable, native float64 array
-    /// of that shape) when given. The GIL is released while the engine runs.
+    /// indeterminacy, falsity (S + (3 + channel_count,) for an interval-valued or bipolar
+    /// family: x, y, z and its `channels`); written into `out` (an aligned, writeable, native
+    /// float64 array of that shape) when given. The GIL is released while the engine runs.
     #[pyo3(signature = (u, v, out = None))]
     fn evaluate(
         &self,
@@ -346,19 +400,17 @@ impl Surface {
         out: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Py<PyAny>> {
         let (params, shape) = parameters(u, v)?;
-        let surface = &self.surface;
+        let columns = 3 + self.degree_columns();
         let values = py
             .detach(|| {
-                let mut values = Vec::with_capacity(params.len() * 6);
+                let mut values = Vec::with_capacity(params.len() * columns);
                 for (k, &[u, v]) in params.iter().enumerate() {
-                    let p = surface.evaluate(u, v).map_err(|e| (k, e))?;
-                    values.extend_from_slice(&p.position);
-                    values.extend_from_slice(&p.degrees.to_array());
+                    values.extend(self.row_at(u, v).map_err(|e| (k, e))?);
                 }
                 Ok(values)
             })
             .map_err(|(k, e)| invalid_at(format!("(u, v){}", index_text(k, &shape)), e))?;
-        emit(py, values, &shape, 6, out)
+        emit(py, values, &shape, columns, out)
     }
 
     /// `surface(u, v)` is `surface.evaluate(u, v)`.
@@ -403,8 +455,9 @@ impl Surface {
 
     /// The nearest points of the surface to query `points` (shape (m, 3), or one point of
     /// shape (3,)): the global minimum, as `neutrospline query`. Returns `(uv, distance,
-    /// rows)`: the parameters (m, 2), the distances (m,) and the surface's rows there (m, 6);
-    /// one of each for a single point.
+    /// rows)`: the parameters (m, 2), the distances (m,) and the surface's rows there (m, 6),
+    /// or (m, 3 + channel_count) for an interval-valued or bipolar family; one of each for a
+    /// single point.
     ///
     /// >>> import neutrospline as ns
     /// >>> flat = ns.BezierSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], [[[1, 0, 0]] * 2] * 2)
@@ -434,26 +487,35 @@ impl Surface {
         let found = py.detach(|| surface.projector().nearest_many(&queries));
         let mut uv = Vec::with_capacity(found.len() * 2);
         let mut distance = Vec::with_capacity(found.len());
-        let mut rows = Vec::with_capacity(found.len() * 6);
+        let columns = 3 + self.degree_columns();
+        let mut rows = Vec::with_capacity(found.len() * columns);
         for (k, result) in found.into_iter().enumerate() {
             let n = result.map_err(|e| invalid_at(format!("points[{k}]"), e))?;
             uv.extend_from_slice(&n.parameter);
             distance.push(n.distance);
-            rows.extend_from_slice(&n.point.position);
-            rows.extend_from_slice(&n.point.degrees.to_array());
+            if self.second.is_some() {
+                let [u, v] = n.parameter;
+                let row = self
+                    .row_at(u, v)
+                    .map_err(|e| invalid_at(format!("points[{k}]"), e))?;
+                rows.extend(row);
+            } else {
+                rows.extend_from_slice(&n.point.position);
+                rows.extend_from_slice(&n.point.degrees.to_array());
+            }
         }
         let m = distance.len();
         let (uv, distance, rows) = if single {
             (
                 crate::arrays::new_array(py, uv, &[2])?,
                 distance[0].into_pyobject(py)?.into_any(),
-                crate::arrays::new_array(py, rows, &[6])?,
+                crate::arrays::new_array(py, rows, &[columns])?,
             )
         } else {
             (
                 crate::arrays::new_array(py, uv, &[m, 2])?,
                 crate::arrays::new_array(py, distance, &[m])?,
-                crate::arrays::new_array(py, rows, &[m, 6])?,
+                crate::arrays::new_array(py, rows, &[m, columns])?,
             )
         };
         PyTuple::new(py, [uv, distance, rows])
@@ -496,11 +558,17 @@ impl Surface {
     }
 
     /// The control grid's membership degrees, shape (rows, cols, 3): truth, indeterminacy,
-    /// falsity, read-only. Not the polynomial `degree`.
+    /// falsity (rows, cols, channel_count) for an interval-valued or bipolar family: its
+    /// `channels`), read-only. Not the polynomial `degree`.
     #[getter]
     fn membership_degrees<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let (_, degrees) = model::point_rows(&self.surface.control_points());
-        readonly_array(py, degrees, &[self.surface.rows(), self.surface.cols(), 3])
+        let degrees = model::control_degree_rows(&self.model);
+        let shape = [
+            self.surface.rows(),
+            self.surface.cols(),
+            self.degree_columns(),
+        ];
+        readonly_array(py, degrees, &shape)
     }
 
     /// The NURBS weights, shape (rows, cols), read-only; None for other kinds.
@@ -530,10 +598,17 @@ impl Surface {
     }
 
     /// A box holding the surface: the control grid's (the surface lies in its convex hull),
-    /// shape (2, 6), rows minimum and maximum of x, y, z, truth, indeterminacy, falsity.
+    /// shape (2, 6), rows minimum and maximum of x, y, z, truth, indeterminacy, falsity (of
+    /// x, y, z and the `channels` for an interval-valued or bipolar family: (2, 3 +
+    /// channel_count)).
     fn bounding_box<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let rows = self.surface.control_bounding_box().min_max_rows().concat();
-        readonly_array(py, rows, &[2, 6])
+        let lanes: Vec<[Vec<f64>; 2]> = self
+            .lanes()
+            .iter()
+            .map(|lane| lane.control_bounding_box().min_max_rows())
+            .collect();
+        let rows = model::join_bounds(self.model.membership(), 3, &lanes).concat();
+        readonly_array(py, rows, &[2, 3 + self.degree_columns()])
     }
 
     fn __repr__(&self) -> String {

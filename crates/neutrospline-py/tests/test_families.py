@@ -53,8 +53,8 @@ def test_refusals_name_the_rule():
         ns.Bezier([[0, 0], [1, 1]], [[0.5, 0.2, 0.3], [0.1, 0.0, 0.1]], membership="fermatean")
     with pytest.raises(ValueError, match=r"the parameter is missing, as in q-rung:4"):
         ns.Bezier([[0, 0], [1, 1]], [[0.5, 0.3], [0.1, 0.1]], membership="q-rung")
-    with pytest.raises(ValueError, match=r"the interval-type2 family has 2 channels \(truth_lower, truth_upper\)"):
-        ns.Bezier([[0, 0], [1, 1]], [[0.1, 0.2], [0.1, 0.3]], membership="interval-type2")
+    with pytest.raises(ValueError, match=r"^degrees\[1\]: truth_lower = 0\.3 exceeds truth_upper = 0\.1 \(interval-type2 rule: lower <= upper\)$"):
+        ns.Bezier([[0, 0], [1, 1]], [[0.1, 0.2], [0.3, 0.1]], membership="interval-type2")
 
 
 def test_fit_under_the_pythagorean_rule():

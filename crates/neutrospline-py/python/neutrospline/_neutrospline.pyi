@@ -42,7 +42,9 @@ ArrayLike = npt.ArrayLike
 FloatArray = npt.NDArray[np.float64]
 PathLike = Union[str, "os.PathLike[str]"]
 # A membership family: "neutrosophic", "intuitionistic", "fuzzy", "pythagorean", "fermatean",
-# "q-rung:Q", "picture", "spherical" or "t-spherical:N" (Q, N integers >= 1).
+# "q-rung:Q", "picture", "spherical", "t-spherical:N" (Q, N integers >= 1), or one of the
+# families of two lanes "interval-neutrosophic", "interval-intuitionistic", "interval-type2",
+# "bipolar-neutrosophic", whose degree arrays have one column per channel (`Shape.channels`).
 Membership = str
 ViewName = Literal[
     "all", "controls", "truth", "indeterminacy", "falsity", "plane", "score", "data", "band"
@@ -72,6 +74,11 @@ class Shape:
 
     @property
     def membership(self) -> Membership: ...
+    @property
+    def channels(self) -> List[str]:
+        """The names of the degree columns of ``evaluate``, ``membership_degrees`` and
+        ``bounding_box``: truth, indeterminacy, falsity, or the channels of an interval-valued
+        or bipolar family."""
     @property
     def name(self) -> Optional[str]: ...
     @property
@@ -401,8 +408,14 @@ def inline(
     color_by: Optional[Literal["truth", "indeterminacy", "falsity"]] = None,
 ) -> Dict[str, Optional[str]]: ...
 def example1() -> Bezier: ...
-def score(degrees: ArrayLike) -> Union[float, FloatArray]: ...
-def accuracy(degrees: ArrayLike) -> Union[float, FloatArray]: ...
+def score(degrees: ArrayLike, *, membership: Optional[Membership] = None) -> Union[float, FloatArray]:
+    """The neutrosophic score of triples, or with ``membership`` the family's score of its
+    channel values (shape (..., channel_count))."""
+def accuracy(degrees: ArrayLike, *, membership: Optional[Membership] = None) -> Union[float, FloatArray]:
+    """The neutrosophic accuracy of triples, or with ``membership`` the family's accuracy of
+    its channel values (``ModelError`` for a family without one)."""
+def derived_degrees(degrees: ArrayLike, *, membership: Membership) -> Tuple[FloatArray, List[str]]:
+    """The degrees a family derives from its channel values, with their names."""
 def certainty(degrees: ArrayLike) -> Union[float, FloatArray]: ...
 def largest_relation(
     m: Sequence[Tuple[float, Triple]],

@@ -15,7 +15,9 @@ CURVE_DOCS = """A table of the curve: a pandas DataFrame with the columns of the
 `t` is an int N (N evenly spaced parameters over the domain, both ends exact, as
 `sample(N)` and `eval --samples N`; default 101) or the parameters themselves (a number or a
 1-D array, as for `evaluate`). `scores=True` adds the columns `score` ((2 + T - I - F) / 3),
-`accuracy` (T - F) and `certainty` (T) of `eval --scores`. pandas is imported only here.
+`accuracy` (T - F) and `certainty` (T) of `eval --scores`. A curve of an interval-valued or
+bipolar family has its `channels` as the degree columns, and `scores=True` adds its family's
+`score` (and `accuracy`, for interval-intuitionistic). pandas is imported only here.
 
 >>> import neutrospline as ns
 >>> frame = ns.example1().to_dataframe(3)
@@ -70,9 +72,19 @@ def is_count(value):
     return isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_))
 
 
-def with_scores(columns, degrees):
+def with_scores(columns, degrees, shape=None):
     from . import _neutrospline as core
 
+    if shape is not None and list(shape.channels) != ["truth", "indeterminacy", "falsity"]:
+        # An interval-valued or bipolar family: its own score (and accuracy, if it has one)
+        # of its channels.
+        family = shape.membership
+        columns["score"] = np.asarray(core.score(degrees, membership=family), dtype=float).reshape(-1)
+        if family == "interval-intuitionistic":
+            columns["accuracy"] = np.asarray(
+                core.accuracy(degrees, membership=family), dtype=float
+            ).reshape(-1)
+        return
     columns["score"] = np.asarray(core.score(degrees), dtype=float).reshape(-1)
     columns["accuracy"] = np.asarray(core.accuracy(degrees), dtype=float).reshape(-1)
     columns["certainty"] = np.asarray(core.certainty(degrees), dtype=float).reshape(-1)
@@ -90,12 +102,13 @@ def curve_to_dataframe(self, t=101, *, scores=False):
         points = self.evaluate(t)
         parameters = np.asarray(t, dtype=float).reshape(-1)
         points = points.reshape(parameters.size, -1)
-    names = ["t"] + position_names(self.dimension) + ["truth", "indeterminacy", "falsity"]
+    channels = list(self.channels)
+    names = ["t"] + position_names(self.dimension) + channels
     columns = {"t": parameters}
     for k, name in enumerate(names[1:]):
         columns[name] = points[:, k]
     if scores:
-        with_scores(columns, points[:, -3:])
+        with_scores(columns, points[:, self.dimension :], self)
     return pd.DataFrame(columns)
 
 
@@ -111,12 +124,13 @@ def surface_to_dataframe(self, u=101, v=None, *, scores=False):
             raise TypeError("to_dataframe(u, v): give both parameter arrays, or counts")
         uu, vv = np.broadcast_arrays(np.asarray(u, dtype=float), np.asarray(v, dtype=float))
     uu, vv = uu.reshape(-1), vv.reshape(-1)
-    points = self.evaluate(uu, vv).reshape(uu.size, 6)
+    channels = list(self.channels)
+    points = self.evaluate(uu, vv).reshape(uu.size, 3 + len(channels))
     columns = {"u": uu, "v": vv}
-    for k, name in enumerate(["x", "y", "z", "truth", "indeterminacy", "falsity"]):
+    for k, name in enumerate(["x", "y", "z"] + channels):
         columns[name] = points[:, k]
     if scores:
-        with_scores(columns, points[:, 3:])
+        with_scores(columns, points[:, 3:], self)
     return pd.DataFrame(columns)
 
 

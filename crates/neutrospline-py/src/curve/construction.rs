@@ -84,12 +84,22 @@ impl<'a, 'py> Construction<'a, 'py> {
                 }
             }
         }
-        let shape: Shape = if arrays.dimension == 2 {
-            settings.curve(arrays.points::<2>())?.into()
+        // A family of two lanes: the second lane is the same curve (positions, weights,
+        // knots) with the second lane's degrees (docs/model.md, "Lanes").
+        let (shape, second): (Shape, Option<Shape>) = if arrays.dimension == 2 {
+            let second = arrays.second_points::<2>().map(|p| settings.curve(p));
+            (
+                settings.curve(arrays.points::<2>())?.into(),
+                second.transpose()?.map(Into::into),
+            )
         } else {
-            settings.curve(arrays.points::<3>())?.into()
+            let second = arrays.second_points::<3>().map(|p| settings.curve(p));
+            (
+                settings.curve(arrays.points::<3>())?.into(),
+                second.transpose()?.map(Into::into),
+            )
         };
-        let model = model::model(shape, membership, self.meta)?;
+        let model = model::model(shape, second, membership, self.meta)?;
         Ok(Curve {
             state: State::of_model(model).expect("a curve shape"),
         })
@@ -166,8 +176,12 @@ impl Settings {
 #[pymethods]
 impl Bezier {
     /// A Bézier curve from `positions` (shape (n, 2) or (n, 3)) and `degrees` (shape (n, 3):
-    /// truth, indeterminacy, falsity; (n, 2) truth, falsity under the intuitionistic rule;
-    /// (n,) truth under the fuzzy rule).
+    /// truth, indeterminacy, falsity; (n, channel_count) the family's channels, such as
+    /// (n, 2) truth, falsity under the intuitionistic rule; (n,) truth under the fuzzy rule)
+    /// under the family `membership`. An interval-valued or bipolar family
+    /// (`interval-neutrosophic`, `interval-intuitionistic`, `interval-type2`,
+    /// `bipolar-neutrosophic`) takes exactly (n, channel_count) in its channel order
+    /// (`channels`), such as `truth_lower, truth_upper, indeterminacy_lower, ...`.
     #[new]
     #[pyo3(signature = (positions, degrees, membership = "neutrosophic", *, name = None, description = None, point_names = None))]
     fn new(

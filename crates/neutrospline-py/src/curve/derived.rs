@@ -78,21 +78,32 @@ pub(super) fn bezier_as_bspline<const D: usize>(
 }
 
 impl Curve {
-    /// New curve objects from the curves `op` derives from this one's `source` (same
-    /// metadata). `split`, `elevate` and `insert_knot` map the control points by convex
-    /// combinations, so applied to the alpha = 0 cut curves they give the derived curves' cut
-    /// curves (docs/model.md section 9): a fuzzy model's spreads are carried along.
+    /// New curve objects from the curves `op` derives from this one's `lanes` (same
+    /// metadata): `lanes[0]` is the curve, `lanes[1]` the second lane of a family of two
+    /// lanes, to which `op` applies alike, so the derived lanes keep one geometry
+    /// (docs/model.md, "Lanes"). `split`, `elevate` and `insert_knot` map the control points
+    /// by convex combinations, so applied to the alpha = 0 cut curves they give the derived
+    /// curves' cut curves (docs/model.md section 9): a fuzzy model's spreads are carried
+    /// along.
     pub(super) fn derive<const D: usize>(
         &self,
         py: Python<'_>,
-        source: &AnyCurve<D>,
+        lanes: &[&AnyCurve<D>],
         op: impl Fn(&AnyCurve<D>) -> PyResult<Vec<AnyCurve<D>>>,
     ) -> PyResult<Vec<Py<PyAny>>>
     where
         Shape: From<AnyCurve<D>>,
     {
         let (model, _) = self.model()?;
+        let source = lanes[0];
         let crisp = op(source)?;
+        let mut second = match lanes.get(1) {
+            Some(lane) => op(lane)?.into_iter().map(Some).collect(),
+            None => vec![None; crisp.len()],
+        };
+        if second.len() != crisp.len() {
+            return Err(invalid("the lanes of the model gave different pieces"));
+        }
         let spreads: Vec<Option<Vec<Spread<3>>>> = match model.spreads() {
             None => vec![None; crisp.len()],
             Some(spreads) => {
@@ -109,9 +120,10 @@ impl Curve {
         crisp
             .into_iter()
             .zip(spreads)
-            .map(|(curve, spreads)| {
+            .zip(second.drain(..))
+            .map(|((curve, spreads), second)| {
                 let curve = under_rule(curve, model.membership())?;
-                let model = model::derived(model, curve, spreads)?;
+                let model = model::derived(model, curve, second.map(Shape::from), spreads)?;
                 model_into_py(py, model)
             })
             .collect()

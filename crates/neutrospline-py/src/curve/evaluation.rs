@@ -86,6 +86,43 @@ pub(super) fn evaluate_rows(
     })
 }
 
+/// The rows `x, y[, z], truth, indeterminacy, falsity` of one lane at `ts`, row-major.
+fn lane_rows<const D: usize>(batch: &CurveBatch<D>, ts: &[f64]) -> Result<Vec<f64>, EvalError> {
+    let m = ts.len();
+    if m == 0 {
+        return Ok(Vec::new());
+    }
+    let mut columns = vec![0.0; (D + 3) * m];
+    batch.evaluate(
+        BatchParams::Values(ts),
+        &mut columns,
+        &BatchOptions::default(),
+    )?;
+    Ok((0..m)
+        .flat_map(|k| (0..D + 3).map(move |c| (k, c)))
+        .map(|(k, c)| columns[c * m + k])
+        .collect())
+}
+
+/// Writes the rows `rows(ts)` (row-major, `columns` each) into `writer`, computed without the
+/// GIL.
+fn write_rows(
+    py: Python<'_>,
+    ts: &[f64],
+    writer: &mut Writer<'_>,
+    columns: usize,
+    rows: impl Fn(&[f64]) -> Result<Vec<f64>, EvalError> + Send + Sync,
+) -> Result<(), EvalError> {
+    let values = py.detach(|| rows(ts))?;
+    let mut view = writer.view();
+    for (k, row) in values.chunks_exact(columns).enumerate() {
+        for (c, &v) in row.iter().enumerate() {
+            view[[k, c]] = v;
+        }
+    }
+    Ok(())
+}
+
 /// The row `x, y[, z], truth, indeterminacy, falsity` of a derivative value (the first
 /// `D + 3` of the six values).
 pub(super) fn derivative_row<const D: usize>(v: neutrospline::DerivativeValue<D>) -> [f64; 6] {
@@ -105,7 +142,7 @@ impl Curve {
         let params = Params::read(t, "t")?;
         let scalar = matches!(params, Params::Scalar(_));
         let ts = params.values()?;
-        let columns = self.state.dimension() + 3;
+        let columns = self.state.columns();
         // A scalar parameter's result is one row: an `out` of that shape (columns,) gets it,
         // checked before anything is evaluated.
         let row_out = match (scalar, out) {
@@ -116,6 +153,9 @@ impl Curve {
         let mut writer = output.write()?;
         let domain = self.domain_range();
         let result = match &self.state {
+            _ if self.state.wide() => {
+                write_rows(py, ts, &mut writer, columns, |ts| self.rows_at(ts))
+            }
             State::Model { curve, .. } => {
                 on_dimension!(curve, c => evaluate_batch(py, &c.batch, ts, &mut writer))?
             }
@@ -136,6 +176,39 @@ impl Curve {
             return Ok(target.into_any().unbind());
         }
         output.finish(scalar)
+    }
+
+    /// The rows `x, y[, z], degree columns` at the parameters `ts`, row-major: every lane
+    /// evaluated (or differentiated) and the lanes joined into the family's channels
+    /// (`Family::join_slots`, docs/model.md "Lanes"); the three degrees of a family of one
+    /// lane.
+    pub(super) fn rows_at(&self, ts: &[f64]) -> Result<Vec<f64>, EvalError> {
+        let dimension = self.state.dimension();
+        let lanes = match &self.state {
+            State::Model { curve, second, .. } => core::iter::once(curve)
+                .chain(second.as_deref())
+                .map(|lane| on_dimension!(lane, c => lane_rows(&c.batch, ts)))
+                .collect::<Result<Vec<_>, EvalError>>()?,
+            State::Derivative {
+                derivative, second, ..
+            } => core::iter::once(derivative)
+                .chain(second.as_ref())
+                .map(|lane| {
+                    on_dimension!(lane, d => {
+                        let mut rows = Vec::with_capacity(ts.len() * (dimension + 3));
+                        for &t in ts {
+                            rows.extend_from_slice(&derivative_row(d.evaluate(t)?)[..dimension + 3]);
+                        }
+                        Ok(rows)
+                    })
+                })
+                .collect::<Result<Vec<_>, EvalError>>()?,
+        };
+        Ok(crate::model::join_rows(
+            self.state.membership(),
+            dimension,
+            &lanes,
+        ))
     }
 
     pub(super) fn domain_range(&self) -> std::ops::Range<f64> {
