@@ -358,4 +358,51 @@ mod tests {
             }
         }
     }
+
+    /// The wide families' figures (interval-valued and bipolar, tests/wide/) at every size,
+    /// in every view they draw: texts on the canvas, the legend clear of the labels.
+    #[test]
+    fn audit_wide_families_every_size_keeps_texts_and_legend_clear() {
+        let files = [
+            ("interval.toml", include_str!("../tests/wide/interval.toml")),
+            ("type2.toml", include_str!("../tests/wide/type2.toml")),
+            ("bipolar.toml", include_str!("../tests/wide/bipolar.toml")),
+            ("surface.toml", include_str!("../tests/wide/surface.toml")),
+        ];
+        let mut drawn = 0;
+        for (name, text) in files {
+            let model = neutrospline_io::parse(
+                name,
+                neutrospline_io::Format::Toml,
+                text.as_bytes(),
+                &neutrospline_io::ReadOptions::default(),
+            )
+            .unwrap();
+            let model = PlotModel::from_model(&model).unwrap();
+            let options = if model.is_surface() {
+                PlotOptions::default().with_samples(10)
+            } else {
+                PlotOptions::default().with_samples(60)
+            };
+            for (w, h) in SIZES {
+                let options = options.clone().with_size(w, h);
+                for view in View::MODEL {
+                    if model.check_view(view).is_err() {
+                        continue;
+                    }
+                    let svg = render_svg(&model, view, &options).unwrap();
+                    let found = problems(&svg, w, h);
+                    assert!(
+                        found.is_empty(),
+                        "{name}, {view}, {w}x{h}:\n{}",
+                        found.join("\n")
+                    );
+                    drawn += 1;
+                }
+            }
+        }
+        // interval: truth, indeterminacy, falsity, all; type-2: truth, all; bipolar: four;
+        // surface: truth, indeterminacy, falsity; at four sizes.
+        assert_eq!(drawn, 4 * (4 + 2 + 4 + 3));
+    }
 }

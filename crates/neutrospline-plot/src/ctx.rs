@@ -9,6 +9,7 @@ use crate::callout::{draw_names, Keep, Obstacle};
 use crate::camera::Camera;
 use crate::drawing::{Drawing, Painter};
 use crate::layout::{Frame, Legend, LegendPlace, Rect};
+use crate::model::Mesh;
 use crate::options::PlotOptions;
 use crate::point::Pt;
 use crate::theme::Theme;
@@ -32,6 +33,16 @@ pub(crate) struct BandCtx {
     pub centroid: Vec<Pt>,
 }
 
+/// The second lane of an interval-valued or bipolar model (docs/model.md, "Lanes"): its
+/// samples, control points and mesh, at the parameters of `Ctx::curve`, `Ctx::controls` and
+/// the first lane's mesh (the positions are the same; the degree slots hold the upper
+/// degrees, or the negative degrees negated).
+pub(crate) struct WideCtx<'a> {
+    pub curve: Vec<Pt>,
+    pub controls: &'a [Pt],
+    pub mesh: Option<Mesh>,
+}
+
 /// Everything a view needs.
 pub(crate) struct Ctx<'a> {
     pub theme: Theme,
@@ -48,9 +59,31 @@ pub(crate) struct Ctx<'a> {
     pub data: Option<DataCtx>,
     /// The band view's curves (`None` for every other view).
     pub band: Option<BandCtx>,
+    /// The second lane of a wide family (`None` for the families of one lane).
+    pub wide: Option<WideCtx<'a>>,
 }
 
 impl Ctx<'_> {
+    /// The context of the second lane of a wide model (its samples and control points in
+    /// place of the first lane's; no data, band or further lane), for the views that draw
+    /// each lane in its own panel.
+    pub(crate) fn second_lane(&self) -> Option<Ctx<'_>> {
+        let wide = self.wide.as_ref()?;
+        Some(Ctx {
+            theme: self.theme,
+            options: self.options,
+            curve: wide.curve.clone(),
+            controls: wide.controls,
+            names: self.names,
+            labelled: self.labelled,
+            title: self.title.clone(),
+            caption: self.caption.clone(),
+            data: None,
+            band: None,
+            wide: None,
+        })
+    }
+
     /// The camera of the 3-D views.
     pub(crate) fn cam(&self) -> Camera {
         Camera::new(self.options.azimuth(), self.options.elevation())

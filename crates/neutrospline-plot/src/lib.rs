@@ -96,6 +96,23 @@
 //!   across and `v` up, with the interior knot lines of a spline surface dashed in white,
 //!   arranged like `all`.
 //!
+//! The interval-valued and bipolar families (`interval-neutrosophic`,
+//! `interval-intuitionistic`, `interval-type2`, `bipolar-neutrosophic`) carry two values per
+//! degree, held by the model's two lanes (docs/model.md, "Lanes"; [`PlotModel::from_model`]):
+//! - `truth`, `indeterminacy`, `falsity` of a 2-D curve: the lower curve (dashed) and the
+//!   upper curve (solid) of the degree with a translucent ruled strip between them (legend
+//!   `truth_lower`, `truth_upper`; for interval type-2 the lower and upper membership, held in
+//!   the truth slots, and the strip is the footprint of uncertainty); for the bipolar family
+//!   the positive degree (solid) above the crisp plane and the negative degree (dashed) below
+//!   it, on a vertical axis over \[-1, 1\];
+//! - `all` of a 2-D curve: every degree the family carries, each pair in its colour;
+//! - `truth`, `indeterminacy`, `falsity` of a 3-D curve or a surface: two panels, one per
+//!   lane (lower and upper, or positive and the negative degree's magnitude), coloured on the
+//!   shared colour bar;
+//! - the views that draw one value per degree (`controls`, `plane`, `score`, `data`, and
+//!   `all` of a 3-D curve or surface) are refused with the reason
+//!   ([`PlotModel::check_view`]); `band` draws the position, which the lanes share.
+//!
 //! The `data` view ([`View::Data`]) draws a curve with the data points it was fitted to
 //! ([`PlotModel::with_data`]): the fitted curve (its crisp positions) as a dark line over the
 //! data; each data point as a marker filled with the viridis colour of one of its degrees
@@ -140,7 +157,8 @@
 //! default title:
 //! - `views::controls`: `controls`; `views::single`: `truth`, `indeterminacy`, `falsity` and
 //!   `score` (one body for the four: a `quantity::Quantity` is a degree or the score);
-//!   `views::all`: `all`; `views::plane`: `plane`; `views::data`: `data` (the one view that
+//!   `views::all`: `all`; `views::wide`: the degree views and `all` of the wide families;
+//!   `views::plane`: `plane`; `views::data`: `data` (the one view that
 //!   draws the model's data overlay: `render_svg` gives it the data points and the curve
 //!   points their whiskers go to, and no control points).
 //!

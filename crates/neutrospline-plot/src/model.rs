@@ -287,6 +287,10 @@ pub struct PlotModel {
     /// The membership family of the degrees: which views draw them truthfully
     /// ([`PlotModel::check_view`]).
     family: neutrospline::Family,
+    /// The second lane of an interval-valued or bipolar family (docs/model.md, "Lanes"): the
+    /// same geometry with the upper (or the negated negative) degrees in its three slots;
+    /// `None` for the families of one lane.
+    second: Option<Arc<PlotModel>>,
 }
 
 impl fmt::Debug for PlotModel {
@@ -361,6 +365,7 @@ impl PlotModel {
             data: None,
             band: None,
             family: neutrospline::Family::Neutrosophic,
+            second: None,
         })
     }
 
@@ -473,6 +478,7 @@ impl PlotModel {
             data: None,
             band: None,
             family: neutrospline::Family::Neutrosophic,
+            second: None,
         })
     }
 
@@ -510,14 +516,28 @@ impl PlotModel {
         let mut figure = figure;
         let family = model.membership();
         figure.family = family;
+        // A wide family's second lane: the same geometry, its own three slots.
+        if let Some(second) = model.lanes().get(1) {
+            let lane = match second {
+                Shape::Curve(c) => neutrospline::on_dimension!(c, c => PlotModel::from_any(c)?),
+                Shape::Surface(s) => PlotModel::from_surface(s)?,
+            };
+            figure.second = Some(Arc::new(lane));
+        }
         // The title names the family beyond the original three: "Pythagorean fuzzy Bézier
-        // curve", "q-rung (q = 4) orthopair fuzzy B-spline curve", ...
+        // curve", "q-rung (q = 4) orthopair fuzzy B-spline curve", "Interval-valued
+        // neutrosophic Bézier curve", ...
+        use neutrospline::Family;
         let adjective = match family {
-            neutrospline::Family::Neutrosophic
-            | neutrospline::Family::Intuitionistic
-            | neutrospline::Family::Fuzzy => None,
-            neutrospline::Family::QRung(q) => Some(format!("q-rung (q = {q}) orthopair fuzzy")),
-            neutrospline::Family::TSpherical(n) => Some(format!("T-spherical (n = {n}) fuzzy")),
+            Family::Neutrosophic | Family::Intuitionistic | Family::Fuzzy => None,
+            Family::QRung(q) => Some(format!("q-rung (q = {q}) orthopair fuzzy")),
+            Family::TSpherical(n) => Some(format!("T-spherical (n = {n}) fuzzy")),
+            Family::IntervalNeutrosophic => Some("Interval-valued neutrosophic".to_string()),
+            Family::IntervalIntuitionistic => {
+                Some("Interval-valued intuitionistic fuzzy".to_string())
+            }
+            Family::IntervalType2 => Some("Interval type-2 fuzzy".to_string()),
+            Family::BipolarNeutrosophic => Some("Bipolar neutrosophic".to_string()),
             other => {
                 let name = other.name();
                 let mut chars = name.chars();
@@ -546,12 +566,51 @@ impl PlotModel {
         figure.with_names(names)
     }
 
+    /// The membership family of the degrees (neutrosophic unless the model came from a model
+    /// file of another family, [`PlotModel::from_model`]).
+    pub fn family(&self) -> neutrospline::Family {
+        self.family
+    }
+
+    /// The second lane of an interval-valued or bipolar model: the same geometry with the
+    /// upper degrees (or the negative degrees, negated) in its slots.
+    pub(crate) fn second_lane(&self) -> Option<&PlotModel> {
+        self.second.as_deref()
+    }
+
     /// Refuses a view that would misdraw the degrees of this model's family. The views draw
     /// truth, indeterminacy and falsity, and score the degrees by the neutrosophic score
     /// `(2 + T - I - F) / 3` (docs/model.md section 7). A family outside the original three
     /// that does not carry indeterminacy (the orthopair families: pythagorean, q-rung, ...)
     /// has no indeterminacy to draw, and the score of every such family is its own (SPEC
     /// section 10, `eval --scores`).
+    ///
+    /// The interval-valued and bipolar families carry two values per degree (docs/model.md,
+    /// "Lanes"). Their `truth`, `indeterminacy` and `falsity` views draw both (a 2-D curve:
+    /// the lower and upper curves with the band between them, or the positive degree above
+    /// the crisp plane and the negative one below it; a 3-D curve or a surface: two panels,
+    /// one per lane), and the `all` view of a 2-D curve draws every degree's pair. The views
+    /// that draw one value per degree are refused: `controls` (three bars per point), `plane`
+    /// (three lanes whose widths are the degrees), `data` (data points coloured by one
+    /// degree), `score`, and `all` of a 3-D curve or surface (one panel per degree).
+    ///
+    /// ```
+    /// use neutrospline_io::{parse, Format, ReadOptions};
+    /// use neutrospline_plot::{PlotModel, View};
+    /// let text = "kind = \"bezier\"\nmembership = \"interval-type2\"\n\
+    ///             [[control_points]]\nx = 0\ny = 0\ntruth_lower = 0.2\ntruth_upper = 0.5\n\
+    ///             [[control_points]]\nx = 1\ny = 1\ntruth_lower = 0.6\ntruth_upper = 0.7\n";
+    /// let model = parse("fou.toml", Format::Toml, text.as_bytes(), &ReadOptions::default())?;
+    /// let figure = PlotModel::from_model(&model)?;
+    /// assert!(figure.check_view(View::Truth).is_ok());
+    /// assert_eq!(
+    ///     figure.check_view(View::Falsity).unwrap_err().to_string(),
+    ///     "--view falsity does not draw interval-type2 models: interval type-2 degrees are a \
+    ///      lower and an upper membership, held as truth_lower and truth_upper; give --view \
+    ///      truth (or all) for the footprint of uncertainty between them"
+    /// );
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     ///
     /// # Errors
     /// [`PlotError::FamilyView`] naming the view, the family and why.
@@ -574,6 +633,11 @@ impl PlotModel {
                 "the score view draws the neutrosophic score (2 + T - I - F) / 3, not the {family} \
                  score; `eval --scores` gives the {family} score along the curve"
             )
+        } else if self.second.is_some() {
+            match self.wide_refusal(view) {
+                Some(reason) => reason,
+                None => return Ok(()),
+            }
         } else if needs_indeterminacy && !family.carries(DegreeKind::Indeterminacy) {
             format!(
                 "{family} degrees are {} (no indeterminacy); give --view truth or --view falsity",
@@ -587,6 +651,59 @@ impl PlotModel {
             family: family.to_string(),
             reason,
         })
+    }
+
+    /// Why `view` would misdraw this wide (two-lane) model, if it would.
+    fn wide_refusal(&self, view: crate::View) -> Option<String> {
+        use crate::View;
+        use neutrospline::Family;
+        let family = self.family;
+        let pairs = match family {
+            Family::BipolarNeutrosophic => "a positive and a negative value",
+            _ => "a lower and an upper value",
+        };
+        let channels = family.channels().join(", ");
+        let degree_views = match family {
+            Family::IntervalType2 => "--view truth (or all)",
+            Family::IntervalIntuitionistic => "--view truth, falsity or all",
+            _ => "--view truth, indeterminacy, falsity or all",
+        };
+        let one_degree = match family {
+            Family::IntervalType2 => "--view truth",
+            Family::IntervalIntuitionistic => "--view truth or falsity",
+            _ => "--view truth, indeterminacy or falsity",
+        };
+        match view {
+            View::Controls => Some(format!(
+                "the controls view draws one truth, indeterminacy and falsity bar per control \
+                 point, and {family} points carry {pairs} per degree ({channels}); give \
+                 {degree_views}"
+            )),
+            View::Plane => Some(format!(
+                "the plane view widens three lanes by one truth, indeterminacy and falsity, and \
+                 {family} degrees carry {pairs} each ({channels}); give {degree_views}"
+            )),
+            View::Data => Some(format!(
+                "the data view colours data points by one degree, and {family} degrees carry \
+                 {pairs} each ({channels})"
+            )),
+            View::All if self.dimension == 3 || self.is_surface() => Some(format!(
+                "the all view of a 3-D curve or a surface draws one panel per degree, and \
+                 {family} degrees carry {pairs} each; give {one_degree} for two panels, one per \
+                 lane"
+            )),
+            View::Indeterminacy | View::Falsity if family == Family::IntervalType2 => Some(
+                "interval type-2 degrees are a lower and an upper membership, held as \
+                 truth_lower and truth_upper; give --view truth (or all) for the footprint of \
+                 uncertainty between them"
+                    .to_string(),
+            ),
+            View::Indeterminacy if family == Family::IntervalIntuitionistic => Some(format!(
+                "interval-intuitionistic degrees are {channels} (no indeterminacy); give --view \
+                 truth or --view falsity"
+            )),
+            _ => None,
+        }
     }
 
     /// Names the control points, in order (one name each, shown next to each point).
@@ -828,6 +945,7 @@ impl<const D: usize> From<&Bezier<D>> for PlotModel {
             data: None,
             band: None,
             family: neutrospline::Family::Neutrosophic,
+            second: None,
         }
     }
 }
@@ -1012,5 +1130,39 @@ mod tests {
                 .to_string(),
             "control point 0: truth = NaN is not a finite number"
         );
+    }
+
+    /// A wide model's two lanes share the positions; lane 0 holds the lower degrees and lane
+    /// 1 the upper, each the Bernstein blend of its control values (tests/wide/interval.toml:
+    /// truth_lower 0.2, 0.6, 0.4, 0.7; truth_upper 0.5, 0.9, 0.55, 0.8; falsity_upper 0.2,
+    /// 0.15, 0.45, 0.7), computed here by hand at t = 1/2: (a + 3b + 3c + d) / 8.
+    #[test]
+    fn model_wide_lanes_are_the_lower_and_upper_blends() {
+        let text = include_str!("../tests/wide/interval.toml");
+        let file = neutrospline_io::parse(
+            "interval.toml",
+            neutrospline_io::Format::Toml,
+            text.as_bytes(),
+            &neutrospline_io::ReadOptions::default(),
+        )
+        .unwrap();
+        let model = PlotModel::from_model(&file).unwrap();
+        assert_eq!(model.family(), neutrospline::Family::IntervalNeutrosophic);
+        assert_eq!(model.label(), "Interval-valued neutrosophic Bézier curve");
+        let upper = model.second_lane().unwrap();
+        let (lo, hi) = (
+            model.curve_points(3).unwrap(),
+            upper.curve_points(3).unwrap(),
+        );
+        assert_eq!(lo[1].pos, hi[1].pos, "one geometry");
+        let half = |a: f64, b: f64, c: f64, d: f64| (a + 3.0 * b + 3.0 * c + d) / 8.0;
+        assert!((lo[1].deg[0] - half(0.2, 0.6, 0.4, 0.7)).abs() < 1e-15);
+        assert!((hi[1].deg[0] - half(0.5, 0.9, 0.55, 0.8)).abs() < 1e-15);
+        assert!((hi[1].deg[2] - half(0.2, 0.15, 0.45, 0.7)).abs() < 1e-15);
+        assert_eq!(upper.controls()[2].deg, [0.55, 0.8, 0.45]);
+        // A model of one lane has none.
+        assert!(PlotModel::from(&neutrospline::example1())
+            .second_lane()
+            .is_none());
     }
 }

@@ -12,7 +12,7 @@ use neutrospline::DegreeKind;
 use crate::ctx::Ctx;
 use crate::drawing::{Drawing, Painter};
 use crate::layout::{text_centred, Frame, Legend, LegendPlace, Rect};
-use crate::style::TextStyle;
+use crate::style::{Color, TextStyle};
 use crate::theme::{self, Theme};
 
 /// Shortest colour bar, relative to the default length, before an arrangement is rejected.
@@ -22,10 +22,11 @@ const MIN_BAR: f64 = 0.22;
 struct Panels {
     /// Title, caption and the placed legend.
     pub frame: Frame,
-    /// One cell per degree (truth, indeterminacy, falsity), panel title included.
-    pub cells: [Rect; 3],
+    /// One cell per panel (truth, indeterminacy, falsity; or a wide family's two lanes),
+    /// panel title included.
+    pub cells: Vec<Rect>,
     /// The top of each panel's drawing (pixels), once fitted: its title goes right above.
-    tops: [f64; 3],
+    tops: Vec<f64>,
 }
 
 impl Panels {
@@ -89,6 +90,7 @@ fn fit_bar(legend: &mut Legend, theme: &Theme, avail: f64) -> bool {
 /// Lays out one arrangement: the frame, the cells, and whether the legend fits.
 fn arrange(
     arrangement: Arrangement,
+    count: usize,
     theme: &Theme,
     legend: &Legend,
     frame: &dyn Fn(Legend, LegendPlace) -> Frame,
@@ -119,8 +121,8 @@ fn arrange(
             (
                 Panels {
                     frame: f,
-                    cells: [cell(0), cell(1), cell(2)],
-                    tops: [0.0; 3],
+                    cells: (0..count).map(cell).collect(),
+                    tops: vec![0.0; count],
                 },
                 fits,
             )
@@ -131,19 +133,22 @@ fn arrange(
             let fits = fit_bar(&mut legend, theme, probe.h);
             let f = frame(legend, LegendPlace::Column);
             let plot = f.plot;
-            let cells = [0, 1, 2].map(|j| {
-                let j = j as f64;
-                if arrangement == Arrangement::Row {
-                    Rect::new(plot.x + plot.w / 3.0 * j, plot.y, plot.w / 3.0, plot.h)
-                } else {
-                    Rect::new(plot.x, plot.y + plot.h / 3.0 * j, plot.w, plot.h / 3.0)
-                }
-            });
+            let n = count as f64;
+            let cells = (0..count)
+                .map(|j| {
+                    let j = j as f64;
+                    if arrangement == Arrangement::Row {
+                        Rect::new(plot.x + plot.w / n * j, plot.y, plot.w / n, plot.h)
+                    } else {
+                        Rect::new(plot.x, plot.y + plot.h / n * j, plot.w, plot.h / n)
+                    }
+                })
+                .collect();
             (
                 Panels {
                     frame: f,
                     cells,
-                    tops: [0.0; 3],
+                    tops: vec![0.0; count],
                 },
                 fits,
             )
@@ -155,17 +160,28 @@ fn arrange(
 /// panel fills a drawing area and the top of what it then draws (pixels); `frame` builds the
 /// figure's frame for a legend.
 fn choose(
+    count: usize,
     theme: &Theme,
     legend: &Legend,
     frame: &dyn Fn(Legend, LegendPlace) -> Frame,
     fit: &dyn Fn(Rect) -> (f64, f64),
 ) -> Panels {
     let mut best: Option<(bool, f64, Panels)> = None;
-    for arrangement in [Arrangement::Grid, Arrangement::Row, Arrangement::Column] {
-        let (mut panels, fits) = arrange(arrangement, theme, legend, frame);
-        let fitted = panels.cells.map(|c| fit(area_of(&c, theme)));
+    // The grid (the legend in the fourth cell) suits three panels only.
+    let arrangements: &[Arrangement] = if count == 3 {
+        &[Arrangement::Grid, Arrangement::Row, Arrangement::Column]
+    } else {
+        &[Arrangement::Row, Arrangement::Column]
+    };
+    for &arrangement in arrangements {
+        let (mut panels, fits) = arrange(arrangement, count, theme, legend, frame);
+        let fitted: Vec<(f64, f64)> = panels
+            .cells
+            .iter()
+            .map(|c| fit(area_of(c, theme)))
+            .collect();
         let score = fitted.iter().map(|f| f.0).fold(f64::INFINITY, f64::min);
-        panels.tops = fitted.map(|f| f.1);
+        panels.tops = fitted.iter().map(|f| f.1).collect();
         let better = match &best {
             None => true,
             // A fitting legend first, then the larger panels (by more than 2 %).
@@ -177,7 +193,7 @@ fn choose(
     }
     match best {
         Some((_, _, panels)) => panels,
-        None => arrange(Arrangement::Grid, theme, legend, frame).0,
+        None => arrange(arrangements[0], count, theme, legend, frame).0,
     }
 }
 
@@ -191,24 +207,46 @@ pub(crate) fn figure(
     fit: &dyn Fn(Rect) -> (f64, f64),
     panel: &dyn Fn(&mut Painter, Rect, DegreeKind),
 ) -> Drawing {
+    let titles = DegreeKind::ALL.map(|kind| (kind.name().to_string(), theme::degree_color(kind)));
+    figure_of(ctx, legend, fit, &titles, &|svg, area, j| {
+        panel(svg, area, DegreeKind::ALL[j]);
+    })
+}
+
+/// A figure of one panel per entry of `titles` (2 or 3; each panel's title text and colour),
+/// arranged by [`choose`] with the shared `legend`: `fit` as in [`figure`], `panel` draws
+/// panel `j` into an area.
+pub(crate) fn figure_of(
+    ctx: &Ctx,
+    legend: &Legend,
+    fit: &dyn Fn(Rect) -> (f64, f64),
+    titles: &[(String, Color)],
+    panel: &dyn Fn(&mut Painter, Rect, usize),
+) -> Drawing {
     let th = &ctx.theme;
-    let layout = choose(th, legend, &|legend, place| ctx.frame(legend, place), fit);
+    let layout = choose(
+        titles.len(),
+        th,
+        legend,
+        &|legend, place| ctx.frame(legend, place),
+        fit,
+    );
     let mut svg = ctx.svg();
-    for (j, kind) in DegreeKind::ALL.iter().enumerate() {
-        panel_title(&mut svg, th, layout.title_centre(j, th), *kind);
-        panel(&mut svg, layout.area(j, th), *kind);
+    for (j, (title, color)) in titles.iter().enumerate() {
+        panel_title(&mut svg, th, layout.title_centre(j, th), title, *color);
+        panel(&mut svg, layout.area(j, th), j);
     }
     layout.frame.draw(&mut svg, th);
     svg.finish()
 }
 
-/// The title of one panel of an `all` figure: the degree's name in its colour.
-fn panel_title(svg: &mut Painter, th: &Theme, at: (f64, f64), kind: DegreeKind) {
+/// The title of one panel: the degree's name (or a lane's) in its colour.
+fn panel_title(svg: &mut Painter, th: &Theme, at: (f64, f64), title: &str, color: Color) {
     text_centred(
         svg,
         at,
-        kind.name(),
-        &TextStyle::new(th.subtitle(), theme::degree_color(kind))
+        title,
+        &TextStyle::new(th.subtitle(), color)
             .bold()
             .with_class("panel-title"),
     );

@@ -2,7 +2,7 @@
 //! [`Ctx`] every view draws from, and hands it to the view's [`Figure`](crate::views::Figure)
 //! for the kind of model.
 
-use crate::ctx::{BandCtx, Ctx, DataCtx};
+use crate::ctx::{BandCtx, Ctx, DataCtx, WideCtx};
 use crate::drawing::Drawing;
 use crate::error::PlotError;
 use crate::model::PlotModel;
@@ -65,7 +65,13 @@ pub fn render_drawing(
     options: &PlotOptions,
 ) -> Result<Drawing, PlotError> {
     model.check_view(view)?;
-    let figure = views::figure(view);
+    let wide_figure = model
+        .second_lane()
+        .and_then(|_| views::wide_figure(view, model.family()));
+    let figure: &dyn views::Figure = match &wide_figure {
+        Some(f) => f.as_ref(),
+        None => views::figure(view),
+    };
     if figure.draws_data() && model.data().is_none() {
         return Err(PlotError::NoData);
     }
@@ -115,6 +121,24 @@ pub fn render_drawing(
     } else {
         None
     };
+    // The second lane of a wide family: the same parameters and positions.
+    let second_controls;
+    let wide = match model.second_lane() {
+        Some(lane) if !figure.draws_data() => {
+            let lane_mesh = lane.mesh(options.surface_samples())?;
+            let lane_curve = match &lane_mesh {
+                Some(mesh) => mesh.points.clone(),
+                None => lane.curve_points(options.samples())?,
+            };
+            second_controls = lane.controls()[..controls.len()].to_vec();
+            Some(WideCtx {
+                curve: lane_curve,
+                controls: &second_controls,
+                mesh: lane_mesh,
+            })
+        }
+        _ => None,
+    };
     let ctx = Ctx {
         theme: Theme::of(options),
         options,
@@ -126,6 +150,7 @@ pub fn render_drawing(
         caption: options.caption().unwrap_or("").to_string(),
         data,
         band,
+        wide,
     };
     for axis in 0..model.dimension() {
         let (lo, hi) = ctx.extent(axis);

@@ -39,6 +39,10 @@ whiskers (curves only)\n  \
 band           the fuzzy position (control point spreads): the regions swept by the\n                 \
 alpha-cuts at alpha = 0, 0.5, 1 (or --alpha), lighter for lower alpha, the crisp curve\n                 \
 on top, the centroid curve dashed (curves only; 3-D: the tube's silhouette)\n\
+Interval-valued and bipolar models: truth, indeterminacy, falsity and all draw each degree's\n\
+lower and upper curves (dashed and solid) with the band between them, or the positive degree\n\
+above the crisp plane and the negative one below it (3-D curves and surfaces: one panel per\n\
+lane); controls, plane, score and data draw one value per degree and refuse them.\n\
 The format follows the extension of OUT: .svg, .png or .pdf (vector, the font embedded:\n\
 for LaTeX). For a paper: --style paper (no title or caption, 8.5cm wide, text of 8.5 to 10\n\
 points), or --size 8.5cmx6cm with --no-title / --no-caption; --dpi sets a PNG's resolution.")]
@@ -94,12 +98,9 @@ pub fn run(args: &PlotArgs) -> anyhow::Result<()> {
     let mut options = request
         .plot_options()
         .map_err(|e| UsageError(e.to_string()))?;
-    let model = input::one_lane(
-        &args.file,
-        input::read_model(&args.file, &args.model)?,
-        "plot",
-        "LANES_TODO",
-    )?;
+    // A wide family (interval-valued, bipolar) is drawn lane by lane; the views that would
+    // misdraw it are refused by `PlotModel::check_view` with the reason.
+    let model = input::read_model(&args.file, &args.model)?;
     let membership = model.membership();
     let mut plot = PlotModel::from_model(&model)?;
     let description = model.description().map(str::to_owned);

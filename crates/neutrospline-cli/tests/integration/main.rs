@@ -27,3 +27,4 @@ mod tables;
 mod transform;
 mod util;
 mod warnings;
+mod wide_plot;

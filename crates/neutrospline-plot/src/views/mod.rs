@@ -12,6 +12,7 @@ mod data;
 mod figure;
 mod plane;
 mod single;
+mod wide;
 
 use neutrospline::DegreeKind;
 
@@ -37,6 +38,21 @@ pub(crate) fn figure(view: View) -> &'static dyn Figure {
         View::Data => &data::Data,
         View::Band => &band::Band,
     }
+}
+
+/// The view's drawing for a wide (two-lane) family, for the views that draw both lanes:
+/// `truth`, `indeterminacy`, `falsity` and `all` ([`wide`]); `None` for the others (the `band`
+/// view draws the position, which the lanes share; the rest are refused by
+/// [`PlotModel::check_view`](crate::PlotModel::check_view)).
+pub(crate) fn wide_figure(view: View, family: neutrospline::Family) -> Option<Box<dyn Figure>> {
+    let kind = match view {
+        View::Truth => Some(DegreeKind::Truth),
+        View::Indeterminacy => Some(DegreeKind::Indeterminacy),
+        View::Falsity => Some(DegreeKind::Falsity),
+        View::All => None,
+        _ => return None,
+    };
+    Some(Box::new(wide::Wide { family, kind }))
 }
 
 /// The control polygon of a 2-D figure (pixel points `ctrl`), dashed in the construction

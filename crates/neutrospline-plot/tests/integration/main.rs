@@ -8,3 +8,4 @@ mod print;
 mod score;
 mod surfaces;
 mod views;
+mod wide;
