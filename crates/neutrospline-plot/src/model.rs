@@ -582,8 +582,9 @@ impl PlotModel {
     /// truth, indeterminacy and falsity, and score the degrees by the neutrosophic score
     /// `(2 + T - I - F) / 3` (docs/model.md section 7). A family outside the original three
     /// that does not carry indeterminacy (the orthopair families: pythagorean, q-rung, ...)
-    /// has no indeterminacy to draw, and the score of every such family is its own (SPEC
-    /// section 10, `eval --scores`).
+    /// has no indeterminacy to draw, and the score of every family but the neutrosophic one
+    /// is its own (SPEC sections 7 and 10, `eval --scores`: the intuitionistic score is
+    /// T - F, the fuzzy score T), so the score view is refused for them.
     ///
     /// The interval-valued and bipolar families carry two values per degree (docs/model.md,
     /// "Lanes"). Their `truth`, `indeterminacy` and `falsity` views draw both (a 2-D curve:
@@ -618,10 +619,9 @@ impl PlotModel {
         use crate::View;
         use neutrospline::{DegreeKind, Family};
         let family = self.family;
-        if matches!(
-            family,
-            Family::Neutrosophic | Family::Intuitionistic | Family::Fuzzy
-        ) {
+        if family == Family::Neutrosophic
+            || (matches!(family, Family::Intuitionistic | Family::Fuzzy) && view != View::Score)
+        {
             return Ok(());
         }
         let needs_indeterminacy = matches!(

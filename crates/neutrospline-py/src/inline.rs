@@ -142,26 +142,33 @@ fn request_for(model: &Model, setting: &Inline) -> PyResult<FigureRequest> {
     Ok(request)
 }
 
+/// Whether the figure of `request` draws `model`'s family (the plot crate refuses a view that
+/// would misdraw it, such as the `all` view of a 3-D curve of an interval-valued family).
+fn draws(model: &Model, request: &FigureRequest) -> PyResult<bool> {
+    let (figure, view, _) = model::prepare(model, request)?;
+    Ok(figure.check_view(view).is_ok())
+}
+
 /// The inline SVG of `model`, responsive, or `None` when the setting gives PNG only (or the
-/// model is of a family of two lanes, which the figures do not draw: Jupyter then shows the
-/// text `repr`).
+/// inline view would misdraw the model's family: Jupyter then shows the text `repr`).
 pub fn svg(py: Python<'_>, model: &Model) -> PyResult<Option<String>> {
     let setting = current();
-    if setting.format == Format::Png || model::is_wide(model.membership()) {
+    let request = request_for(model, &setting)?;
+    if setting.format == Format::Png || !draws(model, &request)? {
         return Ok(None);
     }
-    let text = model::svg(py, model, &request_for(model, &setting)?)?;
+    let text = model::svg(py, model, &request)?;
     Ok(Some(responsive(&text)))
 }
 
-/// The inline PNG of `model`, or `None` when the setting gives SVG only (or the model is of a
-/// family of two lanes, as for [`svg`]).
+/// The inline PNG of `model`, or `None` when the setting gives SVG only (or the inline view
+/// would misdraw the model's family, as for [`svg`]).
 pub fn png<'py>(py: Python<'py>, model: &Model) -> PyResult<Option<Bound<'py, PyBytes>>> {
     let setting = current();
-    if setting.format == Format::Svg || model::is_wide(model.membership()) {
+    let request = request_for(model, &setting)?;
+    if setting.format == Format::Svg || !draws(model, &request)? {
         return Ok(None);
     }
-    let request = request_for(model, &setting)?;
     let (figure, view, options) = model::prepare(model, &request)?;
     let bytes = py
         .detach(|| render_png(&figure, view, &options))

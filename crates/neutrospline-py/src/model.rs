@@ -348,22 +348,6 @@ pub fn control_degree_rows(model: &Model) -> Vec<f64> {
     }
 }
 
-/// Refuses a figure of a model of two lanes: the figures draw truth, indeterminacy and
-/// falsity, one lane's worth of degrees.
-pub fn drawable(model: &Model) -> PyResult<()> {
-    let membership = model.membership();
-    if !is_wide(membership) {
-        return Ok(());
-    }
-    Err(invalid(format!(
-        "the figures draw the three degrees truth, indeterminacy and falsity; a model of the \
-         {membership} family carries {} channels ({}) in two lanes, which a figure would show \
-         only half of: evaluate it (the columns are its channels) or save it instead",
-        membership.channel_count(),
-        membership.channels().join(", ")
-    )))
-}
-
 /// Positions, degrees and weights of control points as row-major values.
 pub fn point_rows<const D: usize>(points: &[ControlPoint<D>]) -> (Vec<f64>, Vec<f64>) {
     let positions = points.iter().flat_map(|p| p.position).collect();
@@ -402,7 +386,6 @@ pub fn prepare(model: &Model, request: &FigureRequest) -> PyResult<(PlotModel, V
 
 /// The SVG text of a figure of `model`.
 pub fn svg(py: Python<'_>, model: &Model, request: &FigureRequest) -> PyResult<String> {
-    drawable(model)?;
     let (figure, view, options) = prepare(model, request)?;
     py.detach(|| render_svg(&figure, view, &options))
         .map_err(invalid)
@@ -417,7 +400,6 @@ pub fn save_figure(
     request: &FigureRequest,
 ) -> PyResult<()> {
     let format = FigureFormat::from_path(path).map_err(invalid)?;
-    drawable(model)?;
     let (figure, view, options) = prepare(model, request)?;
     let bytes = py
         .detach(|| render_figure(&figure, view, &options, format))

@@ -326,16 +326,18 @@ def test_a_wide_surface_blends_its_channels_bilinearly(tmp_path):
     assert finer.membership_degrees.shape == (3, 2, 4)
 
 
-def test_figures_and_fitting_refuse_with_the_reason():
+def test_figures_draw_the_band_and_fitting_refuses_with_the_reason():
     curve = ns.Bezier(POSITIONS, INTERVAL_TYPE2, membership="interval-type2")
+    svg = curve.to_svg()
+    assert "lower membership" in svg and "upper membership" in svg
+    assert "footprint of uncertainty" in svg
+    assert curve._repr_svg_() is not None and curve._repr_png_() is not None
     with pytest.raises(
         ValueError,
-        match=r"^the figures draw the three degrees truth, indeterminacy and falsity; a model of the interval-type2 "
-        r"family carries 2 channels \(truth_lower, truth_upper\) in two lanes, which a figure would show only half "
-        r"of: evaluate it \(the columns are its channels\) or save it instead$",
+        match=r"^--view falsity does not draw interval-type2 models: interval type-2 degrees are a lower and an "
+        r"upper membership",
     ):
-        curve.to_svg()
-    assert curve._repr_svg_() is None and curve._repr_png_() is None
+        curve.to_svg(view="falsity")
     points = np.stack([np.linspace(0, 4, 20), np.sin(np.linspace(0, 4, 20))], axis=1)
     with pytest.raises(
         ValueError,
