@@ -194,7 +194,12 @@ pub(crate) fn figure(
 
 /// A translucent fill between two lifted polylines (screen points with depth, joined at equal
 /// indices): the edges, the fill opacity and the class.
-type Fill<'a> = (&'a [(f64, f64, f64)], &'a [(f64, f64, f64)], f64, &'static str);
+type Fill<'a> = (
+    &'a [(f64, f64, f64)],
+    &'a [(f64, f64, f64)],
+    f64,
+    &'static str,
+);
 
 /// How the two lanes of a wide family are drawn by [`wide_figure`].
 pub(crate) struct WideLook {

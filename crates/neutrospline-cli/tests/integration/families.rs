@@ -356,6 +356,30 @@ fn plot_refuses_the_views_that_would_misdraw_a_family() {
          the spherical score along the curve\n"
     );
     assert!(!dir.path().join("p.svg").exists() && !dir.path().join("s.svg").exists());
+    // The intuitionistic score is T - F (SPEC section 7), not what the score view draws.
+    std::fs::write(
+        dir.path().join("i.csv"),
+        "x,y,truth,falsity\n0,0,0.2,0.7\n1,2,0.5,0.1\n3,1,0.9,0.0\n",
+    )
+    .unwrap();
+    assert_eq!(
+        fails(
+            dir.path(),
+            &[
+                "plot",
+                "i.csv",
+                "--membership",
+                "intuitionistic",
+                "--view",
+                "score",
+                "-o",
+                "i.svg",
+            ]
+        ),
+        "error: --view score does not draw intuitionistic models: the score view draws the \
+         neutrosophic score (2 + T - I - F) / 3, not the intuitionistic score; `eval --scores` \
+         gives the intuitionistic score along the curve\n"
+    );
     ok(
         dir.path(),
         &["plot", "p.toml", "--view", "falsity", "-o", "p.svg"],

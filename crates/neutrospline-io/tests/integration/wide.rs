@@ -192,7 +192,10 @@ fn the_wide_examples_read_and_keep_their_rule() {
     let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/families/");
     for (file, family) in [
         ("interval-neutrosophic.toml", Family::IntervalNeutrosophic),
-        ("interval-intuitionistic.toml", Family::IntervalIntuitionistic),
+        (
+            "interval-intuitionistic.toml",
+            Family::IntervalIntuitionistic,
+        ),
         ("interval-type2.toml", Family::IntervalType2),
         ("bipolar-neutrosophic.toml", Family::BipolarNeutrosophic),
     ] {
