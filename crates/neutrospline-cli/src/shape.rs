@@ -120,6 +120,37 @@ pub trait Table {
     fn sampler(&self, extras: Extras) -> Sampler<'_>;
 }
 
+/// A sampler of a model's lanes (`Model::lanes`: one shape, or two of the same geometry for
+/// the interval-valued and bipolar families, docs/model.md "Lanes"): every lane is evaluated
+/// at the same parameter, the position (and its rates) comes from the first, and the degree
+/// columns are [`DegreeView::values`] of all lanes' degrees (the rates [`DegreeView::rates`]
+/// of all lanes' degree rates).
+///
+/// # Panics
+/// If `lanes` is empty, or its shapes are not all curves or all surfaces (the lanes of a
+/// model have one geometry).
+pub fn lanes_sampler<'a>(lanes: &[&'a Shape], extras: Extras) -> Sampler<'a> {
+    match lanes[0] {
+        Shape::Curve(_) => Sampler::Curve(CurveSampler::new(
+            &lanes
+                .iter()
+                .map(|shape| shape.curve().expect("the lanes of a curve are curves"))
+                .collect::<Vec<_>>(),
+            extras,
+        )),
+        Shape::Surface(_) => Sampler::Surface(
+            lanes
+                .iter()
+                .map(|shape| match shape {
+                    Shape::Surface(s) => s,
+                    Shape::Curve(_) => panic!("the lanes of a surface are surfaces"),
+                })
+                .collect(),
+            extras,
+        ),
+    }
+}
+
 impl Table for Shape {
     fn curve_domain_text(&self) -> Option<String> {
         self.curve_domain()
@@ -204,10 +235,7 @@ impl Table for Shape {
     }
 
     fn sampler(&self, extras: Extras) -> Sampler<'_> {
-        match self {
-            Shape::Curve(c) => Sampler::Curve(CurveSampler::new(c, extras)),
-            Shape::Surface(s) => Sampler::Surface(s, extras),
-        }
+        lanes_sampler(&[self], extras)
     }
 }
 
@@ -223,8 +251,8 @@ fn partial_names(order: usize) -> Vec<String> {
 pub enum Sampler<'a> {
     /// For a curve.
     Curve(CurveSampler<'a>),
-    /// For a surface.
-    Surface(&'a Surface, Extras),
+    /// For a surface: its lanes.
+    Surface(Vec<&'a Surface>, Extras),
 }
 
 impl Sampler<'_> {
@@ -238,7 +266,9 @@ impl Sampler<'_> {
     pub fn row(&self, param: Param) -> anyhow::Result<Row> {
         Ok(match (self, param) {
             (Sampler::Curve(s), Param::T(t)) => s.row(t)?,
-            (Sampler::Surface(s, extras), Param::Uv(u, v)) => surface_row(s, *extras, u, v)?,
+            (Sampler::Surface(lanes, extras), Param::Uv(u, v)) => {
+                surface_row(lanes, *extras, u, v)?
+            }
             (Sampler::Surface(..), Param::T(_)) => {
                 anyhow::bail!("a surface needs a parameter pair (u, v)")
             }
@@ -247,11 +277,17 @@ impl Sampler<'_> {
     }
 }
 
-/// A curve with its derivatives computed once.
-pub struct CurveSampler<'a> {
+/// A lane of a curve with its derivatives computed once.
+struct LaneCurve<'a> {
     curve: &'a DynCurve,
     /// The derivatives of orders 1, 2, ... asked for.
     derivatives: Vec<DynDerivative>,
+}
+
+/// A curve (all its lanes) with its derivatives computed once.
+pub struct CurveSampler<'a> {
+    /// The lanes; the first gives the position and the geometry.
+    lanes: Vec<LaneCurve<'a>>,
     scores: bool,
     view: DegreeView,
     /// The accuracy of the arc length, when the geometry columns are asked for.
@@ -262,8 +298,8 @@ pub struct CurveSampler<'a> {
 }
 
 impl<'a> CurveSampler<'a> {
-    fn new(curve: &'a DynCurve, extras: Extras) -> Self {
-        CurveSampler {
+    fn new(lanes: &[&'a DynCurve], extras: Extras) -> Self {
+        let lane = |curve: &'a DynCurve| LaneCurve {
             curve,
             derivatives: (1..=extras.derivative)
                 .scan(None, |previous: &mut Option<DynDerivative>, _| {
@@ -275,6 +311,9 @@ impl<'a> CurveSampler<'a> {
                     Some(next)
                 })
                 .collect(),
+        };
+        CurveSampler {
+            lanes: lanes.iter().map(|c| lane(c)).collect(),
             scores: extras.scores,
             view: DegreeView::new(extras.family),
             geometry: extras.geometry.then_some(extras.accuracy),
@@ -282,38 +321,60 @@ impl<'a> CurveSampler<'a> {
         }
     }
 
+    /// The curve of the first lane (the geometry of all).
+    fn curve(&self) -> &'a DynCurve {
+        self.lanes[0].curve
+    }
+
     /// The arc length from the start of the domain to `t`.
     fn arc_length(&self, t: f64, accuracy: f64) -> Result<f64, GeometryError> {
-        let start = self.curve.domain().start;
+        let curve = self.curve();
+        let start = curve.domain().start;
         let length = match self.last_length.get() {
             Some((previous, length)) if previous <= t => {
-                length + self.curve.arc_length(previous..t, accuracy)?
+                length + curve.arc_length(previous..t, accuracy)?
             }
-            _ => self.curve.arc_length(start..t, accuracy)?,
+            _ => curve.arc_length(start..t, accuracy)?,
         };
         self.last_length.set(Some((t, length)));
         Ok(length)
     }
 
     fn row(&self, t: f64) -> anyhow::Result<Row> {
-        let p = self.curve.evaluate_point(t).map_err(explain("position"))?;
+        let p = self
+            .curve()
+            .evaluate_point(t)
+            .map_err(explain("position"))?;
+        let mut degrees = vec![p.degrees];
+        for lane in &self.lanes[1..] {
+            let q = lane.curve.evaluate_point(t).map_err(explain("position"))?;
+            degrees.push(q.degrees);
+        }
         let mut row = vec![t];
         row.extend(&p.position);
-        row.extend(self.view.values(&[p.degrees]));
+        row.extend(self.view.values(&degrees));
         if self.scores {
-            row.extend(self.view.scores(&[p.degrees]));
+            row.extend(self.view.scores(&degrees));
         }
-        for derivative in &self.derivatives {
-            let rates = derivative.evaluate_row(t).map_err(explain("derivative"))?;
-            let (position, degrees) = rates.split_at(rates.len() - 3);
-            row.extend(position);
-            row.extend(self.view.rates(&[[degrees[0], degrees[1], degrees[2]]]));
+        for order in 0..self.lanes[0].derivatives.len() {
+            let mut rates = Vec::with_capacity(self.lanes.len());
+            for (k, lane) in self.lanes.iter().enumerate() {
+                let values = lane.derivatives[order]
+                    .evaluate_row(t)
+                    .map_err(explain("derivative"))?;
+                let (position, slots) = values.split_at(values.len() - 3);
+                if k == 0 {
+                    row.extend(position);
+                }
+                rates.push([slots[0], slots[1], slots[2]]);
+            }
+            row.extend(self.view.rates(&rates));
         }
         let mut row: Row = row.into_iter().map(Some).collect();
         if let Some(accuracy) = self.geometry {
             row.push(Some(self.arc_length(t, accuracy)?));
             // No curvature where the curve stands still (|C'| = 0): an empty cell.
-            row.push(match self.curve.curvature(t) {
+            row.push(match self.curve().curvature(t) {
                 Ok(kappa) => Some(kappa),
                 Err(GeometryError::Stationary { .. }) => None,
                 Err(e) => return Err(e.into()),
@@ -323,9 +384,17 @@ impl<'a> CurveSampler<'a> {
     }
 }
 
-fn push_rates<const D: usize>(row: &mut Vec<f64>, view: DegreeView, d: &DerivativeValue<D>) {
-    row.extend(d.position);
-    row.extend(view.rates(&[[d.truth, d.indeterminacy, d.falsity]]));
+/// The degree rates `[dT, dI, dF]` of a lane's derivative.
+fn slot_rates<const D: usize>(d: &DerivativeValue<D>) -> [f64; 3] {
+    [d.truth, d.indeterminacy, d.falsity]
+}
+
+/// Appends the position rates of the first lane's derivative and the channel rates of all
+/// lanes' derivatives (one [`DerivativeValue`] per lane).
+fn push_rates(row: &mut Vec<f64>, view: DegreeView, lanes: &[DerivativeValue<3>]) {
+    row.extend(lanes[0].position);
+    let rates: Vec<[f64; 3]> = lanes.iter().map(slot_rates).collect();
+    row.extend(view.rates(&rates));
 }
 
 /// The core's error, with an overflow said in terms of what overflowed (the core's message
@@ -339,29 +408,43 @@ fn explain(what: &'static str) -> impl Fn(EvalError) -> anyhow::Error {
     }
 }
 
-fn surface_row(surface: &Surface, extras: Extras, u: f64, v: f64) -> anyhow::Result<Row> {
+fn surface_row(lanes: &[&Surface], extras: Extras, u: f64, v: f64) -> anyhow::Result<Row> {
+    let surface = lanes[0];
     let p = surface.evaluate(u, v).map_err(explain("position"))?;
+    let mut degrees = vec![p.degrees];
+    for lane in &lanes[1..] {
+        degrees.push(lane.evaluate(u, v).map_err(explain("position"))?.degrees);
+    }
     let view = DegreeView::new(extras.family);
     let mut values = Vec::with_capacity(2 + 3 * 6);
     values.extend([u, v]);
     values.extend(p.position);
-    values.extend(view.values(&[p.degrees]));
+    values.extend(view.values(&degrees));
     if extras.scores {
-        values.extend(view.scores(&[p.degrees]));
+        values.extend(view.scores(&degrees));
     }
     if extras.derivative >= 1 {
-        let d = surface
-            .partial_derivatives(u, v)
-            .map_err(explain("derivative"))?;
-        push_rates(&mut values, view, &d.du);
-        push_rates(&mut values, view, &d.dv);
+        let mut du = Vec::with_capacity(lanes.len());
+        let mut dv = Vec::with_capacity(lanes.len());
+        for lane in lanes {
+            let d = lane
+                .partial_derivatives(u, v)
+                .map_err(explain("derivative"))?;
+            du.push(d.du);
+            dv.push(d.dv);
+        }
+        push_rates(&mut values, view, &du);
+        push_rates(&mut values, view, &dv);
     }
     for order in 2..=extras.derivative {
-        for d in surface
-            .mixed_partials(u, v, order)
-            .map_err(explain("derivative"))?
-        {
-            push_rates(&mut values, view, &d);
+        let partials = lanes
+            .iter()
+            .map(|lane| lane.mixed_partials(u, v, order))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(explain("derivative"))?;
+        for k in 0..partials[0].len() {
+            let of_lanes: Vec<DerivativeValue<3>> = partials.iter().map(|p| p[k]).collect();
+            push_rates(&mut values, view, &of_lanes);
         }
     }
     let mut row: Row = values.into_iter().map(Some).collect();

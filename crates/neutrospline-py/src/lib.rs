@@ -21,6 +21,7 @@ mod model;
 mod options;
 mod shape;
 mod surface;
+mod type_reduction;
 
 /// The extension module `neutrospline._neutrospline`.
 #[pymodule]
@@ -55,6 +56,7 @@ fn _neutrospline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fitting::fit_surface, m)?)?;
     m.add_function(wrap_pyfunction!(fitting::fit_surface_options, m)?)?;
     m.add_function(wrap_pyfunction!(cli::_run_cli, m)?)?;
+    m.add_function(wrap_pyfunction!(type_reduction::centroid_interval, m)?)?;
     m.add("instruction_set", neutrospline::batch::instruction_set())?;
     // The workspace's version (Cargo.toml), which is also the wheel's.
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

@@ -128,6 +128,7 @@ pub mod strategies;
 mod surface;
 mod surface_transform;
 mod transform;
+mod type_reduction;
 
 pub use any_curve::{AnyCurve, CurveKind};
 pub use batch::{uniform_parameter, Accuracy, BatchOptions, BatchParams, CurveBatch};
@@ -166,3 +167,4 @@ pub use surface::{
     Direction, EvaluateSurface, Surface, SurfaceDerivatives, SurfaceError, SurfaceKind,
 };
 pub use transform::{DegreeReduction, KnotRemoval, ReduceError, DEVIATION_SAMPLES_PER_SPAN};
+pub use type_reduction::{centroid_interval, CentroidInterval, TypeReductionError};

@@ -1,7 +1,7 @@
 //! `neutrospline check FILE`: validate a file and summarise the curve or surface (for curves
 //! with the length and the arc-length averages of the degrees).
 
-use neutrospline::{DegreeKind, DynCurve, EvaluateSurface, GeometryError, KnotVector};
+use neutrospline::{DegreeKind, DynCurve, EvaluateSurface, Family, GeometryError, KnotVector};
 use neutrospline_io::{KnotRule, KnotSource};
 
 use crate::commands::options::ModelArgs;
@@ -22,6 +22,8 @@ axis); for curves then the \
 length and the arc-length averages (1/L) * integral of q |C'(t)| dt of truth, indeterminacy, \
 falsity and score (2 + T - I - F) / 3, to 12 significant digits (relative accuracy 1e-12; \
 curves of at most 1000 control points and degree 30).\n\
+The interval-valued and bipolar families print a range per channel (truth_lower, ..., \
+negative_falsity), their rule in words and the average of every channel.\n\
 Model options: a CSV file lists control points only, so these give its kind, degree, knots and \
 grid; with a TOML/JSON file an option fills in a key the file leaves out, and must agree with \
 the file where it declares the key."
@@ -84,7 +86,13 @@ const MEASURED_DEGREE: usize = 30;
 /// of the degrees `view` shows, and the score's only for the original three families (the
 /// score of the others is not linear in the degrees, so its average is not the average
 /// curve's score).
-fn geometry_lines(curve: &DynCurve, view: DegreeView) -> Vec<String> {
+///
+/// A family of two lanes (docs/model.md, "Lanes") averages every lane's slots; the channels
+/// are linear in the slots (`Family::join_slots`), so their averages are the same map of the
+/// slots' averages: one line per channel (`average truth_lower: ...`).
+fn geometry_lines(lanes: &[&DynCurve], family: Family) -> Vec<String> {
+    let view = DegreeView::new(family);
+    let curve = lanes[0];
     if curve.len() > MEASURED_CONTROL_POINTS || curve.degree() > MEASURED_DEGREE {
         return vec![format!(
             "length: not measured (check measures curves of at most {MEASURED_CONTROL_POINTS} \
@@ -92,6 +100,24 @@ fn geometry_lines(curve: &DynCurve, view: DegreeView) -> Vec<String> {
         )];
     }
     match curve.arc_averages(neutrospline::DEFAULT_ACCURACY) {
+        Ok(a) if family.lane_count() > 1 => {
+            let mut slots = vec![[a.truth, a.indeterminacy, a.falsity]];
+            for lane in &lanes[1..] {
+                match lane.arc_averages(neutrospline::DEFAULT_ACCURACY) {
+                    Ok(b) => slots.push([b.truth, b.indeterminacy, b.falsity]),
+                    Err(e) => return vec![format!("length: not measurable ({e})")],
+                }
+            }
+            let mut lines = vec![format!("length: {}", twelve_digits(a.length))];
+            for (name, value) in family
+                .channels()
+                .iter()
+                .zip(family.join_slots(&slots).iter())
+            {
+                lines.push(format!("average {name}: {}", twelve_digits(*value)));
+            }
+            lines
+        }
         Ok(a) => {
             let mut lines = vec![format!("length: {}", twelve_digits(a.length))];
             for (name, value) in [
@@ -117,6 +143,22 @@ fn geometry_lines(curve: &DynCurve, view: DegreeView) -> Vec<String> {
     }
 }
 
+/// The rule of a family of two lanes, in words (docs/model.md, "Membership families"): the
+/// box of its channels, `lower <= upper` for the interval-valued ones, and the sum of the
+/// interval-intuitionistic rule (its terms; the caller adds its largest value).
+fn wide_rule(family: Family) -> String {
+    let mut parts = Vec::new();
+    if (0..family.channel_count()).any(|c| family.channel_range(c).0 < 0.0) {
+        parts.push("positive degrees in [0, 1], negative in [-1, 0]".to_owned());
+    } else {
+        parts.push("each channel in [0, 1]".to_owned());
+    }
+    if !family.interval_pairs().is_empty() {
+        parts.push("lower <= upper".to_owned());
+    }
+    parts.join(", ")
+}
+
 fn domain_line(domain: std::ops::Range<f64>) -> String {
     format!("[{}, {}]", number(domain.start), number(domain.end))
 }
@@ -126,12 +168,7 @@ fn domain_line(domain: std::ops::Range<f64>) -> String {
 /// # Errors
 /// An invalid file, or a write error.
 pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
-    let model = input::one_lane(
-        &args.file,
-        input::read_model(&args.file, &args.model)?,
-        "check",
-        "LANES_TODO",
-    )?;
+    let model = input::read_model(&args.file, &args.model)?;
     let file = input::label(&args.file);
     let name = model.name().map(str::to_owned);
     let membership = model.membership();
@@ -142,11 +179,15 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
     let periodic = model.periodic_counts();
     let periodic = |i: usize| periodic.get(i).copied().flatten().is_some();
     let spreads = model.spreads().map(<[_]>::to_vec);
-    let shape = model.into_shape();
-    let geometry = match &shape {
-        Shape::Curve(c) => geometry_lines(c, DegreeView::new(membership)),
+    let channels = model.control_channels();
+    let geometry = match model.shape() {
+        Shape::Curve(_) => {
+            let lanes: Vec<&DynCurve> = model.lanes().iter().filter_map(|s| s.curve()).collect();
+            geometry_lines(&lanes, membership)
+        }
         Shape::Surface(_) => Vec::new(),
     };
+    let shape = model.into_shape();
     output::emit(None, |w| {
         writeln!(w, "{file}: valid")?;
         writeln!(w, "kind: {}", shape.kind())?;
@@ -211,30 +252,45 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
         // Degrees are computed from values in [0, 1] (under the intuitionistic rule the
         // indeterminacy is 1 - T - F): printed to the precision that justifies.
         let degree = |v: f64| neutrospline_io::format_justified(v, 1.0);
+        if membership.lane_count() > 1 {
+            // A line per channel: its range over the control points.
+            for (c, name) in membership.channels().iter().enumerate() {
+                let (min, max) = channels
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                        (lo.min(v[c]), hi.max(v[c]))
+                    });
+                writeln!(w, "{name}: {}..{}", degree(min), degree(max))?;
+            }
+        }
         for (kind, range) in DegreeKind::ALL.iter().zip(shape.degree_ranges()) {
-            if view.channel_names().contains(&kind.name()) {
+            if membership.lane_count() == 1 && view.channel_names().contains(&kind.name()) {
                 writeln!(w, "{kind}: {}..{}", degree(range.min), degree(range.max))?;
             }
         }
         // The rule's sum at the control points (the curve's stays below its largest: the
         // rule is convex), for the families with a sum rule beyond the original three.
         if !view.triple() {
-            let sums: Vec<(String, f64)> = shape
-                .control_degrees()
+            let sums: Vec<(String, f64)> = channels
                 .iter()
-                .filter_map(|d| membership.from_degrees(d))
-                .filter_map(|values| membership.rule_sum(&values))
+                .filter_map(|values| membership.rule_sum(values))
                 .collect();
-            if let Some((terms, _)) = sums.first() {
-                let largest = sums
-                    .iter()
-                    .map(|(_, s)| *s)
-                    .fold(f64::NEG_INFINITY, f64::max);
-                writeln!(
-                    w,
-                    "rule: {terms} <= 1 (largest at the control points: {})",
-                    degree(largest)
-                )?;
+            let wide = (membership.lane_count() > 1).then(|| wide_rule(membership));
+            match (sums.first(), wide) {
+                (Some((terms, _)), wide) => {
+                    let largest = sums
+                        .iter()
+                        .map(|(_, s)| *s)
+                        .fold(f64::NEG_INFINITY, f64::max);
+                    let before = wide.map(|rule| format!("{rule}, ")).unwrap_or_default();
+                    writeln!(
+                        w,
+                        "rule: {before}{terms} <= 1 (largest at the control points: {})",
+                        degree(largest)
+                    )?;
+                }
+                (None, Some(rule)) => writeln!(w, "rule: {rule}")?,
+                (None, None) => {}
             }
         }
         if let Some(spreads) = &spreads {

@@ -12,7 +12,8 @@ use crate::commands::options::{ModelArgs, TableArgs};
 use crate::input::{self, UsageError};
 
 use crate::progress::Progress;
-use crate::shape::{Extras, Param, Shape, Table};
+use crate::shape::{lanes_sampler, Extras, Param, Sampler, Shape, Table};
+use neutrospline_io::Cell;
 
 /// Arguments of `eval`.
 #[derive(Debug, clap::Args)]
@@ -29,7 +30,12 @@ certainty; with --derivative the partial derivatives dx_du, dy_du, dz_du, dtruth
 dindeterminacy_du, dfalsity_du, then dx_dv, ..., dfalsity_dv (--derivative 2 adds\n            \
 dx_duu, ..., dx_duv, ..., dx_dvv, ...; --derivative 3 also _duuu, _duuv, _duvv, _dvvv);\n            \
 with --normal the unit normal nx, ny, nz (empty in CSV, null in JSON, where the surface\n            \
-is degenerate)\n\
+is degenerate)\n  \
+--type-reduce  degree, t_lower, t_upper, t, x_lower, x_upper, x, y_lower, ...[, z]\n            \
+(surfaces: u_lower, u_upper, u, v_lower, v_upper, v, x_lower, ..., z): one row per\n            \
+interval-valued degree; for each column q, [q_lower, q_upper] is the centroid interval\n            \
+[min, max over weights w_k in [lower_k, upper_k] of sum q_k w_k / sum w_k] over the\n            \
+samples k and q its midpoint (exact: the Karnik-Mendel switch point is found by a scan)\n\
 The domain of a curve is [knot_p, knot_{m-p}] ([0, 1] for Bezier curves and for the default\n\
 clamped-uniform knots); `neutrospline check FILE` prints it.\n\
 Model options: a CSV file lists control points only, so these give its kind, degree, knots and\n\
@@ -123,6 +129,20 @@ pub struct EvalArgs {
     /// x + (right - left) / 3
     #[arg(long)]
     pub centroid: bool,
+
+    /// Interval-valued families (interval-type2, interval-neutrosophic,
+    /// interval-intuitionistic): instead of the samples, one row per interval-valued degree
+    /// (truth, indeterminacy, falsity): its type-reduced centroid over the --samples
+    /// parameters, the centroid interval [c_l, c_r] and midpoint of t (u, v) and of each
+    /// coordinate weighted by the degree's [lower, upper] membership (see Columns below)
+    #[arg(
+        long,
+        conflicts_with_all = [
+            "at", "arc_length_samples", "derivative", "scores", "normal", "geometry",
+            "alpha", "centroid"
+        ]
+    )]
+    pub type_reduce: bool,
 
     /// Where the table goes.
     #[command(flatten)]
@@ -385,12 +405,7 @@ fn data_warning(file: &str, model: &neutrospline_io::Model) -> Option<String> {
 pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
     // The table's options are refused before the file is read.
     args.table.table_output()?;
-    let model = input::one_lane(
-        &args.file,
-        input::read_model(&args.file, &args.model)?,
-        "eval",
-        "LANES_TODO",
-    )?;
+    let model = input::read_model(&args.file, &args.model)?;
     let file = input::label(&args.file);
     if let Some(warning) = data_warning(&args.file, &model) {
         eprintln!("{warning}");
@@ -414,7 +429,17 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         None
     };
     let family = model.membership();
-    let shape = model.into_shape();
+    if args.type_reduce && family.interval_pairs().is_empty() {
+        return Err(UsageError(format!(
+            "--type-reduce applies to the interval-valued families (interval-type2, \
+             interval-neutrosophic, interval-intuitionistic): {file} has membership {family}, \
+             which has no interval-valued degree (a [lower, upper] pair of channels) to reduce"
+        ))
+        .into());
+    }
+    // Every lane has the geometry of the first (docs/model.md, "Lanes").
+    let lanes = model.lanes();
+    let shape = lanes[0];
     if args.normal && !shape.is_surface() {
         return Err(UsageError(format!(
             "--normal applies only to surfaces ({file} holds a {} curve)",
@@ -457,9 +482,9 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
     if let Some(fuzzy) = &fuzzy {
         columns.extend(fuzzy.names());
     }
-    let sampler = shape.sampler(extras);
+    let sampler = lanes_sampler(&lanes, extras);
     let limit = crate::limits::current().max_samples;
-    let count = row_count(args, &shape);
+    let count = row_count(args, shape);
     if count > limit {
         let what = match &args.at {
             Some(_) => format!("--at gives {count} parameters"),
@@ -493,8 +518,11 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
             .into())
         }
     };
+    if args.type_reduce {
+        return type_reduce(args, file, shape, &sampler, &columns, family);
+    }
     let mut progress = Progress::new(count, args.table.output.is_none());
-    let rows = parameters(args, &shape, &along).map(|param| {
+    let rows = parameters(args, shape, &along).map(|param| {
         progress.tick();
         let cannot =
             |e: &dyn std::fmt::Display| anyhow::anyhow!("{file}: cannot evaluate at {param}: {e}");
@@ -516,6 +544,71 @@ pub fn run(args: &EvalArgs) -> anyhow::Result<()> {
         Ok(row)
     });
     args.table.write(&columns, rows)
+}
+
+/// `--type-reduce`: for each interval-valued degree of `family` (a pair of channels
+/// `Family::interval_pairs`, such as `truth_lower, truth_upper`), the centroid interval of each
+/// column q among the parameters and coordinates (docs/model.md, "Type reduction"):
+///
+/// ```text
+/// [q_lower, q_upper] = [min, max over w_k in [L_k, U_k] of sum q_k w_k / sum w_k]
+/// q = (q_lower + q_upper) / 2
+/// ```
+///
+/// over the samples k at the `--samples` parameters (curves: t_k; surfaces: the grid of
+/// (u, v)), with `L_k, U_k` the degree's lower and upper membership there
+/// ([`neutrospline::centroid_interval`], exact). The centroid point `(x, y[, z])` is the
+/// type-reduced centroid of the curve (surface) weighted by that degree; each coordinate's
+/// interval ends are reached by their own embedded sets.
+fn type_reduce(
+    args: &EvalArgs,
+    file: &str,
+    shape: &Shape,
+    sampler: &Sampler<'_>,
+    columns: &[String],
+    family: neutrospline::Family,
+) -> anyhow::Result<()> {
+    let coordinates = if shape.is_surface() { 2 } else { 1 } + shape.dimension();
+    let mut samples: Vec<Vec<f64>> = vec![Vec::new(); columns.len()];
+    for param in parameters(args, shape, &[]) {
+        let row = sampler
+            .row(param)
+            .map_err(|e| anyhow::anyhow!("{file}: cannot evaluate at {param}: {e}"))?;
+        for (column, value) in samples.iter_mut().zip(row) {
+            column.push(value.unwrap_or(f64::NAN));
+        }
+    }
+    // The channel columns follow the parameters and coordinates, in the family's order.
+    let channel = |c: usize| &samples[coordinates + c];
+    let mut names = vec!["degree".to_owned()];
+    for name in &columns[..coordinates] {
+        names.extend([
+            format!("{name}_lower"),
+            format!("{name}_upper"),
+            name.clone(),
+        ]);
+    }
+    let mut rows = Vec::new();
+    for &(lower, upper) in family.interval_pairs() {
+        let name = family.channels()[lower];
+        let degree = name.strip_suffix("_lower").unwrap_or(name);
+        // Blending keeps 0 <= lower <= upper; only rounding could break it, by an ulp.
+        let lows: Vec<f64> = channel(lower).iter().map(|l| l.max(0.0)).collect();
+        let highs: Vec<f64> = channel(upper)
+            .iter()
+            .zip(&lows)
+            .map(|(u, l)| u.max(*l))
+            .collect();
+        let mut row = vec![Cell::Word(degree)];
+        for (q, name) in samples[..coordinates].iter().zip(columns) {
+            let c = neutrospline::centroid_interval(q, &lows, &highs).map_err(|e| {
+                anyhow::anyhow!("{file}: --type-reduce: the {degree} centroid of {name}: {e}")
+            })?;
+            row.extend([c.lower, c.upper, c.midpoint()].map(Cell::Number));
+        }
+        rows.push(Ok(row));
+    }
+    args.table.write(&names, rows)
 }
 
 #[cfg(test)]

@@ -1,7 +1,7 @@
 //! `neutrospline intersect A B`: every point where two plane curves meet (or where one curve
 //! crosses itself, when B is A), ordered by the parameter on A.
 
-use neutrospline::{DynCurve, Intersection};
+use neutrospline::{Degrees, DynCurve, Family, Intersection};
 
 use crate::commands::options::{ModelArgs, TableArgs};
 use crate::input;
@@ -18,6 +18,8 @@ degrees of each curve there, and how the curves meet: crossing (at an angle), ta
 tangents agree: touching, osculating or crossing tangentially) or end (an end of either\n\
 curve). Tangential and end-point intersections are included, each contact once. When B is the same curve as A the rows are its self-intersections, t_a < t_b. Curves\n\
 that share a stretch are refused with the parameters of the stretch.\n\
+The interval-valued and bipolar families give a column per channel instead of the three\n\
+degrees (truth_lower_a, truth_upper_a, ..., negative_falsity_b).\n\
 Both files must hold plane (2-D) curves, of any kinds.")]
 pub struct IntersectArgs {
     /// The first curve: .csv, .toml or .json
@@ -37,33 +39,51 @@ pub struct IntersectArgs {
     pub model: ModelArgs,
 }
 
-/// The table's columns.
-const COLUMNS: [&str; 12] = [
-    "index",
-    "t_a",
-    "t_b",
-    "x",
-    "y",
-    "truth_a",
-    "indeterminacy_a",
-    "falsity_a",
-    "truth_b",
-    "indeterminacy_b",
-    "falsity_b",
-    "contact",
-];
+/// A plane curve read from a file: its lanes (docs/model.md, "Lanes": one, or two of the
+/// same geometry for the interval-valued and bipolar families) and its family.
+struct PlaneCurve {
+    lanes: Vec<DynCurve>,
+    family: Family,
+}
+
+impl PlaneCurve {
+    /// The degree column names (without the `_a`/`_b` suffix): `truth, indeterminacy,
+    /// falsity` for a family of one lane, else the family's channels.
+    fn degree_names(&self) -> Vec<&'static str> {
+        if self.family.lane_count() > 1 {
+            self.family.channels().to_vec()
+        } else {
+            vec!["truth", "indeterminacy", "falsity"]
+        }
+    }
+
+    /// The values of [`PlaneCurve::degree_names`] at `t`, where the first lane's degrees are
+    /// `first` (the intersection's point).
+    fn degrees(&self, t: f64, first: &Degrees) -> anyhow::Result<Vec<f64>> {
+        if self.family.lane_count() == 1 {
+            return Ok(first.to_array().to_vec());
+        }
+        let mut lanes = vec![*first];
+        for lane in &self.lanes[1..] {
+            lanes.push(lane.evaluate_point(t)?.degrees);
+        }
+        Ok(self.family.join(&lanes).to_vec())
+    }
+}
 
 /// The plane curve of `file`, or an error naming what it holds.
-fn plane_curve(file: &str, model: &ModelArgs) -> anyhow::Result<DynCurve> {
-    match input::one_lane(
-        file,
-        input::read_model(file, model)?,
-        "intersect",
-        "LANES_TODO",
-    )?
-    .into_shape()
-    {
-        Shape::Curve(curve) if curve.dimension() == 2 => Ok(curve),
+fn plane_curve(file: &str, model: &ModelArgs) -> anyhow::Result<PlaneCurve> {
+    let model = input::read_model(file, model)?;
+    let family = model.membership();
+    let others: Vec<DynCurve> = model.lanes()[1..]
+        .iter()
+        .filter_map(|s| s.curve().cloned())
+        .collect();
+    match model.into_shape() {
+        Shape::Curve(curve) if curve.dimension() == 2 => Ok(PlaneCurve {
+            lanes: std::iter::once(curve).chain(others).collect(),
+            family,
+        }),
         shape => {
             let what = if shape.is_surface() {
                 format!("a {}", shape.kind())
@@ -85,10 +105,10 @@ fn plane_curve(file: &str, model: &ModelArgs) -> anyhow::Result<DynCurve> {
 pub fn run(args: &IntersectArgs) -> anyhow::Result<()> {
     let a = plane_curve(&args.a, &args.model)?;
     let b = plane_curve(&args.b, &args.model)?;
-    let found = if a == b {
-        a.self_intersections()
+    let found = if a.lanes == b.lanes {
+        a.lanes[0].self_intersections()
     } else {
-        a.intersections(&b)
+        a.lanes[0].intersections(&b.lanes[0])
     }
     .map_err(|e| {
         anyhow::Error::msg(format!(
@@ -97,17 +117,30 @@ pub fn run(args: &IntersectArgs) -> anyhow::Result<()> {
             input::label(&args.b)
         ))
     })?;
-    let columns: Vec<String> = COLUMNS.map(str::to_owned).to_vec();
-    let rows = found.iter().enumerate().map(|(index, i)| Ok(row(index, i)));
+    let mut columns: Vec<String> = ["index", "t_a", "t_b", "x", "y"]
+        .map(str::to_owned)
+        .to_vec();
+    columns.extend(a.degree_names().iter().map(|n| format!("{n}_a")));
+    columns.extend(b.degree_names().iter().map(|n| format!("{n}_b")));
+    columns.push("contact".to_owned());
+    let rows = found
+        .iter()
+        .enumerate()
+        .map(|(index, i)| row(index, i, &a, &b));
     args.table.write(&columns, rows)
 }
 
-fn row(index: usize, i: &Intersection) -> Vec<Cell> {
+fn row(
+    index: usize,
+    i: &Intersection,
+    a: &PlaneCurve,
+    b: &PlaneCurve,
+) -> anyhow::Result<Vec<Cell>> {
     let mut row = vec![index as f64, i.parameter_a, i.parameter_b];
     row.extend(i.point_a.position);
-    row.extend(i.point_a.degrees.to_array());
-    row.extend(i.point_b.degrees.to_array());
+    row.extend(a.degrees(i.parameter_a, &i.point_a.degrees)?);
+    row.extend(b.degrees(i.parameter_b, &i.point_b.degrees)?);
     let mut cells: Vec<Cell> = row.into_iter().map(Cell::Number).collect();
     cells.push(Cell::Word(i.contact.name()));
-    cells
+    Ok(cells)
 }

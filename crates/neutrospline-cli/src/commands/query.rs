@@ -3,13 +3,13 @@
 
 use std::path::PathBuf;
 
-use neutrospline::{Degrees, NearestError, RowLengthError};
+use neutrospline::{Degrees as LaneDegrees, EvaluateSurface, Family, NearestError, RowLengthError};
 use neutrospline_io::PointTable;
 
 use crate::commands::options::{ModelArgs, TableArgs};
 use crate::input;
 
-use crate::shape::Shape;
+use crate::shape::{DegreeView, Shape};
 
 /// Arguments of `query`.
 #[derive(Debug, clap::Args)]
@@ -21,6 +21,9 @@ nearest point of the model, distance the Euclidean distance to it, x, y[, z] tha
 point, then its degrees and score (2 + truth - indeterminacy - falsity) / 3. The minimum is\n\
 global, ends included; equally near points (to 1e-13 of the model's size) report the\n\
 smallest parameter (for a surface the smallest u, then v).\n\
+The interval-valued and bipolar families give, instead of truth, indeterminacy, falsity and\n\
+score, a column per channel (truth_lower, truth_upper, ...), the derived degrees and the\n\
+family's score (and accuracy) there.\n\
 POINTS.csv: a header row, then one point per row; columns x, y and (for 3-D models) z, and\n\
 an optional name; comments and quoting as in model CSV files.")]
 pub struct QueryArgs {
@@ -50,13 +53,12 @@ const BATCH: usize = 1 << 14;
 /// An invalid model or points file, points of another dimension than the model, a point
 /// whose distance overflows, or a write error.
 pub fn run(args: &QueryArgs) -> anyhow::Result<()> {
-    let shape = input::one_lane(
-        &args.model_file,
-        input::read_model(&args.model_file, &args.model)?,
-        "query",
-        "LANES_TODO",
-    )?
-    .into_shape();
+    let model = input::read_model(&args.model_file, &args.model)?;
+    let view = Degrees::of(model.membership());
+    // The lanes after the first (docs/model.md, "Lanes"): evaluated at the nearest point's
+    // parameter for the channels of the interval-valued and bipolar families.
+    let others: Vec<Shape> = model.lanes()[1..].iter().map(|s| (*s).clone()).collect();
+    let shape = model.into_shape();
     let model_file = input::label(&args.model_file);
     let table = neutrospline_io::load_points_with(&args.points, &args.model.table_input()?)
         .map_err(input::table_error)?;
@@ -75,18 +77,22 @@ pub fn run(args: &QueryArgs) -> anyhow::Result<()> {
             table.dimension()
         )));
     }
-    let columns = columns(&shape);
+    let columns = columns(&shape, view);
     let rows: Box<dyn Iterator<Item = anyhow::Result<Vec<Option<f64>>>>> = match &shape {
         Shape::Curve(curve) => Box::new(batches(&table, |points: &[f64]| {
             Ok(curve
                 .nearest_rows(points)?
                 .into_iter()
                 .map(|found| {
-                    found.map(|n| {
-                        let mut row = vec![n.parameter, n.distance];
-                        push_point(&mut row, &n.point.position, &n.point.degrees);
-                        row
-                    })
+                    let n = found?;
+                    let mut lanes = vec![n.point.degrees];
+                    for other in &others {
+                        let curve = other.curve().expect("the lanes of a curve are curves");
+                        lanes.push(curve.evaluate_point(n.parameter)?.degrees);
+                    }
+                    let mut row = vec![n.parameter, n.distance];
+                    push_point(&mut row, &n.point.position, view, &lanes);
+                    Ok(row)
                 })
                 .collect())
         })),
@@ -99,11 +105,17 @@ pub fn run(args: &QueryArgs) -> anyhow::Result<()> {
                     .nearest_many(&points)
                     .into_iter()
                     .map(|r| {
-                        r.map(|n| {
-                            let mut row = vec![n.parameter[0], n.parameter[1], n.distance];
-                            push_point(&mut row, &n.point.position, &n.point.degrees);
-                            row
-                        })
+                        let n = r?;
+                        let [u, v] = n.parameter;
+                        let mut lanes = vec![n.point.degrees];
+                        for other in &others {
+                            if let Shape::Surface(s) = other {
+                                lanes.push(s.evaluate(u, v)?.degrees);
+                            }
+                        }
+                        let mut row = vec![u, v, n.distance];
+                        push_point(&mut row, &n.point.position, view, &lanes);
+                        Ok(row)
                     })
                     .collect())
             }))
@@ -170,14 +182,45 @@ fn write(
     args.table.write(columns, rows)
 }
 
-fn push_point(row: &mut Vec<f64>, position: &[f64], degrees: &Degrees) {
-    row.extend_from_slice(position);
-    row.extend(degrees.to_array());
-    row.push(degrees.score());
+/// The degree columns of a family in `query`'s table.
+#[derive(Clone, Copy)]
+enum Degrees {
+    /// `truth, indeterminacy, falsity, score` ((2 + T - I - F) / 3) of the first lane: the
+    /// families of one lane.
+    Triple,
+    /// The channels, derived degrees and scores of [`DegreeView`]: the interval-valued and
+    /// bipolar families (docs/model.md, "Lanes").
+    Channels(DegreeView),
 }
 
-/// `index,t,distance,x,y[,z],truth,indeterminacy,falsity,score` (`u,v` for surfaces).
-fn columns(shape: &Shape) -> Vec<String> {
+impl Degrees {
+    fn of(family: Family) -> Self {
+        if family.lane_count() > 1 {
+            Degrees::Channels(DegreeView::new(family))
+        } else {
+            Degrees::Triple
+        }
+    }
+}
+
+fn push_point(row: &mut Vec<f64>, position: &[f64], view: Degrees, lanes: &[LaneDegrees]) {
+    row.extend_from_slice(position);
+    match view {
+        Degrees::Triple => {
+            row.extend(lanes[0].to_array());
+            row.push(lanes[0].score());
+        }
+        Degrees::Channels(view) => {
+            row.extend(view.values(lanes));
+            row.extend(view.scores(lanes));
+        }
+    }
+}
+
+/// `index,t,distance,x,y[,z],truth,indeterminacy,falsity,score` (`u,v` for surfaces); for
+/// a family of two lanes its channels, derived degrees and scores instead of the degrees and
+/// score.
+fn columns(shape: &Shape, view: Degrees) -> Vec<String> {
     let mut names: Vec<&str> = vec!["index"];
     if shape.is_surface() {
         names.extend(["u", "v"]);
@@ -186,6 +229,12 @@ fn columns(shape: &Shape) -> Vec<String> {
     }
     names.push("distance");
     names.extend(&["x", "y", "z"][..shape.dimension()]);
-    names.extend(["truth", "indeterminacy", "falsity", "score"]);
+    match view {
+        Degrees::Triple => names.extend(["truth", "indeterminacy", "falsity", "score"]),
+        Degrees::Channels(view) => {
+            names.extend(view.names());
+            names.extend(view.score_names());
+        }
+    }
     names.into_iter().map(str::to_owned).collect()
 }

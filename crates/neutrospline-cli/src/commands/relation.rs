@@ -153,8 +153,10 @@ fn check(model_file: &str, args: &ModelArgs, m: &AxisTable, n: &AxisTable) -> an
     let model = input::one_lane(
         model_file,
         input::read_model(model_file, args)?,
-        "relation",
-        "LANES_TODO",
+        "relation --check",
+        "compares each control point's single truth, indeterminacy and falsity with the \
+         axis sets' (Def. 4); its control points carry intervals or bipolar pairs of degrees \
+         instead, which a neutrosophic point relation does not have",
     )?;
     let shown = input::label(model_file);
     let Some(points) = model

@@ -27,4 +27,5 @@ mod tables;
 mod transform;
 mod util;
 mod warnings;
+mod wide_families;
 mod wide_plot;

@@ -417,6 +417,11 @@ def accuracy(degrees: ArrayLike, *, membership: Optional[Membership] = None) -> 
 def derived_degrees(degrees: ArrayLike, *, membership: Membership) -> Tuple[FloatArray, List[str]]:
     """The degrees a family derives from its channel values, with their names."""
 def certainty(degrees: ArrayLike) -> Union[float, FloatArray]: ...
+def centroid_interval(
+    x: Sequence[float], lower: Sequence[float], upper: Sequence[float]
+) -> Tuple[float, float, float]:
+    """The centroid interval ``(c_l, c_r)`` of an interval type-2 fuzzy set sampled at ``x``
+    with lower and upper memberships, and its midpoint (the type-reduced value)."""
 def largest_relation(
     m: Sequence[Tuple[float, Triple]],
     n: Sequence[Tuple[float, Triple]],
