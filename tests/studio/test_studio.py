@@ -581,3 +581,151 @@ def test_drop_broken_file_3d_curve_and_surface(start_studio, page, binary, out_d
     assert model(page)["control_points"][5]["truth"] == 0.25
     assert page.locator("#add-point").is_disabled()
     shot(page, out_dir, "15-surface")
+
+
+def degree_sliders(page):
+    return page.locator("#degree-fields input[type=range]").evaluate_all(
+        "sliders => sliders.map(s => [s.dataset.slider, s.min, s.max, s.disabled])"
+    )
+
+
+def test_wide_families_interval_type2_and_bipolar(start_studio, page, out_dir, tmp_path):
+    """The interval-valued and bipolar families: one slider per channel, as the server
+    describes the family; the rule's refusal next to the field; the table of the channels and
+    derived degrees; switching families converts the degrees by channel name. (The figures of
+    these families are the plot crate's: the test asks nothing of them.)"""
+    file = tmp_path / "interval-type2.toml"
+    shutil.copy(ROOT / "examples" / "families" / "interval-type2.toml", file)
+    studio = start_studio(file)
+    open_page(page, studio)
+    assert page.locator("#model-membership").input_value() == "interval-type2"
+    assert page.locator("#model-membership option").count() == 13
+    assert degree_sliders(page) == [
+        ["truth_lower", "0", "1", False], ["truth_upper", "0", "1", False]
+    ]
+    assert page.locator("input[name=indeterminacy]").count() == 0
+    assert page.locator("#rule-note").inner_text() == (
+        "interval-type2: truth_lower, truth_upper each in [0, 1]; truth_lower <= truth_upper; "
+        "derived: type_reduced, footprint"
+    )
+    header = page.locator("#table-host thead").inner_text().split()
+    assert header == ["t", "x", "y", "truth_lower", "truth_upper", "type_reduced", "footprint"]
+    first = page.locator("#table-host tbody tr").nth(0).inner_text().split()
+    assert first == ["0", "0", "0", "0.2", "0.5", "0.35", "0.3"], first
+    shot(page, out_dir, "16-interval-type2")
+
+    # Point 1 (truth_lower 0.5, truth_upper 0.8): the truth_lower slider dragged to its right
+    # end (1) is refused with the rule, next to the field.
+    page.select_option("#point-index", "1")
+    assert page.locator("input[name=truth_lower]").input_value() == "0.5"
+    assert page.locator("input[name=truth_upper]").input_value() == "0.8"
+    slider = page.locator("input[data-slider=truth_lower]")
+    box = slider.bounding_box()
+    y = box["y"] + box["height"] / 2
+    page.mouse.move(box["x"] + 0.5 * box["width"], y)
+    page.mouse.down()
+    for k in range(1, 11):
+        page.mouse.move(box["x"] + (0.5 + 0.06 * k) * box["width"], y)
+    page.mouse.up()
+    idle(page)
+    message = ("control_points[1]: truth_lower = 1 exceeds truth_upper = 0.8 "
+               "(interval-type2 rule: lower <= upper)")
+    assert page.locator("[role=alert]").inner_text() == message
+    assert page.locator('[data-error-for="truth_lower"]').inner_text() == message
+    # The curve keeps the last value the rule allowed on the way (a preview frame).
+    assert 0.5 <= model(page)["control_points"][1]["truth_lower"] <= 0.8
+    shot(page, out_dir, "17-interval-type2-slider-refused")
+
+    # Typed: truth_lower 0.6 with truth_upper 0.4 (point 3 has 0.4 and 0.6): the upper edited
+    # first is refused next to it; the exact message of the rule.
+    page.select_option("#point-index", "3")
+    page.fill("input[name=truth_upper]", "0.3")
+    page.press("input[name=truth_upper]", "Enter")
+    idle(page)
+    message = ("control_points[3]: truth_lower = 0.4 exceeds truth_upper = 0.3 "
+               "(interval-type2 rule: lower <= upper)")
+    assert page.locator("[role=alert]").inner_text() == message
+    assert page.locator('[data-error-for="truth_upper"]').inner_text() == message
+    assert page.locator('[data-error-for="truth_lower"]').inner_text() == ""
+    page.fill("input[name=truth_upper]", "0.4")
+    page.press("input[name=truth_upper]", "Enter")
+    idle(page)
+    assert model(page)["control_points"][3]["truth_upper"] == 0.4
+    page.fill("input[name=truth_lower]", "0.6")
+    page.press("input[name=truth_lower]", "Enter")
+    idle(page)
+    message = ("control_points[3]: truth_lower = 0.6 exceeds truth_upper = 0.4 "
+               "(interval-type2 rule: lower <= upper)")
+    assert page.locator("[role=alert]").inner_text() == message
+    assert page.locator('[data-error-for="truth_lower"]').inner_text() == message
+    assert page.locator("input[name=truth_lower]").evaluate("e => e.classList.contains('invalid')")
+    assert model(page)["control_points"][3]["truth_lower"] == 0.4
+    shot(page, out_dir, "18-interval-type2-typed-refused")
+
+    # To neutrosophic: truth is the midpoint of the interval, indeterminacy and falsity 0.
+    before = model(page)["control_points"]
+    page.select_option("#model-membership", "neutrosophic")
+    idle(page)
+    m = model(page)
+    assert m.get("membership", "neutrosophic") == "neutrosophic"
+    for p, q in zip(m["control_points"], before):
+        assert set(p) == {"x", "y", "truth", "indeterminacy", "falsity"}, p
+        assert math.isclose(p["truth"], (q["truth_lower"] + q["truth_upper"]) / 2, abs_tol=1e-12)
+        assert (p["indeterminacy"], p["falsity"]) == (0, 0)
+    assert [s[0] for s in degree_sliders(page)] == ["truth", "indeterminacy", "falsity"]
+    header = page.locator("#table-host thead").inner_text().split()
+    assert header == ["t", "x", "y", "truth", "indeterminacy", "falsity"]
+    # And back: a degenerate interval at each truth.
+    page.select_option("#model-membership", "interval-type2")
+    idle(page)
+    m = model(page)
+    assert m["membership"] == "interval-type2"
+    for p, q in zip(m["control_points"], before):
+        mid = (q["truth_lower"] + q["truth_upper"]) / 2
+        assert set(p) == {"x", "y", "truth_lower", "truth_upper"}, p
+        assert math.isclose(p["truth_lower"], mid, abs_tol=1e-12)
+        assert p["truth_lower"] == p["truth_upper"]
+    assert [s[0] for s in degree_sliders(page)] == ["truth_lower", "truth_upper"]
+    # Point 3 (selected) had 0.4 and 0.4 since its upper bound was lowered.
+    assert page.locator("#point-index").input_value() == "3"
+    assert page.locator("input[name=truth_lower]").input_value() == "0.4"
+    assert page.locator("input[name=truth_upper]").input_value() == "0.4"
+    assert model(page)["control_points"][1]["truth_upper"] == model(page)["control_points"][1]["truth_lower"]
+
+    # Bipolar: the positive degrees from the midpoint, the negative ones at 0 with sliders
+    # on [-1, 0]; a negative degree above 0 is refused with its box.
+    page.select_option("#model-membership", "bipolar-neutrosophic")
+    idle(page)
+    assert degree_sliders(page) == [
+        ["truth", "0", "1", False], ["indeterminacy", "0", "1", False],
+        ["falsity", "0", "1", False], ["negative_truth", "-1", "0", False],
+        ["negative_indeterminacy", "-1", "0", False], ["negative_falsity", "-1", "0", False],
+    ]
+    p = model(page)["control_points"][3]
+    assert (p["truth"], p["negative_truth"], p["negative_falsity"]) == (0.4, 0, 0)
+    page.fill("input[name=negative_falsity]", "-0.25")
+    page.press("input[name=negative_falsity]", "Enter")
+    idle(page)
+    assert model(page)["control_points"][3]["negative_falsity"] == -0.25
+    assert page.locator("input[data-slider=negative_falsity]").input_value() == "-0.25"
+    page.fill("input[name=negative_truth]", "0.2")
+    page.press("input[name=negative_truth]", "Enter")
+    idle(page)
+    message = ("control_points[3]: negative_truth = 0.2 is outside [-1, 0] "
+               "(bipolar-neutrosophic rule)")
+    assert page.locator("[role=alert]").inner_text() == message
+    assert page.locator('[data-error-for="negative_truth"]').inner_text() == message
+    header = page.locator("#table-host thead").inner_text().split()
+    assert header[3:] == ["truth", "indeterminacy", "falsity", "negative_truth",
+                          "negative_indeterminacy", "negative_falsity"]
+    shot(page, out_dir, "19-bipolar")
+
+    # Interval-neutrosophic: six interval bounds from the bipolar positive degrees.
+    page.select_option("#model-membership", "interval-neutrosophic")
+    idle(page)
+    p = model(page)["control_points"][3]
+    assert (p["truth_lower"], p["truth_upper"], p["falsity_lower"]) == (0.4, 0.4, 0)
+    assert [s[0] for s in degree_sliders(page)] == [
+        "truth_lower", "truth_upper", "indeterminacy_lower", "indeterminacy_upper",
+        "falsity_lower", "falsity_upper"]
+    shot(page, out_dir, "20-interval-neutrosophic")

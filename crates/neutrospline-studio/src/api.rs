@@ -6,8 +6,8 @@
 //! | route | body | answer |
 //! |---|---|---|
 //! | `GET /`, `/studio.js`, `/studio.css`, `/paint.js` | | the page (embedded in the binary) |
-//! | `GET /api/state` | | `{model, file, canSave}`: the model the studio was started with |
-//! | `POST /api/render` | `{model, views, encoding: svg\|display-list, at, data, figure}` | `{model, figures (SVG) or drawings (display lists), errors, handles, table, info, ms}` |
+//! | `GET /api/state` | | `{model, file, canSave, families}`: the model the studio was started with, and the description of every family the membership list offers |
+//! | `POST /api/render` | `{model, views, encoding: svg\|display-list, at, data, figure}` | `{model, figures (SVG) or drawings (display lists), errors, handles, table, info, family, pointDegrees, ms}` |
 //! | `POST /api/export` | `{model, format: svg\|png, data, figure}` | the figure's bytes |
 //! | `POST /api/open` | `{name, text}` | `{model}`: a TOML, JSON or CSV model read like a file |
 //! | `POST /api/convert` | `{model, format: toml\|json}` | `{text, filename}` (a download) |
@@ -24,6 +24,12 @@
 //! command line's flags, read by the libraries, so a wrong type, an unknown name or a value out
 //! of range is a 400 with the command line's message.
 //! A refused model is answered 422 with `{"error": {"message", "field", "line"}}`.
+//!
+//! A family is described to the page by the core's `Family` data (`family` and `families`:
+//! its channels with their boxes, its lanes, its parameter, its derived degrees and its rule
+//! in words; see `family_json`), so the page draws one field and slider per channel and holds
+//! no family knowledge of its own. `pointDegrees` holds the values of those fields at every
+//! control point, as the model holds them (the intuitionistic hesitation among them).
 
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
@@ -142,9 +148,13 @@ impl Studio {
     fn state(&self) -> Response {
         let model = neutrospline_io::to_json_string(&self.current());
         let file = self.file.as_ref().map(|f| f.display().to_string());
+        let families: Vec<Value> = Family::EXAMPLES
+            .iter()
+            .map(|&f| family_json(new_family(f)))
+            .collect();
         with_model(
             &model,
-            json!({ "file": file, "canSave": self.file.is_some() }),
+            json!({ "file": file, "canSave": self.file.is_some(), "families": families }),
             200,
         )
     }
@@ -330,13 +340,15 @@ fn file_label(name: &str) -> String {
         .map_or("file".to_owned(), |n| n.to_string_lossy().into_owned())
 }
 
-/// The plot model, with the data of `body["data"]` when there is any.
+/// The plot model, with the data of `body["data"]` when there is any (and the data's error
+/// when it cannot be drawn with the model); `Err` with the plot crate's message when it draws
+/// no figure of the model at all.
 fn prepare(
     model: &Model,
     body: &Value,
     color_by: DegreeKind,
-) -> Result<(PlotModel, Option<String>), Response> {
-    let plot = PlotModel::from_model(model).map_err(|e| Response::error(422, &e.to_string()))?;
+) -> Result<(PlotModel, Option<String>), String> {
+    let plot = PlotModel::from_model(model).map_err(|e| e.to_string())?;
     let table = match data_table(&body["data"], model.membership()) {
         Ok(t) => t,
         Err(r) => {
@@ -405,12 +417,17 @@ fn render(body: &Value) -> Result<Response, Response> {
         request.samples = None;
     }
     let options = figure_options(&model, &request)?;
-    let (plot, data_error) = prepare(&model, body, request.color_by)?;
+    // A model the plot crate draws no figure of is still checked, evaluated and edited: each
+    // view shows the plot crate's message.
+    let (drawn, data_error) = match prepare(&model, body, request.color_by) {
+        Ok((plot, data_error)) => (render_views(&plot, &views, &options, encoding), data_error),
+        Err(e) => (views.iter().map(|&v| (v, Err(e.clone()))).collect(), None),
+    };
     // Each view's figure as JSON text: an SVG string or a display-list object.
     let mut figures = Vec::new();
     let mut errors = Map::new();
     let mut plane_handles = Value::Null;
-    for (view, drawn) in render_views(&plot, &views, &options, encoding) {
+    for (view, drawn) in drawn {
         match drawn {
             Ok((json, drawing)) => {
                 if view == View::Plane {
@@ -444,8 +461,7 @@ fn render(body: &Value) -> Result<Response, Response> {
     if let Some(e) = data_error {
         errors.insert("data".to_owned(), Value::String(e));
     }
-    let view = neutrospline_io::DegreeView::new(model.membership());
-    let table = match table(model.shape(), view, body["at"].as_str().unwrap_or("")) {
+    let table = match table(&model, body["at"].as_str().unwrap_or("")) {
         Ok((columns, rows)) => json!({ "columns": columns, "rows": rows }),
         Err(message) => json!({ "error": message }),
     };
@@ -474,6 +490,8 @@ fn render(body: &Value) -> Result<Response, Response> {
             "handles": plane_handles,
             "table": table,
             "info": info(&model),
+            "family": family_json(model.membership()),
+            "pointDegrees": point_degrees(&model),
             "ms": ms,
         }),
         200,
@@ -543,16 +561,17 @@ fn info(model: &Model) -> Value {
     })
 }
 
-/// The table of `eval` (columns `t, x, y[, z]`, then the degrees as `view` shows the model's
-/// family: `truth, indeterminacy, falsity`, or its channels and derived degrees; surfaces
-/// `u, v, x, y, z, ...`) at the parameters of `at` (`T1,T2,...` or `U:V,...`), or at 11
-/// evenly spaced parameters (a 3 x 3 grid on a surface) when it is empty. Numbers as `eval`
-/// writes them.
-fn table(
-    shape: &Shape,
-    view: neutrospline_io::DegreeView,
-    at: &str,
-) -> Result<(Vec<String>, Vec<Vec<String>>), String> {
+/// The table of `eval` (columns `t, x, y[, z]`, then the degrees as
+/// [`DegreeView`](neutrospline_io::DegreeView) shows the model's family: `truth,
+/// indeterminacy, falsity`, or its channels and derived degrees; surfaces `u, v, x, y, z, ...`)
+/// at the parameters of `at` (`T1,T2,...` or `U:V,...`), or at 11 evenly spaced parameters (a
+/// 3 x 3 grid on a surface) when it is empty. Numbers as `eval` writes them. A wide family's
+/// channels are its lanes evaluated at the parameter and joined (docs/model.md, "Lanes"): each
+/// lane is blended with the same basis, so they are the channels blended exactly.
+fn table(model: &Model, at: &str) -> Result<(Vec<String>, Vec<Vec<String>>), String> {
+    let view = neutrospline_io::DegreeView::new(model.membership());
+    let lanes = model.lanes();
+    let shape = model.shape();
     let mut columns: Vec<String> = if shape.is_surface() {
         vec!["u".into(), "v".into()]
     } else {
@@ -603,9 +622,15 @@ fn table(
             };
             for (u, v) in params {
                 let p = s.evaluate(u, v).map_err(|e| e.to_string())?;
+                let mut degrees = vec![p.degrees];
+                for lane in &lanes[1..] {
+                    if let Shape::Surface(other) = lane {
+                        degrees.push(other.evaluate(u, v).map_err(|e| e.to_string())?.degrees);
+                    }
+                }
                 let mut row = vec![cell(u), cell(v)];
                 row.extend(p.position.iter().map(|&x| cell(x)));
-                row.extend(view.values(&[p.degrees]).into_iter().map(cell));
+                row.extend(view.values(&degrees).into_iter().map(cell));
                 rows.push(row);
             }
         }
@@ -621,8 +646,14 @@ fn table(
             for t in params {
                 let mut row = vec![cell(t)];
                 let p = curve.evaluate_point(t).map_err(|e| e.to_string())?;
+                let mut degrees = vec![p.degrees];
+                for lane in &lanes[1..] {
+                    if let Shape::Curve(other) = lane {
+                        degrees.push(other.evaluate_point(t).map_err(|e| e.to_string())?.degrees);
+                    }
+                }
                 row.extend(p.position.iter().map(|&x| cell(x)));
-                row.extend(view.values(&[p.degrees]).into_iter().map(cell));
+                row.extend(view.values(&degrees).into_iter().map(cell));
                 rows.push(row);
             }
         }
@@ -630,11 +661,164 @@ fn table(
     Ok((columns, rows))
 }
 
+/// The family a model switched to `family` in the page gets: `family`, or for the families
+/// with a parameter (`q-rung`, `t-spherical`) that parameter = 3 (the page keeps a parameter
+/// the model already gives).
+fn new_family(family: Family) -> Family {
+    match family.parameter() {
+        Some(_) => Family::with_parameter(family.name(), 3).unwrap_or(family),
+        None => family,
+    }
+}
+
+/// The page's description of `family`, all from the core's `Family` data (docs/model.md,
+/// "Membership families" and "Lanes"), so that the page holds no knowledge of its own:
+///
+/// - `name`: the family's name without its parameter (the model's `membership`);
+/// - `label`: the name as the membership list shows it;
+/// - `parameter`: `{key, value}` of the parameter (`q` of `q-rung`, `n` of `t-spherical`) or
+///   null;
+/// - `lanes`: how many lanes the family rides in (1, or 2 for the interval-valued and bipolar
+///   families);
+/// - `channels`: `{name, min, max}` of each channel (`Family::channels`, the box of
+///   `Family::channel_range`: \[0, 1\], or \[-1, 0\] for the negative bipolar degrees), the
+///   keys of a control point in the model;
+/// - `fields`: the degree fields of the panel, `{name, min, max, derived}`: for a family of one
+///   lane the three degree slots truth, indeterminacy, falsity of its curve, `derived` for a
+///   slot that is not a channel (shown as the curve holds it: the intuitionistic hesitation
+///   `1 - T - F`, else 0); for a wide family its channels;
+/// - `derived`: the names of the derived degrees (`Family::derived_names`);
+/// - `rule`: the rule in one line ([`rule_text`]).
+fn family_json(family: Family) -> Value {
+    let channels: Vec<Value> = family
+        .channels()
+        .iter()
+        .enumerate()
+        .map(|(c, name)| {
+            let (min, max) = family.channel_range(c);
+            json!({ "name": name, "min": min, "max": max })
+        })
+        .collect();
+    let fields: Vec<Value> = if family.lane_count() == 1 {
+        DegreeKind::ALL
+            .iter()
+            .map(|&kind| {
+                json!({ "name": kind.name(), "min": 0.0, "max": 1.0, "derived": !family.carries(kind) })
+            })
+            .collect()
+    } else {
+        family
+            .channels()
+            .iter()
+            .enumerate()
+            .map(|(c, name)| {
+                let (min, max) = family.channel_range(c);
+                json!({ "name": name, "min": min, "max": max, "derived": false })
+            })
+            .collect()
+    };
+    let label = match family.parameter() {
+        Some((key, value)) => {
+            format!(
+                "{} ({key} = {value} unless the file gives {key})",
+                family.name()
+            )
+        }
+        None => family.name().to_owned(),
+    };
+    json!({
+        "name": family.name(),
+        "label": label,
+        "parameter": family.parameter().map(|(key, value)| json!({ "key": key, "value": value })),
+        "lanes": family.lane_count(),
+        "channels": channels,
+        "fields": fields,
+        "derived": family.derived_names(),
+        "rule": rule_text(family),
+    })
+}
+
+/// The rule of `family` in one line, built from its data: the box of each channel, each
+/// interval's `lower <= upper`, the sum rule's terms (`Family::rule_sum`), the degree slots a
+/// family of one lane does not carry, and the derived degrees. For example `interval-type2:
+/// truth_lower, truth_upper in [0, 1]; truth_lower <= truth_upper; derived: type_reduced,
+/// footprint`.
+fn rule_text(family: Family) -> String {
+    let channels = family.channels();
+    let mut boxes: Vec<((f64, f64), Vec<&str>)> = Vec::new();
+    for (c, name) in channels.iter().enumerate() {
+        let range = family.channel_range(c);
+        match boxes.iter_mut().find(|(r, _)| *r == range) {
+            Some((_, names)) => names.push(name),
+            None => boxes.push((range, vec![name])),
+        }
+    }
+    let mut parts: Vec<String> = boxes
+        .iter()
+        .map(|((low, high), names)| {
+            let each = if names.len() > 1 { " each" } else { "" };
+            format!(
+                "{}{each} in [{}, {}]",
+                names.join(", "),
+                format_number(*low),
+                format_number(*high)
+            )
+        })
+        .collect();
+    let pairs: Vec<String> = family
+        .interval_pairs()
+        .iter()
+        .map(|&(lower, upper)| format!("{} <= {}", channels[lower], channels[upper]))
+        .collect();
+    if !pairs.is_empty() {
+        parts.push(pairs.join(", "));
+    }
+    if let Some((terms, _)) = family.rule_sum(&vec![0.0; channels.len()]) {
+        parts.push(format!("{terms} <= 1"));
+    }
+    if family.lane_count() == 1 {
+        let missing: Vec<&str> = DegreeKind::ALL
+            .iter()
+            .filter(|k| !family.carries(**k))
+            .map(|k| k.name())
+            .collect();
+        if !missing.is_empty() {
+            parts.push(format!("{} not a channel", missing.join(", ")));
+        }
+    }
+    if !family.derived_names().is_empty() {
+        parts.push(format!("derived: {}", family.derived_names().join(", ")));
+    }
+    format!("{family}: {}", parts.join("; "))
+}
+
+/// The values of the panel's degree fields (`fields` of [`family_json`]) at every control
+/// point (surfaces row by row): for a family of one lane the three degree slots its curve
+/// holds (the intuitionistic indeterminacy is the hesitation `1 - T - F`, a slot the family
+/// does not carry 0), for a wide family its channels.
+fn point_degrees(model: &Model) -> Vec<Vec<f64>> {
+    if model.membership().lane_count() == 1 {
+        model
+            .shape()
+            .control_degrees()
+            .iter()
+            .map(|d| d.to_array().to_vec())
+            .collect()
+    } else {
+        model
+            .control_channels()
+            .iter()
+            .map(|values| values.to_vec())
+            .collect()
+    }
+}
+
 fn export(body: &Value) -> Result<Response, Response> {
     let model = page_model(body)?;
     let request = figure_request(body)?;
     let options = figure_options(&model, &request)?;
-    let (plot, _) = prepare(&model, body, request.color_by)?;
+    let (plot, _) =
+        prepare(&model, body, request.color_by).map_err(|e| Response::error(422, &e))?;
     let view = request.view(body.get("data").is_some_and(|d| !d.is_null()));
     let fail = |e: neutrospline_plot::PlotError| Response::error(422, &e.to_string());
     match body["format"].as_str() {

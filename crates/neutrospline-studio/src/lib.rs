@@ -1,8 +1,9 @@
 //! # neutrospline-studio
 //!
-//! `neutrospline studio`: a page in the browser where a neutrosophic curve is shaped and its
-//! truth, indeterminacy and falsity edited while the paper's views redraw (docs/model.md
-//! sections 4-6 for what is drawn). The page is plain HTML, CSS and JavaScript embedded in the
+//! `neutrospline studio`: a page in the browser where a curve is shaped and the degrees of its
+//! membership family edited, one field and slider per channel (truth, indeterminacy and
+//! falsity, or the interval bounds and bipolar degrees of the wide families), while the
+//! paper's views redraw (docs/model.md sections 4-6 for what is drawn). The page is plain HTML, CSS and JavaScript embedded in the
 //! binary; it computes nothing itself. Each edit sends the model (the JSON object a `.json`
 //! save writes) to a small HTTP server on 127.0.0.1, which reads it with `neutrospline-io`
 //! (so a refused value carries the CLI's message), draws the views shown with

@@ -1046,3 +1046,463 @@ fn every_module_the_page_imports_is_served() {
         403
     );
 }
+
+// ------------------------------------------------------------------------------------------
+// The wide families (interval-valued and bipolar): described to the page, tabled through their
+// lanes, refused with their rule.
+
+/// The family of `/api/state`'s list named `name`.
+fn described(families: &Value, name: &str) -> Value {
+    families
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|f| f["name"] == name)
+        .unwrap_or_else(|| panic!("{name} not in {families}"))
+        .clone()
+}
+
+#[test]
+fn state_describes_every_family_from_the_core() {
+    let port = example_server();
+    let (status, _, body) = get(port, "/api/state", &host(port));
+    assert_eq!(status, 200);
+    let state: Value = serde_json::from_slice(&body).unwrap();
+    let families = &state["families"];
+    let names: Vec<&str> = families
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "neutrosophic",
+            "intuitionistic",
+            "fuzzy",
+            "pythagorean",
+            "fermatean",
+            "q-rung",
+            "picture",
+            "spherical",
+            "t-spherical",
+            "interval-neutrosophic",
+            "interval-intuitionistic",
+            "interval-type2",
+            "bipolar-neutrosophic"
+        ]
+    );
+    let type2 = described(families, "interval-type2");
+    assert_eq!(
+        type2,
+        json!({
+            "name": "interval-type2",
+            "label": "interval-type2",
+            "parameter": null,
+            "lanes": 2,
+            "channels": [
+                { "name": "truth_lower", "min": 0.0, "max": 1.0 },
+                { "name": "truth_upper", "min": 0.0, "max": 1.0 }
+            ],
+            "fields": [
+                { "name": "truth_lower", "min": 0.0, "max": 1.0, "derived": false },
+                { "name": "truth_upper", "min": 0.0, "max": 1.0, "derived": false }
+            ],
+            "derived": ["type_reduced", "footprint"],
+            "rule": "interval-type2: truth_lower, truth_upper each in [0, 1]; \
+                     truth_lower <= truth_upper; derived: type_reduced, footprint"
+        })
+    );
+    // Bipolar: six fields, the negative ones in [-1, 0].
+    let bipolar = described(families, "bipolar-neutrosophic");
+    let fields: Vec<(String, f64, f64)> = bipolar["fields"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| {
+            (
+                f["name"].as_str().unwrap().to_owned(),
+                f["min"].as_f64().unwrap(),
+                f["max"].as_f64().unwrap(),
+            )
+        })
+        .collect();
+    let expected: Vec<(String, f64, f64)> = [
+        ("truth", 0.0, 1.0),
+        ("indeterminacy", 0.0, 1.0),
+        ("falsity", 0.0, 1.0),
+        ("negative_truth", -1.0, 0.0),
+        ("negative_indeterminacy", -1.0, 0.0),
+        ("negative_falsity", -1.0, 0.0),
+    ]
+    .iter()
+    .map(|(n, a, b)| ((*n).to_owned(), *a, *b))
+    .collect();
+    assert_eq!(fields, expected);
+    assert_eq!(
+        bipolar["rule"],
+        "bipolar-neutrosophic: truth, indeterminacy, falsity each in [0, 1]; negative_truth, \
+         negative_indeterminacy, negative_falsity each in [-1, 0]"
+    );
+    assert_eq!(
+        described(families, "interval-intuitionistic")["rule"],
+        "interval-intuitionistic: truth_lower, truth_upper, falsity_lower, falsity_upper each in \
+         [0, 1]; truth_lower <= truth_upper, falsity_lower <= falsity_upper; truth_upper + \
+         falsity_upper <= 1; derived: hesitation_lower, hesitation_upper"
+    );
+    // A family of one lane shows the three degree slots of its curve, the ones it does not
+    // carry derived (the intuitionistic hesitation, a Pythagorean 0).
+    let intuitionistic = described(families, "intuitionistic");
+    assert_eq!(intuitionistic["lanes"], 1);
+    let derived: Vec<(&str, bool)> = intuitionistic["fields"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| (f["name"].as_str().unwrap(), f["derived"].as_bool().unwrap()))
+        .collect();
+    assert_eq!(
+        derived,
+        [
+            ("truth", false),
+            ("indeterminacy", true),
+            ("falsity", false)
+        ]
+    );
+    assert_eq!(
+        intuitionistic["channels"],
+        json!([{ "name": "truth", "min": 0.0, "max": 1.0 }, { "name": "falsity", "min": 0.0, "max": 1.0 }])
+    );
+    assert_eq!(
+        intuitionistic["rule"],
+        "intuitionistic: truth, falsity each in [0, 1]; truth + falsity <= 1; indeterminacy not \
+         a channel; derived: hesitation"
+    );
+    // The parametrised families: the parameter's key, and 3 for a model switched to them.
+    let q = described(families, "q-rung");
+    assert_eq!(q["parameter"], json!({ "key": "q", "value": 3 }));
+    assert_eq!(q["label"], "q-rung (q = 3 unless the file gives q)");
+    assert_eq!(
+        q["rule"],
+        "q-rung:3: truth, falsity each in [0, 1]; truth^3 + falsity^3 <= 1; indeterminacy not a \
+         channel; derived: hesitation"
+    );
+    assert_eq!(
+        described(families, "t-spherical")["parameter"],
+        json!({ "key": "n", "value": 3 })
+    );
+}
+
+/// An interval-type2 cubic Bézier curve, as the page sends it.
+const TYPE2_BEZIER: &str = r#"{"kind": "bezier", "membership": "interval-type2",
+  "control_points": [
+    {"x": 0.0, "y": 0.0, "truth_lower": 0.2, "truth_upper": 0.5},
+    {"x": 1.0, "y": 2.0, "truth_lower": 0.6, "truth_upper": 0.9},
+    {"x": 3.0, "y": 2.0, "truth_lower": 0.1, "truth_upper": 0.3},
+    {"x": 4.0, "y": 0.0, "truth_lower": 0.4, "truth_upper": 0.4}]}"#;
+
+/// A bipolar neutrosophic quadratic Bézier curve.
+const BIPOLAR_BEZIER: &str = r#"{"kind": "bezier", "membership": "bipolar-neutrosophic",
+  "control_points": [
+    {"x": 0, "y": 0, "truth": 0.8, "indeterminacy": 0.2, "falsity": 0.1,
+     "negative_truth": -0.1, "negative_indeterminacy": -0.3, "negative_falsity": -0.7},
+    {"x": 1, "y": 2, "truth": 0.5, "indeterminacy": 0.4, "falsity": 0.3,
+     "negative_truth": -0.4, "negative_indeterminacy": 0.0, "negative_falsity": -0.5},
+    {"x": 3, "y": 1, "truth": 0.2, "indeterminacy": 0.1, "falsity": 0.7,
+     "negative_truth": -0.8, "negative_indeterminacy": -0.1, "negative_falsity": -0.2}]}"#;
+
+/// The Bernstein blend `sum_i C(n, i) t^i (1 - t)^(n - i) values[i]`, written out here.
+fn bernstein_blend(values: &[f64], t: f64) -> f64 {
+    let n = values.len() - 1;
+    let mut binomial = 1.0;
+    let mut sum = 0.0;
+    for (i, v) in values.iter().enumerate() {
+        sum += binomial * t.powi(i as i32) * (1.0 - t).powi((n - i) as i32) * v;
+        binomial = binomial * (n - i) as f64 / (i + 1) as f64;
+    }
+    sum
+}
+
+/// The table's cells as numbers.
+fn numbers(row: &Value) -> Vec<f64> {
+    row.as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c.as_str().unwrap().parse().unwrap())
+        .collect()
+}
+
+fn channel(model: &Value, name: &str) -> Vec<f64> {
+    model["control_points"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p[name].as_f64().unwrap())
+        .collect()
+}
+
+#[test]
+fn the_table_of_a_wide_model_blends_every_channel() {
+    let port = example_server();
+    let at = [0.0, 0.3, 0.5, 0.85, 1.0];
+    let at_text = "0, 0.3, 0.5, 0.85, 1";
+    // Whatever the plot crate draws of a wide model, the model, its table and its family come
+    // back: figures are asked for none here.
+    let (status, answer, _) = post(
+        port,
+        "/api/render",
+        &json!({ "model": TYPE2_BEZIER, "views": [], "at": at_text }),
+    );
+    assert_eq!(status, 200, "{answer}");
+    assert_eq!(
+        answer["table"]["columns"],
+        json!([
+            "t",
+            "x",
+            "y",
+            "truth_lower",
+            "truth_upper",
+            "type_reduced",
+            "footprint"
+        ])
+    );
+    let model: Value = serde_json::from_str(TYPE2_BEZIER).unwrap();
+    let (lower, upper) = (
+        channel(&model, "truth_lower"),
+        channel(&model, "truth_upper"),
+    );
+    let (xs, ys) = (channel(&model, "x"), channel(&model, "y"));
+    for (row, &t) in answer["table"]["rows"].as_array().unwrap().iter().zip(&at) {
+        let cells = numbers(row);
+        let (l, u) = (bernstein_blend(&lower, t), bernstein_blend(&upper, t));
+        let expected = [
+            t,
+            bernstein_blend(&xs, t),
+            bernstein_blend(&ys, t),
+            l,
+            u,
+            (l + u) / 2.0,
+            u - l,
+        ];
+        for (k, (got, want)) in cells.iter().zip(expected).enumerate() {
+            assert!(
+                (got - want).abs() < 1e-12,
+                "t = {t}, column {k}: {got} vs {want}"
+            );
+        }
+    }
+    assert_eq!(answer["table"]["rows"].as_array().unwrap().len(), 5);
+    assert_eq!(answer["family"]["name"], "interval-type2");
+    assert_eq!(
+        answer["pointDegrees"],
+        json!([[0.2, 0.5], [0.6, 0.9], [0.1, 0.3], [0.4, 0.4]])
+    );
+    assert_eq!(answer["model"]["control_points"], model["control_points"]);
+
+    // Bipolar: the negative degrees ride negated in the second lane and come back negative.
+    let (status, answer, _) = post(
+        port,
+        "/api/render",
+        &json!({ "model": BIPOLAR_BEZIER, "views": [], "at": "0.25, 0.6" }),
+    );
+    assert_eq!(status, 200, "{answer}");
+    let names = [
+        "truth",
+        "indeterminacy",
+        "falsity",
+        "negative_truth",
+        "negative_indeterminacy",
+        "negative_falsity",
+    ];
+    let mut columns = vec!["t", "x", "y"];
+    columns.extend(names);
+    assert_eq!(answer["table"]["columns"], json!(columns));
+    let model: Value = serde_json::from_str(BIPOLAR_BEZIER).unwrap();
+    for (row, t) in answer["table"]["rows"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip([0.25, 0.6])
+    {
+        let cells = numbers(row);
+        for (k, name) in names.iter().enumerate() {
+            let want = bernstein_blend(&channel(&model, name), t);
+            assert!((cells[3 + k] - want).abs() < 1e-12, "t = {t}, {name}");
+        }
+        assert!(cells[6] < 0.0 && cells[8] < 0.0, "{cells:?}");
+    }
+    assert_eq!(
+        answer["pointDegrees"][1],
+        json!([0.5, 0.4, 0.3, -0.4, 0.0, -0.5])
+    );
+
+    // A one-lane family's point degrees are its curve's three slots: the intuitionistic
+    // indeterminacy is the hesitation 1 - T - F.
+    let intuitionistic = example_with(|v| {
+        v["membership"] = json!("intuitionistic");
+        for p in v["control_points"].as_array_mut().unwrap() {
+            p.as_object_mut().unwrap().remove("indeterminacy");
+        }
+    });
+    let (_, answer, _) = post(
+        port,
+        "/api/render",
+        &json!({ "model": intuitionistic, "views": [] }),
+    );
+    let slots = numbers_of(&answer["pointDegrees"][1]);
+    assert_eq!(slots[0], 0.8);
+    assert!((slots[1] - 0.1).abs() < 1e-15, "{slots:?}");
+    assert_eq!(slots[2], 0.1);
+}
+
+fn numbers_of(values: &Value) -> Vec<f64> {
+    values
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect()
+}
+
+#[test]
+fn the_interval_type2_example_file_is_tabled_and_its_rule_refused() {
+    let port = example_server();
+    let text = include_str!("../../../examples/families/interval-type2.toml");
+    let (status, opened, _) = post(
+        port,
+        "/api/open",
+        &json!({ "name": "interval-type2.toml", "text": text }),
+    );
+    assert_eq!(status, 200, "{opened}");
+    let model_text = opened["model"].to_string();
+    let (status, answer, _) = post(
+        port,
+        "/api/render",
+        &json!({ "model": model_text, "views": [] }),
+    );
+    assert_eq!(status, 200, "{answer}");
+    assert_eq!(answer["table"]["rows"].as_array().unwrap().len(), 11);
+    // At t = 0 the clamped B-spline is at its first control point: 0.2 and 0.5.
+    assert_eq!(
+        answer["table"]["rows"][0],
+        json!(["0", "0", "0", "0.2", "0.5", "0.35", "0.3"])
+    );
+    // truth_lower above truth_upper: the reader's message, with the rule.
+    let mut bad = opened["model"].clone();
+    bad["control_points"][1]["truth_lower"] = json!(0.6);
+    bad["control_points"][1]["truth_upper"] = json!(0.4);
+    let (status, answer, _) = post(
+        port,
+        "/api/render",
+        &json!({ "model": bad.to_string(), "views": ["plane"] }),
+    );
+    assert_eq!(status, 422);
+    assert_eq!(
+        answer["error"]["message"],
+        "control_points[1]: truth_lower = 0.6 exceeds truth_upper = 0.4 (interval-type2 rule: \
+         lower <= upper)"
+    );
+    assert_eq!(answer["error"]["field"], "control_points[1]");
+    assert_eq!(
+        answer["error"]["detail"],
+        "truth_lower = 0.6 exceeds truth_upper = 0.4 (interval-type2 rule: lower <= upper)"
+    );
+    // A negative bipolar degree above 0: its box.
+    let mut bad: Value = serde_json::from_str(BIPOLAR_BEZIER).unwrap();
+    bad["control_points"][2]["negative_falsity"] = json!(0.2);
+    let (status, answer, _) = post(
+        port,
+        "/api/render",
+        &json!({ "model": bad.to_string(), "views": [] }),
+    );
+    assert_eq!(status, 422);
+    assert_eq!(
+        answer["error"]["message"],
+        "control_points[2]: negative_falsity = 0.2 is outside [-1, 0] (bipolar-neutrosophic rule)"
+    );
+}
+
+#[test]
+fn the_table_of_a_wide_surface_blends_its_lanes() {
+    let port = example_server();
+    // A bilinear interval-intuitionistic patch; rows along u, columns along v.
+    let points = [
+        (0.0, 0.0, [0.1, 0.3, 0.2, 0.4]),
+        (0.0, 1.0, [0.5, 0.6, 0.1, 0.2]),
+        (1.0, 0.0, [0.2, 0.2, 0.5, 0.7]),
+        (1.0, 1.0, [0.0, 0.4, 0.3, 0.5]),
+    ];
+    let names = [
+        "truth_lower",
+        "truth_upper",
+        "falsity_lower",
+        "falsity_upper",
+    ];
+    let control_points: Vec<Value> = points
+        .iter()
+        .map(|(x, y, values)| {
+            let mut p = json!({ "x": x, "y": y, "z": x * y });
+            for (name, v) in names.iter().zip(values) {
+                p[*name] = json!(v);
+            }
+            p
+        })
+        .collect();
+    let model = json!({
+        "kind": "bezier-surface", "rows": 2, "cols": 2,
+        "membership": "interval-intuitionistic", "control_points": control_points,
+    });
+    let (status, answer, _) = post(
+        port,
+        "/api/render",
+        &json!({ "model": model.to_string(), "views": [], "at": "0.25:0.5, 0.8:0.1" }),
+    );
+    assert_eq!(status, 200, "{answer}");
+    assert_eq!(
+        answer["table"]["columns"],
+        json!([
+            "u",
+            "v",
+            "x",
+            "y",
+            "z",
+            "truth_lower",
+            "truth_upper",
+            "falsity_lower",
+            "falsity_upper",
+            "hesitation_lower",
+            "hesitation_upper"
+        ])
+    );
+    for (row, (u, v)) in answer["table"]["rows"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip([(0.25, 0.5), (0.8, 0.1)])
+    {
+        let cells = numbers(row);
+        // The bilinear weights of the corners (0,0), (0,1), (1,0), (1,1).
+        let w = [(1.0 - u) * (1.0 - v), (1.0 - u) * v, u * (1.0 - v), u * v];
+        let blend = |k: usize| -> f64 { points.iter().zip(w).map(|(p, w)| w * p.2[k]).sum() };
+        let channels = [blend(0), blend(1), blend(2), blend(3)];
+        let expected = [
+            u,
+            v,
+            u,
+            v,
+            u * v,
+            channels[0],
+            channels[1],
+            channels[2],
+            channels[3],
+            1.0 - channels[1] - channels[3],
+            1.0 - channels[0] - channels[2],
+        ];
+        for (k, (got, want)) in cells.iter().zip(expected).enumerate() {
+            assert!(
+                (got - want).abs() < 1e-12,
+                "({u}, {v}) column {k}: {got} vs {want}"
+            );
+        }
+    }
+}

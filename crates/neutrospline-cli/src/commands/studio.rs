@@ -47,12 +47,7 @@ pub fn run(args: &StudioArgs) -> anyhow::Result<()> {
             .into())
         }
         Some(file) => {
-            let model = input::one_lane(
-                &file.to_string_lossy(),
-                input::read_model(&file.to_string_lossy(), &args.model)?,
-                "studio",
-                "LANES_TODO",
-            )?;
+            let model = input::read_model(&file.to_string_lossy(), &args.model)?;
             Studio::with_file(model, file.clone())
         }
         None => Studio::example(),

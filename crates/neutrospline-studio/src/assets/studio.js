@@ -11,7 +11,7 @@
 
 import { attachDragging, buildPanels, syncViewControls } from './modules/figures.js';
 import { attachFiles } from './modules/files.js';
-import { attachFields, attachKeys, attachViews } from './modules/panel.js';
+import { attachFields, attachKeys, attachViews, fillFamilies } from './modules/panel.js';
 import { idleWaiters, outstanding, pending, propose } from './modules/queue.js';
 import { $, alertMessage, clone, redo, state, undo } from './modules/state.js';
 
@@ -33,6 +33,7 @@ async function start() {
   }
   state.file = r.file;
   state.canSave = r.canSave;
+  fillFamilies(r.families);
   $('#file-name').textContent = r.file ? r.file : 'Example 1 (no file: save downloads)';
   state.committed = JSON.stringify(r.model);
   state.model = r.model;

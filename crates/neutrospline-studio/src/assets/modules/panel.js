@@ -4,7 +4,7 @@
 import { fmt, syncViewControls } from './figures.js';
 import { fitData } from './fitting.js';
 import { propose } from './queue.js';
-import { $, DEFAULT_CAMERA, DEGREES, OTHER_VIEWS, PAPER_VIEWS, clearFieldErrors, clone, redo, state, undo, updateButtons } from './state.js';
+import { $, DEFAULT_CAMERA, OTHER_VIEWS, PAPER_VIEWS, clearFieldErrors, clone, redo, state, undo, updateButtons } from './state.js';
 
 // The side panel (the table and the fields) while a point is dragged: at most every
 // PANEL_EVERY_MS, and after the last frame; the views are redrawn every frame. Each update
@@ -77,10 +77,16 @@ function drawTable(table) {
   host.innerHTML = '';
   const t = document.createElement('table');
   t.dataset.shape = `${table.columns.join(',')}/${table.rows.length}`;
+  // Many columns (a wide family's channels): a smaller font, and the names broken after
+  // their underscores (truth_ / lower), so that the table fits the panel or nearly.
+  t.classList.toggle('many', table.columns.length > 6);
   const head = t.createTHead().insertRow();
   for (const c of table.columns) {
     const th = document.createElement('th');
-    th.textContent = c;
+    c.split(/(?<=_)/).forEach((part, i) => {
+      if (i > 0) th.appendChild(document.createElement('wbr'));
+      th.appendChild(document.createTextNode(part));
+    });
     head.appendChild(th);
   }
   const body = t.createTBody();
@@ -157,48 +163,98 @@ function fillModelFields(force) {
   }
   put($('#z-field'), 'hidden', p.z === undefined);
   put($('#weight-field'), 'hidden', m.kind !== 'nurbs' && m.kind !== 'nurbs-surface');
-  const rule = m.membership || 'neutrosophic';
-  for (const d of DEGREES) {
-    const input = fields.querySelector(`input[name=${d}]`);
-    const slider = fields.querySelector(`input[data-slider=${d}]`);
-    let value = p[d];
-    let derived = false;
-    if (rule === 'intuitionistic' && d === 'indeterminacy') {
-      value = p.indeterminacy !== undefined ? p.indeterminacy : hesitation(p);
-      derived = true;
-    }
-    if (!carries(rule, d) && rule !== 'intuitionistic') { value = 0; derived = true; }
-    put(input, 'disabled', derived);
-    put(slider, 'disabled', derived);
-    setValue(input, value, force);
-    if (document.activeElement !== slider) put(slider, 'value', String(value === undefined ? 0 : value));
-  }
-  put($('#rule-note'), 'textContent', {
-    neutrosophic: 'neutrosophic: truth, indeterminacy and falsity each in [0, 1], independent',
-    intuitionistic: 'intuitionistic: truth + falsity <= 1; indeterminacy = 1 - truth - falsity',
-    fuzzy: 'fuzzy: truth only; indeterminacy and falsity are 0',
-  }[rule]);
+  fillDegreeFields(p, force);
   const curve = !surface;
   put($('#add-point'), 'disabled', !curve);
   put($('#insert-point'), 'disabled', !curve);
   put($('#delete-point'), 'disabled', !curve || n <= 2);
 }
 
-// The degrees a membership family carries (docs/model.md, "Membership families"): the
-// orthopair families (intuitionistic, pythagorean, fermatean, q-rung) truth and falsity, fuzzy
-// truth alone, the others all three. A family given with its parameter ("q-rung:4") counts
-// by its name.
-function carries(rule, degree) {
-  const name = String(rule).split(':')[0];
-  if (name === 'fuzzy') return degree === 'truth';
-  if (['intuitionistic', 'pythagorean', 'fermatean', 'q-rung'].includes(name)) return degree !== 'indeterminacy';
-  return true;
+// ------------------------------------------------------------------------------------------
+// Degree fields: one field and slider per degree of the model's family, as the server
+// describes it (`family.fields`: name, min, max, derived; `family.rule`), so that the page
+// holds no knowledge of the families. A derived field (a degree slot a family of one lane
+// does not carry: the intuitionistic hesitation, else 0) is shown disabled, with the value the
+// server gives (`pointDegrees`).
+
+// A value shown in a field: rounded to 12 decimals (1 - 0.8 - 0.1 shows as 0.1).
+function shownNumber(v) {
+  return typeof v === 'number' ? Math.round(v * 1e12) / 1e12 : v;
 }
 
-// The hesitation 1 - T - F shown (not sent) under the intuitionistic rule.
-function hesitation(p) {
-  const h = 1 - p.truth - (p.falsity || 0);
-  return Math.max(0, Math.round(h * 1e12) / 1e12);
+// The colour of a degree's name: truth, indeterminacy or falsity, whatever its bound or sign.
+function tone(name) {
+  return name.replace(/^negative_/, '').replace(/_(lower|upper)$/, '');
+}
+
+let degreeLayout = '';
+
+// Builds the rows of `fields` unless they are the rows shown.
+function buildDegreeFields(fields) {
+  const layout = JSON.stringify(fields.map((f) => [f.name, f.min, f.max]));
+  if (layout === degreeLayout) return;
+  degreeLayout = layout;
+  const host = $('#degree-fields');
+  host.innerHTML = '';
+  for (const f of fields) {
+    const row = document.createElement('div');
+    row.className = 'degree';
+    row.dataset.degree = f.name;
+    row.dataset.tone = tone(f.name);
+    const label = document.createElement('span');
+    label.className = 'degree-name';
+    label.textContent = f.name;
+    const slider = document.createElement('input');
+    Object.assign(slider, { type: 'range', min: String(f.min), max: String(f.max), step: '0.01' });
+    slider.dataset.slider = f.name;
+    slider.setAttribute('aria-label', `${f.name} slider`);
+    const input = document.createElement('input');
+    Object.assign(input, { name: f.name, type: 'number', step: '0.01', min: String(f.min), max: String(f.max) });
+    input.setAttribute('aria-label', f.name);
+    const error = document.createElement('span');
+    error.className = 'field-error';
+    error.dataset.errorFor = f.name;
+    row.append(label, slider, input, error);
+    host.appendChild(row);
+    input.addEventListener('change', () => {
+      input.classList.remove('invalid');
+      editPoint(f.name, numberOrText(input.value), true);
+    });
+    slider.addEventListener('input', () => editPoint(f.name, Number(slider.value), false));
+    slider.addEventListener('change', () => editPoint(f.name, Number(slider.value), true));
+  }
+}
+
+function fillDegreeFields(p, force) {
+  const family = state.family;
+  if (!family) return;
+  buildDegreeFields(family.fields);
+  const fields = $('#degree-fields');
+  const shown = state.pointDegrees[state.selected] || [];
+  family.fields.forEach((f, i) => {
+    const input = fields.querySelector(`input[name=${f.name}]`);
+    const slider = fields.querySelector(`input[data-slider=${f.name}]`);
+    const value = f.derived || p[f.name] === undefined ? shownNumber(shown[i]) : p[f.name];
+    put(input, 'disabled', f.derived);
+    put(slider, 'disabled', f.derived);
+    setValue(input, value, force);
+    if (document.activeElement !== slider) put(slider, 'value', String(value === undefined ? 0 : value));
+  });
+  put($('#rule-note'), 'textContent', family.rule);
+}
+
+// The membership list: every family the server describes.
+function fillFamilies(families) {
+  state.families = families;
+  const select = $('#model-membership');
+  select.innerHTML = '';
+  for (const f of families) {
+    const o = document.createElement('option');
+    o.value = f.name;
+    o.textContent = f.label;
+    select.appendChild(o);
+  }
+  if (state.model) put(select, 'value', state.model.membership || 'neutrosophic');
 }
 
 // A typed value: a finite number, or the text itself so that the server names it.
@@ -228,22 +284,18 @@ function editPoint(key, value, commit) {
     message: commit ? `point ${state.selected}: ${key} = ${value}` : '',
     coalesce: !commit,
     preview: !commit,
+    field: key,
   });
 }
 
 function attachFields() {
   const fields = $('#point-fields');
-  for (const key of ['x', 'y', 'z', 'weight'].concat(DEGREES)) {
+  for (const key of ['x', 'y', 'z', 'weight']) {
     const input = fields.querySelector(`input[name=${key}]`);
     input.addEventListener('change', () => {
       input.classList.remove('invalid');
       editPoint(key, numberOrText(input.value), true);
     });
-  }
-  for (const d of DEGREES) {
-    const slider = fields.querySelector(`input[data-slider=${d}]`);
-    slider.addEventListener('input', () => editPoint(d, Number(slider.value), false));
-    slider.addEventListener('change', () => editPoint(d, Number(slider.value), true));
   }
   $('#point-index').addEventListener('change', (e) => selectPoint(Number(e.target.value), true));
   $('#model-name').addEventListener('change', (e) => {
@@ -294,21 +346,43 @@ function setKind(kind) {
   propose(m, { commit: true, message: `kind: ${kind}, degree ${m.degree}` });
 }
 
-function setMembership(rule) {
+// Switches the model to the family `name`, converting every point's degrees by channel name
+// (the server's descriptions of both families): a channel of both is kept (a derived degree
+// slot of the old family counts as shown, so the intuitionistic hesitation becomes the
+// indeterminacy); `X_lower` and `X_upper` start at `X` (a degenerate interval); `X` starts at
+// the midpoint of `X_lower` and `X_upper`; any other channel (the bipolar negative degrees
+// among them) at 0. A family with a parameter keeps the model's, else gets the server's.
+function setMembership(name) {
+  const to = state.families.find((f) => f.name === name);
+  const from = state.family;
+  if (!to || !from) return;
   const m = clone(state.model);
-  const from = m.membership || 'neutrosophic';
-  for (const p of m.control_points) {
-    if (from === 'intuitionistic' && p.indeterminacy === undefined) p.indeterminacy = hesitation(p);
-    for (const d of DEGREES) {
-      if (!carries(rule, d)) delete p[d];
-      else if (p[d] === undefined) p[d] = 0;
-    }
+  const everyChannel = new Set(state.families.flatMap((f) => f.channels.map((c) => c.name)));
+  m.control_points.forEach((p, k) => {
+    const shown = state.pointDegrees[k] || [];
+    const old = {};
+    from.fields.forEach((f, i) => { if (typeof shown[i] === 'number') old[f.name] = shownNumber(shown[i]); });
+    for (const c of from.channels) if (typeof p[c.name] === 'number') old[c.name] = p[c.name];
+    for (const key of Object.keys(p)) if (everyChannel.has(key)) delete p[key];
+    for (const c of to.channels) p[c.name] = converted(old, c.name);
+  });
+  const key = to.parameter ? to.parameter.key : null;
+  for (const f of state.families) {
+    if (f.parameter && f.parameter.key !== key) delete m[f.parameter.key];
   }
-  // The parametrised families keep the file's parameter, else 3; the others have none.
-  if (rule === 'q-rung') m.q = m.q || 3; else delete m.q;
-  if (rule === 't-spherical') m.n = m.n || 3; else delete m.n;
-  m.membership = rule;
-  propose(m, { commit: true, message: `membership: ${rule}` });
+  if (key) m[key] = m[key] || to.parameter.value;
+  m.membership = name;
+  propose(m, { commit: true, message: `membership: ${name}` });
+}
+
+// Channel `name` from the values `old` of another family's channels (see setMembership).
+function converted(old, name) {
+  if (old[name] !== undefined) return old[name];
+  const bound = /^(.*)_(lower|upper)$/.exec(name);
+  if (bound && old[bound[1]] !== undefined) return old[bound[1]];
+  const [lower, upper] = [old[`${name}_lower`], old[`${name}_upper`]];
+  if (lower !== undefined && upper !== undefined) return shownNumber((lower + upper) / 2);
+  return 0;
 }
 
 function addPoint(insert) {
@@ -419,4 +493,4 @@ function attachKeys() {
   });
 }
 
-export { updatePanel, updatePanelNow, schedulePanel, selectPoint, put, fillModelFields, attachFields, attachViews, attachKeys };
+export { updatePanel, updatePanelNow, schedulePanel, selectPoint, put, fillModelFields, fillFamilies, attachFields, attachViews, attachKeys };

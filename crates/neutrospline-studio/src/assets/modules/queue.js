@@ -65,6 +65,7 @@ function propose(model, how) {
     message: (how && how.message) || (previous && previous.message) || '',
     t0: performance.now(),
     onRefused: how && how.onRefused,
+    field: (how && how.field) || (previous && previous.field) || null,
   };
   kick();
 }
@@ -133,7 +134,7 @@ function apply({ job, result, tSent, tAnswered }) {
   } else {
     const err = (result.value && result.value.error) || { message: 'refused' };
     clearFieldErrors();
-    showFieldError(err.field, err.message, err.detail);
+    showFieldError(err.field, err.message, err.detail, job.field);
     alertMessage(err.message);
     if (job.onRefused) job.onRefused();
     fillModelFields();
@@ -149,6 +150,8 @@ function apply({ job, result, tSent, tAnswered }) {
 function accept(value, job) {
   state.model = value.model;
   state.info = value.info;
+  state.family = value.family;
+  state.pointDegrees = value.pointDegrees;
   state.renders += 1;
   const text = JSON.stringify(state.model);
   if (job.commit && text !== state.committed) {

@@ -7,7 +7,6 @@ import { propose } from './queue.js';
 const PAPER_VIEWS = ['plane', 'controls', 'truth', 'indeterminacy', 'falsity', 'all'];
 const OTHER_VIEWS = ['score', 'data'];
 const TURNABLE = ['truth', 'indeterminacy', 'falsity', 'all', 'score'];
-const DEGREES = ['truth', 'indeterminacy', 'falsity'];
 const DEFAULT_CAMERA = { azimuth: -55, elevation: 25 };
 const SVG_NS = 'http://www.w3.org/2000/svg';
 const COORDINATES = ['x', 'y', 'z'];
@@ -34,6 +33,9 @@ const state = {
   data: null,           // {name, text}
   colorBy: 'truth',
   info: null,
+  family: null,         // the server's description of the model's family (channels, rule, ...)
+  families: [],         // the families the membership list offers, described by the server
+  pointDegrees: [],     // the values of the family's degree fields at every control point
   handles: null,
   timings: [],          // one per drawn frame: {total, server, dom}
   renders: 0,
@@ -57,9 +59,15 @@ function clearFieldErrors() {
   document.querySelectorAll('input.invalid').forEach((e) => e.classList.remove('invalid'));
 }
 
+// The names of the degree fields the panel shows for the model's family.
+function degreeNames() {
+  return state.family ? state.family.fields.map((f) => f.name) : [];
+}
+
 // The field of a refusal (`control_points[1].truth`, `knots`, ...) -> the input next to which
-// the message is shown.
-function showFieldError(field, message, detail) {
+// the message is shown. `edited`: the degree field whose edit was refused, preferred when the
+// message names it (a rule over several channels names them all).
+function showFieldError(field, message, detail, edited) {
   if (!field) return;
   const m = /^control_points\[(\d+)\]\.(\w+)/.exec(field);
   let key = field.split(/[.[]/)[0];
@@ -67,13 +75,19 @@ function showFieldError(field, message, detail) {
   if (p) {
     const index = Number(p[1]);
     if (index !== state.selected) selectPoint(index, false);
-    // The reader names the point (`control_points[1]`) and the message the value
-    // (`truth = 1.2 is outside ...`), or the field names both.
-    const named = /^(\w+) = /.exec(detail || '');
-    key = m ? m[2] : named ? named[1] : 'position';
+    // The reader names the point (`control_points[1]`) and the message the values
+    // (`truth = 1.2 is outside ...`, `truth_lower = 0.6 exceeds truth_upper = 0.4 ...`,
+    // `truth^2 + falsity^2 = 1.3 exceeds 1 ...`), or the field names both.
+    const words = (detail || '').split(/[^A-Za-z_]+/);
+    const named = degreeNames().filter((name) => words.includes(name));
+    const leading = /^(\w+) = /.exec(detail || '');
+    if (m) key = m[2];
+    else if (named.includes(edited)) key = edited;
+    else if (named.length) key = words.find((w) => named.includes(w));
+    else key = leading ? leading[1] : 'position';
     const input = document.querySelector(`#point-fields input[name=${key}]`);
     if (input) input.classList.add('invalid');
-    if (!DEGREES.includes(key)) key = 'position';
+    if (!degreeNames().includes(key)) key = 'position';
   }
   const slot = document.querySelector(`[data-error-for="${key}"]`);
   if (slot) slot.textContent = message;
@@ -102,4 +116,4 @@ function updateButtons() {
   put($('#save'), 'disabled', !state.canSave);
 }
 
-export { PAPER_VIEWS, OTHER_VIEWS, TURNABLE, DEGREES, DEFAULT_CAMERA, SVG_NS, COORDINATES, PREVIEW_SAMPLES, $, clone, state, status, alertMessage, clearFieldErrors, showFieldError, undo, redo, updateButtons };
+export { PAPER_VIEWS, OTHER_VIEWS, TURNABLE, degreeNames, DEFAULT_CAMERA, SVG_NS, COORDINATES, PREVIEW_SAMPLES, $, clone, state, status, alertMessage, clearFieldErrors, showFieldError, undo, redo, updateButtons };
