@@ -314,7 +314,10 @@ fn membership(body: &Value, default: Family) -> Result<Family, Response> {
         }
         Some(other) => Err(Response::error(
             400,
-            &format!("membership = {other}: expected one of neutrosophic, intuitionistic, fuzzy"),
+            &format!(
+                "membership = {other}: expected a family name as a string, one of: {}",
+                neutrospline::FAMILY_FORMS
+            ),
         )),
     }
 }

@@ -417,7 +417,10 @@ fn a_membership_of_another_type_is_refused() {
         (status, answer["error"]["message"].as_str().unwrap_or("")),
         (
             400,
-            "membership = 3: expected one of neutrosophic, intuitionistic, fuzzy"
+            "membership = 3: expected a family name as a string, one of: neutrosophic, \
+             intuitionistic, fuzzy, pythagorean, fermatean, q-rung:Q, picture, spherical, \
+             t-spherical:N, interval-neutrosophic, interval-intuitionistic, interval-type2, \
+             bipolar-neutrosophic (Q and N integers >= 1)"
         )
     );
 }
