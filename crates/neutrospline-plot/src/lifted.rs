@@ -29,6 +29,50 @@ pub(crate) struct Look {
     pub marker: fn(Quantity) -> Marker,
 }
 
+/// The crisp control polygon (dashed, with small markers) and the crisp curve on the
+/// quantity-0 floor, `s3` mapping a point at a height to the screen; the curve is added to
+/// the `obstacles` of the labels. Returns the screen points of the floor's control polygon
+/// and curve.
+#[allow(clippy::type_complexity)]
+fn crisp_floor(
+    scene: &mut Scene,
+    obstacles: &mut Vec<crate::callout::Obstacle>,
+    ctx: &Ctx,
+    s3: &dyn Fn(&Pt, f64) -> (f64, f64, f64),
+) -> (Vec<(f64, f64, f64)>, Vec<(f64, f64, f64)>) {
+    let th = &ctx.theme;
+    let fl_ctrl: Vec<(f64, f64, f64)> = ctx.controls.iter().map(|p| s3(p, 0.0)).collect();
+    scene.polyline(
+        FLOOR,
+        &fl_ctrl,
+        1,
+        &Style::stroke(theme::SHADOW, th.thin_w())
+            .with_dash(th.dash().0, th.dash().1)
+            .with_class("control-polygon crisp"),
+    );
+    for p in &fl_ctrl {
+        scene.push(
+            FLOOR,
+            p.2,
+            Shape::Marker(
+                Marker::Circle,
+                (p.0, p.1),
+                0.55 * th.marker_r(),
+                Style::fill(theme::SHADOW),
+            ),
+        );
+    }
+    let fl_curve: Vec<(f64, f64, f64)> = ctx.curve.iter().map(|p| s3(p, 0.0)).collect();
+    scene.polyline(
+        FLOOR,
+        &fl_curve,
+        usize::MAX,
+        &Style::stroke(theme::CRISP, th.crisp_w()).with_class("curve crisp"),
+    );
+    obstacles.extend(obstacles_of(&flat(&fl_curve), th.crisp_w()));
+    (fl_ctrl, fl_curve)
+}
+
 /// Paper Fig. 2-5: the space curves (x, y, q) of the quantities `kinds` above the crisp
 /// curve, with the legend `entries` (the view's curves and control polygons; the crisp curve
 /// and control polygon are added after them) and `notes`.
@@ -81,35 +125,7 @@ pub(crate) fn figure(
     let mut obstacles = Vec::new();
     let s3 = |p: &Pt, z: f64| axes.screen([p.pos[0], p.pos[1], z]);
     // Crisp control polygon and crisp curve on the degree-0 plane.
-    let fl_ctrl: Vec<(f64, f64, f64)> = ctx.controls.iter().map(|p| s3(p, 0.0)).collect();
-    scene.polyline(
-        FLOOR,
-        &fl_ctrl,
-        1,
-        &Style::stroke(theme::SHADOW, th.thin_w())
-            .with_dash(th.dash().0, th.dash().1)
-            .with_class("control-polygon crisp"),
-    );
-    for p in &fl_ctrl {
-        scene.push(
-            FLOOR,
-            p.2,
-            Shape::Marker(
-                Marker::Circle,
-                (p.0, p.1),
-                0.55 * th.marker_r(),
-                Style::fill(theme::SHADOW),
-            ),
-        );
-    }
-    let fl_curve: Vec<(f64, f64, f64)> = ctx.curve.iter().map(|p| s3(p, 0.0)).collect();
-    scene.polyline(
-        FLOOR,
-        &fl_curve,
-        usize::MAX,
-        &Style::stroke(theme::CRISP, th.crisp_w()).with_class("curve crisp"),
-    );
-    obstacles.extend(obstacles_of(&flat(&fl_curve), th.crisp_w()));
+    let (fl_ctrl, fl_curve) = crisp_floor(&mut scene, &mut obstacles, ctx, &s3);
     // Drop lines from each lifted control point (the highest of the kinds) to the floor.
     let tops: Vec<(f64, f64, f64)> = ctx
         .controls
@@ -315,35 +331,7 @@ pub(crate) fn wide_figure(
             ),
         );
     }
-    let fl_ctrl: Vec<(f64, f64, f64)> = ctx.controls.iter().map(|p| s3(p, 0.0)).collect();
-    scene.polyline(
-        FLOOR,
-        &fl_ctrl,
-        1,
-        &Style::stroke(theme::SHADOW, th.thin_w())
-            .with_dash(th.dash().0, th.dash().1)
-            .with_class("control-polygon crisp"),
-    );
-    for p in &fl_ctrl {
-        scene.push(
-            FLOOR,
-            p.2,
-            Shape::Marker(
-                Marker::Circle,
-                (p.0, p.1),
-                0.55 * th.marker_r(),
-                Style::fill(theme::SHADOW),
-            ),
-        );
-    }
-    let fl_curve: Vec<(f64, f64, f64)> = ctx.curve.iter().map(|p| s3(p, 0.0)).collect();
-    scene.polyline(
-        FLOOR,
-        &fl_curve,
-        usize::MAX,
-        &Style::stroke(theme::CRISP, th.crisp_w()).with_class("curve crisp"),
-    );
-    obstacles.extend(obstacles_of(&flat(&fl_curve), th.crisp_w()));
+    let (_, fl_curve) = crisp_floor(&mut scene, &mut obstacles, ctx, &s3);
     // Drop lines through each control point, from its highest value to its lowest (or to
     // the plane).
     let mut tops = Vec::with_capacity(ctx.controls.len());

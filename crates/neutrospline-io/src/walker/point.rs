@@ -31,35 +31,27 @@ impl Walker<'_> {
         let mut spread_keys: [Option<&str>; 9] = Default::default();
         let mut first_spread_span = None;
         let mut wide_nodes: [Option<&Node>; 9] = Default::default();
+        let repeats = |span, key: &str, previous: &str| {
+            self.error(
+                span,
+                Some(path.clone()),
+                format!(
+                    "key `{key}` repeats key `{previous}` ({})",
+                    duplicate_rule()
+                ),
+            )
+        };
         for entry in entries {
             if let Some(c) = wide_channel(&entry.key, false) {
                 if wide_nodes[c].is_some() {
-                    return Err(self.error(
-                        entry.key_span.as_ref(),
-                        Some(path.clone()),
-                        format!(
-                            "key `{}` repeats key `{}` ({})",
-                            entry.key,
-                            entry.key,
-                            duplicate_rule()
-                        ),
-                    ));
+                    return Err(repeats(entry.key_span.as_ref(), &entry.key, &entry.key));
                 }
                 wide_nodes[c] = Some(&entry.value);
                 continue;
             }
             if let Some(key) = SpreadKey::from_name(&entry.key, false) {
                 if spread_keys[key.index()].is_some() {
-                    return Err(self.error(
-                        entry.key_span.as_ref(),
-                        Some(path.clone()),
-                        format!(
-                            "key `{}` repeats key `{}` ({})",
-                            entry.key,
-                            entry.key,
-                            duplicate_rule()
-                        ),
-                    ));
+                    return Err(repeats(entry.key_span.as_ref(), &entry.key, &entry.key));
                 }
                 first_spread_span = first_spread_span.or(entry.key_span.as_ref());
                 spread_keys[key.index()] = Some(&entry.key);
@@ -79,15 +71,7 @@ impl Walker<'_> {
                 ));
             };
             if let Some(previous) = keys[field.index()] {
-                return Err(self.error(
-                    entry.key_span.as_ref(),
-                    Some(path.clone()),
-                    format!(
-                        "key `{}` repeats key `{previous}` ({})",
-                        entry.key,
-                        duplicate_rule()
-                    ),
-                ));
+                return Err(repeats(entry.key_span.as_ref(), &entry.key, previous));
             }
             if field == Field::Weight && !kind.is_rational() {
                 return Err(self.error(
