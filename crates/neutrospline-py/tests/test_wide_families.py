@@ -330,7 +330,7 @@ def test_figures_draw_the_band_and_fitting_refuses_with_the_reason():
     curve = ns.Bezier(POSITIONS, INTERVAL_TYPE2, membership="interval-type2")
     svg = curve.to_svg()
     assert "lower membership" in svg and "upper membership" in svg
-    assert "footprint of uncertainty" in svg
+    assert "Interval type-2 fuzzy Bézier curve" in svg
     assert curve._repr_svg_() is not None and curve._repr_png_() is not None
     with pytest.raises(
         ValueError,
