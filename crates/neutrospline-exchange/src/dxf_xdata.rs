@@ -11,6 +11,8 @@
 //! 1000 name          1071 K, then K strings 1000          (optional)
 //! 1000 description   1071 K, then K strings 1000          (optional)
 //! 1000 degrees       1071 N, then N times 1040 truth, 1040 indeterminacy, 1040 falsity
+//! 1000 truth_lower   1071 N, then N times 1040 (a family of two lanes, `Family::lanes`:
+//!                    one such key per channel, by its name, in place of `degrees`)
 //! 1000 point names   1071 N, then per point 1071 K (-1: no name) and K strings 1000 (optional)
 //! ```
 //!
@@ -69,6 +71,9 @@ pub(crate) struct ModelInfo {
     pub degrees: Vec<Degrees>,
     /// One per control point, or empty when no point has a name.
     pub point_names: Vec<Option<String>>,
+    /// A family of two lanes: each channel by its name, with one value per control point
+    /// (in place of `degrees`); empty otherwise.
+    pub channels: Vec<(String, Vec<f64>)>,
 }
 
 /// `text` in the escaped ASCII form, in pieces of at most [`MAX_STRING`] bytes.
@@ -171,6 +176,11 @@ impl ModelInfo {
                 out.extend(d.to_array().map(XValue::Real));
             }
         }
+        for (name, values) in &self.channels {
+            out.push(text(name));
+            out.push(count(values.len()));
+            out.extend(values.iter().copied().map(XValue::Real));
+        }
         if self.point_names.iter().any(Option::is_some) {
             out.push(text("point names"));
             out.push(count(self.point_names.len()));
@@ -217,6 +227,7 @@ pub(crate) fn read(tags: &[XTag<'_>], fallback_line: usize) -> Result<ModelInfo,
         description: None,
         degrees: Vec::new(),
         point_names: Vec::new(),
+        channels: Vec::new(),
     };
     let mut seen_kind = false;
     while reader.next < tags.len() {
@@ -262,14 +273,32 @@ pub(crate) fn read(tags: &[XTag<'_>], fallback_line: usize) -> Result<ModelInfo,
                     .map(|_| reader.long_text())
                     .collect::<Result<_, _>>()?;
             }
+            channel
+                if info.membership.lane_count() == 2
+                    && info.membership.channels().contains(&channel) =>
+            {
+                if info.channels.iter().any(|(name, _)| name == channel) {
+                    return Err((line, format!("the channel `{channel}` is given twice")));
+                }
+                let (_, n) = reader.count()?;
+                let values = (0..n)
+                    .map(|_| reader.real().map(|(_, v)| v))
+                    .collect::<Result<_, _>>()?;
+                info.channels.push((channel.to_owned(), values));
+            }
             other => {
+                let channels = if info.membership.lane_count() == 2 {
+                    format!(", {}", info.membership.channels().join(", "))
+                } else {
+                    String::new()
+                };
                 return Err((
                     line,
                     format!(
                         "unknown key `{other}` (known: kind, dimension, membership, name, \
-                         description, degrees, point names)"
+                         description, degrees, point names{channels})"
                     ),
-                ))
+                ));
             }
         }
     }
@@ -385,6 +414,91 @@ mod tests {
         assert_eq!(decode_text(&["\\U+12", "x^"]), "\\U+12x^");
     }
 
+    /// The tags of `values` as a reader sees them (lines 100, 102, ...).
+    fn texts(values: &[XValue]) -> Vec<String> {
+        values
+            .iter()
+            .map(|v| match v {
+                XValue::Text(s) => s.clone(),
+                XValue::Short(n) => n.to_string(),
+                XValue::Long(n) => n.to_string(),
+                XValue::Real(r) => neutrospline_io::format_number(*r),
+            })
+            .collect()
+    }
+
+    /// A family of two lanes: every channel by its name, read back to the bit; a channel
+    /// missing from the family's names is an unknown key naming the channels, and a channel
+    /// given twice is refused.
+    #[test]
+    fn channels_of_a_wide_family_round_trip() {
+        let info = ModelInfo {
+            kind: Kind::Curve(CurveKind::Bezier),
+            dimension: 2,
+            membership: Family::IntervalType2,
+            name: None,
+            description: None,
+            degrees: Vec::new(),
+            point_names: Vec::new(),
+            channels: vec![
+                ("truth_lower".into(), vec![0.1, 0.30000000000000004]),
+                ("truth_upper".into(), vec![0.2, 0.7]),
+            ],
+        };
+        let values = info.to_values();
+        let strings = texts(&values);
+        assert_eq!(
+            strings[7..],
+            [
+                "truth_lower",
+                "2",
+                "0.1",
+                "0.30000000000000004",
+                "truth_upper",
+                "2",
+                "0.2",
+                "0.7"
+            ]
+        );
+        let tags: Vec<XTag<'_>> = values
+            .iter()
+            .zip(&strings)
+            .enumerate()
+            .map(|(k, (v, t))| (v.code(), t.as_str(), 100 + 2 * k))
+            .collect();
+        assert_eq!(read(&tags, 99), Ok(info.clone()));
+        // `falsity_upper` is not an interval-type2 channel.
+        let mut other = strings.clone();
+        other[7] = "falsity_upper".into();
+        let tags: Vec<XTag<'_>> = values
+            .iter()
+            .zip(&other)
+            .enumerate()
+            .map(|(k, (v, t))| (v.code(), t.as_str(), 100 + 2 * k))
+            .collect();
+        assert_eq!(
+            read(&tags, 99).unwrap_err(),
+            (
+                114,
+                "unknown key `falsity_upper` (known: kind, dimension, membership, name, \
+                 description, degrees, point names, truth_lower, truth_upper)"
+                    .to_owned()
+            )
+        );
+        let mut twice = strings;
+        twice[11] = "truth_lower".into();
+        let tags: Vec<XTag<'_>> = values
+            .iter()
+            .zip(&twice)
+            .enumerate()
+            .map(|(k, (v, t))| (v.code(), t.as_str(), 100 + 2 * k))
+            .collect();
+        assert_eq!(
+            read(&tags, 99).unwrap_err(),
+            (122, "the channel `truth_lower` is given twice".to_owned())
+        );
+    }
+
     #[test]
     fn model_info_round_trip() {
         let info = ModelInfo {
@@ -398,6 +512,7 @@ mod tests {
                 Degrees::fuzzy(0.30000000000000004).unwrap(),
             ],
             point_names: vec![None, Some("P1".into())],
+            channels: Vec::new(),
         };
         let values = info.to_values();
         let texts: Vec<String> = values

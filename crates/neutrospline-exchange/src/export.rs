@@ -348,7 +348,7 @@ pub fn export(
     if format == ExportFormat::Step {
         return Ok(step::document(model)?.into_bytes());
     }
-    let samples = Samples::of(model.shape(), options.samples)?;
+    let samples = Samples::of_model(model, options.samples)?;
     Ok(match format {
         ExportFormat::Dxf => dxf::mesh_document(model, &samples, options.color_by).into_bytes(),
         ExportFormat::Glb => gltf::glb(model, &samples, options.color_by),

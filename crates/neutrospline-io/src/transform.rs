@@ -456,6 +456,11 @@ fn conform_surface(surface: Surface, membership: Family) -> Result<Surface, Stri
         return Ok(surface);
     }
     let points = conform_points(surface.control_points(), membership)?;
+    surface_with_points(&surface, points)
+}
+
+/// A surface of `surface`'s kind, net, knots and weights through `points`.
+fn surface_with_points(surface: &Surface, points: Vec<ControlPoint<3>>) -> Result<Surface, String> {
     let (rows, cols) = (surface.rows(), surface.cols());
     let (ku, kv) = (surface.knots_u().clone(), surface.knots_v().clone());
     match surface.kind() {
@@ -471,6 +476,248 @@ fn conform_surface(surface: Surface, membership: Family) -> Result<Surface, Stri
         ),
     }
     .map_err(|e| e.to_string())
+}
+
+/// The shape with its control degrees replaced by `degrees` (one per control point; surfaces
+/// row by row), the geometry kept.
+fn shape_with_degrees(shape: &Shape, degrees: &[Degrees]) -> Result<Shape, String> {
+    fn replaced<const D: usize>(
+        points: Vec<ControlPoint<D>>,
+        degrees: &[Degrees],
+    ) -> Vec<ControlPoint<D>> {
+        points
+            .into_iter()
+            .zip(degrees)
+            .map(|(p, d)| ControlPoint::new(p.position, *d))
+            .collect()
+    }
+    Ok(match shape {
+        Shape::Curve(curve) => {
+            let curve: DynCurve = on_dimension!(curve, c => {
+                with_points(c, replaced(c.control_points(), degrees))?.into()
+            });
+            Shape::from(curve)
+        }
+        Shape::Surface(s) => Shape::from(surface_with_points(
+            s,
+            replaced(s.control_points(), degrees),
+        )?),
+    })
+}
+
+/// The lanes of a wide family joined into one model: the first lane's model (its name,
+/// description, names and spreads) with `second` as its second lane; channels that break the
+/// rule by rounding only (within 1e-12; for example `T_U + F_U` an ulp above 1 after blending)
+/// projected onto it, as a reader of the channels would refuse them otherwise.
+fn join_lanes(first: Model, second: &Shape, family: Family) -> Result<Model, String> {
+    let lanes = [first.shape().control_degrees(), second.control_degrees()];
+    let mut changed = false;
+    let mut out = lanes.clone();
+    for i in 0..lanes[0].len() {
+        let mut values = family.join(&[lanes[0][i], lanes[1][i]]).to_vec();
+        if family.check(&values).is_err() && family.check_within(&values, ROUNDING).is_ok() {
+            family.project(&mut values);
+            let (split, _) = family.split(&values).map_err(|e| {
+                format!("control point {i}: the channels projected onto the rule break it: {e}")
+            })?;
+            out[0][i] = split[0];
+            out[1][i] = split[1];
+            changed = true;
+        }
+    }
+    let (first, second) = if changed {
+        let shape = shape_with_degrees(first.shape(), &out[0])?;
+        let second = shape_with_degrees(second, &out[1])?;
+        let mut model = Model::new(shape);
+        if let Some(s) = first.spreads() {
+            model = model.with_spreads(s.to_vec()).map_err(|e| e.to_string())?;
+        }
+        if first.point_names().iter().any(Option::is_some) {
+            model = model
+                .with_point_names(first.point_names().to_vec())
+                .map_err(|e| e.to_string())?;
+        }
+        if let Some(n) = first.name() {
+            model = model.with_name(n);
+        }
+        if let Some(d) = first.description() {
+            model = model.with_description(d);
+        }
+        (model, second)
+    } else {
+        (first, second.clone())
+    };
+    first
+        .with_lanes(family, second)
+        .map_err(|e| format!("the transformed lanes: {e}"))
+}
+
+/// A model of one lane of `model` (a neutrosophic triple per control point) with its name,
+/// description, point names and, for the first lane, its spreads.
+fn lane_model(model: &Model, lane: usize) -> Result<Model, String> {
+    let mut out = Model::new(model.lanes()[lane].clone());
+    if lane == 0 {
+        if let Some(s) = model.spreads() {
+            out = out.with_spreads(s.to_vec()).map_err(|e| e.to_string())?;
+        }
+    }
+    if model.point_names().iter().any(Option::is_some) {
+        out = out
+            .with_point_names(model.point_names().to_vec())
+            .map_err(|e| e.to_string())?;
+    }
+    if let Some(n) = model.name() {
+        out = out.with_name(n);
+    }
+    if let Some(d) = model.description() {
+        out = out.with_description(d);
+    }
+    Ok(out)
+}
+
+/// What a joint operation on two lanes made: the lanes, a note, and for a knot removal the
+/// removals asked for and made.
+type LaneOutcome = ([DynCurve; 2], String, Option<(usize, usize)>);
+
+/// [`transform`] for an interval-valued or bipolar family (two lanes, `Family::lanes`): an
+/// exact operation applied to each lane alike (the lanes keep one geometry, and blending keeps
+/// `lower <= upper` and every other convex rule); degree reduction and knot removal applied to
+/// both lanes as one spline, their channels solved jointly under the family's rule
+/// (`AnyCurve::reduced_lanes`, `AnyCurve::without_knot_lanes`).
+fn transform_lanes(
+    model: &Model,
+    op: &Operation,
+    direction: Option<Direction>,
+) -> Result<Transformed, String> {
+    let family = model.membership();
+    let first = lane_model(model, 0)?;
+    if !matches!(op, Operation::Reduce { .. } | Operation::RemoveKnot { .. }) {
+        let a = transform(&first, op, direction)?;
+        let b = transform(&lane_model(model, 1)?, op, direction)?;
+        let models = a
+            .models
+            .into_iter()
+            .zip(&b.models)
+            .map(|(m, other)| join_lanes(m, other.shape(), family))
+            .collect::<Result<Vec<_>, String>>()?;
+        return Ok(Transformed {
+            models,
+            summary: a.summary,
+            removals: a.removals,
+        });
+    }
+    if model.spreads().is_some() {
+        return Err(format!(
+            "--{} is not exact, so the spreads (fuzzy positions) of this model cannot \
+             follow it; remove them first",
+            op.name()
+        ));
+    }
+    let lanes = model.lanes();
+    let (Shape::Curve(c0), Shape::Curve(c1)) = (lanes[0], lanes[1]) else {
+        return Err(format!(
+            "--{} on a surface of the {family} family: the channels of its two lanes would \
+             have to be solved together on every line of the net, which surfaces do not do; \
+             use it on a curve of this family, or on a surface of one lane",
+            op.name()
+        ));
+    };
+    if let Some(d) = direction {
+        return Err(format!(
+            "--direction {d} is for surfaces; this model is a curve"
+        ));
+    }
+    use neutrospline::Dimensional::{Planar, Spatial};
+    let mismatch = || "the lanes have different dimensions".to_owned();
+    let (pieces, note, removals): LaneOutcome = match op {
+        Operation::Reduce { times, tolerance } => {
+            fn reduce<const D: usize>(
+                a: &neutrospline::AnyCurve<D>,
+                b: &neutrospline::AnyCurve<D>,
+                times: usize,
+                tolerance: f64,
+                family: Family,
+            ) -> Result<([DynCurve; 2], String), String>
+            where
+                DynCurve: From<neutrospline::AnyCurve<D>>,
+            {
+                let r = neutrospline::AnyCurve::reduced_lanes([a, b], times, tolerance, family)
+                    .map_err(|e| e.to_string())?;
+                let note = format!(
+                    "degree {} -> {}; largest deviation found {:e} over both lanes (tolerance \
+                     {tolerance:e}); the channels solved jointly under the {family} rule",
+                    a.degree(),
+                    r.curve[0].degree(),
+                    r.error
+                );
+                Ok((r.curve.map(DynCurve::from), note))
+            }
+            let (pieces, note) = match (c0, c1) {
+                (Planar(a), Planar(b)) => reduce(a, b, *times, *tolerance, family)?,
+                (Spatial(a), Spatial(b)) => reduce(a, b, *times, *tolerance, family)?,
+                _ => return Err(mismatch()),
+            };
+            (pieces, note, None)
+        }
+        Operation::RemoveKnot {
+            value,
+            times,
+            tolerance,
+        } => {
+            fn remove<const D: usize>(
+                a: &neutrospline::AnyCurve<D>,
+                b: &neutrospline::AnyCurve<D>,
+                value: f64,
+                times: Option<usize>,
+                tolerance: f64,
+                family: Family,
+            ) -> Result<LaneOutcome, String>
+            where
+                DynCurve: From<neutrospline::AnyCurve<D>>,
+            {
+                let times = times.unwrap_or_else(|| a.knots().map_or(0, |k| k.multiplicity(value)));
+                let r = neutrospline::AnyCurve::without_knot_lanes(
+                    [a, b],
+                    value,
+                    times,
+                    tolerance,
+                    family,
+                )
+                .map_err(|e| e.to_string())?;
+                let note = removal_note(&value.to_string(), times, r.removed, r.error, tolerance);
+                Ok((r.curve.map(DynCurve::from), note, Some((times, r.removed))))
+            }
+            match (c0, c1) {
+                (Planar(a), Planar(b)) => remove(a, b, *value, *times, *tolerance, family)?,
+                (Spatial(a), Spatial(b)) => remove(a, b, *value, *times, *tolerance, family)?,
+                _ => return Err(mismatch()),
+            }
+        }
+        _ => unreachable!("the exact operations are handled above"),
+    };
+    let [p0, p1] = pieces;
+    let mut m = Model::new(p0);
+    if let Some(n) = model.name() {
+        m = m.with_name(n);
+    }
+    let description = match model.description() {
+        Some(d) => format!("{d} (transformed: {})", op.name()),
+        None => format!("Transformed by neutrospline transform --{}", op.name()),
+    };
+    m = m.with_description(description);
+    let mut summary = note;
+    if model.point_names().iter().any(Option::is_some) {
+        let _ = write!(
+            summary,
+            "; point names dropped (--{} makes new control points)",
+            op.name()
+        );
+    }
+    Ok(Transformed {
+        models: vec![join_lanes(m, &Shape::from(p1), family)?],
+        summary,
+        removals,
+    })
 }
 
 /// A curve of the same kind, knots and weights whose positions are `positions` (the spreads'
@@ -673,6 +920,9 @@ pub fn transform(
     op: &Operation,
     direction: Option<Direction>,
 ) -> Result<Transformed, String> {
+    if model.membership().lane_count() == 2 {
+        return transform_lanes(model, op, direction);
+    }
     let membership = model.membership();
     let spreads = model.spreads();
     let mut summary = String::new();

@@ -7,7 +7,7 @@
 use std::path::PathBuf;
 use std::sync::Arc;
 
-use neutrospline_io::{Model, Operation, TransformRequest, Transformed};
+use neutrospline_io::{Model, Operation, TransformRequest};
 use neutrospline_plot::FigureRequest;
 use pyo3::exceptions::PyDeprecationWarning;
 use pyo3::prelude::*;
@@ -176,7 +176,7 @@ impl BaseShape {
         let operation = request.operation().map_err(invalid)?;
         let model = self.model()?;
         let out = py
-            .detach(|| transform_lanes(model, &operation, request.direction))
+            .detach(|| neutrospline_io::transform(model, &operation, request.direction))
             .map_err(invalid)?;
         if let Some((asked, removed)) = out.removals {
             if removed < asked {
@@ -246,72 +246,3 @@ fn figure_request(
     Ok(request)
 }
 
-/// `neutrospline_io::transform` applied to every lane of `model` alike (docs/model.md,
-/// "Lanes"): a family of one lane is transformed as it is; an interval-valued or bipolar
-/// model is transformed lane by lane (each lane a model of three degrees with the model's
-/// names), and the pieces are joined again, which they can be only when the operation gave
-/// both lanes one geometry: the exact operations always do; a knot removal or a degree
-/// reduction, which decides by each lane's degrees, may not, and is then refused.
-fn transform_lanes(
-    model: &Model,
-    operation: &Operation,
-    direction: Option<neutrospline::Direction>,
-) -> Result<Transformed, String> {
-    let membership = model.membership();
-    if !crate::model::is_wide(membership) {
-        return neutrospline_io::transform(model, operation, direction);
-    }
-    let lane_model = |shape: &neutrospline_io::Shape| -> Result<Model, String> {
-        let mut lane = Model::new(shape.clone());
-        if let Some(name) = model.name() {
-            lane = lane.with_name(name);
-        }
-        if let Some(description) = model.description() {
-            lane = lane.with_description(description);
-        }
-        lane = lane
-            .with_point_names(model.point_names().to_vec())
-            .map_err(|e| e.to_string())?;
-        if let Some(spreads) = model.spreads() {
-            lane = lane
-                .with_spreads(spreads.to_vec())
-                .map_err(|e| e.to_string())?;
-        }
-        Ok(lane)
-    };
-    let lanes = model.lanes();
-    let names: Vec<&str> = membership.lanes().iter().map(|l| l.name).collect();
-    let first = neutrospline_io::transform(&lane_model(lanes[0])?, operation, direction)?;
-    let second = neutrospline_io::transform(&lane_model(lanes[1])?, operation, direction)?;
-    let differ = || {
-        format!(
-            "--{} gave the {} and {} lanes of this {membership} model a different geometry (it \
-             decides by each lane's degrees), so they no longer make one model; use an exact \
-             operation (elevate, insert_knot, refine, split, subsegment, reverse, to_bezier, \
-             reparametrize)",
-            operation.name(),
-            names[0],
-            names[1]
-        )
-    };
-    if first.models.len() != second.models.len() || first.removals != second.removals {
-        return Err(differ());
-    }
-    let models = first
-        .models
-        .into_iter()
-        .zip(second.models)
-        .map(|(a, b)| {
-            if !a.shape().same_geometry(b.shape()) {
-                return Err(differ());
-            }
-            a.with_lanes(membership, b.into_shape())
-                .map_err(|e| e.to_string())
-        })
-        .collect::<Result<Vec<_>, String>>()?;
-    Ok(Transformed {
-        models,
-        summary: first.summary,
-        removals: first.removals,
-    })
-}

@@ -247,18 +247,16 @@ def test_geometry_operations_keep_both_lanes(family):
     assert curve.length() == ns.Bezier(POSITIONS, [[1, 0, 0]] * 4).length()
 
 
-def test_a_knot_removal_that_would_part_the_lanes_is_refused():
-    # x(t) = 2t with a knot inserted at 0.5: the lower lane (constant degrees) can lose the
-    # knot again, the upper lane (degrees 0.2, 0.9, 0.2, 0.9) cannot, so the lanes would part.
+def test_a_knot_removal_decides_by_both_lanes():
+    # x(t) = 2t with a knot inserted at 0.5: the lower lane (constant degrees) could lose the
+    # knot again, the upper lane (degrees 0.2, 0.9, 0.2, 0.9) cannot; the lanes are solved
+    # together (docs/model.md, "Lanes"), so the knot stays in both and the model stays one.
     spline = ns.Bezier([[0, 0], [1, 0], [2, 0]], [[1, 0, 0]] * 3).insert_knot(0.5)
     degrees = [[0.1, 0.2], [0.1, 0.9], [0.1, 0.2], [0.1, 0.9]]
     wide = ns.BSpline(spline.positions, degrees, degree=2, knots=spline.knots, membership="interval-type2")
-    with pytest.raises(
-        ValueError,
-        match=r"^--remove-knot gave the lower and upper lanes of this interval-type2 model a different geometry "
-        r"\(it decides by each lane's degrees\), so they no longer make one model; use an exact operation",
-    ):
-        wide.transform(remove_knot=0.5, tolerance=1e-9)
+    kept = wide.transform(remove_knot=0.5, tolerance=1e-9)
+    assert kept.knots.tolist() == [0, 0, 0, 0.5, 1, 1, 1]
+    np.testing.assert_allclose(kept.membership_degrees, degrees, rtol=0, atol=1e-15)
     # Both lanes constant: the knot goes from both, and the model stays one.
     flat = ns.BSpline(spline.positions, [[0.1, 0.2]] * 4, degree=2, knots=spline.knots, membership="interval-type2")
     removed = flat.transform(remove_knot=0.5, tolerance=1e-9)

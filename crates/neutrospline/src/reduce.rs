@@ -13,7 +13,9 @@
 //! the rule's constraints on every free control point (`0 <= T <= 1` per channel; `T + F <= 1`
 //! for intuitionistic degrees), by the active-set method of the fit (`fit::qp`); rational
 //! pieces are reduced in homogeneous form, so the constraint on `w T` is `0 <= w T <= w` with
-//! the piece's new weight `w`, solved in `T = (w T) / w`.
+//! the piece's new weight `w`, solved in `T = (w T) / w`. The two lanes of an interval-valued
+//! or bipolar family are reduced stacked in one row, and their channels are solved jointly
+//! under the family's rule (`lower <= upper` couples the lanes), then split into the lanes.
 
 use crate::degrees::{DegreeKind, Family};
 use crate::fit::banded::{Band, Normal};
@@ -24,13 +26,66 @@ use crate::spline::Spline;
 /// Where the degrees sit in a row of the spline being reduced, and their rule: a row is one
 /// or more control points of `point` channels each (a curve: one; a surface's net line: one per
 /// point of the line), truth, indeterminacy and falsity from `truth`, the weight at `weight`
-/// for a rational spline in homogeneous form.
+/// for a rational spline in homogeneous form. A family of two lanes (`Family::lanes`) has its
+/// second lane's three slots from `second` (the lanes stacked in one row, so that one solve
+/// sees every channel of the family).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct DegreeLayout {
     pub(crate) point: usize,
     pub(crate) truth: usize,
     pub(crate) weight: Option<usize>,
     pub(crate) membership: Family,
+    pub(crate) second: Option<usize>,
+}
+
+impl DegreeLayout {
+    /// The column (from a point's start) and sign of each channel of the family in its
+    /// channel order (`Family::channels`): a family of one lane carries its channels in the
+    /// truth, indeterminacy and falsity slots; a family of two lanes in the slots of its lanes
+    /// (`Family::lanes`, a negated lane with sign -1).
+    fn channel_columns(&self) -> Vec<(usize, f64)> {
+        let family = self.membership;
+        if family.lane_count() == 1 {
+            return DegreeKind::ALL
+                .into_iter()
+                .filter(|kind| family.carries(*kind))
+                .map(|kind| (self.truth + kind.index(), 1.0))
+                .collect();
+        }
+        let mut columns = vec![(0, 1.0); family.channel_count()];
+        for (lane, start) in family.lanes().iter().zip([Some(self.truth), self.second]) {
+            let start = start.unwrap_or_else(|| unreachable!("a two-lane layout has a second"));
+            for (slot, channel) in lane.slots.iter().enumerate() {
+                if let Some(c) = channel {
+                    columns[*c] = (start + slot, if lane.negated { -1.0 } else { 1.0 });
+                }
+            }
+        }
+        columns
+    }
+
+    /// The columns (from a point's start) of the slots that hold no channel: 0 always.
+    fn empty_columns(&self) -> Vec<usize> {
+        let family = self.membership;
+        if family.lane_count() == 1 {
+            return DegreeKind::ALL
+                .into_iter()
+                .filter(|kind| !family.carries(*kind))
+                .map(|kind| self.truth + kind.index())
+                .collect();
+        }
+        family
+            .lanes()
+            .iter()
+            .zip([Some(self.truth), self.second])
+            .flat_map(|(lane, start)| {
+                let start = start.unwrap_or(self.truth);
+                (0..3)
+                    .filter(|slot| lane.slots[*slot].is_none())
+                    .map(move |slot| start + slot)
+            })
+            .collect()
+    }
 }
 
 /// The degree channels of the free control points `inner` of a reduced piece (the solution
@@ -44,6 +99,8 @@ fn bound_degrees(
 ) -> Option<()> {
     let n = inner.len();
     let stride = inner.first().map_or(0, Vec::len);
+    let columns = layout.channel_columns();
+    let empty = layout.empty_columns();
     for base in (0..stride).step_by(layout.point) {
         let weights: Vec<f64> = (0..n)
             .map(|j| layout.weight.map_or(1.0, |w| inner[j][base + w]))
@@ -52,25 +109,19 @@ fn bound_degrees(
             // Left to the caller, which refuses a non-positive weight.
             continue;
         }
-        let (t, i, f) = (
-            base + layout.truth,
-            base + layout.truth + 1,
-            base + layout.truth + 2,
-        );
-        // Channel groups solved together: each neutrosophic degree alone, the intuitionistic
-        // truth and falsity by the active-set method, the channels of any other family under
-        // its whole rule.
-        let carried: Vec<usize> = DegreeKind::ALL
-            .into_iter()
-            .filter(|kind| layout.membership.carries(*kind))
-            .map(DegreeKind::index)
-            .collect();
-        let groups: Vec<&[usize]> = match layout.membership {
-            Family::Neutrosophic => vec![&[0], &[1], &[2]],
-            _ => vec![&carried],
+        // Channel groups solved together (indices into `columns`): each neutrosophic degree
+        // alone, the intuitionistic truth and falsity by the active-set method, the channels
+        // of any other family (the two lanes of a wide family together) under its whole rule.
+        let all: Vec<usize> = (0..columns.len()).collect();
+        let groups: Vec<Vec<usize>> = match layout.membership {
+            Family::Neutrosophic => vec![vec![0], vec![1], vec![2]],
+            _ => vec![all],
         };
-        let euclidean =
-            |inner: &[Vec<f64>], j: usize, c: usize| inner[j][base + layout.truth + c] / weights[j];
+        // The Euclidean channel value (sign applied) of channel `c` at point `j`.
+        let euclidean = |inner: &[Vec<f64>], j: usize, c: usize| {
+            let (column, sign) = columns[c];
+            sign * inner[j][base + column] / weights[j]
+        };
         let breaks = |inner: &[Vec<f64>], group: &[usize]| {
             (0..n).any(|j| {
                 let values: Vec<f64> = group.iter().map(|&c| euclidean(inner, j, c)).collect();
@@ -80,7 +131,7 @@ fn bound_degrees(
                 }
             })
         };
-        for group in groups {
+        for group in &groups {
             if !breaks(inner, group) {
                 continue;
             }
@@ -96,7 +147,8 @@ fn bound_degrees(
             let mut start = vec![0.0; n * k];
             for j in 0..n {
                 for (slot, &c) in group.iter().enumerate() {
-                    rhs[j * k + slot] = weights[j] * b[j][base + layout.truth + c];
+                    let (column, sign) = columns[c];
+                    rhs[j * k + slot] = sign * weights[j] * b[j][base + column];
                     start[j * k + slot] = euclidean(inner, j, c);
                 }
             }
@@ -109,20 +161,24 @@ fn bound_degrees(
             };
             for j in 0..n {
                 for (slot, &c) in group.iter().enumerate() {
-                    inner[j][base + layout.truth + c] = weights[j] * solution[j * k + slot];
+                    let (column, sign) = columns[c];
+                    inner[j][base + column] = sign * weights[j] * solution[j * k + slot];
                 }
             }
         }
-        // The channels the rule derives.
+        // The channels the rule derives, and the slots that hold none.
+        let (t, i, f) = (
+            base + layout.truth,
+            base + layout.truth + 1,
+            base + layout.truth + 2,
+        );
         for (j, row) in inner.iter_mut().enumerate() {
             let w = weights[j];
             if layout.membership == Family::Intuitionistic {
                 row[i] = w * (1.0 - row[t] / w - row[f] / w).max(0.0);
             } else {
-                for kind in DegreeKind::ALL {
-                    if !layout.membership.carries(kind) {
-                        row[base + layout.truth + kind.index()] = 0.0;
-                    }
+                for &column in &empty {
+                    row[base + column] = 0.0;
                 }
             }
         }

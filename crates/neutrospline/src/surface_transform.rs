@@ -379,6 +379,7 @@ impl Surface {
             truth: 3,
             weight: self.weights.is_some().then_some(S),
             membership,
+            second: None,
         };
         reduce_within(
             &self.direction_spline(direction),

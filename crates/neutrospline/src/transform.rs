@@ -648,6 +648,7 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
             truth: D,
             weight: W::RATIONAL.then_some(D + 3),
             membership,
+            second: None,
         };
         reduce_within(
             &work,
@@ -707,5 +708,313 @@ impl<const D: usize> crate::AnyCurve<D> {
             curve: current,
             error,
         })
+    }
+}
+
+/// The two lanes of an interval-valued or bipolar family (`Family::lanes`) as one work
+/// spline: the first lane's rows (homogeneous for a rational curve: `(w P, w T, w I, w F,
+/// w)`), followed by the second lane's three slots (times `w`). The lanes share positions,
+/// weights and knots, so one spline operation on the stack is the operation on both, and a
+/// solve of its degree channels sees every channel of the family.
+///
+/// # Panics
+/// If the lanes have different numbers of control points.
+fn stack_lanes<const D: usize, W: Weighting>(lanes: [&SplineCurve<D, W>; 2]) -> Spline {
+    let [first, second] = lanes.map(|lane| lane.spline());
+    assert_eq!(
+        first.count(),
+        second.count(),
+        "the lanes of a wide family have one geometry"
+    );
+    let work = if W::RATIONAL {
+        first.homogeneous()
+    } else {
+        first.clone()
+    };
+    let stride = work.stride + 3;
+    let mut data = Vec::with_capacity(work.count() * stride);
+    for i in 0..work.count() {
+        let w = if W::RATIONAL { first.weight(i) } else { 1.0 };
+        data.extend_from_slice(work.row(i));
+        data.extend(second.row(i)[D..D + 3].iter().map(|v| v * w));
+    }
+    Spline {
+        knots: work.knots.clone(),
+        stride,
+        data,
+        weights: None,
+    }
+}
+
+/// The lanes of a stacked work spline ([`stack_lanes`]) as rational or polynomial splines of
+/// rows `(P, T, I, F)`; `None` when a rational lane would have a weight that is not positive.
+fn unstack_lanes<const D: usize>(work: &Spline, rational: bool) -> Option<[Spline; 2]> {
+    let own = D + 3 + usize::from(rational);
+    let mut rows = [Vec::new(), Vec::new()];
+    for i in 0..work.count() {
+        let row = work.row(i);
+        rows[0].extend_from_slice(&row[..own]);
+        rows[1].extend_from_slice(&row[..D]);
+        rows[1].extend_from_slice(&row[own..own + 3]);
+        if rational {
+            rows[1].push(row[D + 3]);
+        }
+    }
+    let lanes = rows.map(|data| Spline {
+        knots: work.knots.clone(),
+        stride: own,
+        data,
+        weights: None,
+    });
+    if !rational {
+        return Some(lanes);
+    }
+    let lanes = lanes.map(|lane| lane.euclidean());
+    let positive = lanes[0]
+        .weights
+        .as_ref()
+        .is_some_and(|w| w.iter().all(|&w| w > 0.0 && w.is_finite()));
+    positive.then_some(lanes)
+}
+
+/// The channel values of row `i` of two lane splines (degrees at `D..D + 3`), joined by the
+/// family's lanes (a negated lane negated back).
+fn joined_row<const D: usize>(lanes: &[Spline; 2], i: usize, family: crate::Family) -> Vec<f64> {
+    let slots = lanes
+        .each_ref()
+        .map(|lane| [0, 1, 2].map(|s| lane.row(i)[D + s]));
+    family.join_slots(&slots).to_vec()
+}
+
+/// Writes channel values back into row `i` of the two lanes' slots (a slot without a channel
+/// 0, a negated lane negated).
+fn write_row<const D: usize>(
+    lanes: &mut [Spline; 2],
+    i: usize,
+    family: crate::Family,
+    values: &[f64],
+) {
+    for (spline, lane) in lanes.iter_mut().zip(family.lanes()) {
+        let stride = spline.stride;
+        for (s, channel) in lane.slots.iter().enumerate() {
+            let v = channel.map_or(0.0, |c| values[c]);
+            spline.data[i * stride + D + s] = if lane.negated && v != 0.0 { -v } else { v };
+        }
+    }
+}
+
+impl<const D: usize, W: Weighting> SplineCurve<D, W> {
+    /// The two lanes of a stacked work spline with their channels projected onto the rule
+    /// (`Family::project`; NaN taken as 0), as curves.
+    fn lanes_from_work(work: &Spline, family: crate::Family) -> Result<[Self; 2], ReduceError> {
+        let mut lanes =
+            unstack_lanes::<D>(work, W::RATIONAL).ok_or(ReduceError::NonPositiveWeight)?;
+        for i in 0..work.count() {
+            let mut values = joined_row::<D>(&lanes, i, family);
+            for v in &mut values {
+                if v.is_nan() {
+                    *v = 0.0;
+                }
+            }
+            family.project(&mut values);
+            write_row::<D>(&mut lanes, i, family, &values);
+        }
+        Ok(lanes.map(SplineCurve::from_spline))
+    }
+
+    /// The two lanes of a stacked work spline when their channels obey the rule (values
+    /// within 1e-12 of it, rounding, projected onto it); `None` otherwise.
+    fn lanes_within_rule(work: &Spline, family: crate::Family) -> Option<[Self; 2]> {
+        let mut lanes = unstack_lanes::<D>(work, W::RATIONAL)?;
+        for i in 0..work.count() {
+            let mut values = joined_row::<D>(&lanes, i, family);
+            if family.check(&values).is_err() {
+                family.check_within(&values, ROUNDING).ok()?;
+                family.project(&mut values);
+                write_row::<D>(&mut lanes, i, family, &values);
+            }
+        }
+        Some(lanes.map(SplineCurve::from_spline))
+    }
+
+    /// The larger deviation of the two lanes from `lanes` ([`SplineCurve::deviation_from`]):
+    /// the positions' distance and the largest difference of any channel.
+    fn lanes_deviation(lanes: [&Self; 2], other: &[Self; 2]) -> f64 {
+        lanes[0]
+            .deviation_from(&other[0])
+            .max(lanes[1].deviation_from(&other[1]))
+    }
+
+    /// The degree reduction of [`SplineCurve::reduce_degree`] for the two lanes of an
+    /// interval-valued or bipolar family (`Family::lanes`; the lanes have the same positions,
+    /// weights and knots): both reduced as one spline, so they keep one geometry, the degree
+    /// channels of every reduced piece solved jointly under the family's whole rule
+    /// (docs/model.md section 8; `lower <= upper` couples the lanes, so solving each lane
+    /// alone could break it), and every interior knot removed while both lanes stay within
+    /// `tolerance`.
+    ///
+    /// # Errors
+    /// As [`SplineCurve::reduce_degree`].
+    ///
+    /// # Panics
+    /// If the lanes have different numbers of control points, or `family` has one lane.
+    pub fn reduce_degree_lanes(
+        lanes: [&Self; 2],
+        tolerance: f64,
+        family: crate::Family,
+    ) -> Result<DegreeReduction<[Self; 2]>, ReduceError> {
+        assert_eq!(family.lane_count(), 2, "{family} rides in one lane");
+        let work = stack_lanes(lanes);
+        let layout = crate::reduce::DegreeLayout {
+            point: work.stride,
+            truth: D,
+            weight: W::RATIONAL.then_some(D + 3),
+            membership: family,
+            second: Some(D + 3 + usize::from(W::RATIONAL)),
+        };
+        reduce_within(
+            &work,
+            &layout,
+            tolerance,
+            |w| Self::lanes_from_work(w, family),
+            |c: &[Self; 2]| Self::lanes_deviation(lanes, c),
+        )
+    }
+
+    /// Tiller's knot removal ([`SplineCurve::remove_knot`]) on the two lanes of an
+    /// interval-valued or bipolar family as one spline: each removal must pass Tiller's test
+    /// on every channel of both lanes, keep both within `tolerance`, and give channels that
+    /// obey the family's rule (values within 1e-12 of it, rounding, projected onto it).
+    ///
+    /// # Errors
+    /// [`KnotError::NotAnInteriorKnot`] when `u` is not a knot strictly inside the domain.
+    ///
+    /// # Panics
+    /// If the lanes have different numbers of control points, or `family` has one lane.
+    pub fn remove_knot_lanes(
+        lanes: [&Self; 2],
+        u: f64,
+        times: usize,
+        tolerance: f64,
+        family: crate::Family,
+    ) -> Result<KnotRemoval<[Self; 2]>, KnotError> {
+        assert_eq!(family.lane_count(), 2, "{family} rides in one lane");
+        check_interior_knot(lanes[0].knots(), u)?;
+        let (_, shape, removed, error) = remove_while(
+            stack_lanes(lanes),
+            u,
+            times,
+            tolerance,
+            |s| Self::lanes_within_rule(s, family),
+            |c: &[Self; 2]| Self::lanes_deviation(lanes, c),
+        );
+        Ok(KnotRemoval {
+            curve: shape.unwrap_or_else(|| [lanes[0].clone(), lanes[1].clone()]),
+            removed,
+            error,
+        })
+    }
+}
+
+impl<const D: usize> crate::AnyCurve<D> {
+    /// [`crate::AnyCurve::reduced`] for the two lanes of an interval-valued or bipolar family
+    /// ([`SplineCurve::reduce_degree_lanes`] each time, the tolerance for the whole; a Bézier
+    /// curve stays a Bézier curve when the result has one span).
+    ///
+    /// # Errors
+    /// As [`SplineCurve::reduce_degree`]; [`ReduceError::DegreeTooLow`] also when the lanes
+    /// are not of one kind.
+    ///
+    /// # Panics
+    /// As [`SplineCurve::reduce_degree_lanes`].
+    pub fn reduced_lanes(
+        lanes: [&Self; 2],
+        times: usize,
+        tolerance: f64,
+        family: crate::Family,
+    ) -> Result<DegreeReduction<[Self; 2]>, ReduceError> {
+        use crate::AnyCurve as C;
+        let original = lanes.map(Self::as_spline);
+        let mut current = original.clone();
+        for _ in 0..times {
+            current = match &current {
+                [C::BSpline(a), C::BSpline(b)] => {
+                    SplineCurve::reduce_degree_lanes([a, b], tolerance, family)?
+                        .curve
+                        .map(Into::into)
+                }
+                [C::Nurbs(a), C::Nurbs(b)] => {
+                    SplineCurve::reduce_degree_lanes([a, b], tolerance, family)?
+                        .curve
+                        .map(Into::into)
+                }
+                _ => {
+                    return Err(ReduceError::DegreeTooLow {
+                        degree: lanes[0].degree(),
+                    })
+                }
+            };
+        }
+        let deviation = |a: &Self, b: &Self| match (a, b) {
+            (C::BSpline(a), C::BSpline(b)) => a.deviation_from(b),
+            (C::Nurbs(a), C::Nurbs(b)) => a.deviation_from(b),
+            _ => f64::INFINITY,
+        };
+        let error = deviation(&original[0], &current[0]).max(deviation(&original[1], &current[1]));
+        if error.is_nan() || error > tolerance {
+            return Err(ReduceError::NotWithin {
+                degree: current[0].degree(),
+                tolerance,
+                error,
+            });
+        }
+        let curve = current.map(|lane| match (lanes[0], &lane) {
+            (C::Bezier(_), C::BSpline(b)) if b.knots().interior_breakpoints().is_empty() => {
+                crate::Bezier::new(crate::ControlPolygon::control_points(b))
+                    .unwrap_or_else(|e| unreachable!("a valid spline's points: {e}"))
+                    .into()
+            }
+            _ => lane,
+        });
+        Ok(DegreeReduction { curve, error })
+    }
+
+    /// [`crate::AnyCurve::without_knot`] for the two lanes of an interval-valued or bipolar
+    /// family ([`SplineCurve::remove_knot_lanes`]).
+    ///
+    /// # Errors
+    /// [`KnotError::NotAnInteriorKnot`], also for a Bézier curve, which has none.
+    ///
+    /// # Panics
+    /// As [`SplineCurve::remove_knot_lanes`].
+    pub fn without_knot_lanes(
+        lanes: [&Self; 2],
+        u: f64,
+        times: usize,
+        tolerance: f64,
+        family: crate::Family,
+    ) -> Result<KnotRemoval<[Self; 2]>, KnotError> {
+        use crate::AnyCurve as C;
+        fn removal<T: Into<crate::AnyCurve<D>>, const D: usize>(
+            r: KnotRemoval<[T; 2]>,
+        ) -> KnotRemoval<[crate::AnyCurve<D>; 2]> {
+            KnotRemoval {
+                curve: r.curve.map(Into::into),
+                removed: r.removed,
+                error: r.error,
+            }
+        }
+        match lanes {
+            [C::BSpline(a), C::BSpline(b)] => {
+                SplineCurve::remove_knot_lanes([a, b], u, times, tolerance, family).map(removal)
+            }
+            [C::Nurbs(a), C::Nurbs(b)] => {
+                SplineCurve::remove_knot_lanes([a, b], u, times, tolerance, family).map(removal)
+            }
+            _ => Err(KnotError::NotAnInteriorKnot {
+                value: u,
+                knots: "none: a Bézier curve has no knots".to_owned(),
+            }),
+        }
     }
 }

@@ -76,12 +76,7 @@ pub fn run(args: &ExportArgs) -> anyhow::Result<()> {
         .with_color_by(args.color_by)
         .with_mesh(args.mesh)
         .with_ascii(args.ascii);
-    let model = input::one_lane(
-        &args.file,
-        input::read_model(&args.file, &args.model)?,
-        "export",
-        "LANES_TODO",
-    )?;
+    let model = input::read_model(&args.file, &args.model)?;
     let bytes = neutrospline_exchange::export(&model, format, &options).map_err(|e| match e {
         e if e.is_usage() => anyhow::Error::new(UsageError(e.to_string())),
         ExportError::SurfaceNeedsMesh { .. } => {

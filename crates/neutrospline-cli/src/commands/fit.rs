@@ -111,6 +111,25 @@ pub fn run(args: &FitArgs) -> anyhow::Result<()> {
     run_curve(args, model_format)
 }
 
+/// Refuses a family of two lanes (`Family::lanes`: the interval-valued and bipolar ones): a
+/// fit solves one truth, indeterminacy and falsity triple per data point and control point.
+///
+/// # Errors
+/// The reason, naming the data file, the family and its channels.
+fn one_lane_family(data: &str, membership: neutrospline::Family) -> anyhow::Result<()> {
+    if membership.lane_count() == 1 {
+        return Ok(());
+    }
+    Err(anyhow::anyhow!(
+        "{}: membership {membership}: `neutrospline fit` fits one truth, indeterminacy and \
+         falsity triple per data point, and the {membership} family has {} channels ({}) in \
+         two lanes; write the model's control points in a model file instead",
+        crate::input::label(data),
+        membership.channel_count(),
+        membership.channels().join(", ")
+    ))
+}
+
 /// The model's format: by the extension of `-o`, TOML on standard output.
 fn model_format(args: &FitArgs) -> anyhow::Result<Format> {
     let what = if args.surface { "surface" } else { "curve" };
@@ -136,6 +155,7 @@ fn run_curve(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
     let request = args.request.first("with --surface")?;
     let options = request.validate().map_err(|e| UsageError(e.to_string()))?;
     let membership = request.membership;
+    one_lane_family(&args.data, membership)?;
     let input = crate::commands::options::table_input(&args.table)?;
     let table = read_data(&args.data, membership, &input)?;
     if let Some(warning) = disorder_warning(&table) {
@@ -182,6 +202,7 @@ fn run_surface(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
     let request = args.request.second("without --surface")?;
     let options = request.validate().map_err(|e| UsageError(e.to_string()))?;
     let membership = request.membership;
+    one_lane_family(&args.data, membership)?;
     let input = crate::commands::options::table_input(&args.table)?;
     let table = read_data(&args.data, membership, &input)?;
     request

@@ -60,12 +60,7 @@ pub fn run(args: &TransformArgs) -> anyhow::Result<()> {
     };
     let request = args.request.request()?;
     let operation = request.operation().map_err(UsageError)?;
-    let model = input::one_lane(
-        &args.file,
-        input::read_model(&args.file, &args.model)?,
-        "transform",
-        "LANES_TODO",
-    )?;
+    let model = input::read_model(&args.file, &args.model)?;
     let out = neutrospline_io::transform(&model, &operation, request.direction)
         .map_err(|e| anyhow::anyhow!("{}: {e}", args.file))?;
     let paths: Vec<PathBuf> = if out.models.len() == 1 {

@@ -29,3 +29,4 @@ mod util;
 mod warnings;
 mod wide_families;
 mod wide_plot;
+mod wide_transform;

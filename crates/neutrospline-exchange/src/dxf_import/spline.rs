@@ -278,7 +278,55 @@ pub(super) fn model(
             ),
         ));
     }
+    // A family of two lanes: the channels of every control point split into the lanes.
+    let mut second_lane: Option<Vec<Degrees>> = None;
     let degrees = match &info {
+        Some(info) if info.membership.lane_count() == 2 => {
+            let family = info.membership;
+            let mut columns = Vec::new();
+            for channel in family.channels() {
+                let values = info
+                    .channels
+                    .iter()
+                    .find(|(name, _)| name == channel)
+                    .map(|(_, v)| v)
+                    .ok_or_else(|| {
+                        at(
+                            xdata_line,
+                            format!(
+                                "the extended data of a {family} curve has no `{channel}` \
+                                 (its channels: {})",
+                                family.channels().join(", ")
+                            ),
+                        )
+                    })?;
+                if values.len() != point_count {
+                    return Err(at(
+                        xdata_line,
+                        format!(
+                            "the extended data has `{channel}` for {} control points, the \
+                             SPLINE has {point_count}",
+                            values.len()
+                        ),
+                    ));
+                }
+                columns.push(values);
+            }
+            let mut lanes = (Vec::new(), Vec::new());
+            for k in 0..point_count {
+                let values: Vec<f64> = columns.iter().map(|c| c[k]).collect();
+                let (split, _) = family.split(&values).map_err(|e| {
+                    at(
+                        xdata_line,
+                        format!("NEUTROSPLINE extended data: control point {k}: {e}"),
+                    )
+                })?;
+                lanes.0.push(split[0]);
+                lanes.1.push(split[1]);
+            }
+            second_lane = Some(lanes.1);
+            lanes.0
+        }
         Some(info) if !info.degrees.is_empty() => {
             if info.degrees.len() != point_count {
                 return Err(at(xdata_line, format!("the extended data has degrees for {} control points, the SPLINE has {point_count}", info.degrees.len())));
@@ -287,10 +335,15 @@ pub(super) fn model(
         }
         _ => vec![defaults; point_count],
     };
-    let shape: neutrospline_io::Shape = match dimension {
-        2 => curve::<2>(file, s, kind, degree, knots, weights, &positions, &degrees)?.into(),
-        _ => curve::<3>(file, s, kind, degree, knots, weights, &positions, &degrees)?.into(),
+    let build = |degrees: &[Degrees]| -> Result<neutrospline_io::Shape, ReadError> {
+        let (knots, weights) = (knots.clone(), weights.clone());
+        Ok(match dimension {
+            2 => curve::<2>(file, s, kind, degree, knots, weights, &positions, degrees)?.into(),
+            _ => curve::<3>(file, s, kind, degree, knots, weights, &positions, degrees)?.into(),
+        })
     };
+    let shape = build(&degrees)?;
+    let second = second_lane.as_deref().map(build).transpose()?;
     let mut model = Model::new(shape);
     if let Some(info) = info {
         if let Some(name) = info.name {
@@ -299,9 +352,11 @@ pub(super) fn model(
         if let Some(description) = info.description {
             model = model.with_description(description);
         }
-        model = model
-            .with_membership(info.membership)
-            .map_err(|e| at(xdata_line, format!("NEUTROSPLINE extended data: {e}")))?;
+        model = match second {
+            Some(second) => model.with_lanes(info.membership, second),
+            None => model.with_membership(info.membership),
+        }
+        .map_err(|e| at(xdata_line, format!("NEUTROSPLINE extended data: {e}")))?;
         if !info.point_names.is_empty() {
             model = model
                 .with_point_names(info.point_names)

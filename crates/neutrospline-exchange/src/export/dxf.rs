@@ -12,13 +12,27 @@ use neutrospline_io::{Model, Shape};
 /// What the extended data of the model's entity says, with or without the control points'
 /// degrees and names.
 fn info(model: &Model, with_points: bool) -> ModelInfo {
+    let wide = model.membership().lane_count() == 2;
+    let channels = if with_points && wide {
+        let values = model.control_channels();
+        model
+            .membership()
+            .channels()
+            .iter()
+            .enumerate()
+            .map(|(c, name)| ((*name).to_owned(), values.iter().map(|v| v[c]).collect()))
+            .collect()
+    } else {
+        Vec::new()
+    };
     ModelInfo {
+        channels,
         kind: model.kind(),
         dimension: model.shape().dimension(),
         membership: model.membership(),
         name: model.name().map(str::to_owned),
         description: model.description().map(str::to_owned),
-        degrees: if with_points {
+        degrees: if with_points && !wide {
             model.shape().control_degrees()
         } else {
             Vec::new()
@@ -172,8 +186,23 @@ pub(super) fn mesh_document(model: &Model, samples: &Samples, by: ColorBy) -> St
                 t.tag(100, "AcDbEntity").tag(8, "0");
                 t.tag(100, "AcDbVertex").tag(100, "AcDbPolyFaceMeshVertex");
                 t.point(10, samples.positions[k as usize]).int(70, 192);
-                let mut values = vec![XValue::Text("degrees".to_owned()), XValue::Long(1)];
-                values.extend(samples.degrees[k as usize].to_array().map(XValue::Real));
+                // `degrees` 1 T I F, or each channel of a family of two lanes by its name.
+                let mut values = Vec::new();
+                match &samples.channels {
+                    None => {
+                        values.extend([XValue::Text("degrees".to_owned()), XValue::Long(1)]);
+                        values.extend(samples.degrees[k as usize].to_array().map(XValue::Real));
+                    }
+                    Some((family, channels)) => {
+                        for (name, v) in family.channels().iter().zip(channels[k as usize].iter()) {
+                            values.extend([
+                                XValue::Text((*name).to_owned()),
+                                XValue::Long(1),
+                                XValue::Real(*v),
+                            ]);
+                        }
+                    }
+                }
                 t.xdata(&values);
             }
             for face in faces {

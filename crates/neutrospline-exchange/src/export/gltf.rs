@@ -122,16 +122,15 @@ fn build(model: &Model, samples: &Samples, by: ColorBy) -> (Map<String, Value>, 
         .map(|&c| neutrospline::color::srgb_to_linear(c) as f32)
         .collect();
     attributes.insert("COLOR_0".into(), buffer.floats(&colors, 3).into());
-    for (k, name) in ["_TRUTH", "_INDETERMINACY", "_FALSITY"]
-        .into_iter()
-        .enumerate()
-    {
-        let values: Vec<f32> = samples
-            .degrees
-            .iter()
-            .map(|d| d.to_array()[k] as f32)
-            .collect();
-        attributes.insert(name.into(), buffer.floats(&values, 1).into());
+    // `_TRUTH`, `_INDETERMINACY`, `_FALSITY`, or a wide family's channels (`_TRUTH_LOWER`,
+    // ..., `_NEGATIVE_TRUTH`, ...).
+    let (names, rows) = samples.value_columns();
+    for (k, name) in names.into_iter().enumerate() {
+        let values: Vec<f32> = rows.iter().map(|row| row[k] as f32).collect();
+        attributes.insert(
+            format!("_{}", name.to_ascii_uppercase()),
+            buffer.floats(&values, 1).into(),
+        );
     }
     let (mode, indices) = match &samples.triangles {
         None => (LINE_STRIP, None),

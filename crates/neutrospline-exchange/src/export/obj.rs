@@ -35,9 +35,11 @@ pub(super) fn obj(model: &Model, samples: &Samples, by: ColorBy) -> String {
     }
     let _ = writeln!(out, "# membership: {}", model.membership());
     let _ = writeln!(out, "# v x y z r g b: r g b is the viridis colour of {by}");
-    out.push_str(
-        "# degrees: the #deg lines at the end, one per vertex in order: truth indeterminacy \
-         falsity\n",
+    let (names, rows) = samples.value_columns();
+    let _ = writeln!(
+        out,
+        "# degrees: the #deg lines at the end, one per vertex in order: {}",
+        names.join(" ")
     );
     let name = model.name().unwrap_or(model.kind().name());
     let _ = writeln!(out, "o {}", comment_text(name, false));
@@ -79,9 +81,12 @@ pub(super) fn obj(model: &Model, samples: &Samples, by: ColorBy) -> String {
             }
         }
     }
-    for d in &samples.degrees {
-        let [t, i, f] = d.to_array();
-        let _ = writeln!(out, "#deg {} {} {}", number(t), number(i), number(f));
+    for row in &rows {
+        out.push_str("#deg");
+        for v in row {
+            let _ = write!(out, " {}", number(*v));
+        }
+        out.push('\n');
     }
     out
 }

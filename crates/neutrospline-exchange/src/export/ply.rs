@@ -44,7 +44,7 @@ fn header(model: &Model, samples: &Samples, by: ColorBy, ascii: bool) -> String 
     for name in ["red", "green", "blue"] {
         let _ = writeln!(h, "property uchar {name}");
     }
-    for name in ["truth", "indeterminacy", "falsity"] {
+    for name in samples.value_columns().0 {
         let _ = writeln!(h, "property double {name}");
     }
     match &samples.triangles {
@@ -97,7 +97,8 @@ fn row(out: &mut Vec<u8>, values: &[Value], ascii: bool) {
 pub(super) fn ply(model: &Model, samples: &Samples, by: ColorBy, ascii: bool) -> Vec<u8> {
     let mut out = header(model, samples, by, ascii).into_bytes();
     let colors = samples.colors(by);
-    let mut values = Vec::with_capacity(12);
+    let (_, degree_rows) = samples.value_columns();
+    let mut values = Vec::with_capacity(15);
     for k in 0..samples.positions.len() {
         values.clear();
         values.extend(samples.positions[k].map(Value::Double));
@@ -105,7 +106,7 @@ pub(super) fn ply(model: &Model, samples: &Samples, by: ColorBy, ascii: bool) ->
             values.extend(normals[k].map(Value::Double));
         }
         values.extend(colors[k].map(Value::Byte));
-        values.extend(samples.degrees[k].to_array().map(Value::Double));
+        values.extend(degree_rows[k].iter().copied().map(Value::Double));
         row(&mut out, &values, ascii);
     }
     match &samples.triangles {

@@ -5,10 +5,10 @@ use neutrospline::sample::{
     adaptive_parameters, adaptive_surface_parameters, chord_tolerance, surface_tolerance,
     uniform_parameters, SurfaceGrid,
 };
-use neutrospline::{AnyCurve, Degrees, Evaluate, EvaluateSurface, Surface};
+use neutrospline::{AnyCurve, Degrees, Evaluate, EvaluateSurface, Family, FamilyValues, Surface};
 
 use super::{ColorBy, ExportError};
-use neutrospline_io::Shape;
+use neutrospline_io::{Model, Shape};
 
 /// Sampled points of a curve (a polyline through them, in order) or a surface (a triangle
 /// mesh with normals).
@@ -18,8 +18,11 @@ pub(crate) struct Samples {
     pub dimension: usize,
     /// The positions, `z = 0` for a plane curve.
     pub positions: Vec<[f64; 3]>,
-    /// The degrees of each point.
+    /// The degrees of each point (of the first lane for a family of two lanes).
     pub degrees: Vec<Degrees>,
+    /// A family of two lanes (`Family::lanes`): its channel values at each point, the lanes
+    /// evaluated at the same parameters and joined; `None` for a family of one lane.
+    pub channels: Option<(Family, Vec<FamilyValues>)>,
     /// Surfaces: the unit normal of each point.
     pub normals: Option<Vec<[f64; 3]>>,
     /// Surfaces: the triangles, counter-clockwise seen from the normals' side.
@@ -32,7 +35,8 @@ const MAX_POINTS: usize = u32::MAX as usize;
 fn curve<const D: usize>(
     curve: &AnyCurve<D>,
     samples: Option<usize>,
-) -> Result<Samples, ExportError> {
+    second: Option<&Shape>,
+) -> Result<(Samples, Vec<Degrees>), ExportError> {
     let ts = match samples {
         Some(n) => uniform_parameters(curve.domain(), n),
         None => adaptive_parameters(curve, chord_tolerance(curve)),
@@ -45,23 +49,35 @@ fn curve<const D: usize>(
     }
     let mut positions = Vec::with_capacity(ts.len());
     let mut degrees = Vec::with_capacity(ts.len());
+    let mut other = Vec::new();
     for t in ts {
         let p = curve.evaluate(t)?;
         let mut position = [0.0; 3];
         position[..D].copy_from_slice(&p.position);
         positions.push(position);
         degrees.push(p.degrees);
+        if let Some(Shape::Curve(c)) = second {
+            other.push(neutrospline::on_dimension!(c, c => c.evaluate(t)?.degrees));
+        }
     }
-    Ok(Samples {
-        dimension: D,
-        positions,
-        degrees,
-        normals: None,
-        triangles: None,
-    })
+    Ok((
+        Samples {
+            dimension: D,
+            positions,
+            degrees,
+            channels: None,
+            normals: None,
+            triangles: None,
+        },
+        other,
+    ))
 }
 
-fn surface(surface: &Surface, samples: Option<usize>) -> Result<Samples, ExportError> {
+fn surface(
+    surface: &Surface,
+    samples: Option<usize>,
+    second: Option<&Shape>,
+) -> Result<(Samples, Vec<Degrees>), ExportError> {
     let [u, v] = match samples {
         Some(n) => {
             let [du, dv] = surface.domain();
@@ -76,6 +92,14 @@ fn surface(surface: &Surface, samples: Option<usize>) -> Result<Samples, ExportE
             max: MAX_POINTS,
         });
     }
+    let other = match second {
+        Some(Shape::Surface(s)) => SurfaceGrid::new(s, u.clone(), v.clone())?
+            .points()
+            .iter()
+            .map(|p| p.degrees)
+            .collect(),
+        _ => Vec::new(),
+    };
     let grid = SurfaceGrid::new(surface, u, v)?;
     // Indices fit: there are at most u32::MAX points.
     let triangles = grid
@@ -83,30 +107,96 @@ fn surface(surface: &Surface, samples: Option<usize>) -> Result<Samples, ExportE
         .into_iter()
         .map(|t| t.map(|k| k as u32))
         .collect();
-    Ok(Samples {
-        dimension: 3,
-        positions: grid.points().iter().map(|p| p.position).collect(),
-        degrees: grid.points().iter().map(|p| p.degrees).collect(),
-        normals: Some(grid.normals().to_vec()),
-        triangles: Some(triangles),
-    })
+    Ok((
+        Samples {
+            dimension: 3,
+            positions: grid.points().iter().map(|p| p.position).collect(),
+            degrees: grid.points().iter().map(|p| p.degrees).collect(),
+            channels: None,
+            normals: Some(grid.normals().to_vec()),
+            triangles: Some(triangles),
+        },
+        other,
+    ))
 }
 
 impl Samples {
     /// Samples `shape`: `samples` evenly spaced points of a curve (an N x N grid of a
     /// surface), or without it the adaptive parameters of [`neutrospline::sample`].
+    #[cfg(test)]
     pub fn of(shape: &Shape, samples: Option<usize>) -> Result<Samples, ExportError> {
+        Ok(Self::lanes(shape, None, samples)?.0)
+    }
+
+    fn lanes(
+        shape: &Shape,
+        second: Option<&Shape>,
+        samples: Option<usize>,
+    ) -> Result<(Samples, Vec<Degrees>), ExportError> {
         match shape {
-            Shape::Curve(c) => neutrospline::on_dimension!(c, c => curve(c, samples)),
-            Shape::Surface(s) => surface(s, samples),
+            Shape::Curve(c) => neutrospline::on_dimension!(c, c => curve(c, samples, second)),
+            Shape::Surface(s) => surface(s, samples, second),
+        }
+    }
+
+    /// Samples the model's shape as [`Samples::of`]; a family of two lanes has its second
+    /// lane evaluated at the same parameters, and the channel values of every point joined
+    /// ([`Samples::channels`]).
+    pub fn of_model(model: &Model, samples: Option<usize>) -> Result<Samples, ExportError> {
+        let lanes = model.lanes();
+        let (mut out, other) = Self::lanes(lanes[0], lanes.get(1).copied(), samples)?;
+        if lanes.len() == 2 {
+            let family = model.membership();
+            let channels = out
+                .degrees
+                .iter()
+                .zip(&other)
+                .map(|(a, b)| family.join(&[*a, *b]))
+                .collect();
+            out.channels = Some((family, channels));
+        }
+        Ok(out)
+    }
+
+    /// The names and values (one row per point) of what the file keeps of each point's
+    /// membership: `truth`, `indeterminacy`, `falsity` for a family of one lane, the family's
+    /// channels (`truth_lower`, ..., `negative_truth`, ...) for a family of two lanes.
+    pub fn value_columns(&self) -> (Vec<&'static str>, Vec<Vec<f64>>) {
+        match &self.channels {
+            None => (
+                vec!["truth", "indeterminacy", "falsity"],
+                self.degrees.iter().map(|d| d.to_array().to_vec()).collect(),
+            ),
+            Some((family, values)) => (
+                family.channels().to_vec(),
+                values.iter().map(|v| v.to_vec()).collect(),
+            ),
         }
     }
 
     /// The colour of each point, viridis of `by`.
+    ///
+    /// For an interval-valued family the value is taken from the midpoints of its intervals
+    /// (`(T_L + T_U) / 2`, ...), for the bipolar family from its positive degrees.
     pub fn colors(&self, by: ColorBy) -> Vec<[u8; 3]> {
         self.degrees
             .iter()
-            .map(|d| neutrospline::color::viridis(by.value(d)))
+            .enumerate()
+            .map(|(k, d)| {
+                let shown = match &self.channels {
+                    Some((family, values)) if *family != Family::BipolarNeutrosophic => {
+                        let (lanes, _) = family.split(&values[k]).unwrap_or(([*d, *d], 2));
+                        let [a, b] = [lanes[0].to_array(), lanes[1].to_array()];
+                        Degrees::new_unchecked(
+                            (a[0] + b[0]) / 2.0,
+                            (a[1] + b[1]) / 2.0,
+                            (a[2] + b[2]) / 2.0,
+                        )
+                    }
+                    _ => *d,
+                };
+                neutrospline::color::viridis(by.value(&shown))
+            })
             .collect()
     }
 

@@ -252,15 +252,39 @@ fn curve_entity(data: &mut Data, curve: &CurveData<'_>) -> usize {
     }
 }
 
-/// The name of control point `index`: `NAME T=t I=i F=f`.
-fn point_label(model: &Model, index: usize, degrees: &neutrospline::Degrees) -> String {
+/// The name of control point `index`: `NAME T=t I=i F=f`; for a family of two lanes
+/// (`wide`: the channel values of every control point) `NAME truth_lower=.. truth_upper=..`,
+/// each channel by its name.
+fn point_label(
+    model: &Model,
+    index: usize,
+    degrees: &neutrospline::Degrees,
+    wide: Option<&[neutrospline::FamilyValues]>,
+) -> String {
     let name = model
         .point_names()
         .get(index)
         .and_then(|n| n.clone())
         .unwrap_or_else(|| format!("P{index}"));
+    if let Some(values) = wide {
+        let mut label = name;
+        for (channel, v) in model
+            .membership()
+            .channels()
+            .iter()
+            .zip(values[index].iter())
+        {
+            let _ = write!(label, " {channel}={}", plain(*v));
+        }
+        return label;
+    }
     let [t, i, f] = degrees.to_array();
     format!("{name} T={} I={} F={}", plain(t), plain(i), plain(f))
+}
+
+/// The channel values of every control point of a family of two lanes; `None` for one lane.
+fn wide_channels(model: &Model) -> Option<Vec<neutrospline::FamilyValues>> {
+    (model.membership().lane_count() == 2).then(|| model.control_channels())
 }
 
 /// A position with `z = 0` for a plane curve.
@@ -328,13 +352,17 @@ fn write_curve<const D: usize>(data: &mut Data, model: &Model, curve: &AnyCurve<
     let control = curve.control_points();
     let knots = curve_knots(curve);
     let weights = curve.weights();
+    let wide = wide_channels(model);
     pieces(&knots)
         .into_iter()
         .map(|piece| {
             let points: Vec<usize> = (piece.start..piece.end)
                 .map(|k| {
                     let p = &control[k];
-                    data.point(&point_label(model, k, &p.degrees), position(&p.position))
+                    data.point(
+                        &point_label(model, k, &p.degrees, wide.as_deref()),
+                        position(&p.position),
+                    )
                 })
                 .collect();
             curve_entity(
@@ -359,7 +387,8 @@ fn write_surfaces(
 ) -> Result<Vec<usize>, ExportError> {
     let (rows, cols) = (surface.rows(), surface.cols());
     let control = surface.control_points();
-    let label = |k: usize| point_label(model, k, &control[k].degrees);
+    let wide = wide_channels(model);
+    let label = |k: usize| point_label(model, k, &control[k].degrees, wide.as_deref());
     let pieces_u = pieces(surface.knots_u());
     let pieces_v = pieces(surface.knots_v());
     if pieces_u.len() == 1 && pieces_v.len() == 1 {
@@ -685,11 +714,25 @@ pub(super) fn document(model: &Model) -> Result<String, ExportError> {
     let version = env!("CARGO_PKG_VERSION");
     let mut out = String::with_capacity(data.out.len() + 1024);
     out.push_str("ISO-10303-21;\nHEADER;\n");
+    let degrees = if model.membership().lane_count() == 2 {
+        let channels: Vec<String> = model
+            .membership()
+            .channels()
+            .iter()
+            .map(|c| format!("{c}={c}"))
+            .collect();
+        format!(
+            "degrees: each control point's CARTESIAN_POINT is named 'NAME {}'",
+            channels.join(" ")
+        )
+    } else {
+        "degrees: each control point's CARTESIAN_POINT is named 'NAME T=truth I=indeterminacy F=falsity'"
+            .to_owned()
+    };
     let description = [
         format!("neutrospline {kind} model"),
         format!("membership {}", model.membership()),
-        "degrees: each control point's CARTESIAN_POINT is named 'NAME T=truth I=indeterminacy F=falsity'"
-            .to_owned(),
+        degrees,
     ];
     let _ = writeln!(
         out,
