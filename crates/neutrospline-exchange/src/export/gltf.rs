@@ -3,8 +3,10 @@
 //! each, 4-byte aligned): `POSITION` (with its exact float32 `min` and `max`), `NORMAL`
 //! (surfaces), `COLOR_0` (linear RGB of the viridis colour of the chosen value, so that a
 //! viewer's sRGB output shows the figures' colours) and the degrees as the application-specific
-//! attributes `_TRUTH`, `_INDETERMINACY`, `_FALSITY`. `asset.extras` holds the model's name,
-//! description, kind and membership rule and the colouring.
+//! attributes `_TRUTH`, `_INDETERMINACY`, `_FALSITY` (for an interval-valued or bipolar
+//! family, its channels instead, each as `_` and its name in capitals: `_TRUTH_LOWER`, ...,
+//! `_NEGATIVE_TRUTH`, ...). `asset.extras` holds the model's name, description, kind and
+//! membership rule and the colouring.
 //!
 //! Model coordinates are z-up; glTF is y-up, so a 3-D shape's node turns z up (a rotation of
 //! -90 degrees about x) and the vertices keep the model's coordinates. A plane curve lies in the

@@ -3,8 +3,9 @@
 //! to 6 decimals), `vn` and `f a//a b//b c//c` for a surface's triangles, `l` lines for a
 //! curve's polyline (at most [`LINE_LENGTH`] vertices each, consecutive lines sharing their
 //! end vertex). OBJ has no place for other vertex data: the degrees follow in a comment
-//! block, one `#deg truth indeterminacy falsity` line per vertex in order, numbers in the
-//! shortest form that reads back to the same `f64`.
+//! block, one `#deg truth indeterminacy falsity` line per vertex in order (for an
+//! interval-valued or bipolar family its channels, named in the header's comment), numbers in
+//! the shortest form that reads back to the same `f64`.
 
 use std::fmt::Write as _;
 

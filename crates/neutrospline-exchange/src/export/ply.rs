@@ -1,6 +1,7 @@
 //! Stanford PLY, binary little-endian or ASCII: one `vertex` element with the properties
 //! `x y z` (double), `nx ny nz` (double, surfaces), `red green blue` (uchar, the viridis
-//! colour of the chosen value) and `truth indeterminacy falsity` (double), then a `face`
+//! colour of the chosen value) and `truth indeterminacy falsity` (double; for an
+//! interval-valued or bipolar family its channels by name, `truth_lower truth_upper ...`), then a `face`
 //! element (surfaces: `list uchar uint vertex_indices`, triangles) or an `edge` element
 //! (curves: `uint vertex1`, `uint vertex2`, the segments of the polyline). The header's
 //! comments name the model and the colouring (in ASCII, as the header must be).

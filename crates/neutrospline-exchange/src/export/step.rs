@@ -57,7 +57,9 @@
 //! Each control point's `CARTESIAN_POINT` is named `NAME T=t I=i F=f`: the point's name in the
 //! model (or `P` and its index from 0, row by row for a surface, when it has none), then its
 //! truth, indeterminacy and falsity as shortest round-trip decimals. A CAD program shows the
-//! name with the point; a script reads the last three space-separated fields. Strings are
+//! name with the point; a script reads the last three space-separated fields. An
+//! interval-valued or bipolar family names each channel instead: `NAME truth_lower=..
+//! truth_upper=.. ...` (the header's `FILE_DESCRIPTION` lists them). Strings are
 //! encoded as ISO 10303-21 says: `'` and `\` doubled, characters outside printable ASCII as
 //! `\X2\hhhh\X0\` (`\X4\hhhhhhhh\X0\` beyond the Basic Multilingual Plane).
 //!
