@@ -368,6 +368,22 @@ pub fn read_data_with(
     membership: Family,
     input: &TableInput,
 ) -> Result<DataTable, ReadError> {
+    if membership.lane_count() == 2 {
+        return Err(InputError::new(
+            file,
+            None,
+            None,
+            format!(
+                "membership {membership}: a data table holds one truth, indeterminacy and falsity \
+                 triple per data point, and the {membership} family has {} channels ({}) in two \
+                 lanes (docs/model.md, \"Lanes\"); fitting its data is not available, so write \
+                 the model's control points in a model file instead",
+                membership.channel_count(),
+                membership.channels().join(", ")
+            ),
+        )
+        .into());
+    }
     let column = |heading: &str| {
         Column::from_name(heading).ok_or_else(|| {
             format!(

@@ -245,4 +245,3 @@ fn figure_request(
     set_from_kwargs(&mut request, options)?;
     Ok(request)
 }
-

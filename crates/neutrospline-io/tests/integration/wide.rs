@@ -208,3 +208,18 @@ fn the_wide_examples_read_and_keep_their_rule() {
         }
     }
 }
+
+#[test]
+fn a_data_table_of_a_wide_family_is_refused_with_the_reason() {
+    let csv = "x,y,truth_lower,truth_upper\n0,0,0.1,0.2\n";
+    let error = neutrospline_io::read_data("d.csv", csv.as_bytes(), Family::IntervalType2)
+        .unwrap_err()
+        .to_string();
+    assert_eq!(
+        error,
+        "d.csv: membership interval-type2: a data table holds one truth, indeterminacy and \
+         falsity triple per data point, and the interval-type2 family has 2 channels \
+         (truth_lower, truth_upper) in two lanes (docs/model.md, \"Lanes\"); fitting its data is \
+         not available, so write the model's control points in a model file instead"
+    );
+}
