@@ -2,9 +2,10 @@
 //!
 //! Columns (case-insensitive): `x`, `y`, optional `z`, `truth`, `indeterminacy`, `falsity`
 //! (aliases `T`, `I`, `F`; which degrees are required follows the membership rule, as for
-//! control points), and the optional `parameter` (the point's parameter on the curve; `t`
-//! reads as the alias of truth), `weight` (a positive number: how strongly the point pulls)
-//! and `name`. Comments, empty lines, quoting, CRLF and a byte order mark as in control-point
+//! control points; the interval-valued and bipolar families have their channels instead:
+//! `truth_lower, truth_upper, ...`, `negative_truth, ...`), and the optional `parameter` (the
+//! point's parameter on the curve; `t` reads as the alias of truth), `weight` (a positive
+//! number: how strongly the point pulls) and `name`. Comments, empty lines, quoting, CRLF and a byte order mark as in control-point
 //! CSV files (see [`crate::read_csv`]); line numbers in errors are physical lines.
 //!
 //! ```
@@ -37,15 +38,19 @@ use neutrospline::fit::{
 use neutrospline::{Degrees, Family};
 
 use crate::csv::{read_degrees, require_degrees, Columns, Table};
-use crate::parsed::{duplicate_rule, Field};
+use crate::parsed::{
+    channel_problem, duplicate_rule, wide_channel, wide_lanes, Field, WIDE_CHANNELS,
+};
 use crate::path_order::{path_disorder, PathDisorder};
 use crate::read::open_table;
 use crate::{InputError, PointTable, ReadError, TableInput};
 
-/// The columns of a data table: a control-point field or the point's parameter.
+/// The columns of a data table: a control-point field, a channel of the interval-valued and
+/// bipolar families (index in [`WIDE_CHANNELS`]) or the point's parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Column {
     Field(Field),
+    Channel(usize),
     Parameter,
     /// A surface's parameters `u` and `v`.
     U,
@@ -63,11 +68,22 @@ impl Column {
                 return Some(column);
             }
         }
-        Field::from_name(text, true).map(Column::Field)
+        Field::from_name(text, true)
+            .map(Column::Field)
+            .or_else(|| wide_channel(text, true).map(Column::Channel))
     }
 
-    fn known_list() -> String {
-        format!("{}, parameter, u, v", Field::known_list())
+    /// The known columns, with the channels of `membership` when it has two lanes.
+    fn known_list(membership: Family) -> String {
+        let channels = if membership.lane_count() == 2 {
+            format!(
+                " (membership {membership}: {})",
+                membership.channels().join(", ")
+            )
+        } else {
+            String::new()
+        };
+        format!("{}, parameter, u, v{channels}", Field::known_list())
     }
 }
 
@@ -78,6 +94,7 @@ pub struct DataTable {
     /// The file, the positions and their lines: what a table of query points holds.
     points: PointTable,
     degrees: Vec<Degrees>,
+    second_lane: Option<Vec<Degrees>>,
     parameters: Option<Vec<f64>>,
     surface_parameters: Option<Vec<[f64; 2]>>,
     weights: Option<Vec<f64>>,
@@ -110,9 +127,16 @@ impl DataTable {
         self.points.positions()
     }
 
-    /// The degrees, valid under the membership rule they were read with.
+    /// The degrees, valid under the membership rule they were read with (of an
+    /// interval-valued or bipolar family: the first lane, docs/model.md "Lanes").
     pub fn degrees(&self) -> &[Degrees] {
         &self.degrees
+    }
+
+    /// The second lane's degrees of an interval-valued or bipolar family's data (`upper`, or
+    /// the negated `negative` degrees); `None` for a family of one lane.
+    pub fn second_lane(&self) -> Option<&[Degrees]> {
+        self.second_lane.as_deref()
     }
 
     /// The `u` and `v` columns (a surface's parameters), when the file has them.
@@ -165,6 +189,7 @@ impl DataTable {
             self.dimension(),
             &self.points.flat_positions(),
             self.degrees.clone(),
+            self.second_lane.clone(),
             self.parameters.clone(),
             self.weights.clone(),
             options,
@@ -226,6 +251,11 @@ impl DataTable {
             None => SurfaceFitData::scattered(positions, degrees),
         };
         let mut data = data.map_err(|e| self.locate(&e))?;
+        if let Some(second) = &self.second_lane {
+            data = data
+                .with_second_lane(second.clone())
+                .map_err(|e| self.locate(&e))?;
+        }
         if let Some(uv) = &self.surface_parameters {
             data = data
                 .with_parameters(uv.clone())
@@ -368,27 +398,11 @@ pub fn read_data_with(
     membership: Family,
     input: &TableInput,
 ) -> Result<DataTable, ReadError> {
-    if membership.lane_count() == 2 {
-        return Err(InputError::new(
-            file,
-            None,
-            None,
-            format!(
-                "membership {membership}: a data table holds one truth, indeterminacy and falsity \
-                 triple per data point, and the {membership} family has {} channels ({}) in two \
-                 lanes (docs/model.md, \"Lanes\"); fitting its data is not available, so write \
-                 the model's control points in a model file instead",
-                membership.channel_count(),
-                membership.channels().join(", ")
-            ),
-        )
-        .into());
-    }
     let column = |heading: &str| {
         Column::from_name(heading).ok_or_else(|| {
             format!(
                 "unknown column `{heading}` (known columns: {})",
-                Column::known_list()
+                Column::known_list(membership)
             )
         })
     };
@@ -399,14 +413,36 @@ pub fn read_data_with(
         rows: "data points",
     };
     let mut rows = Table::open(file, reader, &columns, input)?;
-    for f in [Field::X, Field::Y, Field::Truth] {
+    for f in [Field::X, Field::Y] {
         rows.require(
             Column::Field(f),
             f.name(),
             "every data point needs x, y and its truth",
         )?;
     }
-    require_degrees(&rows, membership, Column::Field)?;
+    // The degree columns the family needs: truth and the rule's others, or a wide family's
+    // channels; a channel of another family is refused by name.
+    let mut present: Vec<&str> = [Field::Truth, Field::Indeterminacy, Field::Falsity]
+        .into_iter()
+        .filter(|f| rows.has(Column::Field(*f)))
+        .map(Field::name)
+        .collect();
+    present.extend(
+        (0..WIDE_CHANNELS.len())
+            .filter(|&c| rows.has(Column::Channel(c)))
+            .map(|c| WIDE_CHANNELS[c]),
+    );
+    if let Some(message) = channel_problem(membership, &present, "column") {
+        return Err(rows.header_error(message).into());
+    }
+    if membership.fits_degrees() {
+        rows.require(
+            Column::Field(Field::Truth),
+            Field::Truth.name(),
+            "every data point needs x, y and its truth",
+        )?;
+        require_degrees(&rows, membership, Column::Field)?;
+    }
     for (given, missing) in [(Column::U, "v"), (Column::V, "u")] {
         if rows.has(given) && !rows.has(if missing == "v" { Column::V } else { Column::U }) {
             let given = if missing == "v" { "u" } else { "v" };
@@ -434,9 +470,11 @@ pub fn read_data_with(
         surface_parameters: rows.has(Column::U).then(Vec::new),
         weights: rows.has(Column::Field(Field::Weight)).then(Vec::new),
         names: Vec::new(),
+        second_lane: (!membership.fits_degrees()).then(Vec::new),
     };
     while let Some(row) = rows.next_row()? {
         let mut values = [None::<f64>; Field::ALL.len()];
+        let mut wide = [None::<f64>; WIDE_CHANNELS.len()];
         let mut parameter = None;
         let mut uv = [0.0; 2];
         let mut name = None;
@@ -448,6 +486,7 @@ pub fn read_data_with(
             let value = row.number(&cell)?;
             match cell.column {
                 Column::Parameter => parameter = Some(value),
+                Column::Channel(c) => wide[c] = Some(value),
                 Column::U => uv[0] = value,
                 Column::V => uv[1] = value,
                 Column::Field(Field::Weight) if value <= 0.0 => {
@@ -457,7 +496,19 @@ pub fn read_data_with(
             }
         }
         let get = |f: Field| values[f.index()];
-        table.degrees.push(read_degrees(&row, membership, &values)?);
+        match &mut table.second_lane {
+            None => table.degrees.push(read_degrees(&row, membership, &values)?),
+            Some(second) => {
+                let value = |name: &str| match wide_channel(name, false) {
+                    Some(c) => wide[c],
+                    None => Field::from_name(name, false).and_then(|f| values[f.index()]),
+                };
+                let (first, other) =
+                    wide_lanes(membership, value).map_err(|e| row.error(None, e.to_string()))?;
+                table.degrees.push(first);
+                second.push(other);
+            }
+        }
         table.points.push(
             [
                 get(Field::X).unwrap_or_default(),

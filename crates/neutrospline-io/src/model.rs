@@ -226,6 +226,31 @@ impl Model {
         self
     }
 
+    /// The model of `membership` from the shape of each of its lanes, as a fit returns them:
+    /// [`Model::with_membership`] for a family of one lane (`second` must be `None`),
+    /// [`Model::with_lanes`] with `second` for a family of two (docs/model.md, "Lanes").
+    ///
+    /// # Errors
+    /// As [`Model::with_membership`] and [`Model::with_lanes`]; [`ModelError::Lanes`] for a
+    /// second lane missing or given where the family has one.
+    pub fn with_family(
+        self,
+        membership: Family,
+        second: Option<impl Into<Shape>>,
+    ) -> Result<Model, ModelError> {
+        match (membership.lane_count(), second) {
+            (1, None) => self.with_membership(membership),
+            (1, Some(_)) => Err(ModelError::Lanes(format!(
+                "the {membership} family has one lane; a second lane was given"
+            ))),
+            (_, Some(second)) => self.with_lanes(membership, second),
+            (_, None) => Err(ModelError::Lanes(format!(
+                "the {membership} family rides in two lanes; its {} lane is missing",
+                membership.lanes()[1].name
+            ))),
+        }
+    }
+
     /// With this membership rule for the degrees.
     ///
     /// # Errors

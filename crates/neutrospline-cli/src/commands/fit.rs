@@ -5,9 +5,7 @@
 use std::io::Write;
 use std::path::PathBuf;
 
-use neutrospline::fit::{
-    channel_names, DynFit, FitReport, FitRequest, SurfaceFitReport, SurfaceFitRequest,
-};
+use neutrospline::fit::{DynFit, FitReport, FitRequest, SurfaceFitReport, SurfaceFitRequest};
 use neutrospline::options::{OptionSet, OptionValue};
 use neutrospline::DegreeKind;
 use neutrospline_io::{DataTable, Format, Model, TableInput};
@@ -111,25 +109,6 @@ pub fn run(args: &FitArgs) -> anyhow::Result<()> {
     run_curve(args, model_format)
 }
 
-/// Refuses a family of two lanes (`Family::lanes`: the interval-valued and bipolar ones): a
-/// fit solves one truth, indeterminacy and falsity triple per data point and control point.
-///
-/// # Errors
-/// The reason, naming the data file, the family and its channels.
-fn one_lane_family(data: &str, membership: neutrospline::Family) -> anyhow::Result<()> {
-    if membership.lane_count() == 1 {
-        return Ok(());
-    }
-    Err(anyhow::anyhow!(
-        "{}: membership {membership}: `neutrospline fit` fits one truth, indeterminacy and \
-         falsity triple per data point, and the {membership} family has {} channels ({}) in \
-         two lanes; write the model's control points in a model file instead",
-        crate::input::label(data),
-        membership.channel_count(),
-        membership.channels().join(", ")
-    ))
-}
-
 /// The model's format: by the extension of `-o`, TOML on standard output.
 fn model_format(args: &FitArgs) -> anyhow::Result<Format> {
     let what = if args.surface { "surface" } else { "curve" };
@@ -155,7 +134,6 @@ fn run_curve(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
     let request = args.request.first("with --surface")?;
     let options = request.validate().map_err(|e| UsageError(e.to_string()))?;
     let membership = request.membership;
-    one_lane_family(&args.data, membership)?;
     let input = crate::commands::options::table_input(&args.table)?;
     let table = read_data(&args.data, membership, &input)?;
     if let Some(warning) = disorder_warning(&table) {
@@ -168,7 +146,7 @@ fn run_curve(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
         .fit(&options)
         .map_err(|e| anyhow::Error::msg(e.to_string()))?;
     let mut model = Model::new(fitted.curve.clone())
-        .with_membership(membership)?
+        .with_family(membership, fitted.second_lane.clone())?
         .with_description(format!(
             "Fitted to {} ({} points) by neutrospline fit",
             table.file(),
@@ -179,7 +157,7 @@ fn run_curve(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
     }
     let text = neutrospline_io::to_string(&model, model_format)?;
     if let (Some(path), Some(format)) = (&args.plot, figure_format) {
-        let plot = data_plot(&fitted, &table, args.color_by)?;
+        let plot = data_plot(&model, &fitted, &table, args.color_by)?;
         let options = PlotOptions::new().with_caption(format!("Data: {}", table.file()));
         write_figure(&plot, View::Data, &options, path, format)?;
     }
@@ -188,11 +166,10 @@ fn run_curve(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
         Ok(())
     })?;
     let report = &fitted.report;
-    let dimension = table.dimension();
     let mut err = std::io::stderr().lock();
     match args.report {
         ReportFormat::Text => write!(err, "{}", report_text(report, &table))?,
-        ReportFormat::Json => writeln!(err, "{}", report_json(report, dimension))?,
+        ReportFormat::Json => writeln!(err, "{}", report_json(report))?,
     }
     Ok(())
 }
@@ -202,7 +179,6 @@ fn run_surface(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
     let request = args.request.second("without --surface")?;
     let options = request.validate().map_err(|e| UsageError(e.to_string()))?;
     let membership = request.membership;
-    one_lane_family(&args.data, membership)?;
     let input = crate::commands::options::table_input(&args.table)?;
     let table = read_data(&args.data, membership, &input)?;
     request
@@ -220,7 +196,7 @@ fn run_surface(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
         None => format!("{} scattered points", table.len()),
     };
     let mut model = Model::new(fitted.surface.clone())
-        .with_membership(membership)?
+        .with_family(membership, fitted.second_lane.clone())?
         .with_description(format!(
             "Fitted to {} ({shape}) by neutrospline fit --surface",
             table.file()
@@ -238,7 +214,13 @@ fn run_surface(args: &FitArgs, model_format: Format) -> anyhow::Result<()> {
         )
         .with_surface_parameters(fitted.parameters.clone())
         .with_color_by(args.color_by);
-        let plot = PlotModel::from_surface(&fitted.surface)?.with_data(overlay)?;
+        // A wide family's figure knows its lanes (the plot crate says which views draw them).
+        let plot = if fitted.second_lane.is_some() {
+            PlotModel::from_model(&model)?
+        } else {
+            PlotModel::from_surface(&fitted.surface)?
+        };
+        let plot = plot.with_data(overlay)?;
         let options = PlotOptions::new().with_caption(format!("Data: {}", table.file()));
         write_figure(&plot, View::Data, &options, path, format)?;
     }
@@ -396,13 +378,19 @@ fn disorder_warning(table: &DataTable) -> Option<String> {
 }
 
 /// The `data` view's model: the fitted curve, the data coloured by `color_by`, whiskers to
-/// the curve at the fitted parameters.
+/// the curve at the fitted parameters. A wide family's figure is built from the fitted
+/// `model`, which knows its lanes (the plot crate says which views draw them).
 fn data_plot(
+    model: &Model,
     fitted: &DynFit,
     table: &DataTable,
     color_by: DegreeKind,
 ) -> anyhow::Result<PlotModel> {
-    let model = PlotModel::from_dyn(&fitted.curve)?;
+    let model = if fitted.second_lane.is_some() {
+        PlotModel::from_model(model)?
+    } else {
+        PlotModel::from_dyn(&fitted.curve)?
+    };
     let overlay = DataOverlay::new(
         table.positions().to_vec(),
         table.degrees().iter().map(|d| d.to_array()).collect(),
@@ -473,14 +461,14 @@ fn report_text(report: &FitReport, table: &DataTable) -> String {
     out
 }
 
-/// The report as one JSON object (keys as in docs/model.md section 8).
-fn report_json(report: &FitReport, dimension: usize) -> String {
+/// The report as one JSON object (keys as in docs/model.md section 8; the channels the
+/// report lists, by their names: the positions and the family's channels).
+fn report_json(report: &FitReport) -> String {
     let channels = |values: &[(&'static str, f64)]| {
         serde_json::Value::Object(
-            channel_names(dimension)
+            values
                 .iter()
-                .zip(values)
-                .map(|(name, (_, v))| ((*name).to_owned(), json_number(*v)))
+                .map(|(name, v)| ((*name).to_owned(), json_number(*v)))
                 .collect(),
         )
     };

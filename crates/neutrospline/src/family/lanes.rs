@@ -122,7 +122,7 @@ impl Family {
         let mut out = [Degrees::default(); 2];
         for (slot, lane) in out.iter_mut().zip(self.lanes()) {
             *slot = {
-                let [t, i, f] = lane_values(lane, values);
+                let [t, i, f] = lane.slot_values(values);
                 Degrees::new_unchecked(t, i, f)
             };
         }
@@ -175,12 +175,23 @@ impl Family {
     }
 }
 
-/// The slot values of `lane` from the channel `values`.
-fn lane_values(lane: &Lane, values: &[f64]) -> [f64; 3] {
-    lane.slots.map(|c| match c {
-        // 0.0 - v, not -v: a negative zero channel is held as +0.
-        Some(c) if lane.negated => 0.0 - values[c],
-        Some(c) => values[c],
-        None => 0.0,
-    })
+impl Lane {
+    /// The values of the lane's truth, indeterminacy and falsity slots from a family's
+    /// channel `values` (not checked against the rule): each slot's channel, negated for a
+    /// negated lane, 0 for a slot without one. The linear map inverse to
+    /// [`Family::join_slots`] on the slots that hold a channel.
+    ///
+    /// ```
+    /// use neutrospline::Family;
+    /// let negative = Family::BipolarNeutrosophic.lanes()[1];
+    /// assert_eq!(negative.slot_values(&[0.7, 0.2, 0.1, -0.3, -0.4, 0.0]), [0.3, 0.4, 0.0]);
+    /// ```
+    pub fn slot_values(&self, values: &[f64]) -> [f64; 3] {
+        self.slots.map(|c| match c {
+            // 0.0 - v, not -v: a negative zero channel is held as +0.
+            Some(c) if self.negated => 0.0 - values[c],
+            Some(c) => values[c],
+            None => 0.0,
+        })
+    }
 }

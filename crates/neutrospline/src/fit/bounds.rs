@@ -199,3 +199,84 @@ fn under_rule(
     }
     Ok(control)
 }
+
+/// The normal matrix `M` of a fit and the right-hand sides `b[lane][slot][i]` of the degree
+/// slots of both lanes of an interval-valued or bipolar family.
+pub(super) type LaneSystem = (Normal, [[Vec<f64>; 3]; 2]);
+
+/// The control degrees of both lanes per unknown (`control[i][lane]` = the lane's truth,
+/// indeterminacy and falsity slots), and the values on a bound of the rule.
+pub(super) struct BoundedLanes {
+    pub(super) control: Vec<[[f64; 3]; 2]>,
+    pub(super) at_bound: Vec<AtBound>,
+}
+
+/// The control degrees of a family of two lanes (docs/model.md, "Lanes") under its whole rule,
+/// from the unconstrained solutions `free[lane][slot][i]` of the slots.
+///
+/// The slots map linearly onto the family's channels ([`Family::join_slots`]: a slot holds a
+/// channel or its negation, an empty slot is 0 and its least squares, of zero data, is 0), and
+/// negating a channel's value and data leaves its least squares unchanged, so the fit of the
+/// slots is the fit of the channels: the free channels where every control point obeys the
+/// rule, else the solution of [`convex::solve_family`] with all of the family's channels at
+/// once (`lower <= upper` and `T_U + F_U <= 1` join the lanes), whose rows obey the rule
+/// exactly; mapped back to the slots by [`crate::family::Lane::slot_values`]. `system` builds
+/// the normal equations; it is called (once) only when a free value breaks the rule. Records
+/// the values on a bound: a channel at an end of its box, and the rule's sum at 1.
+///
+/// # Errors
+/// [`FitError::Singular`] when the problem cannot be solved, or the error of `system`.
+pub(super) fn bounded_lanes(
+    free: [[Vec<f64>; 3]; 2],
+    family: Family,
+    system: &mut dyn FnMut() -> Result<LaneSystem, FitError>,
+) -> Result<BoundedLanes, FitError> {
+    let n = free[0][0].len();
+    let k = family.channel_count();
+    let channels = |slots: &[[Vec<f64>; 3]; 2]| -> Vec<f64> {
+        (0..n)
+            .flat_map(|i| {
+                let lanes = slots.each_ref().map(|lane| lane.each_ref().map(|s| s[i]));
+                family.join_slots(&lanes).to_vec()
+            })
+            .collect()
+    };
+    let start = channels(&free);
+    let x = if start.chunks_exact(k).all(|row| family.check(row).is_ok()) {
+        start
+    } else {
+        let (matrix, rhs) = system()?;
+        let b = channels(&rhs);
+        convex::solve_family(&matrix, family, &b, &start)
+            .ok_or(FitError::Singular)?
+            .x
+    };
+    let names = family.channels();
+    let lanes = family.lanes();
+    let mut control = Vec::with_capacity(n);
+    let mut at_bound = Vec::new();
+    for (i, row) in x.chunks_exact(k).enumerate() {
+        control.push([lanes[0].slot_values(row), lanes[1].slot_values(row)]);
+        for (c, &value) in row.iter().enumerate() {
+            let (low, high) = family.channel_range(c);
+            if value == low || value == high {
+                at_bound.push(AtBound {
+                    index: i,
+                    channel: names[c].to_owned(),
+                    bound: value,
+                });
+            }
+        }
+        if let Some((terms, sum)) = family.rule_sum(row) {
+            if sum >= 1.0 - RULE_TOLERANCE {
+                at_bound.push(AtBound {
+                    index: i,
+                    channel: terms,
+                    bound: 1.0,
+                });
+            }
+        }
+    }
+    at_bound.sort_by(|a, b| a.index.cmp(&b.index).then(a.channel.cmp(&b.channel)));
+    Ok(BoundedLanes { control, at_bound })
+}

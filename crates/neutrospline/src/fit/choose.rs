@@ -279,7 +279,7 @@ pub(super) fn position_residuals<const D: usize>(
 ) -> Result<Vec<f64>, FitError> {
     let q = Values::Points {
         positions: data.positions(),
-        degrees: None,
+        lanes: &[],
     };
     let system = System::new(layout, rows, weights, q, Vec::new(), lambda)?;
     let x = system.solve();

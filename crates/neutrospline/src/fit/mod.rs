@@ -65,10 +65,16 @@ pub use surface::{
 };
 
 /// Data to fit: points with their degrees, and optionally their parameters and weights.
+///
+/// The data of an interval-valued or bipolar family (two lanes, docs/model.md "Lanes") holds
+/// each point's first lane in `degrees` and its second in [`FitData::with_second_lane`]; the
+/// fit then solves every channel jointly under the family's whole rule and returns the second
+/// lane as a curve of the same geometry ([`Fit::second_lane`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct FitData<const D: usize> {
     positions: Vec<[f64; D]>,
     degrees: Vec<Degrees>,
+    second_lane: Option<Vec<Degrees>>,
     parameters: Option<Vec<f64>>,
     weights: Option<Vec<f64>>,
 }
@@ -105,6 +111,7 @@ impl<const D: usize> FitData<D> {
         Ok(FitData {
             positions,
             degrees,
+            second_lane: None,
             parameters: None,
             weights: None,
         })
@@ -140,6 +147,44 @@ impl<const D: usize> FitData<D> {
             }
         }
         self.parameters = Some(parameters);
+        Ok(self)
+    }
+
+    /// The second lane of each point's degrees, for a family of two lanes ([`Family::lanes`]:
+    /// `upper` of the interval-valued families, `negative` of the bipolar one, whose negative
+    /// degrees are held negated, in \[0, 1\]); [`FitData::new`]'s degrees are then the first
+    /// lane. The rule joining the lanes (`lower <= upper`, `T_U + F_U <= 1`) is checked by the
+    /// fit, which knows the family.
+    ///
+    /// ```
+    /// use neutrospline::fit::{fit, FitData, FitOptions, FitTarget};
+    /// use neutrospline::{Degrees, Family};
+    /// // Interval type-2 memberships: lower M_L in the truth slot of lane 0, upper M_U of lane 1.
+    /// let lower = [0.2, 0.5, 0.3].map(|m| Degrees::new(m, 0.0, 0.0).unwrap()).to_vec();
+    /// let upper = [0.4, 0.9, 0.6].map(|m| Degrees::new(m, 0.0, 0.0).unwrap()).to_vec();
+    /// let data = FitData::new(vec![[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]], lower)?
+    ///     .with_second_lane(upper)?;
+    /// let options = FitOptions::default()
+    ///     .with_degree(2)
+    ///     .with_target(FitTarget::Interpolate)
+    ///     .with_membership(Family::IntervalType2);
+    /// let fitted = fit(&data, &options)?;
+    /// let upper_curve = fitted.second_lane.expect("two lanes");
+    /// assert!((upper_curve.point(0.0).degrees.truth() - 0.4).abs() < 1e-12);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`FitError::Count`].
+    pub fn with_second_lane(mut self, degrees: Vec<Degrees>) -> Result<Self, FitError> {
+        if degrees.len() != self.positions.len() {
+            return Err(FitError::Count {
+                what: "second-lane degree triples",
+                count: degrees.len(),
+                points: self.positions.len(),
+            });
+        }
+        self.second_lane = Some(degrees);
         Ok(self)
     }
 
@@ -181,9 +226,14 @@ impl<const D: usize> FitData<D> {
         &self.positions
     }
 
-    /// The degrees.
+    /// The degrees (of a family of two lanes: the first lane).
     pub fn degrees(&self) -> &[Degrees] {
         &self.degrees
+    }
+
+    /// The second lane's degrees, when given ([`FitData::with_second_lane`]).
+    pub fn second_lane(&self) -> Option<&[Degrees]> {
+        self.second_lane.as_deref()
     }
 
     /// The given parameters, if any.
@@ -359,6 +409,10 @@ pub struct Fit<const D: usize> {
     pub parameters: Vec<f64>,
     /// Errors, conditioning and active bounds.
     pub report: FitReport,
+    /// For a family of two lanes, the second lane: a curve with the same positions, weights,
+    /// degree and knots as [`Fit::curve`], whose degrees hold the second lane's channels
+    /// (docs/model.md, "Lanes"); `None` for a family of one lane.
+    pub second_lane: Option<AnyCurve<D>>,
 }
 
 /// Why data cannot be fitted.
@@ -526,6 +580,8 @@ pub struct DynFit {
     pub parameters: Vec<f64>,
     /// The error report.
     pub report: FitReport,
+    /// The second lane of a family of two lanes ([`Fit::second_lane`]).
+    pub second_lane: Option<DynCurve>,
 }
 
 impl<const D: usize> From<Fit<D>> for DynFit
@@ -537,14 +593,15 @@ where
             curve: fit.curve.into(),
             parameters: fit.parameters,
             report: fit.report,
+            second_lane: fit.second_lane.map(DynCurve::from),
         }
     }
 }
 
 /// Fits a curve to points given as rows of `dimension` (2 or 3) coordinates, `positions`
 /// holding them one row after another: [`fit`] for a dimension known at run time, with
-/// optional parameters and weights as [`FitData::with_parameters`] and
-/// [`FitData::with_weights`] take them.
+/// optional second-lane degrees, parameters and weights as [`FitData::with_second_lane`],
+/// [`FitData::with_parameters`] and [`FitData::with_weights`] take them.
 ///
 /// ```
 /// use neutrospline::fit::{fit_rows, FitOptions, FitTarget};
@@ -552,7 +609,7 @@ where
 /// let positions = [0.0, 0.0, 1.0, 1.0, 2.0, 0.0];
 /// let degrees = vec![Degrees::new(0.5, 0.2, 0.1)?; 3];
 /// let options = FitOptions::default().with_degree(2).with_target(FitTarget::Interpolate);
-/// let fitted = fit_rows(2, &positions, degrees, None, None, &options)?;
+/// let fitted = fit_rows(2, &positions, degrees, None, None, None, &options)?;
 /// assert_eq!(fitted.curve.dimension(), 2);
 /// assert_eq!(fitted.parameters.len(), 3);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
@@ -565,6 +622,7 @@ pub fn fit_rows(
     dimension: usize,
     positions: &[f64],
     degrees: Vec<Degrees>,
+    second_lane: Option<Vec<Degrees>>,
     parameters: Option<Vec<f64>>,
     weights: Option<Vec<f64>>,
     options: &FitOptions,
@@ -572,6 +630,7 @@ pub fn fit_rows(
     fn rows<const D: usize>(
         positions: &[f64],
         degrees: Vec<Degrees>,
+        second_lane: Option<Vec<Degrees>>,
         parameters: Option<Vec<f64>>,
         weights: Option<Vec<f64>>,
         options: &FitOptions,
@@ -581,6 +640,9 @@ pub fn fit_rows(
             .map(|row| core::array::from_fn(|a| row[a]))
             .collect();
         let mut data = FitData::new(points, degrees)?;
+        if let Some(second_lane) = second_lane {
+            data = data.with_second_lane(second_lane)?;
+        }
         if let Some(parameters) = parameters {
             data = data.with_parameters(parameters)?;
         }
@@ -596,9 +658,25 @@ pub fn fit_rows(
         });
     }
     Ok(if dimension == 3 {
-        rows::<3>(positions, degrees, parameters, weights, options)?.into()
+        rows::<3>(
+            positions,
+            degrees,
+            second_lane,
+            parameters,
+            weights,
+            options,
+        )?
+        .into()
     } else {
-        rows::<2>(positions, degrees, parameters, weights, options)?.into()
+        rows::<2>(
+            positions,
+            degrees,
+            second_lane,
+            parameters,
+            weights,
+            options,
+        )?
+        .into()
     })
 }
 

@@ -78,6 +78,37 @@ impl Default for FitRequest {
 /// The three targets, in the order of [`OptionSet::OPTIONS`].
 const TARGET_RULE: &str = "give one target: interpolate, control-points or tolerance";
 
+/// The option `membership` of curve and surface fits: every family (docs/model.md,
+/// "Membership families"; the interval-valued and bipolar ones fitted in two lanes).
+pub(crate) const MEMBERSHIP: OptionSpec = OptionSpec {
+    name: "membership",
+    kind: ValueKind::Text,
+    value_name: "FAMILY",
+    help: "Membership family of the data's degrees and of the fitted model's: neutrosophic, \
+           intuitionistic, fuzzy, pythagorean, fermatean, q-rung:Q, picture, spherical, \
+           t-spherical:N, interval-neutrosophic, interval-intuitionistic, interval-type2, \
+           bipolar-neutrosophic",
+};
+
+/// The option `weights` of curve and surface fits.
+pub(crate) const WEIGHTS: OptionSpec = OptionSpec {
+    name: "weights",
+    kind: ValueKind::Choice(&["none", "column", "score"]),
+    value_name: "WEIGHTS",
+    help: "How the points are weighted in least squares: equally, by the data's weight \
+           column, or by their score ((2 + T - I - F) / 3; a two-lane family's own score)",
+};
+
+/// Reads the value of [`MEMBERSHIP`].
+pub(crate) fn parse_membership(word: &str) -> Result<Family, OptionError> {
+    word.parse()
+        .map_err(|e: crate::ParseFamilyError| OptionError::Invalid {
+            name: MEMBERSHIP.name,
+            given: format!("{word:?}"),
+            expected: e.to_string(),
+        })
+}
+
 impl OptionSet for FitRequest {
     /// Every option of a fit, in the order front ends list them.
     const OPTIONS: &'static [OptionSpec] = &[
@@ -117,13 +148,7 @@ impl OptionSet for FitRequest {
             value_name: "RULE",
             help: "How data points get parameters when the data gives none",
         },
-        OptionSpec {
-            name: "weights",
-            kind: ValueKind::Choice(&["none", "column", "score"]),
-            value_name: "WEIGHTS",
-            help: "How the points are weighted in least squares: equally, by the data's weight \
-                   column, or by their score (2 + T - I - F) / 3",
-        },
+        WEIGHTS,
         OptionSpec {
             name: "smoothing",
             kind: ValueKind::Number,
@@ -136,14 +161,7 @@ impl OptionSet for FitRequest {
             value_name: "KIND",
             help: "The kind of curve fitted",
         },
-        OptionSpec {
-            name: "membership",
-            kind: ValueKind::Text,
-            value_name: "FAMILY",
-            help: "Membership family of the data's degrees and of the fitted curve's: \
-                   neutrosophic, intuitionistic, fuzzy, pythagorean, fermatean, q-rung:Q, \
-                   picture, spherical, t-spherical:N",
-        },
+        MEMBERSHIP,
     ];
 
     /// Sets the option `name`; a value of another kind (`degree = 5.0`, `closed = "yes"`)
@@ -161,15 +179,7 @@ impl OptionSet for FitRequest {
             ("parametrization", Read::Choice(word)) => self.parametrization = parse(word),
             ("weights", Read::Choice(word)) => self.weights = parse(word),
             ("kind", Read::Choice(word)) => self.kind = parse(word),
-            ("membership", Read::Text(word)) => {
-                self.membership =
-                    word.parse()
-                        .map_err(|e: crate::ParseFamilyError| OptionError::Invalid {
-                            name: spec.name,
-                            given: format!("{word:?}"),
-                            expected: e.to_string(),
-                        })?;
-            }
+            ("membership", Read::Text(word)) => self.membership = parse_membership(&word)?,
             (other, read) => unreachable!("option {other} read as {read:?}"),
         }
         Ok(())

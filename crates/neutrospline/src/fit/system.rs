@@ -94,14 +94,16 @@ impl Layout {
 }
 
 /// The data values a pass reads: the positions, and after them the degrees (truth,
-/// indeterminacy, falsity) when every channel is fitted (`D` or `D + 3` channels per point);
-/// or a table of any number of channels per point (a pass of the two-pass surface solver,
-/// whose "points" are whole rows of a grid).
+/// indeterminacy, falsity) of each lane when every channel is fitted (`D + 3 L` channels per
+/// point for `L` lanes: none for the positions alone, two for the interval-valued and bipolar
+/// families, docs/model.md "Lanes"); or a table of any number of channels per point (a pass of
+/// the two-pass surface solver, whose "points" are whole rows of a grid).
 #[derive(Clone, Copy)]
 pub(super) enum Values<'a, const D: usize> {
     Points {
         positions: &'a [[f64; D]],
-        degrees: Option<&'a [Degrees]>,
+        /// The degrees of each lane, one per point.
+        lanes: &'a [&'a [Degrees]],
     },
     Table {
         /// Point `k`'s channels at `values[k * channels..(k + 1) * channels]`.
@@ -113,8 +115,7 @@ pub(super) enum Values<'a, const D: usize> {
 impl<const D: usize> Values<'_, D> {
     pub(super) fn channels(&self) -> usize {
         match self {
-            Values::Points { degrees: None, .. } => D,
-            Values::Points { .. } => D + 3,
+            Values::Points { lanes, .. } => D + 3 * lanes.len(),
             Values::Table { channels, .. } => *channels,
         }
     }
@@ -123,10 +124,10 @@ impl<const D: usize> Values<'_, D> {
     #[inline(always)]
     fn load(&self, k: usize, out: &mut [f64]) {
         match self {
-            Values::Points { positions, degrees } => {
+            Values::Points { positions, lanes } => {
                 out[..D].copy_from_slice(&positions[k]);
-                if let Some(degrees) = degrees {
-                    out[D..D + 3].copy_from_slice(&degrees[k].to_array());
+                for (slots, lane) in out[D..].chunks_exact_mut(3).zip(lanes.iter()) {
+                    slots.copy_from_slice(&lane[k].to_array());
                 }
             }
             Values::Table { values, channels } => {

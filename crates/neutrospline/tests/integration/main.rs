@@ -31,3 +31,4 @@ mod surface_fit_reference;
 mod surface_properties;
 mod surface_transform;
 mod transform_reference;
+mod wide_fit;

@@ -81,6 +81,7 @@ pub enum SurfaceShape {
 pub struct SurfaceFitData {
     positions: Vec<[f64; 3]>,
     degrees: Vec<Degrees>,
+    second_lane: Option<Vec<Degrees>>,
     shape: SurfaceShape,
     parameters: Option<Vec<[f64; 2]>>,
     weights: Option<Vec<f64>>,
@@ -120,6 +121,7 @@ impl SurfaceFitData {
         Ok(SurfaceFitData {
             positions: curve.positions,
             degrees: curve.degrees,
+            second_lane: None,
             shape: SurfaceShape::Scattered,
             parameters: None,
             weights: None,
@@ -154,6 +156,29 @@ impl SurfaceFitData {
         }
         self.parameters = Some(parameters);
         Ok(self)
+    }
+
+    /// The second lane of each point's degrees, for a family of two lanes, as
+    /// [`FitData::with_second_lane`](super::FitData::with_second_lane) takes it; the fitted
+    /// surface's second lane is then [`SurfaceFit::second_lane`].
+    ///
+    /// # Errors
+    /// [`FitError::Count`].
+    pub fn with_second_lane(mut self, degrees: Vec<Degrees>) -> Result<Self, FitError> {
+        if degrees.len() != self.positions.len() {
+            return Err(FitError::Count {
+                what: "second-lane degree triples",
+                count: degrees.len(),
+                points: self.positions.len(),
+            });
+        }
+        self.second_lane = Some(degrees);
+        Ok(self)
+    }
+
+    /// The second lane's degrees, when given.
+    pub fn second_lane(&self) -> Option<&[Degrees]> {
+        self.second_lane.as_deref()
     }
 
     /// The points' weights (each finite and > 0), used with [`DataWeights::Given`].
@@ -419,6 +444,10 @@ pub struct SurfaceFit {
     pub parameters: Vec<[f64; 2]>,
     /// Errors, conditioning and active bounds.
     pub report: SurfaceFitReport,
+    /// For a family of two lanes, the second lane: a surface with the same positions, degrees
+    /// and knots as [`SurfaceFit::surface`] whose degrees hold the second lane's channels
+    /// (docs/model.md, "Lanes"); `None` for a family of one lane.
+    pub second_lane: Option<Surface>,
 }
 
 /// Fits a B-spline surface to `data`.

@@ -1,6 +1,7 @@
 //! [`SurfaceFitRequest`]: the options of a surface fit, defined once for the command line and
 //! Python, with the curve fit's names where the two share an option.
 
+use super::super::request::{parse_membership, MEMBERSHIP, WEIGHTS};
 use super::super::{DataWeights, Parametrization};
 use super::{Projection, SurfaceFitOptions, SurfaceTarget};
 use crate::options::{find, OptionError, OptionSet, OptionSpec, OptionValue, Read, ValueKind};
@@ -154,13 +155,7 @@ impl OptionSet for SurfaceFitRequest {
             help: "How scattered points get (u, v) when the data gives none: the best-fitting \
                    plane, or x and y (height data)",
         },
-        OptionSpec {
-            name: "weights",
-            kind: ValueKind::Choice(&["none", "column", "score"]),
-            value_name: "WEIGHTS",
-            help: "How the points are weighted in least squares: equally, by the data's weight \
-                   column, or by their score (2 + T - I - F) / 3",
-        },
+        WEIGHTS,
         OptionSpec {
             name: "smoothing",
             kind: ValueKind::Number,
@@ -168,12 +163,7 @@ impl OptionSet for SurfaceFitRequest {
             help: "Smoothing: LAMBDA times the thin-plate energy (S_uu^2 + 2 S_uv^2 + S_vv^2 over \
                    the parameter domain)",
         },
-        OptionSpec {
-            name: "membership",
-            kind: ValueKind::Choice(&["neutrosophic", "intuitionistic", "fuzzy"]),
-            value_name: "RULE",
-            help: "Family rule of the data's degrees and of the fitted surface's",
-        },
+        MEMBERSHIP,
     ];
 
     fn set(&mut self, name: &str, value: OptionValue) -> Result<(), OptionError> {
@@ -202,7 +192,7 @@ impl OptionSet for SurfaceFitRequest {
             ("parametrization", Read::Choice(word)) => self.parametrization = parse(word),
             ("projection", Read::Choice(word)) => self.projection = parse(word),
             ("weights", Read::Choice(word)) => self.weights = parse(word),
-            ("membership", Read::Choice(word)) => self.membership = parse(word),
+            ("membership", Read::Text(word)) => self.membership = parse_membership(&word)?,
             (other, read) => unreachable!("option {other} read as {read:?}"),
         }
         Ok(())

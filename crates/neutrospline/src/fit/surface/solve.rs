@@ -1,24 +1,21 @@
 //! The surface fit: parameters, knots, the two-pass or whole solve, the tolerance loop, the
 //! bounded degree channels and the report.
 
-use super::super::bounds::{bounded_degrees, degrees_of, Bounded};
+use super::super::bounds::{bounded_degrees, bounded_lanes, degrees_of, Bounded, BoundedLanes};
 use super::super::choose::{schoenberg_whitney, with_knot};
 use super::super::knots::{interpolation_knots, least_squares_knots};
 use super::super::report::AtBound;
-use super::super::solve::diagonal;
+use super::super::solve::{check_lanes, diagonal, score_weights, shown};
 use super::super::system::{Layout, Rows, System, Values};
-use super::super::{channel_names, DataWeights, FitError};
+use super::super::{DataWeights, FitError};
 use super::params;
 use super::tensor::{Tensor, TensorRows, TensorSystem};
 use super::{SurfaceFit, SurfaceFitData, SurfaceFitOptions, SurfaceFitReport, SurfaceShape};
 use super::{SurfaceTarget, SurfaceTarget::*};
-use crate::degrees::Degrees;
+use crate::degrees::{Degrees, Family};
 use crate::knots::KnotVector;
 use crate::point::ControlPoint;
 use crate::surface::{Direction, Surface, SurfaceError};
-
-/// Channels per point: `x`, `y`, `z`, `truth`, `indeterminacy`, `falsity`.
-const C: usize = 6;
 
 /// The most knot refinements of a tolerance fit.
 const MAX_REFINEMENTS: usize = 64;
@@ -29,7 +26,7 @@ struct Params {
     grid: Option<(Vec<f64>, Vec<f64>)>,
 }
 
-/// A solved set of coefficients `x[(i n + j) C + c]` and how.
+/// A solved set of coefficients `x[(i n + j) c + k]` (`c` channels per point) and how.
 struct Solved {
     x: Vec<f64>,
     condition: f64,
@@ -43,10 +40,7 @@ pub(super) fn run(
 ) -> Result<SurfaceFit, FitError> {
     let [p, q] = options.degrees;
     let m = data.len();
-    for (index, d) in data.degrees().iter().enumerate() {
-        d.check_membership(options.membership)
-            .map_err(|source| FitError::Degrees { index, source })?;
-    }
+    check_lanes(data.degrees(), data.second_lane(), options.membership)?;
     let lambda = options.smoothing;
     if !(lambda >= 0.0 && lambda.is_finite()) {
         return Err(FitError::Option(format!(
@@ -58,7 +52,7 @@ pub(super) fn run(
         DataWeights::Given => data.weights().map(<[f64]>::to_vec).ok_or_else(|| {
             FitError::Option("data weights were asked for but the data has none".into())
         })?,
-        DataWeights::Score => data.degrees().iter().map(Degrees::score).collect(),
+        DataWeights::Score => score_weights(data.degrees(), data.second_lane(), options.membership),
     };
     let target = options
         .target
@@ -71,17 +65,26 @@ pub(super) fn run(
         }
     }
     let params = parameters(data, options)?;
-    let q_values: Vec<f64> = data
-        .positions()
-        .iter()
-        .zip(data.degrees())
-        .flat_map(|(x, d)| x.iter().copied().chain(d.to_array()))
+    // Channels per point: `x`, `y`, `z`, then `truth`, `indeterminacy`, `falsity` of each lane.
+    let lanes: Vec<&[Degrees]> = core::iter::once(data.degrees())
+        .chain(data.second_lane())
+        .collect();
+    let channels = 3 + 3 * lanes.len();
+    let q_values: Vec<f64> = (0..m)
+        .flat_map(|k| {
+            let lanes = &lanes;
+            data.positions()[k]
+                .into_iter()
+                .chain(lanes.iter().flat_map(move |lane| lane[k].to_array()))
+        })
         .collect();
     let fit = Fitter {
         data,
         params: &params,
         weights: &weights,
         q: &q_values,
+        channels,
+        membership: options.membership,
         lambda,
     };
     let (tensor, met) = match target {
@@ -182,6 +185,9 @@ struct Fitter<'a> {
     params: &'a Params,
     weights: &'a [f64],
     q: &'a [f64],
+    /// Channels per point of `q`: 6, or 9 with a second lane.
+    channels: usize,
+    membership: Family,
     lambda: f64,
 }
 
@@ -269,7 +275,7 @@ impl Fitter<'_> {
     fn solve(&self, tensor: &Tensor, rows: &TensorRows) -> Result<Solved, FitError> {
         let uniform = self.weights.iter().all(|&w| w == 1.0);
         if let (Some((u, v)), true, true) = (&self.params.grid, uniform, self.lambda == 0.0) {
-            let (x, condition) = two_pass(tensor, u, v, self.q)?;
+            let (x, condition) = two_pass(tensor, u, v, self.q, self.channels)?;
             return Ok(Solved {
                 x,
                 condition,
@@ -277,7 +283,14 @@ impl Fitter<'_> {
                 system: None,
             });
         }
-        let system = TensorSystem::new(tensor, rows, self.weights, self.q, C, self.lambda)?;
+        let system = TensorSystem::new(
+            tensor,
+            rows,
+            self.weights,
+            self.q,
+            self.channels,
+            self.lambda,
+        )?;
         let x = system.solve(tensor, rows, self.weights, self.q);
         Ok(Solved {
             x,
@@ -290,7 +303,7 @@ impl Fitter<'_> {
     /// The position residual of every point for coefficients `x`.
     fn residuals(&self, tensor: &Tensor, rows: &TensorRows, x: &[f64]) -> Vec<f64> {
         let mut out = vec![0.0; self.data.len()];
-        rows.sweep(tensor, x, self.q, C, None, |k, r| {
+        rows.sweep(tensor, x, self.q, self.channels, None, |k, r| {
             out[k] = r[..3].iter().map(|v| v * v).sum::<f64>().sqrt();
         });
         out
@@ -414,39 +427,72 @@ impl Fitter<'_> {
         let supported = self.check_supports(&tensor, &rows)?;
         let solved = self.solve(&tensor, &rows)?;
         let n = tensor.len();
-        let column = |x: &[f64], c: usize| -> Vec<f64> { (0..n).map(|i| x[i * C + c]).collect() };
-        let free = [3, 4, 5].map(|c| column(&solved.x, c));
+        let cc = self.channels;
+        let column = |x: &[f64], c: usize| -> Vec<f64> { (0..n).map(|i| x[i * cc + c]).collect() };
         let mut existing = solved.system;
-        let Bounded { control, at_bound } = bounded_degrees(free, options.membership, &mut || {
-            let system = match existing.take() {
-                Some(system) => system,
-                None => TensorSystem::new(&tensor, &rows, self.weights, self.q, C, self.lambda)?,
-            };
-            let rhs = [3, 4, 5].map(|c| column(&system.rhs, c));
-            Ok((system.matrix, rhs))
-        })?;
+        let mut system = || match existing.take() {
+            Some(system) => Ok(system),
+            None => TensorSystem::new(&tensor, &rows, self.weights, self.q, cc, self.lambda),
+        };
+        // The degree slots under the rule; `control[i][lane]`.
+        let (control, at_bound): (Vec<Vec<[f64; 3]>>, _) = if cc == 6 {
+            let free = [3, 4, 5].map(|c| column(&solved.x, c));
+            let Bounded { control, at_bound } =
+                bounded_degrees(free, options.membership, &mut || {
+                    let system = system()?;
+                    let rhs = [3, 4, 5].map(|c| column(&system.rhs, c));
+                    Ok((system.matrix, rhs))
+                })?;
+            (control.into_iter().map(|row| vec![row]).collect(), at_bound)
+        } else {
+            let slots = |x: &[f64]| [0, 1].map(|l| [0, 1, 2].map(|c| column(x, 3 + 3 * l + c)));
+            let BoundedLanes { control, at_bound } =
+                bounded_lanes(slots(&solved.x), options.membership, &mut || {
+                    let system = system()?;
+                    Ok((system.matrix, slots(&system.rhs)))
+                })?;
+            (
+                control.into_iter().map(|row| row.to_vec()).collect(),
+                at_bound,
+            )
+        };
         let mut coefficients = solved.x;
         for (i, row) in control.iter().enumerate() {
-            coefficients[i * C + 3..(i + 1) * C].copy_from_slice(row);
+            for (l, slots) in row.iter().enumerate() {
+                coefficients[i * cc + 3 + 3 * l..i * cc + 3 + 3 * (l + 1)].copy_from_slice(slots);
+            }
         }
-        let points: Vec<ControlPoint<3>> = (0..n)
-            .map(|i| {
-                let position = [0, 1, 2].map(|a| coefficients[i * C + a]);
-                ControlPoint::new(position, degrees_of(control[i], options.membership))
-            })
-            .collect();
+        let lane_family = if control.first().is_some_and(|row| row.len() == 2) {
+            Family::Neutrosophic
+        } else {
+            options.membership
+        };
         let (p, q) = (tensor.u.p, tensor.v.p);
         let knots = |layout: &Layout, degree: usize, direction: Direction| {
             KnotVector::new(layout.knots.clone(), degree, layout.n)
                 .map_err(|source| SurfaceError::Knots { direction, source })
         };
-        let surface = Surface::bspline(
-            tensor.u.n,
-            tensor.v.n,
-            points,
-            knots(&tensor.u, p, Direction::U)?,
-            knots(&tensor.v, q, Direction::V)?,
-        )?;
+        let lane_surface = |l: usize| -> Result<Surface, FitError> {
+            let points: Vec<ControlPoint<3>> = (0..n)
+                .map(|i| {
+                    let position = [0, 1, 2].map(|a| coefficients[i * cc + a]);
+                    ControlPoint::new(position, degrees_of(control[i][l], lane_family))
+                })
+                .collect();
+            Ok(Surface::bspline(
+                tensor.u.n,
+                tensor.v.n,
+                points,
+                knots(&tensor.u, p, Direction::U)?,
+                knots(&tensor.v, q, Direction::V)?,
+            )?)
+        };
+        let surface = lane_surface(0)?;
+        let second_lane = if cc == 9 {
+            Some(lane_surface(1)?)
+        } else {
+            None
+        };
         let report = self.report(
             &tensor,
             &rows,
@@ -464,6 +510,7 @@ impl Fitter<'_> {
             surface,
             parameters: self.params.all.clone(),
             report,
+            second_lane,
         })
     }
 
@@ -478,11 +525,10 @@ impl Fitter<'_> {
         target: SurfaceTarget,
         met: Option<bool>,
     ) -> SurfaceFitReport {
-        let names = channel_names(3);
-        let mut max = [0.0_f64; C];
-        let mut sum = [0.0_f64; C];
+        let mut max = vec![0.0_f64; self.channels];
+        let mut sum = vec![0.0_f64; self.channels];
         let (mut worst_index, mut worst_distance) = (0, -1.0);
-        rows.sweep(tensor, coefficients, self.q, C, None, |k, r| {
+        rows.sweep(tensor, coefficients, self.q, self.channels, None, |k, r| {
             for (j, v) in r.iter().enumerate() {
                 max[j] = max[j].max(v.abs());
                 sum[j] += v * v;
@@ -497,12 +543,11 @@ impl Fitter<'_> {
         SurfaceFitReport {
             control_points: [tensor.u.n, tensor.v.n],
             degrees: [tensor.u.p, tensor.v.p],
-            max_error: names.iter().copied().zip(max).collect(),
-            rms_error: names
-                .iter()
-                .copied()
-                .zip(sum.map(|s| (s / count).sqrt()))
-                .collect(),
+            max_error: shown::<3>(max, self.membership),
+            rms_error: shown::<3>(
+                sum.iter().map(|s| (s / count).sqrt()).collect(),
+                self.membership,
+            ),
             worst_index,
             worst_parameters: self.params.all[worst_index],
             worst_distance,
@@ -526,11 +571,17 @@ struct Summary {
     supported: bool,
 }
 
-/// `P = N^+ Q M^+T` for a `rows x cols` grid `q` of `C` channels (point `k cols + l`): the
-/// curve solver along `u` with each grid row's `cols C` values as the channels of one point,
+/// `P = N^+ Q M^+T` for a `rows x cols` grid `q` of `c` channels (point `k cols + l`): the
+/// curve solver along `u` with each grid row's `cols c` values as the channels of one point,
 /// then along `v` with each column of the result as one point. Returns the coefficients and
 /// the product of the two systems' condition estimates (the Kronecker product's).
-fn two_pass(tensor: &Tensor, u: &[f64], v: &[f64], q: &[f64]) -> Result<(Vec<f64>, f64), FitError> {
+fn two_pass(
+    tensor: &Tensor,
+    u: &[f64],
+    v: &[f64],
+    q: &[f64],
+    c: usize,
+) -> Result<(Vec<f64>, f64), FitError> {
     let (rows, cols) = (u.len(), v.len());
     let (nu, nv) = (tensor.u.n, tensor.v.n);
     let rows_u = Rows::new(&tensor.u, u);
@@ -541,18 +592,18 @@ fn two_pass(tensor: &Tensor, u: &[f64], v: &[f64], q: &[f64]) -> Result<(Vec<f64
         &ones[..rows],
         Values::Table {
             values: q,
-            channels: cols * C,
+            channels: cols * c,
         },
         Vec::new(),
         0.0,
     )?;
     let r = along_u.solve();
-    // The intermediate net, transposed: point l (a grid column) holds nu C values.
-    let mut t = vec![0.0; cols * nu * C];
+    // The intermediate net, transposed: point l (a grid column) holds nu c values.
+    let mut t = vec![0.0; cols * nu * c];
     for i in 0..nu {
         for l in 0..cols {
-            t[(l * nu + i) * C..(l * nu + i + 1) * C]
-                .copy_from_slice(&r[(i * cols + l) * C..(i * cols + l + 1) * C]);
+            t[(l * nu + i) * c..(l * nu + i + 1) * c]
+                .copy_from_slice(&r[(i * cols + l) * c..(i * cols + l + 1) * c]);
         }
     }
     let rows_v = Rows::new(&tensor.v, v);
@@ -562,17 +613,17 @@ fn two_pass(tensor: &Tensor, u: &[f64], v: &[f64], q: &[f64]) -> Result<(Vec<f64
         &ones[..cols],
         Values::Table {
             values: &t,
-            channels: nu * C,
+            channels: nu * c,
         },
         Vec::new(),
         0.0,
     )?;
     let s = along_v.solve();
-    let mut x = vec![0.0; nu * nv * C];
+    let mut x = vec![0.0; nu * nv * c];
     for i in 0..nu {
         for j in 0..nv {
-            x[(i * nv + j) * C..(i * nv + j + 1) * C]
-                .copy_from_slice(&s[(j * nu + i) * C..(j * nu + i + 1) * C]);
+            x[(i * nv + j) * c..(i * nv + j + 1) * c]
+                .copy_from_slice(&s[(j * nu + i) * c..(j * nu + i + 1) * c]);
         }
     }
     Ok((x, along_u.condition * along_v.condition))
