@@ -39,7 +39,8 @@ use neutrospline::{Degrees, Family};
 
 use crate::csv::{read_degrees, require_degrees, Columns, Table};
 use crate::parsed::{
-    channel_problem, duplicate_rule, wide_channel, wide_lanes, Field, WIDE_CHANNELS,
+    channel_problem, duplicate_rule, present_channels, wide_channel, wide_lanes, Field,
+    WIDE_CHANNELS,
 };
 use crate::path_order::{path_disorder, PathDisorder};
 use crate::read::open_table;
@@ -422,15 +423,9 @@ pub fn read_data_with(
     }
     // The degree columns the family needs: truth and the rule's others, or a wide family's
     // channels; a channel of another family is refused by name.
-    let mut present: Vec<&str> = [Field::Truth, Field::Indeterminacy, Field::Falsity]
-        .into_iter()
-        .filter(|f| rows.has(Column::Field(*f)))
-        .map(Field::name)
-        .collect();
-    present.extend(
-        (0..WIDE_CHANNELS.len())
-            .filter(|&c| rows.has(Column::Channel(c)))
-            .map(|c| WIDE_CHANNELS[c]),
+    let present = present_channels(
+        |f| rows.has(Column::Field(f)),
+        |c| rows.has(Column::Channel(c)),
     );
     if let Some(message) = channel_problem(membership, &present, "column") {
         return Err(rows.header_error(message).into());
@@ -586,6 +581,50 @@ mod tests {
                 *want,
                 "{text:?}"
             );
+        }
+    }
+
+    #[test]
+    fn wide_families_read_their_channels_into_two_lanes() {
+        let table = read(
+            "x,y,negative_falsity,truth,indeterminacy,falsity,negative_truth,\
+             negative_indeterminacy\n0,0,-0.1,0.7,0.2,0.1,-0.3,-0.4\n",
+            Family::BipolarNeutrosophic,
+        )
+        .unwrap();
+        assert_eq!(table.degrees()[0].to_array(), [0.7, 0.2, 0.1]);
+        // The negative lane holds the negative degrees negated.
+        assert_eq!(table.second_lane().unwrap()[0].to_array(), [0.3, 0.4, 0.1]);
+        let one = read("x,y,T,I,F\n0,0,0.5,0.2,0.1\n", Family::Neutrosophic).unwrap();
+        assert!(one.second_lane().is_none());
+        let cases: &[(&str, Family, &str)] = &[
+            (
+                "x,y,truth_lower\n0,0,0.1\n",
+                Family::IntervalType2,
+                "d.csv:1: missing column `truth_upper` (interval-type2 rule requires it)",
+            ),
+            (
+                "x,y,truth_lower,truth_upper,truth\n",
+                Family::IntervalType2,
+                "d.csv:1: column `truth` does not apply to membership interval-type2 (its \
+                 channels: truth_lower, truth_upper)",
+            ),
+            (
+                "x,y,truth_lower,truth_upper\n0,0,0.6,0.4\n",
+                Family::IntervalType2,
+                "d.csv:2: truth_lower = 0.6 exceeds truth_upper = 0.4 (interval-type2 rule: \
+                 lower <= upper)",
+            ),
+            (
+                "x,y,truth,falsity,truth_upper\n",
+                Family::Intuitionistic,
+                "d.csv:1: column `truth_upper` does not apply to membership intuitionistic (its \
+                 channels: truth, falsity); `truth_upper` is a channel of \
+                 interval-neutrosophic, interval-intuitionistic, interval-type2",
+            ),
+        ];
+        for (text, family, want) in cases {
+            assert_eq!(read(text, *family).unwrap_err(), *want, "{text:?}");
         }
     }
 

@@ -307,6 +307,25 @@ pub(crate) fn wide_channel(text: &str, ignore_case: bool) -> Option<usize> {
     })
 }
 
+/// The canonical names of the degree columns a table has among `truth`, `indeterminacy`,
+/// `falsity` (`has_field`) and [`WIDE_CHANNELS`] (`has_channel`, by index): what
+/// [`channel_problem`] judges.
+pub(crate) fn present_channels(
+    has_field: impl Fn(Field) -> bool,
+    has_channel: impl Fn(usize) -> bool,
+) -> Vec<&'static str> {
+    [Field::Truth, Field::Indeterminacy, Field::Falsity]
+        .into_iter()
+        .filter(|f| has_field(*f))
+        .map(Field::name)
+        .chain(
+            (0..WIDE_CHANNELS.len())
+                .filter(|&c| has_channel(c))
+                .map(|c| WIDE_CHANNELS[c]),
+        )
+        .collect()
+}
+
 /// Why the degree keys (or columns) given do not match the channels of `membership`: a
 /// channel of the family missing, or a degree given that the family does not have. `present`
 /// lists the canonical names given among `truth`, `indeterminacy`, `falsity` and

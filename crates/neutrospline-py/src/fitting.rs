@@ -3,8 +3,8 @@
 use std::path::PathBuf;
 
 use neutrospline::fit::{
-    channel_names, fit_rows, DataWeights, DynFit, FitError, FitOptions, FitReport, FitRequest,
-    SurfaceFitData, SurfaceFitRequest,
+    fit_rows, DataWeights, DynFit, FitError, FitOptions, FitReport, FitRequest, SurfaceFitData,
+    SurfaceFitRequest,
 };
 use neutrospline::options::{OptionSet, OptionValue};
 use neutrospline::{Degrees, Family};
@@ -26,18 +26,13 @@ enum Source {
         positions: Vec<f64>,
         dimension: usize,
         degrees: Vec<Degrees>,
+        /// The second lane of an interval-valued or bipolar family.
+        second: Option<Vec<Degrees>>,
     },
     File(DataTable, Option<Box<Frame>>),
 }
 
 impl Source {
-    fn dimension(&self) -> usize {
-        match self {
-            Source::Arrays { dimension, .. } => *dimension,
-            Source::File(table, _) => table.dimension(),
-        }
-    }
-
     fn len(&self) -> usize {
         match self {
             Source::Arrays { degrees, .. } => degrees.len(),
@@ -57,10 +52,12 @@ impl Source {
                 positions,
                 dimension,
                 degrees,
+                second,
             } => fit_rows(
                 *dimension,
                 positions,
                 degrees.clone(),
+                second.clone(),
                 parameters,
                 weights,
                 options,
@@ -76,6 +73,7 @@ impl Source {
                     d,
                     &rows,
                     table.degrees().to_vec(),
+                    table.second_lane().map(<[Degrees]>::to_vec),
                     parameters,
                     weights,
                     options,
@@ -95,16 +93,16 @@ impl Source {
 }
 
 /// The report as the dictionary of `neutrospline fit --report json`, plus the fitted
-/// parameters of the points.
+/// parameters of the points. The channels are those the report lists, by name (the positions
+/// and the family's channels).
 fn report_dict<'py>(
     py: Python<'py>,
     report: &FitReport,
-    dimension: usize,
     parameters: &[f64],
 ) -> PyResult<Bound<'py, PyDict>> {
     let channels = |values: &[(&'static str, f64)]| -> PyResult<Bound<'py, PyDict>> {
         let dict = PyDict::new(py);
-        for (name, (_, v)) in channel_names(dimension).iter().zip(values) {
+        for (name, v) in values {
             dict.set_item(*name, *v)?;
         }
         Ok(dict)
@@ -137,9 +135,11 @@ fn report_dict<'py>(
 /// Fits a curve to data points, as `neutrospline fit` does, and returns `(curve, report)`.
 ///
 /// `data` is an array of positions of shape (m, 2) or (m, 3) with `degrees` of shape (m, 3)
-/// (or as the membership rule allows, see `Bezier`), the path of a CSV data file (columns
-/// `x, y[, z], truth, indeterminacy, falsity[, parameter, weight, name]`, errors named by
-/// line), or a pandas DataFrame with those columns (read as that file would be: names in any
+/// (or as the membership rule allows, see `Bezier`; for the interval-valued and bipolar
+/// families one column per channel, shape (m, channel count), fitted jointly under the whole
+/// rule), the path of a CSV data file (columns `x, y[, z], truth, indeterminacy, falsity[,
+/// parameter, weight, name]`, or the family's channels such as `truth_lower, truth_upper`,
+/// errors named by line), or a pandas DataFrame with those columns (read as that file would be: names in any
 /// case and order, `T`, `I`, `F` for the degrees, other columns left out; errors named by
 /// row). A table's columns are read as the command line's `--columns`, `--ignore-columns` and
 /// `--ignore-unknown-columns` say: `columns={"truth": "mu", "parameter": "t"}` (or
@@ -189,7 +189,6 @@ pub fn fit<'py>(
             .map_err(invalid)?;
     }
     let membership_rule = request.membership;
-    refuse_lanes(membership_rule)?;
     let source = read_source(data, degrees, membership_rule, input)?;
     let description = match &source {
         Source::File(table, None) => format!(
@@ -215,10 +214,9 @@ pub fn fit<'py>(
     let fitted = py
         .detach(|| source.fit(parameters, weight_values, &options))
         .map_err(|e| invalid(source.message(py, &e)))?;
-    let report = report_dict(py, &fitted.report, source.dimension(), &fitted.parameters)?;
-    let model = Model::new(fitted.curve);
-    let mut model = model
-        .with_membership(membership_rule)
+    let report = report_dict(py, &fitted.report, &fitted.parameters)?;
+    let mut model = Model::new(fitted.curve)
+        .with_family(membership_rule, fitted.second_lane)
         .map_err(invalid)?
         .with_description(description);
     if let Some(name) = name {
@@ -274,6 +272,7 @@ fn read_source(
         positions: arrays.positions,
         dimension: arrays.dimension,
         degrees: arrays.degrees,
+        second: arrays.second,
     })
 }
 
@@ -402,7 +401,6 @@ pub fn fit_surface<'py>(
         None => None,
     };
     let membership = request.membership;
-    refuse_lanes(membership)?;
     let fit_options = request.validate().map_err(invalid)?;
     let uv = parameters
         .map(|p| {
@@ -509,6 +507,9 @@ pub fn fit_surface<'py>(
             None => SurfaceFitData::scattered(positions, arrays.degrees),
         }
         .map_err(invalid)?;
+        if let Some(second) = arrays.second {
+            fit_data = fit_data.with_second_lane(second).map_err(invalid)?;
+        }
         if let Some(uv) = uv {
             fit_data = fit_data.with_parameters(uv).map_err(invalid)?;
         }
@@ -536,7 +537,7 @@ pub fn fit_surface<'py>(
     let rows = fitted.parameters.len();
     report.set_item("parameters", new_array(py, flat, &[rows, 2])?)?;
     let mut model = Model::new(fitted.surface)
-        .with_membership(membership)
+        .with_family(membership, fitted.second_lane)
         .map_err(invalid)?
         .with_description(description);
     if let Some(name) = name {
@@ -590,25 +591,4 @@ fn refuse_arrays(given: [bool; 3], columns: &str, weights: &str) -> PyResult<()>
         return Err(invalid_at("weights", weights));
     }
     Ok(())
-}
-
-/// Refuses a fit under an interval-valued or bipolar family: the fitter fits one set of
-/// control points with truth, indeterminacy and falsity, and keeps the rule of one lane;
-/// the rule joining two lanes (lower <= upper, the bipolar signs) across the fitted control
-/// points is not among its constraints (docs/model.md, "Lanes").
-fn refuse_lanes(membership: Family) -> PyResult<()> {
-    if !crate::model::is_wide(membership) {
-        return Ok(());
-    }
-    Err(crate::errors::invalid_at(
-        "membership",
-        format!(
-            "a fit under the {membership} family is refused: its {} channels ({}) ride in two \
-             lanes, and the fitter fits the three degrees of one lane without the rule joining \
-             the lanes, so the fitted channels could break it; fit under a family of one lane \
-             (neutrosophic, intuitionistic, ...)",
-            membership.channel_count(),
-            membership.channels().join(", ")
-        ),
-    ))
 }

@@ -54,11 +54,9 @@ pub fn model(
     membership: Family,
     meta: Meta,
 ) -> PyResult<Model> {
-    let mut model = match second {
-        Some(second) => Model::new(shape).with_lanes(membership, second),
-        None => Model::new(shape).with_membership(membership),
-    }
-    .map_err(invalid)?;
+    let mut model = Model::new(shape)
+        .with_family(membership, second)
+        .map_err(invalid)?;
     if let Some(name) = meta.name {
         model = model.with_name(name);
     }

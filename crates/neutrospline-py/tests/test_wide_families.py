@@ -325,7 +325,7 @@ def test_a_wide_surface_blends_its_channels_bilinearly(tmp_path):
     assert finer.membership_degrees.shape == (3, 2, 4)
 
 
-def test_figures_draw_the_band_and_fitting_refuses_with_the_reason():
+def test_figures_draw_the_band():
     curve = ns.Bezier(POSITIONS, INTERVAL_TYPE2, membership="interval-type2")
     svg = curve.to_svg()
     assert "lower membership" in svg and "upper membership" in svg
@@ -337,13 +337,44 @@ def test_figures_draw_the_band_and_fitting_refuses_with_the_reason():
         r"upper membership",
     ):
         curve.to_svg(view="falsity")
-    points = np.stack([np.linspace(0, 4, 20), np.sin(np.linspace(0, 4, 20))], axis=1)
-    with pytest.raises(
-        ValueError,
-        match=r"^membership: a fit under the interval-type2 family is refused: its 2 channels \(truth_lower, "
-        r"truth_upper\) ride in two lanes",
-    ):
-        ns.fit(points, np.tile([0.2, 0.4], (20, 1)), membership="interval-type2", control_points=5)
+
+
+def test_fit_solves_every_channel_under_the_whole_rule(tmp_path):
+    t = np.linspace(0.0, 1.0, 40)
+    points = np.stack([4 * t, np.sin(3 * t)], axis=1)
+    # Memberships collapsed at 1 and wide from 0 in turn: a free fit of each lane rings past
+    # [0, 1] and the lanes cross.
+    high = (np.arange(40) // 5) % 2 == 0
+    degrees = np.where(high[:, None], [1.0, 1.0], [0.0, 0.5])
+    curve, report = ns.fit(points, degrees, membership="interval-type2", control_points=9)
+    assert curve.membership == "interval-type2"
+    control = curve.membership_degrees
+    assert control.shape == (9, 2)
+    assert np.all(control[:, 0] >= 0) and np.all(control[:, 0] <= control[:, 1])
+    assert np.all(control[:, 1] <= 1)
+    assert any(c[0] == c[1] for c in control) or any(c[1] == 1.0 for c in control)
+    assert sorted(report["max_error"]) == ["truth_lower", "truth_upper", "x", "y"]
+    # The same data as a file: the same fit.
+    path = tmp_path / "t2.csv"
+    rows = ["x,y,truth_lower,truth_upper"] + [
+        f"{p[0]!r},{p[1]!r},{d[0]!r},{d[1]!r}" for p, d in zip(points, degrees)
+    ]
+    path.write_text("\n".join(rows) + "\n")
+    from_file, _ = ns.fit(str(path), membership="interval-type2", control_points=9)
+    np.testing.assert_array_equal(from_file.membership_degrees, control)
+    # A bipolar surface from arrays of shape (rows, cols, 6).
+    u, v = np.meshgrid(np.linspace(0, 1, 6), np.linspace(0, 1, 5), indexing="ij")
+    grid = np.stack([u, v, u * v], axis=-1)
+    alternate = ((np.arange(6)[:, None] + np.arange(5)[None, :]) % 2 == 0)[..., None]
+    bipolar = np.where(alternate, [1.0, 0.0, 0.0, -1.0, 0.0, 0.0], [0.0, 1.0, 1.0, 0.0, -1.0, -1.0])
+    surface, report = ns.fit_surface(grid, bipolar, membership="bipolar-neutrosophic", control_points=(4, 4))
+    values = surface.membership_degrees
+    assert values.shape == (4, 4, 6)
+    assert np.all((values[..., :3] >= 0) & (values[..., :3] <= 1))
+    assert np.all((values[..., 3:] >= -1) & (values[..., 3:] <= 0))
+    assert "negative_falsity" in report["max_error"]
+    with pytest.raises(ValueError, match=r"point 1: truth_lower = 0\.5 exceeds truth_upper = 0\.4"):
+        ns.fit(points[:3], np.array([[0.1, 0.2], [0.5, 0.4], [0.2, 0.3]]), membership="interval-type2", degree=2, interpolate=True)
 
 
 def test_to_dataframe_has_the_channel_columns():

@@ -906,7 +906,7 @@ fn fit_data(body: &Value) -> Result<Response, Response> {
         .map_err(|e| Response::error(422, &e.to_string()))?;
     let (model, report) = (Model::new(fitted.curve), fitted.report);
     let model = model
-        .with_membership(membership)
+        .with_family(membership, fitted.second_lane)
         .map_err(|e| Response::error(422, &e.to_string()))?
         .with_description(format!(
             "Fitted to {} ({} points) by neutrospline fit",
@@ -974,7 +974,7 @@ fn fit_surface_data(body: &Value) -> Result<Response, Response> {
         None => format!("{} scattered points", table.len()),
     };
     let model = Model::new(fitted.surface)
-        .with_membership(membership)
+        .with_family(membership, fitted.second_lane.clone())
         .map_err(|e| Response::error(422, &e.to_string()))?
         .with_description(format!(
             "Fitted to {} ({shape}) by neutrospline fit --surface",

@@ -627,6 +627,67 @@ fn fit_fits_a_surface_with_the_command_lines_options() {
     }
 }
 
+/// Issue 27: data of an interval-valued family (two lanes) fitted in the studio as on the
+/// command line: every channel under the whole rule, the model with both lanes, drawn in the
+/// truth view as a band.
+#[test]
+fn fit_fits_interval_type2_data_in_two_lanes() {
+    let port = example_server();
+    let mut text = String::from("x,y,truth_lower,truth_upper\n");
+    for k in 0..24 {
+        let t = f64::from(k) / 23.0;
+        // Steps between a collapsed interval at 1 and a wide one from 0: the free fit of the
+        // lanes rings past [0, 1] and crosses.
+        let (lower, upper) = if (k / 4) % 2 == 0 {
+            (1.0, 1.0)
+        } else {
+            (0.0, 0.5)
+        };
+        text.push_str(&format!(
+            "{},{},{lower},{upper}\n",
+            3.0 * t,
+            (2.0 * t).sin()
+        ));
+    }
+    let data = json!({ "name": "t2.csv", "text": text });
+    let (status, answer, _) = post(
+        port,
+        "/api/fit",
+        &json!({
+            "data": data,
+            "options": { "control-points": 9, "membership": "interval-type2" }
+        }),
+    );
+    assert_eq!(status, 200, "{answer}");
+    let model = &answer["model"];
+    assert_eq!(model["membership"], "interval-type2");
+    let points = model["control_points"].as_array().unwrap();
+    assert_eq!(points.len(), 9);
+    for (i, point) in points.iter().enumerate() {
+        let (lower, upper) = (
+            point["truth_lower"].as_f64().unwrap(),
+            point["truth_upper"].as_f64().unwrap(),
+        );
+        assert!(
+            (0.0..=upper).contains(&lower) && upper <= 1.0,
+            "control point {i}: {lower} {upper}"
+        );
+    }
+    let max = &answer["report"]["max_error"];
+    assert!(
+        max["truth_lower"].is_number() && max["truth_upper"].is_number(),
+        "{max}"
+    );
+    assert!(max.get("truth").is_none(), "{max}");
+    let (status, drawn, _) = post(
+        port,
+        "/api/render",
+        &json!({ "model": model.to_string(), "views": ["truth"] }),
+    );
+    assert_eq!(status, 200, "{drawn}");
+    assert!(drawn["figures"]["truth"].as_str().unwrap().contains("<svg"));
+}
+
 const STUDIO_CSS: &str = include_str!("../src/assets/studio.css");
 
 /// Reads one answer of a kept-alive connection: (head, body), by its `Content-Length`

@@ -28,5 +28,6 @@ mod transform;
 mod util;
 mod warnings;
 mod wide_families;
+mod wide_fit;
 mod wide_plot;
 mod wide_transform;

@@ -78,6 +78,20 @@ pub fn ok(dir: &Path, args: &[&str]) -> String {
     stdout
 }
 
+/// Runs the binary in `dir` and expects exit 0 (standard error may hold a report); returns
+/// the whole output.
+pub fn succeeds(dir: &Path, args: &[&str]) -> Output {
+    let out = run_in(dir, args, None);
+    assert_eq!(out.code, 0, "{args:?}: {}", out.stderr);
+    out
+}
+
+/// The model file at `path`, read with the default options.
+pub fn load_model(path: &Path) -> neutrospline_io::Model {
+    neutrospline_io::load(path, &neutrospline_io::ReadOptions::default())
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
 /// A temporary directory holding the given files (name, contents).
 pub fn dir_with<C: AsRef<[u8]>>(files: &[(&str, C)]) -> tempfile::TempDir {
     dir_with_examples(&[], files)

@@ -5,23 +5,10 @@
 //! read back under the rule, and degree reduction solves the channels of both lanes jointly
 //! (a case where reducing each lane alone breaks `lower <= upper`).
 
-use std::path::Path;
-
 use neutrospline::{on_dimension, Evaluate, Family};
-use neutrospline_io::{Model, ReadOptions, Shape};
+use neutrospline_io::{Model, Shape};
 
-use crate::util::{run_in, Output};
-
-fn ok(dir: &Path, args: &[&str]) -> Output {
-    let out = run_in(dir, args, None);
-    assert_eq!(out.code, 0, "{args:?}: {}", out.stderr);
-    out
-}
-
-fn load(path: &Path) -> Model {
-    neutrospline_io::load(path, &ReadOptions::default())
-        .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
-}
+use crate::util::{load_model as load, run_in, succeeds as ok};
 
 /// Channel values of control point `i` that obey `family`'s rule (lower <= upper, T_U + F_U
 /// <= 1, negatives in [-1, 0]), varied with `i`.
@@ -607,37 +594,6 @@ fn export_writes_every_channel_by_name_and_dxf_reads_back() {
         }
         assert!(!gltf.contains("\"_FALSITY\"") || family == Family::BipolarNeutrosophic);
     }
-}
-
-/// `fit` of a curve with a family of two lanes is refused before the data is read, with the
-/// family's channels named (a surface fit takes three families only, a usage error).
-#[test]
-fn fit_refuses_a_family_of_two_lanes_with_the_reason() {
-    let dir = tempfile::tempdir().unwrap();
-    let d = dir.path();
-    std::fs::write(
-        d.join("d.csv"),
-        "x,y,truth_lower,truth_upper\n0,0,0.1,0.2\n1,1,0.2,0.4\n2,0,0.3,0.3\n3,1,0.1,0.5\n",
-    )
-    .unwrap();
-    let args = [
-        "fit",
-        "d.csv",
-        "-o",
-        "f.toml",
-        "--membership",
-        "interval-type2",
-    ];
-    let out = run_in(d, &args, None);
-    assert_eq!(out.code, 1, "{}", out.stderr);
-    assert_eq!(
-        out.stderr,
-        "error: d.csv: membership interval-type2: `neutrospline fit` fits one truth, \
-         indeterminacy and falsity triple per data point, and the interval-type2 family \
-         has 2 channels (truth_lower, truth_upper) in two lanes; write the model's control \
-         points in a model file instead\n"
-    );
-    assert!(!d.join("f.toml").exists());
 }
 
 /// A rational curve of every wide family (a cubic NURBS curve with weights 1, 2, 0.5, 1 and an

@@ -24,9 +24,9 @@ pub(crate) use table::{read_degrees, require_degrees, Columns, Table};
 use std::io::BufRead;
 
 use crate::parsed::{
-    channel_problem, check_spread_value, duplicate_rule, spread_from_values, spread_hint,
-    spread_keys_problem, wide_channel, wide_lanes, Field, Origin, Parsed, PointRecord, SpreadKey,
-    WIDE_CHANNELS,
+    channel_problem, check_spread_value, duplicate_rule, present_channels, spread_from_values,
+    spread_hint, spread_keys_problem, wide_channel, wide_lanes, Field, Origin, Parsed, PointRecord,
+    SpreadKey,
 };
 use crate::settings::{Key, Kind, KnotSpec, KnotsSetting, Setting, Structure};
 use crate::{InputError, ReadOptions};
@@ -59,16 +59,7 @@ pub(crate) fn parse_reader(
     for f in [Field::X, Field::Y] {
         table.require(Column::Field(f), f.name(), "every file needs x and y")?;
     }
-    let mut present: Vec<&str> = [Field::Truth, Field::Indeterminacy, Field::Falsity]
-        .into_iter()
-        .filter(|f| has(*f))
-        .map(Field::name)
-        .collect();
-    present.extend(
-        (0..WIDE_CHANNELS.len())
-            .filter(|&c| table.has(Column::Channel(c)))
-            .map(|c| WIDE_CHANNELS[c]),
-    );
+    let present = present_channels(has, |c| table.has(Column::Channel(c)));
     if let Some(message) = channel_problem(membership, &present, "column") {
         return Err(table.header_error(message));
     }
@@ -249,7 +240,7 @@ const FIT_HINT: &str = "; a table of measured points (with a parameter or weight
                         is fitted by `neutrospline fit FILE`, not evaluated";
 
 /// What a header cell names: a field of the control point, a channel of the interval-valued
-/// and bipolar families (index in [`WIDE_CHANNELS`]), or a spread.
+/// and bipolar families (index in [`crate::parsed::WIDE_CHANNELS`]), or a spread.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Column {
     Field(Field),

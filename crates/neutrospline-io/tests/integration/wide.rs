@@ -210,16 +210,41 @@ fn the_wide_examples_read_and_keep_their_rule() {
 }
 
 #[test]
-fn a_data_table_of_a_wide_family_is_refused_with_the_reason() {
-    let csv = "x,y,truth_lower,truth_upper\n0,0,0.1,0.2\n";
-    let error = neutrospline_io::read_data("d.csv", csv.as_bytes(), Family::IntervalType2)
-        .unwrap_err()
-        .to_string();
-    assert_eq!(
-        error,
-        "d.csv: membership interval-type2: a data table holds one truth, indeterminacy and \
-         falsity triple per data point, and the interval-type2 family has 2 channels \
-         (truth_lower, truth_upper) in two lanes (docs/model.md, \"Lanes\"); fitting its data is \
-         not available, so write the model's control points in a model file instead"
-    );
+fn a_data_table_of_a_wide_family_is_fitted_into_a_model_of_two_lanes() {
+    // Interval type-2 memberships that jump between a collapsed interval at 1 and a wide one
+    // from 0: the free fit of each lane rings past [0, 1] and the lanes cross.
+    let mut csv = String::from("x,y,truth_lower,truth_upper\n");
+    for k in 0..20 {
+        let (lower, upper) = if (k / 4) % 2 == 0 {
+            (1.0, 1.0)
+        } else {
+            (0.0, 0.5)
+        };
+        csv.push_str(&format!(
+            "{k},{},{lower},{upper}\n",
+            (f64::from(k) / 3.0).sin()
+        ));
+    }
+    let table = neutrospline_io::read_data("d.csv", csv.as_bytes(), Family::IntervalType2).unwrap();
+    assert_eq!(table.degrees()[4].to_array(), [0.0, 0.0, 0.0]);
+    assert_eq!(table.second_lane().unwrap()[4].to_array(), [0.5, 0.0, 0.0]);
+    let options = neutrospline::fit::FitOptions::default()
+        .with_membership(Family::IntervalType2)
+        .with_target(neutrospline::fit::FitTarget::ControlPoints(8));
+    let fitted = table.fit(&options).unwrap();
+    let model = neutrospline_io::Model::new(fitted.curve)
+        .with_family(Family::IntervalType2, fitted.second_lane)
+        .unwrap();
+    let channels = model.control_channels();
+    assert_eq!(channels.len(), 8);
+    for (i, values) in channels.iter().enumerate() {
+        assert!(
+            Family::IntervalType2.check(values).is_ok(),
+            "control point {i}: {values:?}"
+        );
+    }
+    // The rule binds somewhere: a collapsed interval or an end of the box.
+    assert!(channels
+        .iter()
+        .any(|v| v[0] == v[1] || v[1] == 1.0 || v[0] == 0.0));
 }

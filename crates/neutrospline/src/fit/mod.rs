@@ -177,14 +177,7 @@ impl<const D: usize> FitData<D> {
     /// # Errors
     /// [`FitError::Count`].
     pub fn with_second_lane(mut self, degrees: Vec<Degrees>) -> Result<Self, FitError> {
-        if degrees.len() != self.positions.len() {
-            return Err(FitError::Count {
-                what: "second-lane degree triples",
-                count: degrees.len(),
-                points: self.positions.len(),
-            });
-        }
-        self.second_lane = Some(degrees);
+        self.second_lane = Some(second_lane(degrees, self.positions.len())?);
         Ok(self)
     }
 
@@ -245,6 +238,18 @@ impl<const D: usize> FitData<D> {
     pub fn weights(&self) -> Option<&[f64]> {
         self.weights.as_deref()
     }
+}
+
+/// The second lane's degrees, checked to be one triple per point.
+fn second_lane(degrees: Vec<Degrees>, points: usize) -> Result<Vec<Degrees>, FitError> {
+    if degrees.len() != points {
+        return Err(FitError::Count {
+            what: "second-lane degree triples",
+            count: degrees.len(),
+            points,
+        });
+    }
+    Ok(degrees)
 }
 
 /// What the fit aims for.

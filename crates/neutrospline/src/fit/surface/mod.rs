@@ -165,14 +165,7 @@ impl SurfaceFitData {
     /// # Errors
     /// [`FitError::Count`].
     pub fn with_second_lane(mut self, degrees: Vec<Degrees>) -> Result<Self, FitError> {
-        if degrees.len() != self.positions.len() {
-            return Err(FitError::Count {
-                what: "second-lane degree triples",
-                count: degrees.len(),
-                points: self.positions.len(),
-            });
-        }
-        self.second_lane = Some(degrees);
+        self.second_lane = Some(super::second_lane(degrees, self.positions.len())?);
         Ok(self)
     }
 
