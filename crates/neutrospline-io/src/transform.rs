@@ -577,13 +577,14 @@ fn lane_model(model: &Model, lane: usize) -> Result<Model, String> {
 
 /// What a joint operation on two lanes made: the lanes, a note, and for a knot removal the
 /// removals asked for and made.
-type LaneOutcome = ([DynCurve; 2], String, Option<(usize, usize)>);
+type LaneOutcome<T = DynCurve> = ([T; 2], String, Option<(usize, usize)>);
 
 /// [`transform`] for an interval-valued or bipolar family (two lanes, `Family::lanes`): an
 /// exact operation applied to each lane alike (the lanes keep one geometry, and blending keeps
 /// `lower <= upper` and every other convex rule); degree reduction and knot removal applied to
 /// both lanes as one spline, their channels solved jointly under the family's rule
-/// (`AnyCurve::reduced_lanes`, `AnyCurve::without_knot_lanes`).
+/// (`AnyCurve::reduced_lanes`, `AnyCurve::without_knot_lanes`; for a surface every line of
+/// both nets at once, `Surface::reduced_lanes`, `Surface::remove_knot_lanes`).
 fn transform_lanes(
     model: &Model,
     op: &Operation,
@@ -614,13 +615,13 @@ fn transform_lanes(
         ));
     }
     let lanes = model.lanes();
-    let (Shape::Curve(c0), Shape::Curve(c1)) = (lanes[0], lanes[1]) else {
-        return Err(format!(
-            "--{} on a surface of the {family} family: the channels of its two lanes would \
-             have to be solved together on every line of the net, which surfaces do not do; \
-             use it on a curve of this family, or on a surface of one lane",
-            op.name()
-        ));
+    let (c0, c1) = match (lanes[0], lanes[1]) {
+        (Shape::Curve(c0), Shape::Curve(c1)) => (c0, c1),
+        (Shape::Surface(s0), Shape::Surface(s1)) => {
+            let (pieces, note, removals) = surface_lanes_op([s0, s1], op, direction, family)?;
+            return lanes_model(model, op, pieces.map(Shape::from), note, removals);
+        }
+        _ => return Err("the lanes are not both curves or both surfaces".to_owned()),
     };
     if let Some(d) = direction {
         return Err(format!(
@@ -695,6 +696,20 @@ fn transform_lanes(
         }
         _ => unreachable!("the exact operations are handled above"),
     };
+    lanes_model(model, op, pieces.map(Shape::from), note, removals)
+}
+
+/// The model of two transformed lanes: `model`'s name, its description marked as
+/// transformed by `op`, the family's rule kept ([`join_lanes`]); point names dropped (the
+/// joint operations make new control points), which the summary says after `note`.
+fn lanes_model(
+    model: &Model,
+    op: &Operation,
+    pieces: [Shape; 2],
+    note: String,
+    removals: Option<(usize, usize)>,
+) -> Result<Transformed, String> {
+    let family = model.membership();
     let [p0, p1] = pieces;
     let mut m = Model::new(p0);
     if let Some(n) = model.name() {
@@ -714,10 +729,60 @@ fn transform_lanes(
         );
     }
     Ok(Transformed {
-        models: vec![join_lanes(m, &Shape::from(p1), family)?],
+        models: vec![join_lanes(m, &p1, family)?],
         summary,
         removals,
     })
+}
+
+/// Degree reduction or knot removal in `direction` on the two lanes of a surface of an
+/// interval-valued or bipolar family: every line of both nets a curve of two lanes, their
+/// channels solved jointly under the family's rule (`Surface::reduced_lanes`,
+/// `Surface::remove_knot_lanes`).
+fn surface_lanes_op(
+    lanes: [&Surface; 2],
+    op: &Operation,
+    direction: Option<Direction>,
+    family: Family,
+) -> Result<LaneOutcome<Surface>, String> {
+    let direction = direction
+        .ok_or_else(|| format!("--{} on a surface needs --direction u or v", op.name()))?;
+    match op {
+        Operation::Reduce { times, tolerance } => {
+            let r = Surface::reduced_lanes(lanes, direction, *times, *tolerance, family)
+                .map_err(|e| format!("{direction}: {e}"))?;
+            let note = format!(
+                "degree_{direction} {} -> {}; largest deviation found {:e} over both lanes \
+                 (tolerance {tolerance:e}); the channels solved jointly under the {family} rule",
+                degree_of(lanes[0], direction),
+                degree_of(&r.curve[0], direction),
+                r.error
+            );
+            Ok((r.curve, note, None))
+        }
+        Operation::RemoveKnot {
+            value,
+            times,
+            tolerance,
+        } => {
+            let knots = match direction {
+                Direction::U => lanes[0].knots_u(),
+                Direction::V => lanes[0].knots_v(),
+            };
+            let times = times.unwrap_or_else(|| knots.multiplicity(*value));
+            let r = Surface::remove_knot_lanes(lanes, direction, *value, times, *tolerance, family)
+                .map_err(|e| format!("knots_{direction}: {e}"))?;
+            let note = removal_note(
+                &format!("{direction} = {value}"),
+                times,
+                r.removed,
+                r.error,
+                *tolerance,
+            );
+            Ok((r.curve, note, Some((times, r.removed))))
+        }
+        _ => unreachable!("only the joint operations come here"),
+    }
 }
 
 /// A curve of the same kind, knots and weights whose positions are `positions` (the spreads'

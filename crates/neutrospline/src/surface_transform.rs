@@ -390,3 +390,229 @@ impl Surface {
         )
     }
 }
+
+/// Degree reduction and knot removal for the two lanes of an interval-valued or bipolar
+/// family (`Family::lanes`; docs/model.md, "Lanes"): two surfaces of one geometry (positions,
+/// weights, knots), each holding three of the family's channels. In a direction, each lane is
+/// the spline of its lines ([`Surface::direction_spline`]) and the two are stacked point by
+/// point ([`crate::transform::stack_lanes`], the same stacking as the curves'), so every line
+/// of the net is a curve of two lanes, and one spline operation on the stack is the curve
+/// operation on every line of both lanes at once: a knot is removed only when Tiller's test
+/// passes on every line and channel, and the reduced degree channels of every line are solved
+/// jointly under the family's whole rule (`lower <= upper` couples the lanes).
+impl Surface {
+    /// The stacked work spline of two lanes in `direction`, and the values per point of one
+    /// lane (`S`, or `S + 1` in homogeneous form).
+    ///
+    /// # Panics
+    /// If the lanes differ in grid size or rationality.
+    fn stack_direction_lanes(lanes: [&Surface; 2], direction: Direction) -> (Spline, usize) {
+        assert!(
+            lanes[0].rows == lanes[1].rows
+                && lanes[0].cols == lanes[1].cols
+                && lanes[0].weights.is_some() == lanes[1].weights.is_some(),
+            "the lanes of a wide family have one geometry"
+        );
+        let works = lanes.map(|lane| lane.direction_spline(direction));
+        let point = if lanes[0].weights.is_some() { S + 1 } else { S };
+        (
+            crate::transform::stack_lanes([&works[0], &works[1]], point, 3),
+            point,
+        )
+    }
+
+    /// The two lane surfaces of a stacked work spline in `direction`, their channels brought
+    /// under `family`'s rule as `off` says ([`crate::transform::lanes_under_rule`]); `None`
+    /// for a weight that is not positive or a refusal.
+    fn lanes_from_work(
+        lanes: [&Surface; 2],
+        direction: Direction,
+        work: &Spline,
+        family: crate::Family,
+        off: crate::transform::OffRule,
+    ) -> Option<[Surface; 2]> {
+        let point = if lanes[0].weights.is_some() { S + 1 } else { S };
+        let [first, second] = crate::transform::unstack_lanes(work, point, 3);
+        let mut out = [
+            lanes[0].with_direction_spline(direction, first),
+            lanes[1].with_direction_spline(direction, second),
+        ];
+        if out[0]
+            .weights
+            .as_ref()
+            .is_some_and(|w| w.iter().any(|&w| !(w > 0.0 && w.is_finite())))
+        {
+            return None;
+        }
+        let [a, b] = &mut out;
+        if !crate::transform::lanes_under_rule([&mut a.data, &mut b.data], S, 3, family, off) {
+            return None;
+        }
+        for s in &mut out {
+            s.homogeneous = homogeneous_rows(&s.data, s.weights.as_deref());
+        }
+        Some(out)
+    }
+
+    /// The larger deviation of the two lanes from `other` ([`Surface::deviation_from`]): the
+    /// positions' distance and the largest difference of any channel, over the sample grid.
+    fn lanes_deviation(lanes: [&Surface; 2], other: &[Surface; 2]) -> f64 {
+        lanes[0]
+            .deviation_from(&other[0])
+            .max(lanes[1].deviation_from(&other[1]))
+    }
+
+    /// [`Surface::reduce_degree`] for the two lanes of an interval-valued or bipolar family:
+    /// the degree in `direction` lowered by one on every line of both lanes' nets (each line a
+    /// curve of two lanes, [`crate::BSpline::reduce_degree_lanes`]: every Bézier piece
+    /// replaced by the nearest (L2) piece of one degree less with the same ends, the channels
+    /// solved jointly under the family's rule), then interior knots of that direction removed
+    /// while both lanes stay within `tolerance`. The deviation is the larger of the lanes'
+    /// ([`Surface::deviation_from`]).
+    ///
+    /// # Errors
+    /// As [`Surface::reduce_degree`].
+    ///
+    /// # Panics
+    /// If the lanes differ in grid size or rationality, or `family` has one lane.
+    pub fn reduce_degree_lanes(
+        lanes: [&Surface; 2],
+        direction: Direction,
+        tolerance: f64,
+        family: crate::Family,
+    ) -> Result<crate::DegreeReduction<[Surface; 2]>, crate::ReduceError> {
+        assert_eq!(family.lane_count(), 2, "{family} rides in one lane");
+        let (work, point) = Self::stack_direction_lanes(lanes, direction);
+        let rational = lanes[0].weights.is_some();
+        let layout = crate::reduce::DegreeLayout {
+            point: point + 3,
+            truth: 3,
+            weight: rational.then_some(S),
+            membership: family,
+            second: Some(point),
+        };
+        reduce_within(
+            &work,
+            &layout,
+            tolerance,
+            |w| {
+                Self::lanes_from_work(
+                    lanes,
+                    direction,
+                    w,
+                    family,
+                    crate::transform::OffRule::Project,
+                )
+                .ok_or(crate::ReduceError::NonPositiveWeight)
+            },
+            |c: &[Surface; 2]| Self::lanes_deviation(lanes, c),
+        )
+    }
+
+    /// The degree in `direction` lowered `times` times within `tolerance` in all
+    /// ([`Surface::reduce_degree_lanes`] each time; the deviation of the result from these
+    /// lanes measured again at the end).
+    ///
+    /// # Errors
+    /// As [`Surface::reduce_degree`]; [`crate::ReduceError::NotWithin`] when the reductions
+    /// together move a lane further than `tolerance`.
+    ///
+    /// # Panics
+    /// As [`Surface::reduce_degree_lanes`].
+    ///
+    /// ```
+    /// use neutrospline::{ControlPoint, Degrees, Direction, Family, Surface};
+    /// let net = |lower: f64| -> Vec<ControlPoint<3>> {
+    ///     (0..6)
+    ///         .map(|k| {
+    ///             let d = Degrees::new(lower + 0.1 * (k % 3) as f64, 0.0, 0.0).unwrap();
+    ///             ControlPoint::new([(k / 3) as f64, (k % 3) as f64, 0.0], d)
+    ///         })
+    ///         .collect()
+    /// };
+    /// // Truth lower and upper (interval-type2) on a 2 x 3 Bézier net, elevated in v.
+    /// let lower = Surface::bezier(2, 3, net(0.1))?.elevate(Direction::V);
+    /// let upper = Surface::bezier(2, 3, net(0.3))?.elevate(Direction::V);
+    /// let back =
+    ///     Surface::reduced_lanes([&lower, &upper], Direction::V, 1, 1e-12, Family::IntervalType2)?;
+    /// assert_eq!(back.curve[0].degree_v(), 2);
+    /// assert!(back.error < 1e-14);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn reduced_lanes(
+        lanes: [&Surface; 2],
+        direction: Direction,
+        times: usize,
+        tolerance: f64,
+        family: crate::Family,
+    ) -> Result<crate::DegreeReduction<[Surface; 2]>, crate::ReduceError> {
+        let mut current = [lanes[0].clone(), lanes[1].clone()];
+        for _ in 0..times {
+            current = Self::reduce_degree_lanes(
+                [&current[0], &current[1]],
+                direction,
+                tolerance,
+                family,
+            )?
+            .curve;
+        }
+        let error = Self::lanes_deviation(lanes, &current);
+        if error.is_nan() || error > tolerance {
+            return Err(crate::ReduceError::NotWithin {
+                degree: current[0].knots_of(direction).degree(),
+                tolerance,
+                error,
+            });
+        }
+        Ok(crate::DegreeReduction {
+            curve: current,
+            error,
+        })
+    }
+
+    /// [`Surface::remove_knot`] for the two lanes of an interval-valued or bipolar family:
+    /// the interior knot `u` of `direction` removed up to `times` times from both lanes at
+    /// once; each removal must pass Tiller's test on every line of both nets and every
+    /// channel, keep both lanes within `tolerance` ([`Surface::deviation_from`], the larger
+    /// of the two reported), and give channels that obey the family's rule at every control
+    /// point (values within 1e-12 of it, rounding, projected onto it).
+    ///
+    /// # Errors
+    /// [`KnotError::NotAnInteriorKnot`] when `u` is not a knot strictly inside the domain.
+    ///
+    /// # Panics
+    /// As [`Surface::reduce_degree_lanes`].
+    pub fn remove_knot_lanes(
+        lanes: [&Surface; 2],
+        direction: Direction,
+        u: f64,
+        times: usize,
+        tolerance: f64,
+        family: crate::Family,
+    ) -> Result<KnotRemoval<[Surface; 2]>, KnotError> {
+        assert_eq!(family.lane_count(), 2, "{family} rides in one lane");
+        check_interior_knot(lanes[0].knots_of(direction), u)?;
+        let (work, _) = Self::stack_direction_lanes(lanes, direction);
+        let (_, shape, removed, error) = remove_while(
+            work,
+            u,
+            times,
+            tolerance,
+            |s| {
+                Self::lanes_from_work(
+                    lanes,
+                    direction,
+                    s,
+                    family,
+                    crate::transform::OffRule::Refuse,
+                )
+            },
+            |c: &[Surface; 2]| Self::lanes_deviation(lanes, c),
+        );
+        Ok(KnotRemoval {
+            curve: shape.unwrap_or_else(|| [lanes[0].clone(), lanes[1].clone()]),
+            removed,
+            error,
+        })
+    }
+}

@@ -711,61 +711,79 @@ impl<const D: usize> crate::AnyCurve<D> {
     }
 }
 
-/// The two lanes of an interval-valued or bipolar family (`Family::lanes`) as one work
-/// spline: the first lane's rows (homogeneous for a rational curve: `(w P, w T, w I, w F,
-/// w)`), followed by the second lane's three slots (times `w`). The lanes share positions,
+/// The work splines of the two lanes of an interval-valued or bipolar family
+/// (`Family::lanes`) stacked into one: every control point of `point` values (a row of a
+/// curve, or one point of a line of a surface's net; homogeneous `(w P, w T, w I, w F, w)`
+/// for a rational shape) followed by the second lane's three slots of the same point (the
+/// columns `truth..truth + 3`, times `w` in homogeneous form). The lanes share positions,
 /// weights and knots, so one spline operation on the stack is the operation on both, and a
 /// solve of its degree channels sees every channel of the family.
 ///
 /// # Panics
-/// If the lanes have different numbers of control points.
-fn stack_lanes<const D: usize, W: Weighting>(lanes: [&SplineCurve<D, W>; 2]) -> Spline {
-    let [first, second] = lanes.map(|lane| lane.spline());
-    assert_eq!(
-        first.count(),
-        second.count(),
+/// If the lanes' splines differ in size.
+pub(crate) fn stack_lanes(works: [&Spline; 2], point: usize, truth: usize) -> Spline {
+    let [first, second] = works;
+    assert!(
+        first.data.len() == second.data.len() && first.stride == second.stride,
         "the lanes of a wide family have one geometry"
     );
-    let work = if W::RATIONAL {
-        first.homogeneous()
-    } else {
-        first.clone()
-    };
-    let stride = work.stride + 3;
-    let mut data = Vec::with_capacity(work.count() * stride);
-    for i in 0..work.count() {
-        let w = if W::RATIONAL { first.weight(i) } else { 1.0 };
-        data.extend_from_slice(work.row(i));
-        data.extend(second.row(i)[D..D + 3].iter().map(|v| v * w));
+    let mut data = Vec::with_capacity(first.data.len() / point * (point + 3));
+    for (own, other) in first
+        .data
+        .chunks_exact(point)
+        .zip(second.data.chunks_exact(point))
+    {
+        data.extend_from_slice(own);
+        data.extend_from_slice(&other[truth..truth + 3]);
     }
     Spline {
-        knots: work.knots.clone(),
-        stride,
+        knots: first.knots.clone(),
+        stride: first.stride / point * (point + 3),
         data,
         weights: None,
     }
 }
 
-/// The lanes of a stacked work spline ([`stack_lanes`]) as rational or polynomial splines of
-/// rows `(P, T, I, F)`; `None` when a rational lane would have a weight that is not positive.
-fn unstack_lanes<const D: usize>(work: &Spline, rational: bool) -> Option<[Spline; 2]> {
-    let own = D + 3 + usize::from(rational);
+/// The lanes of a stacked work spline ([`stack_lanes`]; points of `point + 3` values) as two
+/// work splines of points of `point` values: the first lane's as stacked, the second lane's
+/// slots put back into the columns `truth..truth + 3` of a copy of the first's.
+pub(crate) fn unstack_lanes(work: &Spline, point: usize, truth: usize) -> [Spline; 2] {
     let mut rows = [Vec::new(), Vec::new()];
-    for i in 0..work.count() {
-        let row = work.row(i);
-        rows[0].extend_from_slice(&row[..own]);
-        rows[1].extend_from_slice(&row[..D]);
-        rows[1].extend_from_slice(&row[own..own + 3]);
-        if rational {
-            rows[1].push(row[D + 3]);
-        }
+    for stacked in work.data.chunks_exact(point + 3) {
+        rows[0].extend_from_slice(&stacked[..point]);
+        rows[1].extend_from_slice(&stacked[..truth]);
+        rows[1].extend_from_slice(&stacked[point..point + 3]);
+        rows[1].extend_from_slice(&stacked[truth + 3..point]);
     }
-    let lanes = rows.map(|data| Spline {
+    rows.map(|data| Spline {
         knots: work.knots.clone(),
-        stride: own,
+        stride: work.stride / (point + 3) * point,
         data,
         weights: None,
+    })
+}
+
+/// The two lanes of curves as one work spline ([`stack_lanes`] of their rows, homogeneous
+/// for a rational curve).
+///
+/// # Panics
+/// If the lanes have different numbers of control points.
+fn stack_curve_lanes<const D: usize, W: Weighting>(lanes: [&SplineCurve<D, W>; 2]) -> Spline {
+    let works = lanes.map(|lane| {
+        if W::RATIONAL {
+            lane.spline().homogeneous()
+        } else {
+            lane.spline().clone()
+        }
     });
+    stack_lanes([&works[0], &works[1]], works[0].stride, D)
+}
+
+/// The lanes of a stacked curve work spline ([`stack_curve_lanes`]) as rational or
+/// polynomial splines of rows `(P, T, I, F)`; `None` when a rational lane would have a weight
+/// that is not positive.
+fn unstack_curve_lanes<const D: usize>(work: &Spline, rational: bool) -> Option<[Spline; 2]> {
+    let lanes = unstack_lanes(work, work.stride - 3, D);
     if !rational {
         return Some(lanes);
     }
@@ -777,64 +795,76 @@ fn unstack_lanes<const D: usize>(work: &Spline, rational: bool) -> Option<[Splin
     positive.then_some(lanes)
 }
 
-/// The channel values of row `i` of two lane splines (degrees at `D..D + 3`), joined by the
-/// family's lanes (a negated lane negated back).
-fn joined_row<const D: usize>(lanes: &[Spline; 2], i: usize, family: crate::Family) -> Vec<f64> {
-    let slots = lanes
-        .each_ref()
-        .map(|lane| [0, 1, 2].map(|s| lane.row(i)[D + s]));
-    family.join_slots(&slots).to_vec()
+/// How [`lanes_under_rule`] treats channels off the family's rule.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(crate) enum OffRule {
+    /// Projected onto the rule (`Family::project`; NaN taken as 0): a solve's result.
+    Project,
+    /// Projected only when within 1e-12 of the rule (rounding); further off refuses.
+    Refuse,
 }
 
-/// Writes channel values back into row `i` of the two lanes' slots (a slot without a channel
-/// 0, a negated lane negated).
-fn write_row<const D: usize>(
-    lanes: &mut [Spline; 2],
-    i: usize,
+/// The channels of every control point of two lanes (the degree slots at
+/// `truth..truth + 3` of every `point` values of each lane's `data`, joined by the family's
+/// lanes: a negated lane negated back) brought under `family`'s rule as `off` says, written
+/// back into the slots (a slot without a channel 0, a negated lane negated). `false` when
+/// [`OffRule::Refuse`] met a point off the rule by more than rounding.
+pub(crate) fn lanes_under_rule(
+    data: [&mut [f64]; 2],
+    point: usize,
+    truth: usize,
     family: crate::Family,
-    values: &[f64],
-) {
-    for (spline, lane) in lanes.iter_mut().zip(family.lanes()) {
-        let stride = spline.stride;
-        for (s, channel) in lane.slots.iter().enumerate() {
-            let v = channel.map_or(0.0, |c| values[c]);
-            spline.data[i * stride + D + s] = if lane.negated && v != 0.0 { -v } else { v };
+    off: OffRule,
+) -> bool {
+    let [first, second] = data;
+    for (own, other) in first
+        .chunks_exact_mut(point)
+        .zip(second.chunks_exact_mut(point))
+    {
+        let mut slots = [own, other];
+        let values = slots.each_ref().map(|lane| {
+            let s = &lane[truth..truth + 3];
+            [s[0], s[1], s[2]]
+        });
+        let mut values = family.join_slots(&values).to_vec();
+        match off {
+            OffRule::Project => {
+                for v in &mut values {
+                    if v.is_nan() {
+                        *v = 0.0;
+                    }
+                }
+            }
+            OffRule::Refuse => {
+                if family.check(&values).is_ok() {
+                    continue;
+                }
+                if family.check_within(&values, ROUNDING).is_err() {
+                    return false;
+                }
+            }
+        }
+        family.project(&mut values);
+        for (lane, spec) in slots.iter_mut().zip(family.lanes()) {
+            for (s, channel) in spec.slots.iter().enumerate() {
+                let v = channel.map_or(0.0, |c| values[c]);
+                lane[truth + s] = if spec.negated && v != 0.0 { -v } else { v };
+            }
         }
     }
+    true
 }
 
 impl<const D: usize, W: Weighting> SplineCurve<D, W> {
-    /// The two lanes of a stacked work spline with their channels projected onto the rule
-    /// (`Family::project`; NaN taken as 0), as curves.
-    fn lanes_from_work(work: &Spline, family: crate::Family) -> Result<[Self; 2], ReduceError> {
-        let mut lanes =
-            unstack_lanes::<D>(work, W::RATIONAL).ok_or(ReduceError::NonPositiveWeight)?;
-        for i in 0..work.count() {
-            let mut values = joined_row::<D>(&lanes, i, family);
-            for v in &mut values {
-                if v.is_nan() {
-                    *v = 0.0;
-                }
-            }
-            family.project(&mut values);
-            write_row::<D>(&mut lanes, i, family, &values);
-        }
-        Ok(lanes.map(SplineCurve::from_spline))
-    }
-
-    /// The two lanes of a stacked work spline when their channels obey the rule (values
-    /// within 1e-12 of it, rounding, projected onto it); `None` otherwise.
-    fn lanes_within_rule(work: &Spline, family: crate::Family) -> Option<[Self; 2]> {
-        let mut lanes = unstack_lanes::<D>(work, W::RATIONAL)?;
-        for i in 0..work.count() {
-            let mut values = joined_row::<D>(&lanes, i, family);
-            if family.check(&values).is_err() {
-                family.check_within(&values, ROUNDING).ok()?;
-                family.project(&mut values);
-                write_row::<D>(&mut lanes, i, family, &values);
-            }
-        }
-        Some(lanes.map(SplineCurve::from_spline))
+    /// The two lanes of a stacked work spline as curves, their channels brought under the
+    /// rule as `off` says ([`lanes_under_rule`]); `None` for a weight that is not positive or
+    /// a refusal.
+    fn lanes_from_work(work: &Spline, family: crate::Family, off: OffRule) -> Option<[Self; 2]> {
+        let mut lanes = unstack_curve_lanes::<D>(work, W::RATIONAL)?;
+        let point = lanes[0].stride;
+        let [a, b] = &mut lanes;
+        lanes_under_rule([&mut a.data, &mut b.data], point, D, family, off)
+            .then(|| lanes.map(SplineCurve::from_spline))
     }
 
     /// The larger deviation of the two lanes from `lanes` ([`SplineCurve::deviation_from`]):
@@ -864,7 +894,7 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
         family: crate::Family,
     ) -> Result<DegreeReduction<[Self; 2]>, ReduceError> {
         assert_eq!(family.lane_count(), 2, "{family} rides in one lane");
-        let work = stack_lanes(lanes);
+        let work = stack_curve_lanes(lanes);
         let layout = crate::reduce::DegreeLayout {
             point: work.stride,
             truth: D,
@@ -876,7 +906,10 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
             &work,
             &layout,
             tolerance,
-            |w| Self::lanes_from_work(w, family),
+            |w| {
+                Self::lanes_from_work(w, family, OffRule::Project)
+                    .ok_or(ReduceError::NonPositiveWeight)
+            },
             |c: &[Self; 2]| Self::lanes_deviation(lanes, c),
         )
     }
@@ -901,11 +934,11 @@ impl<const D: usize, W: Weighting> SplineCurve<D, W> {
         assert_eq!(family.lane_count(), 2, "{family} rides in one lane");
         check_interior_knot(lanes[0].knots(), u)?;
         let (_, shape, removed, error) = remove_while(
-            stack_lanes(lanes),
+            stack_curve_lanes(lanes),
             u,
             times,
             tolerance,
-            |s| Self::lanes_within_rule(s, family),
+            |s| Self::lanes_from_work(s, family, OffRule::Refuse),
             |c: &[Self; 2]| Self::lanes_deviation(lanes, c),
         );
         Ok(KnotRemoval {

@@ -382,9 +382,10 @@ fn degree_reduction_solves_both_lanes_jointly() {
 
 /// Degree reduction at the boundary of the interval-intuitionistic rule: upper truth and
 /// falsity summing to 1 at every control point of an elevated quadratic come back exactly
-/// (within 1e-12), every reduced point obeys the rule, and the file is read back.
+/// (within 1e-12), every reduced point obeys the rule, and the file is read back; an exact
+/// operation on a surface of a wide family acts on each lane alike.
 #[test]
-fn reduction_at_the_rule_boundary_and_refusals() {
+fn reduction_at_the_rule_boundary_and_a_surface_lane_by_lane() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     let quadratic = [
@@ -431,7 +432,7 @@ fn reduction_at_the_rule_boundary_and_refusals() {
         close(c, q, "the quadratic's channels");
         assert!(c[1] + c[3] <= 1.0 && c[0] <= c[1] && c[2] <= c[3], "{c:?}");
     }
-    // A surface of a wide family: reduction and removal refused with the reason.
+    // A surface of a wide family: exact operations work lane by lane.
     let mut surface = String::from(
         "kind = \"bezier-surface\"\nmembership = \"interval-type2\"\nrows = 2\ncols = 2\n",
     );
@@ -441,31 +442,6 @@ fn reduction_at_the_rule_boundary_and_refusals() {
         ));
     }
     std::fs::write(d.join("surf.toml"), surface).unwrap();
-    let out = run_in(
-        d,
-        &[
-            "transform",
-            "surf.toml",
-            "-o",
-            "x.toml",
-            "--reduce",
-            "1",
-            "--tolerance",
-            "1",
-            "--direction",
-            "u",
-        ],
-        None,
-    );
-    assert_eq!(out.code, 1, "{}", out.stderr);
-    assert!(
-        out.stderr.contains(
-            "--reduce on a surface of the interval-type2 family: the channels of its two lanes \
-             would have to be solved together on every line of the net"
-        ),
-        "{}",
-        out.stderr
-    );
     // An exact operation on the surface works lane by lane.
     ok(
         d,
@@ -663,4 +639,260 @@ fn a_rational_wide_curve_elevated_then_reduced_comes_back() {
             }
         }
     }
+}
+
+/// A B-spline surface file of `family` (5 x 4 points, degrees 2 and 3, an interior knot 0.4
+/// in u), 3-D positions, channel values of [`channels`].
+fn surface_toml(family: Family) -> String {
+    let mut text = format!(
+        "kind = \"bspline-surface\"\nmembership = \"{family}\"\nrows = 5\ncols = 4\n\
+         degree_u = 2\ndegree_v = 3\nknots_u = [0, 0, 0, 0.4, 0.7, 1, 1, 1]\n\
+         knots_v = [0, 0, 0, 0, 1, 1, 1, 1]\n"
+    );
+    for k in 0..20 {
+        let (i, j) = ((k / 4) as f64, (k % 4) as f64);
+        text.push_str(&format!(
+            "[[control_points]]\nx = {i}\ny = {j}\nz = {}\n",
+            (i * 0.7 + j * 1.3).sin()
+        ));
+        for (name, value) in family.channels().iter().zip(channels(family, k)) {
+            text.push_str(&format!("{name} = {value}\n"));
+        }
+    }
+    text
+}
+
+/// `--reduce` on a surface of every wide family: the surface elevated in v (exact) and reduced
+/// once in v within 1e-9 exits 0, says what it did, passes `neutrospline check`, and gives
+/// back the original's control channels and positions to 1e-12 (knots included); without
+/// `--direction` it is refused with the reason, and a curve refuses one.
+#[test]
+fn degree_reduction_of_a_surface_of_every_wide_family() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for family in WIDE {
+        std::fs::write(d.join("s.toml"), surface_toml(family)).unwrap();
+        let original = load(&d.join("s.toml"));
+        ok(
+            d,
+            &[
+                "transform",
+                "s.toml",
+                "-o",
+                "up.toml",
+                "--elevate",
+                "1",
+                "--direction",
+                "v",
+            ],
+        );
+        let out = ok(
+            d,
+            &[
+                "transform",
+                "up.toml",
+                "-o",
+                "back.toml",
+                "--reduce",
+                "1",
+                "--tolerance",
+                "1e-9",
+                "--direction",
+                "v",
+            ],
+        );
+        assert!(
+            out.stderr
+                .contains("degree_v 4 -> 3; largest deviation found")
+                && out.stderr.contains(&format!(
+                    "over both lanes (tolerance 1e-9); the channels solved jointly under the \
+                 {family} rule"
+                )),
+            "{}",
+            out.stderr
+        );
+        ok(d, &["check", "back.toml"]);
+        let back = load(&d.join("back.toml"));
+        assert_eq!(back.membership(), family);
+        assert_eq!(back.lanes().len(), 2);
+        let (Shape::Surface(a), Shape::Surface(b)) = (back.shape(), original.shape()) else {
+            unreachable!("surfaces")
+        };
+        assert_eq!(a.knots_v().knots(), b.knots_v().knots(), "{family}");
+        assert_eq!(a.knots_u().knots(), b.knots_u().knots(), "{family}");
+        for (p, q) in a.control_points().iter().zip(b.control_points()) {
+            close(&p.position, &q.position, &format!("{family} positions"));
+        }
+        for (x, y) in back
+            .control_channels()
+            .iter()
+            .zip(original.control_channels())
+        {
+            close(x, &y, &format!("{family} channels"));
+        }
+    }
+    let out = run_in(
+        d,
+        &[
+            "transform",
+            "s.toml",
+            "-o",
+            "x.toml",
+            "--reduce",
+            "1",
+            "--tolerance",
+            "1",
+        ],
+        None,
+    );
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    assert!(
+        out.stderr
+            .ends_with("s.toml: --reduce on a surface needs --direction u or v\n"),
+        "{}",
+        out.stderr
+    );
+    assert!(!d.join("x.toml").exists());
+    // A curve of a wide family takes no direction.
+    std::fs::write(
+        d.join("c.toml"),
+        model_toml(Family::IntervalType2, "bezier", None, &POSITIONS, None),
+    )
+    .unwrap();
+    let out = run_in(
+        d,
+        &[
+            "transform",
+            "c.toml",
+            "-o",
+            "x.toml",
+            "--reduce",
+            "1",
+            "--tolerance",
+            "1",
+            "--direction",
+            "u",
+        ],
+        None,
+    );
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    assert!(
+        out.stderr
+            .ends_with("c.toml: --direction u is for surfaces; this model is a curve\n"),
+        "{}",
+        out.stderr
+    );
+}
+
+/// `--remove-knot` on a surface of every wide family: the knot 0.55 inserted twice in u
+/// comes off twice within 1e-9, exits 0, says so, passes `neutrospline check`, and gives back
+/// the original's knots and control channels to 1e-12; the original knot 0.4 (the data not
+/// made for it) stays, and a value that is not a knot is refused with the knots listed.
+#[test]
+fn knot_removal_of_a_surface_of_every_wide_family() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for family in WIDE {
+        std::fs::write(d.join("s.toml"), surface_toml(family)).unwrap();
+        let original = load(&d.join("s.toml"));
+        ok(
+            d,
+            &[
+                "transform",
+                "s.toml",
+                "-o",
+                "more.toml",
+                "--insert-knot",
+                "0.55,0.55",
+                "--direction",
+                "u",
+            ],
+        );
+        let out = ok(
+            d,
+            &[
+                "transform",
+                "more.toml",
+                "-o",
+                "back.toml",
+                "--remove-knot",
+                "0.55",
+                "--tolerance",
+                "1e-9",
+                "--direction",
+                "u",
+            ],
+        );
+        assert!(
+            out.stderr.contains("removed knot u = 0.55 2 of 2 times"),
+            "{}",
+            out.stderr
+        );
+        ok(d, &["check", "back.toml"]);
+        let back = load(&d.join("back.toml"));
+        let (Shape::Surface(a), Shape::Surface(b)) = (back.shape(), original.shape()) else {
+            unreachable!("surfaces")
+        };
+        close(
+            a.knots_u().knots(),
+            b.knots_u().knots(),
+            &format!("{family} knots"),
+        );
+        for (x, y) in back
+            .control_channels()
+            .iter()
+            .zip(original.control_channels())
+        {
+            close(x, &y, &format!("{family} channels"));
+        }
+        let out = ok(
+            d,
+            &[
+                "transform",
+                "s.toml",
+                "-o",
+                "same.toml",
+                "--remove-knot",
+                "0.4",
+                "--tolerance",
+                "1e-9",
+                "--direction",
+                "u",
+            ],
+        );
+        assert!(
+            out.stderr.contains(
+                "knot u = 0.4 not removed: removing it once would move the curve by more than \
+                 the tolerance 1e-9"
+            ),
+            "{}",
+            out.stderr
+        );
+        ok(d, &["check", "same.toml"]);
+    }
+    let out = run_in(
+        d,
+        &[
+            "transform",
+            "s.toml",
+            "-o",
+            "x.toml",
+            "--remove-knot",
+            "0.5",
+            "--tolerance",
+            "1e-9",
+            "--direction",
+            "v",
+        ],
+        None,
+    );
+    assert_eq!(out.code, 1, "{}", out.stderr);
+    assert!(
+        out.stderr.ends_with(
+            "s.toml: knots_v: 0.5 is not an interior knot (the interior knots are none)\n"
+        ),
+        "{}",
+        out.stderr
+    );
+    assert!(!d.join("x.toml").exists());
 }

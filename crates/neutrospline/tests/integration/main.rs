@@ -32,3 +32,4 @@ mod surface_properties;
 mod surface_transform;
 mod transform_reference;
 mod wide_fit;
+mod wide_surface_transform;
