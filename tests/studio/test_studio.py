@@ -409,6 +409,21 @@ def test_points_rules_files_data_and_camera(start_studio, page, binary, out_dir,
     assert m["membership"] == "pythagorean"
     assert "indeterminacy" not in m["control_points"][1]
     assert page.locator("input[name=indeterminacy]").is_disabled()
+    # The views the family cannot draw: unticked, disabled, the reason as the title (no
+    # command-line flag in it); the panel is not shown. The derived view draws the hesitation.
+    box = page.locator('#view-toggles input[value="indeterminacy"]')
+    assert box.is_disabled() and not box.is_checked()
+    label = page.locator("#view-toggles label", has=page.locator('input[value="indeterminacy"]'))
+    reason = label.get_attribute("title")
+    assert reason == (
+        "the view `indeterminacy` does not draw pythagorean models: pythagorean degrees are "
+        "truth and falsity (no indeterminacy); draw the view `truth` or `falsity`"
+    ), reason
+    assert page.locator('figure.panel[data-view="indeterminacy"]').is_hidden()
+    assert not page.locator('#view-toggles input[value="derived"]').is_disabled()
+    assert page.locator(".view-error").count() == 0 or all(
+        "--view" not in e for e in page.locator(".view-error").all_inner_texts()
+    )
     header = page.locator("#table-host thead").inner_text().split()
     assert header[-3:] == ["truth", "falsity", "hesitation"], header
     page.fill("input[name=truth]", "0.9")
@@ -425,6 +440,9 @@ def test_points_rules_files_data_and_camera(start_studio, page, binary, out_dir,
     page.select_option("#model-membership", "neutrosophic")
     idle(page)
     assert model(page)["membership"] == "neutrosophic" and "q" not in model(page)
+    # Ticked again when the family draws it; a neutrosophic model derives no degrees.
+    assert page.locator('#view-toggles input[value="indeterminacy"]').is_checked()
+    assert page.locator('#view-toggles input[value="derived"]').is_disabled()
 
     # Open a file through the picker; a broken knot list is refused next to its field.
     page.set_input_files("#open-file", str(ROOT / "examples" / "bspline.toml"))

@@ -359,7 +359,8 @@ mod tests {
         }
     }
 
-    /// The wide families' figures (interval-valued and bipolar, tests/wide/) at every size,
+    /// The wide families' figures (interval-valued and bipolar, tests/wide/) and two families'
+    /// examples (their score and derived views) at every size,
     /// in every view they draw: texts on the canvas, the legend clear of the labels.
     #[test]
     fn audit_wide_families_every_size_keeps_texts_and_legend_clear() {
@@ -368,6 +369,18 @@ mod tests {
             ("type2.toml", include_str!("../tests/wide/type2.toml")),
             ("bipolar.toml", include_str!("../tests/wide/bipolar.toml")),
             ("surface.toml", include_str!("../tests/wide/surface.toml")),
+            (
+                "bipolar-surface.toml",
+                include_str!("../tests/wide/bipolar-surface.toml"),
+            ),
+            (
+                "pythagorean.toml",
+                include_str!("../../../examples/families/pythagorean.toml"),
+            ),
+            (
+                "picture.toml",
+                include_str!("../../../examples/families/picture.toml"),
+            ),
         ];
         let mut drawn = 0;
         for (name, text) in files {
@@ -386,7 +399,7 @@ mod tests {
             };
             for (w, h) in SIZES {
                 let options = options.clone().with_size(w, h);
-                for view in View::MODEL {
+                for view in View::MODEL.into_iter().chain([View::Derived]) {
                     if model.check_view(view).is_err() {
                         continue;
                     }
@@ -401,8 +414,10 @@ mod tests {
                 }
             }
         }
-        // interval: truth, indeterminacy, falsity, all; type-2: truth, all; bipolar: four;
-        // surface: truth, indeterminacy, falsity; at four sizes.
-        assert_eq!(drawn, 4 * (4 + 2 + 4 + 3));
+        // interval: truth, indeterminacy, falsity, all, score; type-2: truth, all, score,
+        // derived; bipolar: four and score; surface: truth, indeterminacy, falsity, score;
+        // bipolar surface: the same; pythagorean: truth, falsity, score, derived; picture:
+        // every view of a model; at four sizes.
+        assert_eq!(drawn, 4 * (5 + 4 + 5 + 4 + 4 + 4 + 8));
     }
 }

@@ -118,7 +118,7 @@ fn coloured_curve(scene: &mut Scene, ctx: &Ctx, axes: &Axes3, q: Quantity) -> Ve
     let class = format!("curve {}", q.name());
     if pts.len() == 1 {
         let p = pts[0];
-        let c = theme::colormap(q.at(&ctx.curve[0]));
+        let c = q.colour_of(q.at(&ctx.curve[0]));
         scene.push(
             OVER,
             p.2,
@@ -136,7 +136,7 @@ fn coloured_curve(scene: &mut Scene, ctx: &Ctx, axes: &Axes3, q: Quantity) -> Ve
             (a.2 + b.2) / 2.0,
             Shape::Polyline(
                 vec![(a.0, a.1), (b.0, b.1)],
-                Style::stroke(theme::colormap(v), th.curve_w()).with_class(&class),
+                Style::stroke(q.colour_of(v), th.curve_w()).with_class(&class),
             ),
         );
     }
@@ -154,7 +154,7 @@ fn colour_markers(scene: &mut Scene, ctx: &Ctx, ctrl: &[(f64, f64, f64)], q: Qua
                 Marker::Circle,
                 (p.0, p.1),
                 th.marker_r(),
-                marker_style(th, theme::colormap(q.at(c))).with_class("control-point"),
+                marker_style(th, q.colour_of(q.at(c))).with_class("control-point"),
             ),
         );
     }
@@ -181,6 +181,7 @@ pub(crate) fn coloured_legend(th: &Theme, bar: &str, noun: &str, notes: Vec<Stri
         colorbar: Some(ColorBar {
             label: bar.to_string(),
             length: 0.62,
+            range: (0.0, 1.0),
         }),
     }
 }

@@ -5,7 +5,7 @@
 #[non_exhaustive]
 pub enum PlotError {
     /// A view that would misdraw the degrees of the model's membership family.
-    #[error("--view {view} does not draw {family} models: {reason}")]
+    #[error("the view `{view}` does not draw {family} models: {reason}")]
     FamilyView {
         /// The view's name.
         view: String,
@@ -15,7 +15,7 @@ pub enum PlotError {
         reason: String,
     },
     /// A view name that [`View`](crate::View) does not know.
-    #[error("unknown view \"{name}\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, data, band)")]
+    #[error("unknown view \"{name}\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, derived, data, band)")]
     UnknownView {
         /// The name given.
         name: String,

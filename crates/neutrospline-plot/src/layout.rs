@@ -261,12 +261,15 @@ impl Entry {
     }
 }
 
-/// A vertical colour bar for degree values in \[0, 1\].
+/// A vertical colour bar for values in `range` (degrees: \[0, 1\]; a signed score:
+/// \[-1, 1\]), the colour map spread over it.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct ColorBar {
     pub label: String,
     /// Length relative to the default (13 legend font sizes).
     pub length: f64,
+    /// The values at the bottom and the top of the bar.
+    pub range: (f64, f64),
 }
 
 /// The legend column: entries, notes, and an optional colour bar.
@@ -339,7 +342,11 @@ impl Legend {
         }
         if let Some(bar) = &self.colorbar {
             let label_w = text_width(&bar.label, theme.legend(), true);
-            let tick_w = text_width("0.0", theme.tick(), false);
+            let tick_w = if bar.range.0 < 0.0 {
+                text_width("\u{2212}1.0", theme.tick(), false)
+            } else {
+                text_width("0.0", theme.tick(), false)
+            };
             w = w
                 .max(label_w)
                 .max(m.bar_w + theme.tick_len() + theme.gap() + tick_w);
@@ -505,9 +512,10 @@ impl Legend {
                 &Style::stroke(theme::AXIS, theme.grid_w()).square(),
             );
             let target = ((bar_h / (1.7 * theme.tick())) as usize).clamp(1, 5);
-            let ticks = ticks_inside(0.0, 1.0, target);
+            let (lo, hi) = bar.range;
+            let ticks = ticks_inside(lo, hi, target);
             for (v, label) in ticks.values.iter().zip(ticks.labels()) {
-                let ty = top + bar_h * (1.0 - v);
+                let ty = top + bar_h * (1.0 - (v - lo) / (hi - lo));
                 let tx = bx + m.bar_w;
                 svg.line(
                     (tx, ty),

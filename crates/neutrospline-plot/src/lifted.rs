@@ -18,15 +18,20 @@ use crate::theme::{self, marker_style, Marker};
 use crate::ticks::{padded, ticks_inside, ticks_loose};
 
 /// How the lifted curves of a view look.
-pub(crate) struct Look {
+pub(crate) struct Look<'a> {
     /// The name of the vertical axis.
-    pub axis: &'static str,
+    pub axis: &'a str,
     /// Whether a translucent curtain hangs from each lifted curve down to the floor.
     pub curtain: bool,
     /// The width of the lifted control polygons.
     pub polygon_w: f64,
     /// The marker of the lifted control points of a quantity.
     pub marker: fn(Quantity) -> Marker,
+    /// Whether the control polygon is lifted to the control points' values: only where the
+    /// quantity is affine in the blended values, so that the lifted curve is the curve of the
+    /// lifted control polygon (a non-affine family score, such as `T^2 - F^2`, is not; its
+    /// curve is sampled, and no lifted polygon is drawn).
+    pub lift_controls: bool,
 }
 
 /// The crisp control polygon (dashed, with small markers) and the crisp curve on the
@@ -75,7 +80,9 @@ fn crisp_floor(
 
 /// Paper Fig. 2-5: the space curves (x, y, q) of the quantities `kinds` above the crisp
 /// curve, with the legend `entries` (the view's curves and control polygons; the crisp curve
-/// and control polygon are added after them) and `notes`.
+/// and control polygon are added after them) and `notes`. The vertical axis spans the first
+/// quantity's range (\[0, 1\], or \[-1, 1\] for a signed score, the crisp curve then in the
+/// middle at 0).
 pub(crate) fn figure(
     ctx: &Ctx,
     kinds: &[Quantity],
@@ -108,8 +115,14 @@ pub(crate) fn figure(
     let (y0, y1) = padded(ctx.extent(1).0, ctx.extent(1).1, 0.03);
     let xt = ticks_loose(x0, x1, 5);
     let yt = ticks_loose(y0, y1, 5);
-    let zt = ticks_inside(0.0, 1.0, 5);
-    let len = box_lengths([&xt, &yt], 0.62);
+    let (z0, z1) = kinds.first().map_or((0.0, 1.0), |q| q.range());
+    let signed = z0 < 0.0;
+    let zt = if signed {
+        ticks_inside(z0, z1, 4)
+    } else {
+        ticks_inside(z0, z1, 5)
+    };
+    let len = box_lengths([&xt, &yt], if signed { 0.8 } else { 0.62 });
     let axes = Axes3::new(
         frame.plot,
         [xt, yt, zt],
@@ -126,28 +139,29 @@ pub(crate) fn figure(
     let s3 = |p: &Pt, z: f64| axes.screen([p.pos[0], p.pos[1], z]);
     // Crisp control polygon and crisp curve on the degree-0 plane.
     let (fl_ctrl, fl_curve) = crisp_floor(&mut scene, &mut obstacles, ctx, &s3);
-    // Drop lines from each lifted control point (the highest of the kinds) to the floor.
+    // Drop lines from each lifted control point (the farthest from 0 of the kinds) to the
+    // floor; the names sit at the crisp control points when the polygon is not lifted.
     let tops: Vec<(f64, f64, f64)> = ctx
         .controls
         .iter()
         .map(|p| {
-            let top = kinds
-                .iter()
-                .map(|q| theme::unit(q.at(p)))
-                .fold(0.0, f64::max);
-            s3(p, top)
+            let top =
+                kinds
+                    .iter()
+                    .map(|q| q.height(p))
+                    .fold(0.0, |a: f64, b| if b.abs() > a.abs() { b } else { a });
+            s3(p, if look.lift_controls { top } else { 0.0 })
         })
         .collect();
-    for (a, b) in tops.iter().zip(&fl_ctrl) {
-        obstacles.extend(drop_line(&mut scene, th, *a, *b));
+    if look.lift_controls {
+        for (a, b) in tops.iter().zip(&fl_ctrl) {
+            obstacles.extend(drop_line(&mut scene, th, *a, *b));
+        }
     }
     for &kind in kinds {
         let c = kind.color();
-        let lifted: Vec<(f64, f64, f64)> = ctx
-            .curve
-            .iter()
-            .map(|p| s3(p, theme::unit(kind.at(p))))
-            .collect();
+        let lifted: Vec<(f64, f64, f64)> =
+            ctx.curve.iter().map(|p| s3(p, kind.height(p))).collect();
         if look.curtain {
             // A translucent curtain between the space curve and its shadow.
             let mut i = 0;
@@ -167,11 +181,18 @@ pub(crate) fn figure(
                 i = j;
             }
         }
-        let lifted_ctrl: Vec<(f64, f64, f64)> = ctx
-            .controls
-            .iter()
-            .map(|p| s3(p, theme::unit(kind.at(p))))
-            .collect();
+        scene.polyline(
+            DATA,
+            &lifted,
+            CHUNK,
+            &Style::stroke(c, th.curve_w()).with_class(&format!("curve {}", kind.name())),
+        );
+        obstacles.extend(obstacles_of(&flat(&lifted), th.curve_w() / 2.0));
+        if !look.lift_controls {
+            continue;
+        }
+        let lifted_ctrl: Vec<(f64, f64, f64)> =
+            ctx.controls.iter().map(|p| s3(p, kind.height(p))).collect();
         scene.polyline(
             DATA,
             &lifted_ctrl,
@@ -180,13 +201,6 @@ pub(crate) fn figure(
                 .with_dash(th.dash().0, th.dash().1)
                 .with_class(&format!("control-polygon {}", kind.name())),
         );
-        scene.polyline(
-            DATA,
-            &lifted,
-            CHUNK,
-            &Style::stroke(c, th.curve_w()).with_class(&format!("curve {}", kind.name())),
-        );
-        obstacles.extend(obstacles_of(&flat(&lifted), th.curve_w() / 2.0));
         obstacles.extend(obstacles_of(&flat(&lifted_ctrl), 0.0));
         let shape = (look.marker)(kind);
         for p in &lifted_ctrl {
@@ -269,7 +283,14 @@ pub(crate) fn wide_figure(
         theme::CRISP,
         th.crisp_w(),
         None,
-        "crisp curve (degree 0)",
+        &format!(
+            "crisp curve ({} 0)",
+            if look.axis == "membership" {
+                "membership"
+            } else {
+                "degree"
+            }
+        ),
     ));
     entries.push(Entry::line(
         theme::SHADOW,

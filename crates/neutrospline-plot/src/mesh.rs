@@ -108,7 +108,7 @@ fn add_mesh(scene: &mut Scene, th: &Theme, axes: &Axes3, mesh: &Mesh, paint: Pai
             let c = [(a, b), (a + 1, b), (a + 1, b + 1), (a, b + 1)];
             let q = c.map(|(i, j)| at(i, j));
             let base = match paint {
-                Paint::By(q) => theme::colormap(mesh.cell_value(a, b, q)),
+                Paint::By(q) => q.colour_of(mesh.cell_value(a, b, q)),
                 Paint::Neutral => theme::SURFACE,
             };
             let fill = shaded(base, lambert(axes, face_normal(mesh, c)));
@@ -256,6 +256,7 @@ pub(crate) fn quantity_legend(th: &Theme, bar: &str, noun: &str, notes: Vec<Stri
         colorbar: Some(ColorBar {
             label: bar.to_string(),
             length: 0.62,
+            range: (0.0, 1.0),
         }),
     }
 }
@@ -273,7 +274,7 @@ pub(crate) fn mesh_panel(
     let th = &ctx.theme;
     let axes = ctx.draw_box(svg, area, avoid);
     draw_mesh(svg, th, &axes, mesh, Paint::By(q));
-    let colour = |k: usize| theme::colormap(q.at(&ctx.controls[k]));
+    let colour = |k: usize| q.colour_of(q.at(&ctx.controls[k]));
     draw_net(svg, ctx, &axes, mesh, grid, theme::CONSTRUCTION, &colour);
 }
 

@@ -578,13 +578,14 @@ impl PlotModel {
         self.second.as_deref()
     }
 
-    /// Refuses a view that would misdraw the degrees of this model's family. The views draw
-    /// truth, indeterminacy and falsity, and score the degrees by the neutrosophic score
-    /// `(2 + T - I - F) / 3` (docs/model.md section 7). A family outside the original three
-    /// that does not carry indeterminacy (the orthopair families: pythagorean, q-rung, ...)
-    /// has no indeterminacy to draw, and the score of every family but the neutrosophic one
-    /// is its own (SPEC sections 7 and 10, `eval --scores`: the intuitionistic score is
-    /// T - F, the fuzzy score T), so the score view is refused for them.
+    /// Refuses a view that would misdraw the degrees of this model's family, or that has
+    /// nothing to draw for it. The `score` view draws the family's own score
+    /// ([`neutrospline::Family::score`]) and the `derived` view its derived degrees
+    /// ([`neutrospline::Family::derived`]), refused for a family that derives none
+    /// (neutrosophic, fuzzy, interval-neutrosophic, bipolar-neutrosophic). The other views
+    /// draw truth, indeterminacy and falsity: a family outside the original three that does
+    /// not carry indeterminacy (the orthopair families: pythagorean, q-rung, ...) has no
+    /// indeterminacy to draw.
     ///
     /// The interval-valued and bipolar families carry two values per degree (docs/model.md,
     /// "Lanes"). Their `truth`, `indeterminacy` and `falsity` views draw both (a 2-D curve:
@@ -593,7 +594,10 @@ impl PlotModel {
     /// one per lane), and the `all` view of a 2-D curve draws every degree's pair. The views
     /// that draw one value per degree are refused: `controls` (three bars per point), `plane`
     /// (three lanes whose widths are the degrees), `data` (data points coloured by one
-    /// degree), `score`, and `all` of a 3-D curve or surface (one panel per degree).
+    /// degree), and `all` of a 3-D curve or surface (one panel per degree).
+    ///
+    /// The messages name views as `` the view `truth` ``, for the command line's `--view` and
+    /// the studio's view boxes alike.
     ///
     /// ```
     /// use neutrospline_io::{parse, Format, ReadOptions};
@@ -604,11 +608,12 @@ impl PlotModel {
     /// let model = parse("fou.toml", Format::Toml, text.as_bytes(), &ReadOptions::default())?;
     /// let figure = PlotModel::from_model(&model)?;
     /// assert!(figure.check_view(View::Truth).is_ok());
+    /// assert!(figure.check_view(View::Score).is_ok());
     /// assert_eq!(
     ///     figure.check_view(View::Falsity).unwrap_err().to_string(),
-    ///     "--view falsity does not draw interval-type2 models: interval type-2 degrees are a \
-    ///      lower and an upper membership, held as truth_lower and truth_upper; give --view \
-    ///      truth (or all) for the footprint of uncertainty between them"
+    ///     "the view `falsity` does not draw interval-type2 models: interval type-2 degrees are \
+    ///      a lower and an upper membership, held as truth_lower and truth_upper; draw the view \
+    ///      `truth` (or `all`) for the footprint of uncertainty between them"
     /// );
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
@@ -619,28 +624,40 @@ impl PlotModel {
         use crate::View;
         use neutrospline::{DegreeKind, Family};
         let family = self.family;
-        if family == Family::Neutrosophic
-            || (matches!(family, Family::Intuitionistic | Family::Fuzzy) && view != View::Score)
+        let reason = if view == View::Score {
+            return Ok(());
+        } else if view == View::Derived {
+            if !family.derived_names().is_empty() {
+                return Ok(());
+            }
+            let views: Vec<String> = View::ALL
+                .into_iter()
+                .filter(|&v| !matches!(v, View::Derived | View::Data | View::Band))
+                .filter(|&v| self.check_view(v).is_ok())
+                .map(|v| format!("`{v}`"))
+                .collect();
+            format!(
+                "the derived view draws the degrees a family derives from its channels \
+                 (hesitation, refusal, footprint, ...), and {family} degrees derive none; the \
+                 views of this model are {}",
+                views.join(", ")
+            )
+        } else if family == Family::Neutrosophic
+            || matches!(family, Family::Intuitionistic | Family::Fuzzy)
         {
             return Ok(());
-        }
-        let needs_indeterminacy = matches!(
-            view,
-            View::Indeterminacy | View::All | View::Plane | View::Controls
-        );
-        let reason = if view == View::Score {
-            format!(
-                "the score view draws the neutrosophic score (2 + T - I - F) / 3, not the {family} \
-                 score; `eval --scores` gives the {family} score along the curve"
-            )
         } else if self.second.is_some() {
             match self.wide_refusal(view) {
                 Some(reason) => reason,
                 None => return Ok(()),
             }
-        } else if needs_indeterminacy && !family.carries(DegreeKind::Indeterminacy) {
+        } else if matches!(
+            view,
+            View::Indeterminacy | View::All | View::Plane | View::Controls
+        ) && !family.carries(DegreeKind::Indeterminacy)
+        {
             format!(
-                "{family} degrees are {} (no indeterminacy); give --view truth or --view falsity",
+                "{family} degrees are {} (no indeterminacy); draw the view `truth` or `falsity`",
                 family.channels().join(" and ")
             )
         } else {
@@ -664,24 +681,24 @@ impl PlotModel {
         };
         let channels = family.channels().join(", ");
         let degree_views = match family {
-            Family::IntervalType2 => "--view truth (or all)",
-            Family::IntervalIntuitionistic => "--view truth, falsity or all",
-            _ => "--view truth, indeterminacy, falsity or all",
+            Family::IntervalType2 => "the view `truth` (or `all`)",
+            Family::IntervalIntuitionistic => "the view `truth`, `falsity` or `all`",
+            _ => "the view `truth`, `indeterminacy`, `falsity` or `all`",
         };
         let one_degree = match family {
-            Family::IntervalType2 => "--view truth",
-            Family::IntervalIntuitionistic => "--view truth or falsity",
-            _ => "--view truth, indeterminacy or falsity",
+            Family::IntervalType2 => "the view `truth`",
+            Family::IntervalIntuitionistic => "the view `truth` or `falsity`",
+            _ => "the view `truth`, `indeterminacy` or `falsity`",
         };
         match view {
             View::Controls => Some(format!(
                 "the controls view draws one truth, indeterminacy and falsity bar per control \
-                 point, and {family} points carry {pairs} per degree ({channels}); give \
+                 point, and {family} points carry {pairs} per degree ({channels}); draw \
                  {degree_views}"
             )),
             View::Plane => Some(format!(
                 "the plane view widens three lanes by one truth, indeterminacy and falsity, and \
-                 {family} degrees carry {pairs} each ({channels}); give {degree_views}"
+                 {family} degrees carry {pairs} each ({channels}); draw {degree_views}"
             )),
             View::Data => Some(format!(
                 "the data view colours data points by one degree, and {family} degrees carry \
@@ -689,18 +706,18 @@ impl PlotModel {
             )),
             View::All if self.dimension == 3 || self.is_surface() => Some(format!(
                 "the all view of a 3-D curve or a surface draws one panel per degree, and \
-                 {family} degrees carry {pairs} each; give {one_degree} for two panels, one per \
-                 lane"
+                 {family} degrees carry {pairs} each; draw {one_degree} for two panels, one \
+                 per lane"
             )),
             View::Indeterminacy | View::Falsity if family == Family::IntervalType2 => Some(
                 "interval type-2 degrees are a lower and an upper membership, held as \
-                 truth_lower and truth_upper; give --view truth (or all) for the footprint of \
-                 uncertainty between them"
+                 truth_lower and truth_upper; draw the view `truth` (or `all`) for the \
+                 footprint of uncertainty between them"
                     .to_string(),
             ),
             View::Indeterminacy if family == Family::IntervalIntuitionistic => Some(format!(
-                "interval-intuitionistic degrees are {channels} (no indeterminacy); give --view \
-                 truth or --view falsity"
+                "interval-intuitionistic degrees are {channels} (no indeterminacy); draw the \
+                 view `truth` or `falsity`"
             )),
             _ => None,
         }

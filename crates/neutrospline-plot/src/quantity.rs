@@ -1,6 +1,8 @@
-//! What a single-quantity figure shows: one of the three degrees, or the score of the
-//! degrees (docs/model.md section 7). The lifted curves, the coloured 3-D curves and the
-//! coloured meshes take a [`Quantity`]: its name, colour and value from a point's degrees.
+//! What a single-quantity figure shows: one of the three degrees, the neutrosophic score of
+//! the degrees (docs/model.md section 7), or a family's measure (its score or a derived
+//! degree, docs/model.md "Membership families") computed beforehand into a slot of the
+//! point. The lifted curves, the coloured 3-D curves and the coloured meshes take a
+//! [`Quantity`]: its name, colour, range and value from a point's degrees.
 
 use neutrospline::DegreeKind;
 
@@ -8,13 +10,25 @@ use crate::point::Pt;
 use crate::style::Color;
 use crate::theme::{self, Marker};
 
-/// A value in \[0, 1\] read off a point's degrees: one degree, or the score.
+/// A value read off a point's degrees: one degree, the score, or a family's measure held in
+/// a slot.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Quantity {
     /// The degree of this kind.
     Degree(DegreeKind),
     /// The score `(2 + T - I - F) / 3` ([`neutrospline::Degrees::score`]).
     Score,
+    /// A family's score or derived degree, computed from the blended channels and held in
+    /// degree slot `slot` of the measured points (`views::measure`).
+    Measured {
+        /// The slot (0, 1 or 2) of [`Pt::deg`] that holds it.
+        slot: usize,
+        /// Its name: `score`, `hesitation`, `refusal`, `type_reduced`, ...
+        name: &'static str,
+        /// Whether it ranges over \[-1, 1\] (the orthopair, picture, spherical and
+        /// interval-intuitionistic scores) rather than \[0, 1\].
+        signed: bool,
+    },
 }
 
 impl From<DegreeKind> for Quantity {
@@ -36,14 +50,17 @@ impl Quantity {
         match self {
             Quantity::Degree(kind) => kind.name(),
             Quantity::Score => "score",
+            Quantity::Measured { name, .. } => name,
         }
     }
 
     /// What it is, in legend texts ("coloured by the degree", "crisp curve (degree 0)").
-    pub(crate) const fn noun(self) -> &'static str {
+    pub(crate) fn noun(self) -> &'static str {
         match self {
             Quantity::Degree(_) => "degree",
             Quantity::Score => "score",
+            Quantity::Measured { name: "score", .. } => "score",
+            Quantity::Measured { .. } => "degree",
         }
     }
 
@@ -51,7 +68,8 @@ impl Quantity {
     pub(crate) fn color(self) -> Color {
         match self {
             Quantity::Degree(kind) => theme::degree_color(kind),
-            Quantity::Score => theme::SCORE,
+            Quantity::Score | Quantity::Measured { slot: 0, .. } => theme::SCORE,
+            Quantity::Measured { .. } => theme::DERIVED_SECOND,
         }
     }
 
@@ -59,7 +77,8 @@ impl Quantity {
     pub(crate) fn marker(self) -> Marker {
         match self {
             Quantity::Degree(kind) => theme::degree_marker(kind),
-            Quantity::Score => Marker::Circle,
+            Quantity::Score | Quantity::Measured { slot: 0, .. } => Marker::Circle,
+            Quantity::Measured { .. } => Marker::Square,
         }
     }
 
@@ -68,6 +87,7 @@ impl Quantity {
         match self {
             Quantity::Degree(kind) => deg[kind.index()],
             Quantity::Score => score(deg),
+            Quantity::Measured { slot, .. } => deg[slot],
         }
     }
 
@@ -76,12 +96,43 @@ impl Quantity {
         self.value(p.deg)
     }
 
+    /// The range of its values: \[-1, 1\] for a signed measure, else \[0, 1\].
+    pub(crate) fn range(self) -> (f64, f64) {
+        match self {
+            Quantity::Measured { signed: true, .. } => (-1.0, 1.0),
+            _ => (0.0, 1.0),
+        }
+    }
+
+    /// Its value at a point for display: clamped to [`Quantity::range`], NaN as 0.
+    pub(crate) fn height(self, p: &Pt) -> f64 {
+        let v = self.at(p);
+        let (lo, hi) = self.range();
+        if v.is_finite() {
+            v.clamp(lo, hi)
+        } else {
+            0.0
+        }
+    }
+
+    /// Where value `v` lies in [`Quantity::range`], from 0 to 1: the colour map's argument.
+    pub(crate) fn fraction(self, v: f64) -> f64 {
+        let (lo, hi) = self.range();
+        theme::unit((v - lo) / (hi - lo))
+    }
+
+    /// The colour of value `v` on the colour map over [`Quantity::range`].
+    pub(crate) fn colour_of(self, v: f64) -> Color {
+        theme::colormap(self.fraction(v))
+    }
+
     /// Legend notes that say what it is (the score's formula, written without spaces so that
     /// the legend never breaks it; none for a degree).
     pub(crate) fn notes(self) -> Vec<String> {
         match self {
             Quantity::Degree(_) => Vec::new(),
             Quantity::Score => vec!["score = (2+T\u{2212}I\u{2212}F)/3".to_string()],
+            Quantity::Measured { .. } => Vec::new(),
         }
     }
 }

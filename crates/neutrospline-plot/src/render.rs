@@ -65,9 +65,11 @@ pub fn render_drawing(
     options: &PlotOptions,
 ) -> Result<Drawing, PlotError> {
     model.check_view(view)?;
-    let wide_figure = model
-        .second_lane()
-        .and_then(|_| views::wide_figure(view, model.family()));
+    let wide_figure = views::family_figure(view, model.family()).or_else(|| {
+        model
+            .second_lane()
+            .and_then(|_| views::wide_figure(view, model.family()))
+    });
     let figure: &dyn views::Figure = match &wide_figure {
         Some(f) => f.as_ref(),
         None => views::figure(view),

@@ -32,6 +32,9 @@ pub(crate) const KNOT: Color = Color(0xff, 0xff, 0xff);
 pub(crate) const RESIDUAL: Color = Color(0xcc, 0x33, 0x11);
 /// The lifted score curve (Paul Tol's bright green: apart from the three degree colours).
 pub(crate) const SCORE: Color = Color(0x22, 0x88, 0x33);
+/// The second derived degree of a family (the footprint of interval type-2, the upper
+/// hesitation of interval intuitionistic), next to the first in [`SCORE`]'s green.
+pub(crate) const DERIVED_SECOND: Color = Color(0x88, 0x33, 0x99);
 /// The centroid curve of the band view (orange: apart from the blue bands and the grey curve).
 pub(crate) const CENTROID: Color = Color(0xdd, 0x77, 0x00);
 /// Background of the degree lanes of the plane view.

@@ -9,7 +9,7 @@ use crate::error::PlotError;
 
 /// Which figure to draw. Names (for [`FromStr`] and [`Display`](fmt::Display)) are the
 /// lowercase variant names: `controls`, `truth`, `indeterminacy`, `falsity`, `all`, `plane`,
-/// `score`, `data`, `band`.
+/// `score`, `derived`, `data`, `band`.
 ///
 /// | view | 2-D model (the paper's figures) | 3-D model | surface |
 /// |---|---|---|---|
@@ -17,7 +17,8 @@ use crate::error::PlotError;
 /// | `truth`, `indeterminacy`, `falsity` | Fig. 2-4: space curve `(x, y, degree)` with its control polygon above the crisp curve (its shadow on the degree = 0 plane) | the 3-D curve coloured by that degree, with a colour bar and its shadow on the floor | the shaded mesh coloured by that degree, with the control net and a colour bar |
 /// | `all` | Fig. 5: the three space curves in one box | three panels, one per degree, sharing a colour bar | three meshes, one per degree, sharing a colour bar |
 /// | `plane` | crisp curve with three bands along it whose widths are the degrees | the same bands along the curve's projection in the 3-D box | three heat maps of the degrees over the parameter domain (u, v), with knot lines |
-/// | `score` | the space curve `(x, y, score)` like Fig. 2-4, the score `(2 + T - I - F) / 3` of the degrees ([`neutrospline::Degrees::score`]) as the height, its control polygon lifted to the control points' scores | the 3-D curve coloured by the score, with a colour bar | the shaded mesh coloured by the score, with the control net and a colour bar |
+/// | `score` | the space curve `(x, y, score)` like Fig. 2-4, the family's score ([`neutrospline::Family::score`]: `(2 + T - I - F) / 3` for the neutrosophic family, `T - F` intuitionistic, `T^2 - F^2` Pythagorean, ...) as the height, sampled from the blended channels; the control polygon lifted to the control points' scores where the score is affine in the channels, else not drawn | the 3-D curve coloured by the score, with a colour bar | the shaded mesh coloured by the score, with the control net and a colour bar |
+/// | `derived` | the family's derived degrees ([`neutrospline::Family::derived`]: hesitation, refusal, type-reduced membership and footprint, ...) drawn like `score`, one space curve each, sampled from the blended channels | the 3-D curve coloured by the derived degree (one panel per derived degree) | the mesh coloured by the derived degree (one panel each) |
 /// | `band` | the plane view of the fuzzy position (control point spreads, SPEC section 9): the region swept by the curve's alpha-cut at alpha = 0, 0.5 and 1 ([`PlotOptions::with_alphas`](crate::PlotOptions::with_alphas)), lighter for lower alpha, the crisp curve on top and the centroid curve dashed where it differs | the silhouette of the tube of alpha-cut boxes in the 3-D box | none: an error ([`PlotError::BandOnSurface`]) |
 /// | `data` | the curve fitted to measured data ([`PlotModel::with_data`](crate::PlotModel::with_data)) as a line on x-y axes, the data points as markers coloured by one degree (viridis, with a colour bar), a residual whisker from each point to its point of the curve | the same in the 3-D box, with the curve's shadow on the floor | the fitted surface's mesh coloured by the same degree, with the data points and their whiskers to the surface at their `(u, v)` (or its nearest point) over it |
 ///
@@ -29,9 +30,10 @@ use crate::error::PlotError;
 /// # Ok::<(), neutrospline_plot::PlotError>(())
 /// ```
 ///
+/// The `derived` view needs a family with derived degrees ([`neutrospline::Family::derived_names`]).
 /// The `data` view needs a model with data points; without them it is an error
 /// ([`PlotError::NoData`]). [`View::MODEL`] lists the views that draw any model (not `band`,
-/// which draws curves only, nor `data`).
+/// which draws curves only, nor `data`, nor `derived`).
 ///
 /// More views may come: the enum is `#[non_exhaustive]`, so a `match` on it outside this crate
 /// needs a wildcard arm; [`View::ALL`] lists the views there are.
@@ -50,11 +52,20 @@ pub enum View {
     All,
     /// A flat view: the three degrees as bands along the crisp curve.
     Plane,
-    /// The score of the degrees, `(2 + T - I - F) / 3` (docs/model.md section 7), drawn like
-    /// a degree: as the height of the space curve of a 2-D model, as the colour of a 3-D
-    /// curve or a surface. It is affine in the degrees, so the score of the curve is the
-    /// curve of the control points' scores.
+    /// The family's score ([`neutrospline::Family::score`]; `(2 + T - I - F) / 3` for the
+    /// neutrosophic family, docs/model.md section 7), drawn like a degree: as the height of
+    /// the space curve of a 2-D model, as the colour of a 3-D curve or a surface. It is
+    /// sampled from the channels blended at each parameter; only where it is affine in the
+    /// channels (every linear family) is the score of the curve the curve of the control
+    /// points' scores, and the control polygon lifted to them.
     Score,
+    /// The degrees the model's family derives from its channels ([`neutrospline::Family::derived`]:
+    /// the hesitation `(1 - T^q - F^q)^(1/q)` of the orthopair families, the picture refusal
+    /// `1 - T - I - F`, the type-reduced membership and footprint of interval type-2, ...),
+    /// drawn like a degree and sampled from the blended channels (docs/model.md, "Membership
+    /// families"). A family that derives none (neutrosophic, fuzzy, interval-neutrosophic,
+    /// bipolar) is refused ([`PlotModel::check_view`](crate::PlotModel::check_view)).
+    Derived,
     /// Measured data points next to the curve fitted to them, with residual whiskers
     /// ([`PlotModel::with_data`](crate::PlotModel::with_data)).
     Data,
@@ -64,8 +75,8 @@ pub enum View {
 }
 
 impl View {
-    /// Every view, in the paper's order, then `plane`, `score`, `data` and `band`.
-    pub const ALL: [View; 9] = [
+    /// Every view, in the paper's order, then `plane`, `score`, `derived`, `data` and `band`.
+    pub const ALL: [View; 10] = [
         View::Controls,
         View::Truth,
         View::Indeterminacy,
@@ -73,31 +84,36 @@ impl View {
         View::All,
         View::Plane,
         View::Score,
+        View::Derived,
         View::Data,
         View::Band,
     ];
 
-    /// The views that draw any model (every view but `data`, which needs data points, and
-    /// `band`, which draws curves only), in the order of [`View::ALL`].
+    /// The views that draw any model (every view but `derived`, which needs a family with
+    /// derived degrees, `data`, which needs data points, and `band`, which draws curves
+    /// only), in the order of [`View::ALL`].
     pub const MODEL: [View; 7] = {
         let mut model = [View::Controls; 7];
         let (mut i, mut kept) = (0, 0);
         while i < View::ALL.len() {
-            if !matches!(View::ALL[i], View::Data | View::Band) {
+            if !matches!(View::ALL[i], View::Derived | View::Data | View::Band) {
                 model[kept] = View::ALL[i];
                 kept += 1;
             }
             i += 1;
         }
-        assert!(kept == model.len(), "MODEL is ALL without data and band");
+        assert!(
+            kept == model.len(),
+            "MODEL is ALL without derived, data and band"
+        );
         model
     };
 
     /// The names of [`View::ALL`], in its order.
-    pub const NAMES: [&'static str; 9] = {
-        let mut names = [""; 9];
+    pub const NAMES: [&'static str; 10] = {
+        let mut names = [""; 10];
         let mut i = 0;
-        while i < 9 {
+        while i < 10 {
             names[i] = View::ALL[i].name();
             i += 1;
         }
@@ -114,6 +130,7 @@ impl View {
             View::All => "all",
             View::Plane => "plane",
             View::Score => "score",
+            View::Derived => "derived",
             View::Data => "data",
             View::Band => "band",
         }
@@ -179,7 +196,7 @@ mod tests {
         let err = "Truth".parse::<View>().unwrap_err();
         assert_eq!(
             err.to_string(),
-            "unknown view \"Truth\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, data, band)"
+            "unknown view \"Truth\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, derived, data, band)"
         );
         // The message lists every view, in the order of `View::ALL`.
         let names: Vec<&str> = View::ALL.iter().map(|v| v.name()).collect();

@@ -407,7 +407,7 @@ def test_figures_are_the_command_lines(cli, root, tmp_path):
         curve.to_svg("sideways")
     assert str(raised.value) == (
         'view = "sideways": expected one of controls, truth, indeterminacy, falsity, all, plane, '
-        "score, data, band"
+        "score, derived, data, band"
     )
     # The figure options are neutrospline plot's, with its messages (crates/neutrospline-plot).
     assert curve.to_svg("truth", azimuth=-30, elevation=40) == curve.to_svg(view="truth", azimuth=-30.0, elevation=40.0)

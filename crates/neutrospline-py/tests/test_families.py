@@ -30,6 +30,26 @@ def test_a_pythagorean_curve_from_its_two_channels(tmp_path):
     assert ns.load(saved).membership == "pythagorean"
 
 
+def test_figures_of_the_family_score_and_derived_degrees():
+    positions = [[0, 0], [1, 2], [3, 2.5], [4, 0.5]]
+    degrees = [[0.9, 0.3], [0.8, 0.6], [0.6, 0.8], [0.5, 0.5]]
+    curve = ns.Bezier(positions, degrees, membership="pythagorean")
+    score = curve.to_svg(view="score")
+    assert ">score T^2\u2212F^2 (pythagorean)</text>" in score
+    assert "Control polygon not lifted" in score
+    derived = curve.to_svg(view="derived")
+    assert ">hesitation = (1\u2212T^2\u2212F^2)^(1/2) (pythagorean)</text>" in derived
+    plain = ns.Bezier(positions, [[0.5, 0.2, 0.1]] * 4)
+    with pytest.raises(ValueError) as raised:
+        plain.to_svg(view="derived")
+    assert str(raised.value) == (
+        "the view `derived` does not draw neutrosophic models: the derived view draws the degrees "
+        "a family derives from its channels (hesitation, refusal, footprint, ...), and "
+        "neutrosophic degrees derive none; the views of this model are `controls`, `truth`, "
+        "`indeterminacy`, `falsity`, `all`, `plane`, `score`"
+    )
+
+
 def test_the_parametrised_families_keep_their_parameter(tmp_path, root):
     q = ns.load(root / "examples" / "families" / "q-rung.toml")
     assert q.membership == "q-rung:4"

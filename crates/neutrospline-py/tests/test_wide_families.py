@@ -333,8 +333,8 @@ def test_figures_draw_the_band():
     assert curve._repr_svg_() is not None and curve._repr_png_() is not None
     with pytest.raises(
         ValueError,
-        match=r"^--view falsity does not draw interval-type2 models: interval type-2 degrees are a lower and an "
-        r"upper membership",
+        match=r"^the view `falsity` does not draw interval-type2 models: interval type-2 degrees are a lower "
+        r"and an upper membership",
     ):
         curve.to_svg(view="falsity")
 

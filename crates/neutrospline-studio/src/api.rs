@@ -7,7 +7,7 @@
 //! |---|---|---|
 //! | `GET /`, `/studio.js`, `/studio.css`, `/paint.js` | | the page (embedded in the binary) |
 //! | `GET /api/state` | | `{model, file, canSave, families}`: the model the studio was started with, and the description of every family the membership list offers |
-//! | `POST /api/render` | `{model, views, encoding: svg\|display-list, at, data, figure}` | `{model, figures (SVG) or drawings (display lists), errors, handles, table, info, family, pointDegrees, ms}` |
+//! | `POST /api/render` | `{model, views, encoding: svg\|display-list, at, data, figure}` | `{model, figures (SVG) or drawings (display lists), errors, refused (each view the model's family cannot draw, with the reason), handles, table, info, family, pointDegrees, ms}` |
 //! | `POST /api/export` | `{model, format: svg\|png, data, figure}` | the figure's bytes |
 //! | `POST /api/open` | `{name, text}` | `{model}`: a TOML, JSON or CSV model read like a file |
 //! | `POST /api/convert` | `{model, format: toml\|json}` | `{text, filename}` (a download) |
@@ -422,8 +422,18 @@ fn render(body: &Value) -> Result<Response, Response> {
     let options = figure_options(&model, &request)?;
     // A model the plot crate draws no figure of is still checked, evaluated and edited: each
     // view shows the plot crate's message.
+    // The views the plot crate refuses for this model's family, with the reason: the page
+    // greys their boxes out with the reason as their title, and draws no panel for them.
+    let mut refused = Map::new();
     let (drawn, data_error) = match prepare(&model, body, request.color_by) {
-        Ok((plot, data_error)) => (render_views(&plot, &views, &options, encoding), data_error),
+        Ok((plot, data_error)) => {
+            for view in View::ALL {
+                if let Err(e) = plot.check_view(view) {
+                    refused.insert(view.name().to_owned(), Value::String(e.to_string()));
+                }
+            }
+            (render_views(&plot, &views, &options, encoding), data_error)
+        }
         Err(e) => (views.iter().map(|&v| (v, Err(e.clone()))).collect(), None),
     };
     // Each view's figure as JSON text: an SVG string or a display-list object.
@@ -490,6 +500,7 @@ fn render(body: &Value) -> Result<Response, Response> {
         ],
         json!({
             "errors": errors,
+            "refused": refused,
             "handles": plane_handles,
             "table": table,
             "info": info(&model),

@@ -155,6 +155,18 @@ fn render_draws_what_the_plot_crate_draws() {
         );
     }
     assert_eq!(answer["figures"].as_object().unwrap().len(), 2);
+    // The views this model's family cannot draw, with the plot crate's reason: a neutrosophic
+    // model derives no degrees.
+    let refused = answer["refused"].as_object().unwrap();
+    assert_eq!(refused.keys().collect::<Vec<_>>(), ["derived"]);
+    assert_eq!(
+        refused["derived"],
+        plot.check_view(View::Derived).unwrap_err().to_string()
+    );
+    assert!(refused["derived"]
+        .as_str()
+        .unwrap()
+        .starts_with("the view `derived` does not draw neutrosophic models"));
     // The model comes back as the JSON writer writes it.
     assert_eq!(
         answer["model"],

@@ -343,42 +343,50 @@ fn plot_refuses_the_views_that_would_misdraw_a_family() {
             dir.path(),
             &["plot", "p.toml", "--view", "all", "-o", "p.svg"]
         ),
-        "error: --view all does not draw pythagorean models: pythagorean degrees are truth and \
-         falsity (no indeterminacy); give --view truth or --view falsity\n"
+        "error: the view `all` does not draw pythagorean models: pythagorean degrees are truth \
+         and falsity (no indeterminacy); draw the view `truth` or `falsity`\n"
     );
-    assert_eq!(
-        fails(
-            dir.path(),
-            &["plot", "s.toml", "--view", "score", "-o", "s.svg"]
-        ),
-        "error: --view score does not draw spherical models: the score view draws the \
-         neutrosophic score (2 + T - I - F) / 3, not the spherical score; `eval --scores` gives \
-         the spherical score along the curve\n"
-    );
-    assert!(!dir.path().join("p.svg").exists() && !dir.path().join("s.svg").exists());
-    // The intuitionistic score is T - F (SPEC section 7), not what the score view draws.
+    assert!(!dir.path().join("p.svg").exists());
+    // A neutrosophic model derives no degrees.
     std::fs::write(
-        dir.path().join("i.csv"),
-        "x,y,truth,falsity\n0,0,0.2,0.7\n1,2,0.5,0.1\n3,1,0.9,0.0\n",
+        dir.path().join("n.csv"),
+        "x,y,truth,indeterminacy,falsity\n0,0,0.2,0.1,0.7\n1,2,0.5,0.3,0.1\n3,1,0.9,0.0,0.0\n",
     )
     .unwrap();
     assert_eq!(
         fails(
             dir.path(),
-            &[
-                "plot",
-                "i.csv",
-                "--membership",
-                "intuitionistic",
-                "--view",
-                "score",
-                "-o",
-                "i.svg",
-            ]
+            &["plot", "n.csv", "--view", "derived", "-o", "n.svg"]
         ),
-        "error: --view score does not draw intuitionistic models: the score view draws the \
-         neutrosophic score (2 + T - I - F) / 3, not the intuitionistic score; `eval --scores` \
-         gives the intuitionistic score along the curve\n"
+        "error: the view `derived` does not draw neutrosophic models: the derived view draws \
+         the degrees a family derives from its channels (hesitation, refusal, footprint, ...), \
+         and neutrosophic degrees derive none; the views of this model are `controls`, `truth`, \
+         `indeterminacy`, `falsity`, `all`, `plane`, `score`\n"
+    );
+    assert!(!dir.path().join("n.svg").exists());
+    // The intuitionistic score T - F (SPEC section 7) is the score view's height.
+    std::fs::write(
+        dir.path().join("i.csv"),
+        "x,y,truth,falsity\n0,0,0.2,0.7\n1,2,0.5,0.1\n3,1,0.9,0.0\n",
+    )
+    .unwrap();
+    ok(
+        dir.path(),
+        &[
+            "plot",
+            "i.csv",
+            "--membership",
+            "intuitionistic",
+            "--view",
+            "score",
+            "-o",
+            "i.svg",
+        ],
+    );
+    let svg = std::fs::read_to_string(dir.path().join("i.svg")).unwrap();
+    assert!(
+        svg.contains(">score T\u{2212}F (intuitionistic)</text>"),
+        "legend"
     );
     ok(
         dir.path(),
@@ -389,6 +397,53 @@ fn plot_refuses_the_views_that_would_misdraw_a_family() {
     ok(
         dir.path(),
         &["plot", "s.toml", "--view", "all", "-o", "s.svg"],
+    );
+}
+
+/// Every family's example (examples/families/) plots its score view, and its derived view
+/// where the family derives degrees (the others are refused with the reason), as PNG.
+#[test]
+fn plot_draws_every_family_score_and_derived() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/families");
+    let mut names: Vec<String> = std::fs::read_dir(&root)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names.len(), 10);
+    let files: Vec<(String, String)> = names
+        .iter()
+        .map(|n| (n.clone(), std::fs::read_to_string(root.join(n)).unwrap()))
+        .collect();
+    let refs: Vec<(&str, &str)> = files
+        .iter()
+        .map(|(n, t)| (n.as_str(), t.as_str()))
+        .collect();
+    let dir = dir_with(&refs);
+    let mut refused = Vec::new();
+    for name in &names {
+        for view in ["score", "derived"] {
+            let out = format!("{name}-{view}.png");
+            let args = ["plot", name, "--view", view, "-o", &out, "--samples", "40"];
+            let done = run_in(dir.path(), &args, None);
+            if done.code == 0 {
+                let png = std::fs::read(dir.path().join(&out)).unwrap();
+                assert!(png.starts_with(b"\x89PNG"), "{name} {view}");
+            } else {
+                assert_eq!(done.code, 1, "{name} {view}: {}", done.stderr);
+                assert!(
+                    done.stderr
+                        .starts_with("error: the view `derived` does not draw "),
+                    "{}",
+                    done.stderr
+                );
+                refused.push(name.clone());
+            }
+        }
+    }
+    assert_eq!(
+        refused,
+        ["bipolar-neutrosophic.toml", "interval-neutrosophic.toml"]
     );
 }
 

@@ -943,7 +943,7 @@ fn hostile_usage_errors_exit_2() {
         (
             &["plot", "m.csv", "--view", "sideways", "-o", "p.svg"][..],
             "view = sideways: expected one of controls, truth, indeterminacy, falsity, all, plane, \
-             score, data, band",
+             score, derived, data, band",
         ),
         (
             &["eval", "m.csv", "--max-control-points", "0"][..],

@@ -179,7 +179,7 @@ fn plot_usage_errors_exit_2_and_keep_old_output() {
     assert_eq!(
         String::from_utf8_lossy(&out.stderr),
         "error: view = side: expected one of controls, truth, indeterminacy, falsity, all, plane, \
-         score, data, band\n"
+         score, derived, data, band\n"
     );
     let eps = dir.path().join("fig.eps");
     let out = run(&["plot", file.to_str().unwrap(), "-o", eps.to_str().unwrap()]);

@@ -73,14 +73,15 @@ fn plot_refuses_views_that_misdraw_wide_models() {
     let dir = dir_with(&[("interval.toml", INTERVAL), ("bipolar.toml", BIPOLAR)]);
     let (code, _, stderr) = run(
         dir.path(),
-        &["plot", "interval.toml", "-o", "s.png", "--view", "score"],
+        &["plot", "interval.toml", "-o", "s.png", "--view", "derived"],
     );
     assert_eq!(code, 1);
     assert_eq!(
         stderr,
-        "error: --view score does not draw interval-neutrosophic models: the score view draws \
-         the neutrosophic score (2 + T - I - F) / 3, not the interval-neutrosophic score; \
-         `eval --scores` gives the interval-neutrosophic score along the curve\n"
+        "error: the view `derived` does not draw interval-neutrosophic models: the derived view \
+         draws the degrees a family derives from its channels (hesitation, refusal, footprint, \
+         ...), and interval-neutrosophic degrees derive none; the views of this model are \
+         `truth`, `indeterminacy`, `falsity`, `all`, `score`\n"
     );
     let (code, _, stderr) = run(
         dir.path(),
@@ -89,11 +90,11 @@ fn plot_refuses_views_that_misdraw_wide_models() {
     assert_eq!(code, 1);
     assert_eq!(
         stderr,
-        "error: --view controls does not draw bipolar-neutrosophic models: the controls view \
-         draws one truth, indeterminacy and falsity bar per control point, and \
+        "error: the view `controls` does not draw bipolar-neutrosophic models: the controls \
+         view draws one truth, indeterminacy and falsity bar per control point, and \
          bipolar-neutrosophic points carry a positive and a negative value per degree (truth, \
          indeterminacy, falsity, negative_truth, negative_indeterminacy, negative_falsity); \
-         give --view truth, indeterminacy, falsity or all\n"
+         draw the view `truth`, `indeterminacy`, `falsity` or `all`\n"
     );
     assert!(!dir.path().join("s.png").exists() && !dir.path().join("c.png").exists());
 }

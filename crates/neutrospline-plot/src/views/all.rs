@@ -57,6 +57,7 @@ impl Figure for All {
             curtain: false,
             polygon_w: th.thin_w(),
             marker: Quantity::marker,
+            lift_controls: true,
         };
         let kinds = DegreeKind::ALL.map(Quantity::from);
         lifted::figure(ctx, &kinds, entries, Vec::new(), &look)

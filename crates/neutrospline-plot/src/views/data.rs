@@ -287,6 +287,7 @@ fn legend(th: &Theme, data: &DataCtx, fitted: Fitted) -> Legend {
                 format!("{} of the data", kind.name())
             },
             length: 0.62,
+            range: (0.0, 1.0),
         }),
     }
 }

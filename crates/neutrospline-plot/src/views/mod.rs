@@ -10,6 +10,7 @@ mod band;
 mod controls;
 mod data;
 mod figure;
+mod measure;
 mod plane;
 mod single;
 mod wide;
@@ -35,9 +36,27 @@ pub(crate) fn figure(view: View) -> &'static dyn Figure {
         View::All => &all::All,
         View::Plane => &plane::Plane,
         View::Score => &single::Single(Quantity::Score),
+        // Drawn per family by `family_figure`; a model of no family given (neutrosophic)
+        // has none, which `PlotModel::check_view` refuses before drawing.
+        View::Derived => &measure::Measure {
+            family: neutrospline::Family::Neutrosophic,
+            kind: measure::Kind::Derived,
+        },
         View::Data => &data::Data,
         View::Band => &band::Band,
     }
+}
+
+/// The view's drawing of a family's own measures: the `score` view of every family but the
+/// neutrosophic one (whose score `(2 + T - I - F) / 3` the [`single`] view draws, lifted from
+/// the control points), and the `derived` view; `None` for the other views.
+pub(crate) fn family_figure(view: View, family: neutrospline::Family) -> Option<Box<dyn Figure>> {
+    let kind = match view {
+        View::Score if family != neutrospline::Family::Neutrosophic => measure::Kind::Score,
+        View::Derived => measure::Kind::Derived,
+        _ => return None,
+    };
+    Some(Box::new(measure::Measure { family, kind }))
 }
 
 /// The view's drawing for a wide (two-lane) family, for the views that draw both lanes:

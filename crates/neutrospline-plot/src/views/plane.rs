@@ -186,6 +186,7 @@ fn map_legend(th: &Theme, knots: bool) -> Legend {
         colorbar: Some(ColorBar {
             label: "degree".to_string(),
             length: 0.62,
+            range: (0.0, 1.0),
         }),
     }
 }

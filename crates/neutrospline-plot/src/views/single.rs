@@ -43,6 +43,7 @@ impl Figure for Single {
             curtain: true,
             polygon_w: th.polygon_w(),
             marker: |_| Marker::Circle,
+            lift_controls: true,
         };
         lifted::figure(ctx, &[q], entries, q.notes(), &look)
     }

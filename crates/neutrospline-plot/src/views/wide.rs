@@ -76,11 +76,12 @@ impl Wide {
         self.kind.unwrap_or(DegreeKind::Truth)
     }
 
-    /// The name of the degree's axis: `membership` for interval type-2.
+    /// The name of the degree's axis: `membership` for interval type-2 (in the `all` view
+    /// too, whose one degree is the membership), else the degree, or `degree` for `all`.
     fn axis(&self) -> String {
         match self.kind {
+            _ if self.family == Family::IntervalType2 => "membership".to_string(),
             None => "degree".to_string(),
-            Some(_) if self.family == Family::IntervalType2 => "membership".to_string(),
             Some(kind) => kind.name().to_string(),
         }
     }

@@ -460,7 +460,7 @@ fn data_errors_and_messages() {
     // A view name that does not exist lists the data view.
     assert_eq!(
         message("scatter".parse::<View>().unwrap_err()),
-        "unknown view \"scatter\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, data, band)"
+        "unknown view \"scatter\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, derived, data, band)"
     );
 }
 

@@ -4,6 +4,7 @@ mod band;
 mod browser;
 mod data;
 mod display_list;
+mod families;
 mod print;
 mod score;
 mod surfaces;

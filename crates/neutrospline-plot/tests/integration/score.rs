@@ -126,7 +126,7 @@ fn score_view_parses_and_is_listed() {
     let err = "Score".parse::<View>().unwrap_err().to_string();
     assert_eq!(
         err,
-        "unknown view \"Score\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, data, band)"
+        "unknown view \"Score\" (expected one of: controls, truth, indeterminacy, falsity, all, plane, score, derived, data, band)"
     );
 }
 

@@ -84,8 +84,9 @@ fn check_svg(svg: &str, width: u32, height: u32) {
 
 #[test]
 fn views_names_parse() {
-    assert_eq!(View::ALL.len(), 9);
+    assert_eq!(View::ALL.len(), 10);
     assert_eq!(View::MODEL, View::ALL[..7]);
+    assert_eq!(View::ALL[7], View::Derived);
     for (name, view) in [
         ("controls", View::Controls),
         ("truth", View::Truth),
@@ -94,6 +95,7 @@ fn views_names_parse() {
         ("all", View::All),
         ("plane", View::Plane),
         ("score", View::Score),
+        ("derived", View::Derived),
         ("data", View::Data),
     ] {
         assert_eq!(name.parse::<View>().unwrap(), view);

@@ -204,48 +204,51 @@ fn wide_surface_truth_is_two_panels() {
     assert!(png.starts_with(b"\x89PNG"));
 }
 
-/// The views that would misdraw a wide family are refused, with the reason.
+/// The views that would misdraw a wide family are refused, with the reason; the score view
+/// draws every wide family's own score.
 #[test]
 fn wide_refused_views_say_why() {
     let interval = model("interval.toml", INTERVAL);
     let refusal =
         |m: &PlotModel, view: View| render_svg(m, view, &options()).unwrap_err().to_string();
+    assert!(render_svg(&interval, View::Score, &options()).is_ok());
     assert_eq!(
-        refusal(&interval, View::Score),
-        "--view score does not draw interval-neutrosophic models: the score view draws the \
-         neutrosophic score (2 + T - I - F) / 3, not the interval-neutrosophic score; `eval \
-         --scores` gives the interval-neutrosophic score along the curve"
+        refusal(&interval, View::Derived),
+        "the view `derived` does not draw interval-neutrosophic models: the derived view draws \
+         the degrees a family derives from its channels (hesitation, refusal, footprint, ...), \
+         and interval-neutrosophic degrees derive none; the views of this model are `truth`, \
+         `indeterminacy`, `falsity`, `all`, `score`"
     );
     assert_eq!(
         refusal(&interval, View::Controls),
-        "--view controls does not draw interval-neutrosophic models: the controls view draws \
-         one truth, indeterminacy and falsity bar per control point, and interval-neutrosophic \
-         points carry a lower and an upper value per degree (truth_lower, truth_upper, \
-         indeterminacy_lower, indeterminacy_upper, falsity_lower, falsity_upper); give --view \
-         truth, indeterminacy, falsity or all"
+        "the view `controls` does not draw interval-neutrosophic models: the controls view \
+         draws one truth, indeterminacy and falsity bar per control point, and \
+         interval-neutrosophic points carry a lower and an upper value per degree \
+         (truth_lower, truth_upper, indeterminacy_lower, indeterminacy_upper, falsity_lower, \
+         falsity_upper); draw the view `truth`, `indeterminacy`, `falsity` or `all`"
     );
     let bipolar = model("bipolar.toml", BIPOLAR);
     assert_eq!(
         refusal(&bipolar, View::Plane),
-        "--view plane does not draw bipolar-neutrosophic models: the plane view widens three \
-         lanes by one truth, indeterminacy and falsity, and bipolar-neutrosophic degrees carry \
-         a positive and a negative value each (truth, indeterminacy, falsity, negative_truth, \
-         negative_indeterminacy, negative_falsity); give --view truth, indeterminacy, falsity \
-         or all"
+        "the view `plane` does not draw bipolar-neutrosophic models: the plane view widens \
+         three lanes by one truth, indeterminacy and falsity, and bipolar-neutrosophic degrees \
+         carry a positive and a negative value each (truth, indeterminacy, falsity, \
+         negative_truth, negative_indeterminacy, negative_falsity); draw the view `truth`, \
+         `indeterminacy`, `falsity` or `all`"
     );
     let type2 = model("type2.toml", TYPE2);
     assert_eq!(
         refusal(&type2, View::Indeterminacy),
-        "--view indeterminacy does not draw interval-type2 models: interval type-2 degrees are \
-         a lower and an upper membership, held as truth_lower and truth_upper; give --view \
-         truth (or all) for the footprint of uncertainty between them"
+        "the view `indeterminacy` does not draw interval-type2 models: interval type-2 degrees \
+         are a lower and an upper membership, held as truth_lower and truth_upper; draw the \
+         view `truth` (or `all`) for the footprint of uncertainty between them"
     );
     let surface = model("surface.toml", SURFACE);
     assert_eq!(
         refusal(&surface, View::All),
-        "--view all does not draw interval-neutrosophic models: the all view of a 3-D curve or \
-         a surface draws one panel per degree, and interval-neutrosophic degrees carry a lower \
-         and an upper value each; give --view truth, indeterminacy or falsity for two panels, \
-         one per lane"
+        "the view `all` does not draw interval-neutrosophic models: the all view of a 3-D curve \
+         or a surface draws one panel per degree, and interval-neutrosophic degrees carry a \
+         lower and an upper value each; draw the view `truth`, `indeterminacy` or `falsity` \
+         for two panels, one per lane"
     );
 }

@@ -47,7 +47,7 @@ PathLike = Union[str, "os.PathLike[str]"]
 # "bipolar-neutrosophic", whose degree arrays have one column per channel (`Shape.channels`).
 Membership = str
 ViewName = Literal[
-    "all", "controls", "truth", "indeterminacy", "falsity", "plane", "score", "data", "band"
+    "all", "controls", "truth", "indeterminacy", "falsity", "plane", "score", "derived", "data", "band"
 ]
 Triple = Tuple[float, float, float]
 if TYPE_CHECKING:

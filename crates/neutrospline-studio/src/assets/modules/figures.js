@@ -47,7 +47,16 @@ function syncViewControls() {
     panel.hidden = !shown.includes(view);
     panel.classList.toggle('turnable', isTurnable(view));
   }
-  document.querySelectorAll('#view-toggles input').forEach((box) => { box.checked = state.shown[box.value]; });
+  // A view the model's family cannot draw: its box unticked and disabled, the plot crate's
+  // reason as its title (ticked again when a family that draws it comes back).
+  const refused = state.refused || {};
+  document.querySelectorAll('#view-toggles input').forEach((box) => {
+    const reason = refused[box.value];
+    box.disabled = !!reason;
+    box.checked = state.shown[box.value] && !reason;
+    box.parentElement.title = reason || '';
+    box.parentElement.classList.toggle('refused', !!reason);
+  });
 }
 
 function isTurnable(view) {

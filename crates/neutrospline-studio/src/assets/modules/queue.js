@@ -1,7 +1,7 @@
 // The studio page, queue.js. The request queue: the one render request in flight, proposals that
 // replace each other while it is, and applying an answer (figures, table, fields) once it arrives.
 
-import { drawFigures } from './figures.js';
+import { drawFigures, syncViewControls } from './figures.js';
 import { fillModelFields, schedulePanel, updatePanelNow } from './panel.js';
 import { $, OTHER_VIEWS, PAPER_VIEWS, PREVIEW_SAMPLES, alertMessage, clearFieldErrors, showFieldError, state, status } from './state.js';
 
@@ -51,7 +51,10 @@ let idleWaiters = [];
 
 function shownViews() {
   if (state.layout === 'large') return [state.large];
-  return PAPER_VIEWS.concat(OTHER_VIEWS).filter((v) => state.shown[v]);
+  // A view the model's family cannot draw is not shown (its box is greyed out, the reason
+  // its title).
+  const refused = state.refused || {};
+  return PAPER_VIEWS.concat(OTHER_VIEWS).filter((v) => state.shown[v] && !(v in refused));
 }
 
 // Proposes `model` (null: redraw the current one). `how.commit`: an undoable step once
@@ -160,14 +163,18 @@ function accept(value, job) {
     state.committed = text;
   }
   if (state.selected >= state.model.control_points.length) state.selected = state.model.control_points.length - 1;
+  state.refused = value.refused || {};
+  syncViewControls();
   drawFigures(value);
   if (job.preview) {
     schedulePanel(value.table);
   } else {
     updatePanelNow(value.table);
   }
+  // A refused view's reason is its box's title, not an alert.
+  const errors = Object.entries(value.errors).filter(([v]) => !(v in state.refused));
   if (job.message) status(job.message);
-  else if (Object.keys(value.errors).length) alertMessage(Object.entries(value.errors).map(([v, e]) => `${v}: ${e}`).join('\n'));
+  else if (errors.length) alertMessage(errors.map(([v, e]) => `${v}: ${e}`).join('\n'));
   else if ($('#alert').textContent) $('#alert').textContent = '';
 }
 

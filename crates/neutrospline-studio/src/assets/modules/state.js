@@ -5,7 +5,7 @@ import { put, selectPoint } from './panel.js';
 import { propose } from './queue.js';
 
 const PAPER_VIEWS = ['plane', 'controls', 'truth', 'indeterminacy', 'falsity', 'all'];
-const OTHER_VIEWS = ['score', 'data'];
+const OTHER_VIEWS = ['score', 'derived', 'data'];
 const TURNABLE = ['truth', 'indeterminacy', 'falsity', 'all', 'score'];
 const DEFAULT_CAMERA = { azimuth: -55, elevation: 25 };
 const SVG_NS = 'http://www.w3.org/2000/svg';
@@ -26,6 +26,7 @@ const state = {
   canSave: false,
   selected: 0,
   shown: Object.fromEntries(PAPER_VIEWS.map((v) => [v, true]).concat(OTHER_VIEWS.map((v) => [v, false]))),
+  refused: {},          // view -> why the model's family cannot draw it (from the server)
   layout: 'grid',
   large: 'plane',
   camera: clone(DEFAULT_CAMERA),
