@@ -450,6 +450,21 @@ pub fn accuracy(
     }
 }
 
+/// The rule of the membership family `membership` in one line (the core's
+/// `Family::rule_text`, which the studio and `neutrospline check` show too): the name, then,
+/// separated by `; `, the box of every channel, each interval's `lower <= upper`, the sum rule
+/// and the derived degrees. An unknown family raises `ModelError` listing the accepted names.
+///
+/// >>> import neutrospline as ns
+/// >>> ns.family_rule("q-rung:4")
+/// 'q-rung:4: truth, falsity each in [0, 1]; truth^4 + falsity^4 <= 1; derived: hesitation'
+/// >>> ns.family_rule("interval-type2")
+/// 'interval-type2: truth_lower, truth_upper each in [0, 1]; truth_lower <= truth_upper; derived: type_reduced, footprint'
+#[pyfunction]
+pub fn family_rule(membership: &str) -> PyResult<String> {
+    Ok(model::membership(membership)?.rule_text())
+}
+
 /// The degrees derived from a family's channel values (shape (..., channel_count), in the
 /// order of its `channels`), as an array of shape (..., len(names)) with their `names`
 /// (`Family::derived`): `hesitation` (intuitionistic, orthopair and spherical families),

@@ -43,6 +43,7 @@ fn _neutrospline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(functions::accuracy, m)?)?;
     m.add_function(wrap_pyfunction!(functions::certainty, m)?)?;
     m.add_function(wrap_pyfunction!(functions::derived_degrees, m)?)?;
+    m.add_function(wrap_pyfunction!(functions::family_rule, m)?)?;
     m.add_function(wrap_pyfunction!(functions::largest_relation, m)?)?;
     m.add_function(wrap_pyfunction!(functions::check_relation, m)?)?;
     m.add_function(wrap_pyfunction!(functions::_restore, m)?)?;

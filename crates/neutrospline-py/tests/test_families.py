@@ -89,3 +89,30 @@ def test_fit_under_the_pythagorean_rule():
     assert np.all(truth**2 + falsity**2 <= 1)
     assert np.all(control[:, 1] == 0)
     assert any(entry["channel"] == "truth^2 + falsity^2" for entry in report["at_bound"])
+
+
+def test_family_rule_states_each_rule_in_one_line():
+    # The texts of SPEC section 10, as neutrospline check and the studio show them.
+    assert ns.family_rule("pythagorean") == (
+        "pythagorean: truth, falsity each in [0, 1]; truth^2 + falsity^2 <= 1; derived: hesitation"
+    )
+    assert ns.family_rule("t-spherical:5") == (
+        "t-spherical:5: truth, indeterminacy, falsity each in [0, 1]; "
+        "truth^5 + indeterminacy^5 + falsity^5 <= 1; derived: hesitation"
+    )
+    assert ns.family_rule(" Fuzzy ") == "fuzzy: truth in [0, 1]"
+    assert ns.family_rule("bipolar-neutrosophic") == (
+        "bipolar-neutrosophic: truth, indeterminacy, falsity each in [0, 1]; "
+        "negative_truth, negative_indeterminacy, negative_falsity each in [-1, 0]"
+    )
+    assert ns.family_rule("interval-intuitionistic") == (
+        "interval-intuitionistic: truth_lower, truth_upper, falsity_lower, falsity_upper each in "
+        "[0, 1]; truth_lower <= truth_upper, falsity_lower <= falsity_upper; "
+        "truth_upper + falsity_upper <= 1; derived: hesitation_lower, hesitation_upper"
+    )
+    with pytest.raises(
+        ns.ModelError,
+        match=r"^membership: unknown membership family `q-rung:0` \(the parameter must be an "
+        r"integer >= 1; expected one of: neutrosophic, ",
+    ):
+        ns.family_rule("q-rung:0")

@@ -702,7 +702,7 @@ fn new_family(family: Family) -> Family {
 ///   slot that is not a channel (shown as the curve holds it: the intuitionistic hesitation
 ///   `1 - T - F`, else 0); for a wide family its channels;
 /// - `derived`: the names of the derived degrees (`Family::derived_names`);
-/// - `rule`: the rule in one line ([`rule_text`]).
+/// - `rule`: the rule in one line (`Family::rule_text`).
 fn family_json(family: Family) -> Value {
     let channels: Vec<Value> = family
         .channels()
@@ -748,62 +748,8 @@ fn family_json(family: Family) -> Value {
         "channels": channels,
         "fields": fields,
         "derived": family.derived_names(),
-        "rule": rule_text(family),
+        "rule": family.rule_text(),
     })
-}
-
-/// The rule of `family` in one line, built from its data: the box of each channel, each
-/// interval's `lower <= upper`, the sum rule's terms (`Family::rule_sum`), the degree slots a
-/// family of one lane does not carry, and the derived degrees. For example `interval-type2:
-/// truth_lower, truth_upper in [0, 1]; truth_lower <= truth_upper; derived: type_reduced,
-/// footprint`.
-fn rule_text(family: Family) -> String {
-    let channels = family.channels();
-    let mut boxes: Vec<((f64, f64), Vec<&str>)> = Vec::new();
-    for (c, name) in channels.iter().enumerate() {
-        let range = family.channel_range(c);
-        match boxes.iter_mut().find(|(r, _)| *r == range) {
-            Some((_, names)) => names.push(name),
-            None => boxes.push((range, vec![name])),
-        }
-    }
-    let mut parts: Vec<String> = boxes
-        .iter()
-        .map(|((low, high), names)| {
-            let each = if names.len() > 1 { " each" } else { "" };
-            format!(
-                "{}{each} in [{}, {}]",
-                names.join(", "),
-                format_number(*low),
-                format_number(*high)
-            )
-        })
-        .collect();
-    let pairs: Vec<String> = family
-        .interval_pairs()
-        .iter()
-        .map(|&(lower, upper)| format!("{} <= {}", channels[lower], channels[upper]))
-        .collect();
-    if !pairs.is_empty() {
-        parts.push(pairs.join(", "));
-    }
-    if let Some((terms, _)) = family.rule_sum(&vec![0.0; channels.len()]) {
-        parts.push(format!("{terms} <= 1"));
-    }
-    if family.lane_count() == 1 {
-        let missing: Vec<&str> = DegreeKind::ALL
-            .iter()
-            .filter(|k| !family.carries(**k))
-            .map(|k| k.name())
-            .collect();
-        if !missing.is_empty() {
-            parts.push(format!("{} not a channel", missing.join(", ")));
-        }
-    }
-    if !family.derived_names().is_empty() {
-        parts.push(format!("derived: {}", family.derived_names().join(", ")));
-    }
-    format!("{family}: {}", parts.join("; "))
 }
 
 /// The values of the panel's degree fields (`fields` of [`family_json`]) at every control

@@ -1251,8 +1251,7 @@ fn state_describes_every_family_from_the_core() {
     );
     assert_eq!(
         intuitionistic["rule"],
-        "intuitionistic: truth, falsity each in [0, 1]; truth + falsity <= 1; indeterminacy not \
-         a channel; derived: hesitation"
+        "intuitionistic: truth, falsity each in [0, 1]; truth + falsity <= 1; derived: hesitation"
     );
     // The parametrised families: the parameter's key, and 3 for a model switched to them.
     let q = described(families, "q-rung");
@@ -1260,8 +1259,7 @@ fn state_describes_every_family_from_the_core() {
     assert_eq!(q["label"], "q-rung (q = 3 unless the file gives q)");
     assert_eq!(
         q["rule"],
-        "q-rung:3: truth, falsity each in [0, 1]; truth^3 + falsity^3 <= 1; indeterminacy not a \
-         channel; derived: hesitation"
+        "q-rung:3: truth, falsity each in [0, 1]; truth^3 + falsity^3 <= 1; derived: hesitation"
     );
     assert_eq!(
         described(families, "t-spherical")["parameter"],

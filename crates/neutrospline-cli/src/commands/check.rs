@@ -23,7 +23,8 @@ length and the arc-length averages (1/L) * integral of q |C'(t)| dt of truth, in
 falsity and score (2 + T - I - F) / 3, to 12 significant digits (relative accuracy 1e-12; \
 curves of at most 1000 control points and degree 30).\n\
 The interval-valued and bipolar families print a range per channel (truth_lower, ..., \
-negative_falsity), their rule in words and the average of every channel.\n\
+negative_falsity), their rule in one line (boxes, lower <= upper, the sum with its largest \
+value at the control points, derived degrees) and the average of every channel.\n\
 Model options: a CSV file lists control points only, so these give its kind, degree, knots and \
 grid; with a TOML/JSON file an option fills in a key the file leaves out, and must agree with \
 the file where it declares the key."
@@ -143,22 +144,6 @@ fn geometry_lines(lanes: &[&DynCurve], family: Family) -> Vec<String> {
     }
 }
 
-/// The rule of a family of two lanes, in words (docs/model.md, "Membership families"): the
-/// box of its channels, `lower <= upper` for the interval-valued ones, and the sum of the
-/// interval-intuitionistic rule (its terms; the caller adds its largest value).
-fn wide_rule(family: Family) -> String {
-    let mut parts = Vec::new();
-    if (0..family.channel_count()).any(|c| family.channel_range(c).0 < 0.0) {
-        parts.push("positive degrees in [0, 1], negative in [-1, 0]".to_owned());
-    } else {
-        parts.push("each channel in [0, 1]".to_owned());
-    }
-    if !family.interval_pairs().is_empty() {
-        parts.push("lower <= upper".to_owned());
-    }
-    parts.join(", ")
-}
-
 fn domain_line(domain: std::ops::Range<f64>) -> String {
     format!("[{}, {}]", number(domain.start), number(domain.end))
 }
@@ -269,28 +254,37 @@ pub fn run(args: &CheckArgs) -> anyhow::Result<()> {
             }
         }
         // The rule's sum at the control points (the curve's stays below its largest: the
-        // rule is convex), for the families with a sum rule beyond the original three.
+        // rule is convex), for the families with a sum rule beyond the original three; a
+        // family of two lanes states its whole rule (`Family::rule_text`, without the name the
+        // `membership` line gives).
         if !view.triple() {
             let sums: Vec<(String, f64)> = channels
                 .iter()
                 .filter_map(|values| membership.rule_sum(values))
                 .collect();
-            let wide = (membership.lane_count() > 1).then(|| wide_rule(membership));
-            match (sums.first(), wide) {
-                (Some((terms, _)), wide) => {
-                    let largest = sums
-                        .iter()
-                        .map(|(_, s)| *s)
-                        .fold(f64::NEG_INFINITY, f64::max);
-                    let before = wide.map(|rule| format!("{rule}, ")).unwrap_or_default();
-                    writeln!(
+            let largest = sums
+                .iter()
+                .map(|(_, s)| *s)
+                .fold(f64::NEG_INFINITY, f64::max);
+            if membership.lane_count() > 1 {
+                let text = membership.rule_text();
+                let rule = text
+                    .strip_prefix(&format!("{membership}: "))
+                    .unwrap_or(&text);
+                match sums.first() {
+                    Some((terms, _)) => writeln!(
                         w,
-                        "rule: {before}{terms} <= 1 (largest at the control points: {})",
+                        "rule: {rule} (largest {terms} at the control points: {})",
                         degree(largest)
-                    )?;
+                    )?,
+                    None => writeln!(w, "rule: {rule}")?,
                 }
-                (None, Some(rule)) => writeln!(w, "rule: {rule}")?,
-                (None, None) => {}
+            } else if let Some((terms, _)) = sums.first() {
+                writeln!(
+                    w,
+                    "rule: {terms} <= 1 (largest at the control points: {})",
+                    degree(largest)
+                )?;
             }
         }
         if let Some(spreads) = &spreads {

@@ -438,7 +438,8 @@ fn check_prints_the_channels_the_rule_in_words_and_their_averages() {
         out.stdout,
         "type2.toml: valid\nkind: bezier\ndegree: 1\ndimension: 2\ncontrol points: 2\n\
          membership: interval-type2\ndomain: [0, 1]\ntruth_lower: 0.2..0.5\n\
-         truth_upper: 0.6..0.9\nrule: each channel in [0, 1], lower <= upper\n\
+         truth_upper: 0.6..0.9\nrule: truth_lower, truth_upper each in [0, 1]; truth_lower <= \
+         truth_upper; derived: type_reduced, footprint\n\
          length: 2.2360679775\naverage truth_lower: 0.35\naverage truth_upper: 0.75\n"
     );
     let out = ok(dir.path(), &["check", "boundary.toml"]);
@@ -447,8 +448,10 @@ fn check_prints_the_channels_the_rule_in_words_and_their_averages() {
     assert!(lines.contains(&"falsity_upper: 0..1"), "{lines:?}");
     assert!(
         lines.contains(
-            &"rule: each channel in [0, 1], lower <= upper, truth_upper + falsity_upper <= 1 \
-              (largest at the control points: 1)"
+            &"rule: truth_lower, truth_upper, falsity_lower, falsity_upper each in [0, 1]; \
+              truth_lower <= truth_upper, falsity_lower <= falsity_upper; truth_upper + \
+              falsity_upper <= 1; derived: hesitation_lower, hesitation_upper (largest \
+              truth_upper + falsity_upper at the control points: 1)"
         ),
         "{lines:?}"
     );
@@ -460,7 +463,8 @@ fn check_prints_the_channels_the_rule_in_words_and_their_averages() {
         "negative_truth: -0.6..0",
         "negative_indeterminacy: -0.9..0",
         "negative_falsity: -1..-0.1",
-        "rule: positive degrees in [0, 1], negative in [-1, 0]",
+        "rule: truth, indeterminacy, falsity each in [0, 1]; negative_truth, \
+         negative_indeterminacy, negative_falsity each in [-1, 0]",
     ] {
         assert!(lines.contains(&line), "{line} not in {lines:?}");
     }

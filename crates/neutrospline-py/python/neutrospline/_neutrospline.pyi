@@ -416,6 +416,9 @@ def accuracy(degrees: ArrayLike, *, membership: Optional[Membership] = None) -> 
     its channel values (``ModelError`` for a family without one)."""
 def derived_degrees(degrees: ArrayLike, *, membership: Membership) -> Tuple[FloatArray, List[str]]:
     """The degrees a family derives from its channel values, with their names."""
+def family_rule(membership: Membership) -> str:
+    """The rule of a membership family in one line: the box of every channel, each interval's
+    ``lower <= upper``, the sum rule and the derived degrees."""
 def certainty(degrees: ArrayLike) -> Union[float, FloatArray]: ...
 def centroid_interval(
     x: Sequence[float], lower: Sequence[float], upper: Sequence[float]

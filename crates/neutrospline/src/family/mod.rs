@@ -25,6 +25,7 @@
 //!
 //! Every channel is also >= 0 (the bipolar negative ones >= -1), so every rule is a convex set;
 //! a blend of valid values with non-negative weights summing to 1 is valid.
+//! [`Family::rule_text`] states a family's rule in one line, built from the same data.
 //!
 //! ```
 //! use neutrospline::Family;
@@ -42,6 +43,7 @@ mod lanes;
 mod measures;
 mod project;
 mod rule;
+mod rule_text;
 
 use core::fmt;
 use core::num::NonZeroU32;

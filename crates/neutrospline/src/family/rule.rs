@@ -89,7 +89,9 @@ fn fifteen_digits(value: f64) -> f64 {
     }
 }
 
-fn terms(channels: &[&str], power: u32) -> String {
+/// `channels` as the terms of a sum of powers: `truth + falsity` (`power = 1`), `truth^2 +
+/// falsity^2`, ...
+pub(super) fn terms(channels: &[&str], power: u32) -> String {
     let term = |c: &&str| {
         if power == 1 {
             (*c).to_owned()

@@ -394,3 +394,182 @@ fn lanes_refuse_values_that_break_the_rule() {
         "1 values given; the interval-type2 family has 2 channels (truth_lower, truth_upper)"
     );
 }
+
+/// The one-line rule of every family, each text checked by hand against SPEC section 10 (the
+/// boxes, `L <= U`, the sums, the derived degrees).
+#[test]
+fn rule_text_of_every_family() {
+    let expected = [
+        "neutrosophic: truth, indeterminacy, falsity each in [0, 1]",
+        "intuitionistic: truth, falsity each in [0, 1]; truth + falsity <= 1; derived: hesitation",
+        "fuzzy: truth in [0, 1]",
+        "pythagorean: truth, falsity each in [0, 1]; truth^2 + falsity^2 <= 1; derived: hesitation",
+        "fermatean: truth, falsity each in [0, 1]; truth^3 + falsity^3 <= 1; derived: hesitation",
+        "q-rung:4: truth, falsity each in [0, 1]; truth^4 + falsity^4 <= 1; derived: hesitation",
+        "picture: truth, indeterminacy, falsity each in [0, 1]; truth + indeterminacy + falsity \
+         <= 1; derived: refusal",
+        "spherical: truth, indeterminacy, falsity each in [0, 1]; truth^2 + indeterminacy^2 + \
+         falsity^2 <= 1; derived: hesitation",
+        "t-spherical:3: truth, indeterminacy, falsity each in [0, 1]; truth^3 + indeterminacy^3 \
+         + falsity^3 <= 1; derived: hesitation",
+        "interval-neutrosophic: truth_lower, truth_upper, indeterminacy_lower, \
+         indeterminacy_upper, falsity_lower, falsity_upper each in [0, 1]; truth_lower <= \
+         truth_upper, indeterminacy_lower <= indeterminacy_upper, falsity_lower <= falsity_upper",
+        "interval-intuitionistic: truth_lower, truth_upper, falsity_lower, falsity_upper each in \
+         [0, 1]; truth_lower <= truth_upper, falsity_lower <= falsity_upper; truth_upper + \
+         falsity_upper <= 1; derived: hesitation_lower, hesitation_upper",
+        "interval-type2: truth_lower, truth_upper each in [0, 1]; truth_lower <= truth_upper; \
+         derived: type_reduced, footprint",
+        "bipolar-neutrosophic: truth, indeterminacy, falsity each in [0, 1]; negative_truth, \
+         negative_indeterminacy, negative_falsity each in [-1, 0]",
+    ];
+    for (family, text) in Family::EXAMPLES.iter().zip(expected) {
+        assert_eq!(family.rule_text(), text, "{family}");
+    }
+    // The first rung and sphere: a plain sum, as the intuitionistic and picture rules.
+    assert_eq!(
+        Family::q_rung(1).unwrap().rule_text(),
+        "q-rung:1: truth, falsity each in [0, 1]; truth + falsity <= 1; derived: hesitation"
+    );
+    assert_eq!(
+        Family::t_spherical(17).unwrap().rule_text(),
+        "t-spherical:17: truth, indeterminacy, falsity each in [0, 1]; truth^17 + \
+         indeterminacy^17 + falsity^17 <= 1; derived: hesitation"
+    );
+}
+
+/// What the text of [`Family::rule_text`] says, read back from the text alone: the channels
+/// of each box clause `a, b each in [low, high]`, the `lower <= upper` pairs, the sum clause's
+/// channels and exponent, and the derived names.
+struct ReadRule {
+    boxes: Vec<(String, f64, f64)>,
+    pairs: Vec<(String, String)>,
+    sum: Option<(Vec<String>, u32)>,
+    derived: Vec<String>,
+}
+
+fn read_rule(family: Family, text: &str) -> ReadRule {
+    let prefix = format!("{family}: ");
+    let body = text
+        .strip_prefix(&prefix)
+        .unwrap_or_else(|| panic!("{text} does not start with {prefix}"));
+    let mut read = ReadRule {
+        boxes: Vec::new(),
+        pairs: Vec::new(),
+        sum: None,
+        derived: Vec::new(),
+    };
+    for clause in body.split("; ") {
+        if let Some(names) = clause.strip_prefix("derived: ") {
+            read.derived = names.split(", ").map(str::to_owned).collect();
+        } else if let Some((names, range)) = clause.split_once(" in [") {
+            let names = names.strip_suffix(" each").unwrap_or(names);
+            let (low, high) = range.strip_suffix(']').unwrap().split_once(", ").unwrap();
+            let (low, high): (f64, f64) = (low.parse().unwrap(), high.parse().unwrap());
+            for name in names.split(", ") {
+                read.boxes.push((name.to_owned(), low, high));
+            }
+        } else if let Some(terms) = clause.strip_suffix(" <= 1") {
+            let mut power = None;
+            let mut names = Vec::new();
+            for term in terms.split(" + ") {
+                let (name, p) = match term.split_once('^') {
+                    Some((name, p)) => (name, p.parse::<u32>().unwrap()),
+                    None => (term, 1),
+                };
+                assert!(power.is_none_or(|q| q == p), "{clause}: mixed exponents");
+                power = Some(p);
+                names.push(name.to_owned());
+            }
+            read.sum = Some((names, power.unwrap()));
+        } else {
+            for pair in clause.split(", ") {
+                let (lower, upper) = pair
+                    .split_once(" <= ")
+                    .unwrap_or_else(|| panic!("{clause}: not a clause of a rule"));
+                read.pairs.push((lower.to_owned(), upper.to_owned()));
+            }
+        }
+    }
+    read
+}
+
+/// The text names every channel once in a box clause, with the channel's box; its pairs and
+/// its sum are the ones [`Family::check`] enforces (a value just past each breaks the check,
+/// one just inside passes); its derived names are [`Family::derived_names`].
+fn rule_text_states_the_rule(family: Family) {
+    let text = family.rule_text();
+    let read = read_rule(family, &text);
+    let channels = family.channels();
+    let named: Vec<&str> = read.boxes.iter().map(|(n, _, _)| n.as_str()).collect();
+    let mut sorted_named = named.clone();
+    sorted_named.sort_unstable();
+    let mut sorted_channels = channels.to_vec();
+    sorted_channels.sort_unstable();
+    assert_eq!(sorted_named, sorted_channels, "{text}");
+    let index = |name: &str| {
+        channels
+            .iter()
+            .position(|c| *c == name)
+            .unwrap_or_else(|| panic!("{name} is not a channel of {family}: {text}"))
+    };
+    for (name, low, high) in &read.boxes {
+        assert_eq!(family.channel_range(index(name)), (*low, *high), "{text}");
+    }
+    // A valid point: every channel at the end of its box nearest 0 (all 0, bipolar too).
+    let origin = vec![0.0; channels.len()];
+    assert!(family.check(&origin).is_ok(), "{family}");
+    for (lower, upper) in &read.pairs {
+        let mut values = origin.clone();
+        values[index(lower)] = 0.5;
+        values[index(upper)] = 0.25;
+        assert!(
+            matches!(family.check(&values), Err(RuleError::Order { .. })),
+            "{text}"
+        );
+        values[index(upper)] = 0.5;
+        assert!(family.check(&values).is_ok(), "{text}");
+    }
+    match &read.sum {
+        Some((names, power)) => {
+            // Each summed channel at x with k x^p just past 1, then just below 1.
+            let k = names.len() as f64;
+            let edge = (1.0 / k).powf(1.0 / f64::from(*power));
+            for (scale, passes) in [(1.0 + 1e-9, false), (1.0 - 1e-9, true)] {
+                let mut values = origin.clone();
+                for name in names {
+                    values[index(name)] = edge * scale;
+                }
+                // An interval's lower bound at its upper one keeps lower <= upper.
+                for &(l, u) in family.interval_pairs() {
+                    values[l] = values[u];
+                }
+                assert_eq!(
+                    family.check(&values).is_ok(),
+                    passes,
+                    "{text} at {values:?}"
+                );
+            }
+            assert_eq!(family.power(), Some(*power), "{text}");
+        }
+        None => assert_eq!(family.power(), None, "{text}"),
+    }
+    let derived: Vec<&str> = read.derived.iter().map(String::as_str).collect();
+    assert_eq!(derived, family.derived_names(), "{text}");
+}
+
+#[test]
+fn rule_text_names_every_channel_and_states_the_checked_rule() {
+    for family in Family::EXAMPLES {
+        rule_text_states_the_rule(family);
+    }
+}
+
+proptest::proptest! {
+    /// The parametrised families at any parameter: `q-rung:q` and `t-spherical:n`.
+    #[test]
+    fn rule_text_of_any_rung_and_sphere(parameter in 1u32..=1000) {
+        rule_text_states_the_rule(Family::q_rung(parameter).unwrap());
+        rule_text_states_the_rule(Family::t_spherical(parameter).unwrap());
+    }
+}
