@@ -765,11 +765,7 @@ fn surface_lanes_op(
             times,
             tolerance,
         } => {
-            let knots = match direction {
-                Direction::U => lanes[0].knots_u(),
-                Direction::V => lanes[0].knots_v(),
-            };
-            let times = times.unwrap_or_else(|| knots.multiplicity(*value));
+            let times = times.unwrap_or_else(|| lanes[0].knots(direction).multiplicity(*value));
             let r = Surface::remove_knot_lanes(lanes, direction, *value, times, *tolerance, family)
                 .map_err(|e| format!("knots_{direction}: {e}"))?;
             let note = removal_note(
@@ -917,11 +913,7 @@ fn surface_op(
             times,
             tolerance,
         } => {
-            let knots = match direction {
-                Direction::U => surface.knots_u(),
-                Direction::V => surface.knots_v(),
-            };
-            let times = times.unwrap_or_else(|| knots.multiplicity(*value));
+            let times = times.unwrap_or_else(|| surface.knots(direction).multiplicity(*value));
             let r = surface
                 .remove_knot(direction, *value, times, *tolerance)
                 .map_err(|e| format!("knots_{direction}: {e}"))?;

@@ -329,6 +329,14 @@ impl Surface {
         &self.knots_v
     }
 
+    /// Knots along `direction`: [`Surface::knots_u`] or [`Surface::knots_v`].
+    pub fn knots(&self, direction: Direction) -> &KnotVector {
+        match direction {
+            Direction::U => &self.knots_u,
+            Direction::V => &self.knots_v,
+        }
+    }
+
     /// Control point in row `i` (u index) and column `j` (v index).
     ///
     /// # Panics

@@ -632,26 +632,30 @@ pub fn fit_rows(
     weights: Option<Vec<f64>>,
     options: &FitOptions,
 ) -> Result<DynFit, FitError> {
-    fn rows<const D: usize>(
-        positions: &[f64],
+    /// What each point has besides its position.
+    struct Rest {
         degrees: Vec<Degrees>,
         second_lane: Option<Vec<Degrees>>,
         parameters: Option<Vec<f64>>,
         weights: Option<Vec<f64>>,
+    }
+    fn rows<const D: usize>(
+        positions: &[f64],
+        rest: Rest,
         options: &FitOptions,
     ) -> Result<Fit<D>, FitError> {
         let points = positions
             .chunks_exact(D)
             .map(|row| core::array::from_fn(|a| row[a]))
             .collect();
-        let mut data = FitData::new(points, degrees)?;
-        if let Some(second_lane) = second_lane {
+        let mut data = FitData::new(points, rest.degrees)?;
+        if let Some(second_lane) = rest.second_lane {
             data = data.with_second_lane(second_lane)?;
         }
-        if let Some(parameters) = parameters {
+        if let Some(parameters) = rest.parameters {
             data = data.with_parameters(parameters)?;
         }
-        if let Some(weights) = weights {
+        if let Some(weights) = rest.weights {
             data = data.with_weights(weights)?;
         }
         fit(&data, options)
@@ -662,26 +666,16 @@ pub fn fit_rows(
             values: positions.len(),
         });
     }
+    let rest = Rest {
+        degrees,
+        second_lane,
+        parameters,
+        weights,
+    };
     Ok(if dimension == 3 {
-        rows::<3>(
-            positions,
-            degrees,
-            second_lane,
-            parameters,
-            weights,
-            options,
-        )?
-        .into()
+        rows::<3>(positions, rest, options)?.into()
     } else {
-        rows::<2>(
-            positions,
-            degrees,
-            second_lane,
-            parameters,
-            weights,
-            options,
-        )?
-        .into()
+        rows::<2>(positions, rest, options)?.into()
     })
 }
 
