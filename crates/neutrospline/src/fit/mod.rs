@@ -158,10 +158,10 @@ impl<const D: usize> FitData<D> {
     ///
     /// ```
     /// use neutrospline::fit::{fit, FitData, FitOptions, FitTarget};
-    /// use neutrospline::{Degrees, Family};
+    /// use neutrospline::{Degrees, Evaluate, Family};
     /// // Interval type-2 memberships: lower M_L in the truth slot of lane 0, upper M_U of lane 1.
     /// let lower = [0.2, 0.5, 0.3].map(|m| Degrees::new(m, 0.0, 0.0).unwrap()).to_vec();
-    /// let upper = [0.4, 0.9, 0.6].map(|m| Degrees::new(m, 0.0, 0.0).unwrap()).to_vec();
+    /// let upper = [0.4, 0.7, 0.6].map(|m| Degrees::new(m, 0.0, 0.0).unwrap()).to_vec();
     /// let data = FitData::new(vec![[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]], lower)?
     ///     .with_second_lane(upper)?;
     /// let options = FitOptions::default()
@@ -170,7 +170,7 @@ impl<const D: usize> FitData<D> {
     ///     .with_membership(Family::IntervalType2);
     /// let fitted = fit(&data, &options)?;
     /// let upper_curve = fitted.second_lane.expect("two lanes");
-    /// assert!((upper_curve.point(0.0).degrees.truth() - 0.4).abs() < 1e-12);
+    /// assert!((upper_curve.evaluate(0.0)?.degrees.truth() - 0.4).abs() < 1e-12);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///
