@@ -394,8 +394,8 @@ impl Surface {
 /// Degree reduction and knot removal for the two lanes of an interval-valued or bipolar
 /// family (`Family::lanes`; docs/model.md, "Lanes"): two surfaces of one geometry (positions,
 /// weights, knots), each holding three of the family's channels. In a direction, each lane is
-/// the spline of its lines ([`Surface::direction_spline`]) and the two are stacked point by
-/// point ([`crate::transform::stack_lanes`], the same stacking as the curves'), so every line
+/// the spline of its lines (`Surface::direction_spline`) and the two are stacked point by
+/// point (`transform::stack_lanes`, the same stacking as the curves'), so every line
 /// of the net is a curve of two lanes, and one spline operation on the stack is the curve
 /// operation on every line of both lanes at once: a knot is removed only when Tiller's test
 /// passes on every line and channel, and the reduced degree channels of every line are solved
